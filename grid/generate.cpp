@@ -1,0 +1,99 @@
+#include "grid/generate.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+
+#include "grid/error.hpp"
+#include "grid/tetrahedralize.hpp"
+
+namespace cellproj {
+
+Mesh make_curvilinear(int nx, int ny, int nz, const std::function<glm::dvec3(const glm::dvec3&)>& map,
+                      bool tetrahedra) {
+  if (nx < 1 || ny < 1 || nz < 1) throw InputError("grid resolution must be at least 1 cell per axis");
+  Mesh m;
+  auto id = [&](int i, int j, int k) { return (static_cast<std::int64_t>(k) * (ny + 1) + j) * (nx + 1) + i; };
+  for (int k = 0; k <= nz; ++k)
+    for (int j = 0; j <= ny; ++j)
+      for (int i = 0; i <= nx; ++i) m.add_point(map({double(i) / nx, double(j) / ny, double(k) / nz}));
+  for (int k = 0; k < nz; ++k)
+    for (int j = 0; j < ny; ++j)
+      for (int i = 0; i < nx; ++i)
+        m.add_cell(CellType::Hexahedron, {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
+                                          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
+                                          id(i, j + 1, k + 1)});
+  if (!tetrahedra) return m;
+  Mesh t;
+  t.points = m.points;
+  const MeshView hexes = m.view();
+  for (std::int64_t c = 0; c < m.n_cells(); ++c) {
+    Tet tets[kMaxTetsPerCell];
+    const int n = canonical_tetrahedra(hexes, c, tets);
+    for (int k = 0; k < n; ++k) t.add_cell(CellType::Tetra, tets[k].data());
+  }
+  return t;
+}
+
+Mesh make_box(int nx, int ny, int nz, const glm::dvec3& lo, const glm::dvec3& hi, bool tetrahedra) {
+  return make_curvilinear(nx, ny, nz, [&](const glm::dvec3& u) { return lo + u * (hi - lo); }, tetrahedra);
+}
+
+void set_field(Mesh& mesh, const std::string& name, const std::function<double(const glm::dvec3&)>& f) {
+  PointField* field = nullptr;
+  for (auto& existing : mesh.fields)
+    if (existing.name == name) field = &existing;
+  if (!field) field = &mesh.add_field(name, "generated");
+  field->values.resize(static_cast<std::size_t>(mesh.n_points()));
+  for (std::int64_t p = 0; p < mesh.n_points(); ++p)
+    field->values[p] = f({mesh.points[3 * p], mesh.points[3 * p + 1], mesh.points[3 * p + 2]});
+}
+
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Three quarters of a thick ring: a curvilinear grid with a hole and a cut, so its boundary is
+// not convex, carrying a field with two hot filaments that wind around the ring.
+Mesh swirl(int n, bool tets) {
+  Mesh m = make_curvilinear(3 * n, n, n, [](const glm::dvec3& u) {
+    const double theta = 1.5 * kPi * (1.0 - u.x), r = 0.45 + 0.55 * u.y, z = 0.7 * (u.z - 0.5);
+    const double twist = 0.25 * std::sin(theta);  // gently warped faces: a curvilinear grid
+    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), z + twist * (r - 0.7));
+  }, tets);
+  set_field(m, "temperature", [](const glm::dvec3& x) {
+    const double r = std::hypot(x.x, x.y), theta = std::atan2(x.y, x.x);
+    double t = 0.25 * (r - 0.45) / 0.55;  // a gentle outward gradient
+    for (int f = 0; f < 2; ++f) {  // two filaments winding about the ring's core
+      const double phase = theta * 2.0 + f * kPi;
+      const double rc = 0.72 + 0.13 * std::cos(phase), zc = 0.13 * std::sin(phase);
+      t += std::exp(-((r - rc) * (r - rc) + (x.z - zc) * (x.z - zc)) / 0.004);
+    }
+    return t;
+  });
+  return m;
+}
+
+}  // namespace
+
+std::string generated_kinds() {
+  return "box (hexahedra), box-tets (6 tetrahedra per hexahedron), swirl (non-convex curvilinear ring, hexahedra), "
+         "swirl-tets";
+}
+
+Mesh generate(const std::string& kind, int n) {
+  if (n < 1) throw InputError("generate: resolution must be at least 1");
+  Mesh m;
+  if (kind == "box" || kind == "box-tets") {
+    m = make_box(n, n, n, glm::dvec3(-1), glm::dvec3(1), kind == "box-tets");
+    set_field(m, "scalar", [](const glm::dvec3& x) { return 1.0 - glm::dot(x, x) / 3.0; });
+  } else if (kind == "swirl" || kind == "swirl-tets") {
+    m = swirl(n, kind == "swirl-tets");
+  } else {
+    throw InputError("generate: unknown kind '" + kind + "'; the kinds are: " + generated_kinds());
+  }
+  m.source = "generated " + kind;
+  return m;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,26 @@
+#pragma once
+// Synthetic meshes made by cellproj itself: structured boxes and curvilinear grids (hexahedra, or
+// their canonical tetrahedra), for the default scene, the tests and the benchmarks.
+#include <functional>
+#include <string>
+
+#include <glm/vec3.hpp>
+
+#include "grid/mesh.hpp"
+
+namespace cellproj {
+
+// An nx x ny x nz grid of cells over the unit cube mapped through `map`; hexahedra, or each
+// hexahedron split into its canonical tetrahedra (conforming, 6 per hexahedron).
+Mesh make_curvilinear(int nx, int ny, int nz, const std::function<glm::dvec3(const glm::dvec3&)>& map,
+                      bool tetrahedra);
+// An axis-aligned box [lo, hi].
+Mesh make_box(int nx, int ny, int nz, const glm::dvec3& lo, const glm::dvec3& hi, bool tetrahedra);
+// Adds (or replaces) a point field f(x).
+void set_field(Mesh& mesh, const std::string& name, const std::function<double(const glm::dvec3&)>& f);
+
+// The named synthetic meshes of `cellproj generate` (see generated_kinds()); `n` is the resolution.
+Mesh generate(const std::string& kind, int n);
+std::string generated_kinds();
+
+}  // namespace cellproj

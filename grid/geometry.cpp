@@ -1,0 +1,49 @@
+#include "grid/geometry.hpp"
+
+#include <algorithm>
+
+#include <glm/common.hpp>
+#include <cmath>
+
+namespace cellproj {
+
+double cell_signed_volume(const MeshView& mesh, std::int64_t c) {
+  const CellDef& def = cell_def(mesh.type(c));
+  const std::int64_t* ids = mesh.cell(c);
+  glm::dvec3 o(0.0);
+  for (int i = 0; i < def.vertices; ++i) o += mesh.point(ids[i]);
+  o /= def.vertices;
+  double v6 = 0.0;
+  for (int f = 0; f < def.faces; ++f) {
+    const FaceDef& face = def.face[f];
+    if (face.size == 3) {
+      v6 += tet_volume6(mesh.point(ids[face.v[0]]), mesh.point(ids[face.v[1]]), mesh.point(ids[face.v[2]]), o);
+      continue;
+    }
+    glm::dvec3 q[4];
+    for (int k = 0; k < 4; ++k) q[k] = mesh.point(ids[face.v[k]]);
+    const glm::dvec3 m = 0.25 * (q[0] + q[1] + q[2] + q[3]);
+    for (int k = 0; k < 4; ++k) v6 += tet_volume6(q[k], q[(k + 1) % 4], m, o);
+  }
+  return -v6 / 6.0;  // outward faces see the inner point o on their negative side
+}
+
+double cell_size(const MeshView& mesh, std::int64_t c) {
+  const int n = mesh.cell_size(c);
+  const std::int64_t* ids = mesh.cell(c);
+  glm::dvec3 lo = mesh.point(ids[0]), hi = lo;
+  for (int i = 1; i < n; ++i) {
+    lo = glm::min(lo, mesh.point(ids[i]));
+    hi = glm::max(hi, mesh.point(ids[i]));
+  }
+  return glm::length(hi - lo);
+}
+
+double quad_warp(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d) {
+  const glm::dvec3 n = glm::cross(c - a, d - b);
+  const double len = glm::length(n);
+  if (len == 0.0) return 0.0;  // parallel diagonals: a collapsed face, not a warped one
+  return std::abs(glm::dot(b - a, n)) / len;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,120 @@
+#include "grid/read_mesh.hpp"
+
+#include <algorithm>
+#include <filesystem>
+#include <fstream>
+
+#include <zlib.h>
+
+#include "grid/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace cellproj {
+namespace {
+
+std::string lower(std::string s) {
+  std::transform(s.begin(), s.end(), s.begin(), [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+  return s;
+}
+
+// Decompresses a gzip file into a fresh temporary folder; the folder is removed with the object.
+class Gunzipped {
+ public:
+  explicit Gunzipped(const std::string& path) {
+    dir_ = fs::temp_directory_path() / ("cellproj-" + std::to_string(std::hash<std::string>{}(path)) + "-" +
+                                        std::to_string(reinterpret_cast<std::uintptr_t>(this)));
+    fs::create_directories(dir_);
+    file_ = (dir_ / fs::path(path).stem()).string();
+    gzFile in = gzopen(path.c_str(), "rb");
+    if (!in) throw InputError(where(path, "cannot open"));
+    std::ofstream out(file_, std::ios::binary);
+    char buf[1 << 16];
+    int n;
+    while ((n = gzread(in, buf, sizeof buf)) > 0) out.write(buf, n);
+    int err = 0;
+    const char* msg = gzerror(in, &err);
+    const bool bad = n < 0 || (err != Z_OK && err != Z_STREAM_END);
+    const std::string what = bad ? std::string(msg) : "";
+    gzclose(in);
+    if (bad) throw InputError(where(path, "corrupt or truncated gzip data (" + what + ")"));
+  }
+  ~Gunzipped() {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  const std::string& file() const { return file_; }
+
+ private:
+  fs::path dir_;
+  std::string file_;
+};
+
+}  // namespace
+
+std::vector<std::pair<std::string, std::string>> known_formats() {
+  return {{"vtk-xml", ".vtu .pvtu .vts .pvts .vtr .vti .vtm"},
+          {"vtk-legacy", ".vtk"},
+          {"exodus", ".exo .ex2 .e .exii"},
+          {"cgns", ".cgns"},
+          {"plot3d", ".xyz .p3d, or a .bin whose name contains 'xyz' (solution: the same name with 'q')"},
+          {"tetgen", ".node .ele (the pair of one base name)"},
+          {"off", ".off (classic sorting-benchmark text: 'nverts ntets', 'x y z s' lines, 'a b c d' lines)"},
+          {"points", ".xyzs .pts (text 'x y z s' per line) .vtp (points): Delaunay-tetrahedralized with CGAL"}};
+}
+
+std::string format_for(const std::string& path) {
+  const std::string name = lower(fs::path(path).filename().string());
+  const std::string ext = lower(fs::path(path).extension().string());
+  for (const char* e : {".vtu", ".pvtu", ".vts", ".pvts", ".vtr", ".vti", ".vtm"})
+    if (ext == e) return "vtk-xml";
+  if (ext == ".vtk") return "vtk-legacy";
+  if (ext == ".exo" || ext == ".ex2" || ext == ".e" || ext == ".exii") return "exodus";
+  if (ext == ".cgns") return "cgns";
+  if (ext == ".xyz" || ext == ".p3d" || (ext == ".bin" && name.find("xyz") != std::string::npos)) return "plot3d";
+  if (ext == ".node" || ext == ".ele") return "tetgen";
+  if (ext == ".off") return "off";
+  if (ext == ".xyzs" || ext == ".pts" || ext == ".vtp") return "points";
+  std::string list;
+  for (const auto& [f, exts] : known_formats()) list += "\n  " + f + ": " + exts;
+  throw InputError(where(path, "unknown mesh format '" + ext + "'; give --format, one of:" + list));
+}
+
+Mesh read_mesh(const std::string& path, const ReadOptions& options) {
+  if (lower(fs::path(path).extension().string()) == ".gz") {
+    if (!fs::exists(path)) throw InputError(where(path, "no such file"));
+    Gunzipped plain(path);
+    try {
+      Mesh m = read_mesh(plain.file(), options);
+      m.source = path;
+      return m;
+    } catch (const InputError& e) {  // name the file the user gave, not the temporary copy
+      std::string what = e.what();
+      for (auto at = what.find(plain.file()); at != std::string::npos; at = what.find(plain.file()))
+        what.replace(at, plain.file().size(), path);
+      throw InputError(what);
+    }
+  }
+  if (!fs::exists(path)) throw InputError(where(path, "no such file"));
+  if (fs::is_directory(path)) throw InputError(where(path, "is a folder, not a mesh file"));
+  const std::string format = options.format.empty() ? format_for(path) : options.format;
+  Mesh m;
+  if (format == "tetgen") m = read_tetgen(path);
+  else if (format == "off") m = read_off(path);
+  else if (format == "points") m = read_point_cloud(path);
+  else if (format == "vtk-xml" || format == "vtk-legacy" || format == "exodus" || format == "cgns" || format == "plot3d")
+    m = read_vtk_family(path, format, options);
+  else
+    throw InputError(where(path, "unknown --format '" + format + "'"));
+  m.source = path;
+  return m;
+}
+
+LoadedMesh load_mesh(const std::string& path, const ReadOptions& options) {
+  LoadedMesh out{read_mesh(path, options), {}};
+  out.report = validate(out.mesh.view());
+  reorient_inverted(out.mesh, out.report);
+  return out;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,407 @@
+// Readers that go through VTK: XML and legacy VTK files, Exodus II, CGNS and PLOT3D.
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <unordered_map>
+
+#include <vtkCGNSReader.h>
+#include <vtkCellData.h>
+#include <vtkCompositeDataSet.h>
+#include <vtkDataArray.h>
+#include <vtkDataObjectTreeIterator.h>
+#include <vtkDataSet.h>
+#include <vtkDataSetReader.h>
+#include <vtkExodusIIReader.h>
+#include <vtkIdList.h>
+#include <vtkInformation.h>
+#include <vtkLogger.h>
+#include <vtkMultiBlockDataSet.h>
+#include <vtkMultiBlockPLOT3DReader.h>
+#include <vtkObjectFactory.h>
+#include <vtkOutputWindow.h>
+#include <vtkPointData.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLGenericDataObjectReader.h>
+
+#include "grid/error.hpp"
+#include "grid/geometry.hpp"
+#include "grid/read_mesh.hpp"
+
+namespace fs = std::filesystem;
+
+namespace cellproj {
+namespace {
+
+// Collects VTK's error and warning text while a file is read, so that a failure becomes one
+// InputError instead of text on stderr. VTK's output window is process-wide: reads are serial.
+class CaptureWindow : public vtkOutputWindow {
+ public:
+  static CaptureWindow* New();
+  vtkTypeMacro(CaptureWindow, vtkOutputWindow)
+  void DisplayText(const char* text) override {
+    if (GetCurrentMessageType() == MESSAGE_TYPE_ERROR) errors.push_back(clean(text));
+    else if (GetCurrentMessageType() != MESSAGE_TYPE_TEXT) warnings.push_back(clean(text));
+  }
+  std::vector<std::string> errors, warnings;
+
+ private:
+  // "ERROR: In file.cxx, line 12\nvtkReader (0x1): what\n\n" -> "what"
+  static std::string clean(std::string t) {
+    if (auto nl = t.find('\n'); t.rfind("ERROR", 0) == 0 || t.rfind("Warning", 0) == 0) t = t.substr(nl + 1);
+    if (auto p = t.find("): "); p != std::string::npos && p < 80) t = t.substr(p + 3);
+    while (!t.empty() && (t.back() == '\n' || t.back() == ' ')) t.pop_back();
+    return t;
+  }
+};
+vtkStandardNewMacro(CaptureWindow);
+
+class VtkMessages {
+ public:
+  VtkMessages() : previous_(vtkOutputWindow::GetInstance()), window_(vtkSmartPointer<CaptureWindow>::New()) {
+    vtkOutputWindow::SetInstance(window_);
+    // Some readers (CGNS) also log through vtkLogger straight to stderr.
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
+  }
+  ~VtkMessages() {
+    vtkOutputWindow::SetInstance(previous_);
+    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
+  }
+  VtkMessages(const VtkMessages&) = delete;
+  VtkMessages& operator=(const VtkMessages&) = delete;
+
+  void throw_if_failed(const std::string& path) const {
+    if (window_->errors.empty()) return;
+    std::string what = window_->errors.front();
+    if (window_->errors.size() > 1) what += " (and " + std::to_string(window_->errors.size() - 1) + " more VTK errors)";
+    throw InputError(where(path, "cannot be read: " + what));
+  }
+
+ private:
+  vtkSmartPointer<vtkOutputWindow> previous_;
+  vtkSmartPointer<CaptureWindow> window_;
+};
+
+struct Leaf {
+  vtkDataSet* data;
+  std::string path;  // block names from the root, "/"-joined
+};
+
+std::vector<Leaf> leaves_of(vtkDataObject* obj) {
+  std::vector<Leaf> out;
+  if (auto* ds = vtkDataSet::SafeDownCast(obj)) {
+    out.push_back({ds, ""});
+    return out;
+  }
+  auto* tree = vtkDataObjectTree::SafeDownCast(obj);
+  if (!tree) return out;
+  vtkSmartPointer<vtkDataObjectTreeIterator> it;
+  it.TakeReference(tree->NewTreeIterator());
+  it->VisitOnlyLeavesOn();
+  it->TraverseSubTreeOn();
+  for (it->InitTraversal(); !it->IsDoneWithTraversal(); it->GoToNextItem()) {
+    auto* ds = vtkDataSet::SafeDownCast(it->GetCurrentDataObject());
+    if (!ds || ds->GetNumberOfPoints() == 0) continue;
+    std::string name;
+    if (it->HasCurrentMetaData() && it->GetCurrentMetaData()->Has(vtkCompositeDataSet::NAME()))
+      name = it->GetCurrentMetaData()->Get(vtkCompositeDataSet::NAME());
+    out.push_back({ds, name});
+  }
+  return out;
+}
+
+// Where each leaf's points and cells went in the assembled mesh.
+struct LeafMap {
+  std::vector<std::int64_t> point;  // leaf point -> mesh point
+  std::vector<std::int64_t> cell;   // leaf cell -> mesh cell, or -1 when skipped
+};
+
+std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& mesh) {
+  // Blocks of one Exodus file share nodes through their global ids: merge on them.
+  bool global_ids = leaves.size() > 1;
+  for (const auto& l : leaves) global_ids &= l.data->GetPointData()->GetArray("GlobalNodeId") != nullptr;
+  std::unordered_map<std::int64_t, std::int64_t> by_global;
+
+  std::map<std::string, std::int64_t> skipped;
+  std::vector<LeafMap> maps(leaves.size());
+  auto ids = vtkSmartPointer<vtkIdList>::New();
+  for (std::size_t b = 0; b < leaves.size(); ++b) {
+    vtkDataSet* ds = leaves[b].data;
+    vtkDataArray* gid = global_ids ? ds->GetPointData()->GetArray("GlobalNodeId") : nullptr;
+    LeafMap& map = maps[b];
+    map.point.resize(static_cast<std::size_t>(ds->GetNumberOfPoints()));
+    for (vtkIdType p = 0; p < ds->GetNumberOfPoints(); ++p) {
+      double x[3];
+      ds->GetPoint(p, x);
+      if (gid) {
+        const auto key = static_cast<std::int64_t>(gid->GetTuple1(p));
+        auto [it, fresh] = by_global.try_emplace(key, mesh.n_points());
+        if (fresh) mesh.add_point({x[0], x[1], x[2]});
+        map.point[p] = it->second;
+      } else {
+        map.point[p] = mesh.add_point({x[0], x[1], x[2]});
+      }
+    }
+    map.cell.assign(static_cast<std::size_t>(ds->GetNumberOfCells()), -1);
+    for (vtkIdType c = 0; c < ds->GetNumberOfCells(); ++c) {
+      const int type = ds->GetCellType(c);
+      if (const int dim = vtk_type_dimension(type); dim >= 0 && dim < 3) {
+        ++skipped[vtk_type_name(type)];
+        continue;
+      }
+      ds->GetCellPoints(c, ids);
+      std::vector<std::int64_t> v(static_cast<std::size_t>(ids->GetNumberOfIds()));
+      for (std::size_t k = 0; k < v.size(); ++k) v[k] = map.point[ids->GetId(static_cast<vtkIdType>(k))];
+      std::uint8_t stored = static_cast<std::uint8_t>(type);
+      if (type == 11 && v.size() == 8) {  // voxel -> hexahedron: VTK's voxel numbers its corners (x, y, z) binary
+        std::swap(v[2], v[3]);
+        std::swap(v[6], v[7]);
+        stored = static_cast<std::uint8_t>(CellType::Hexahedron);
+      }
+      // Unsupported 3D types are kept as read, so that validation names them with their count.
+      mesh.connectivity.insert(mesh.connectivity.end(), v.begin(), v.end());
+      mesh.offsets.push_back(static_cast<std::int64_t>(mesh.connectivity.size()));
+      mesh.types.push_back(stored);
+      map.cell[c] = mesh.n_cells() - 1;
+    }
+  }
+  if (!skipped.empty()) {
+    std::string what = "skipped cells of dimension < 3 (a volume renderer has nothing to draw for them):";
+    for (const auto& [name, n] : skipped) what += " " + name + " x" + std::to_string(n);
+    mesh.notes.push_back(what);
+  }
+  return maps;
+}
+
+bool internal_array(const char* name) {
+  const std::string n = name ? name : "";
+  return n.empty() || n.rfind("vtk", 0) == 0 || n == "GlobalNodeId" || n == "PedigreeNodeId" ||
+         n == "GlobalElementId" || n == "PedigreeElementId" || n == "ObjectId";
+}
+
+// Scalar value of tuple i: the value itself, or the magnitude of a multi-component array.
+double tuple_value(vtkDataArray* a, vtkIdType i) {
+  const int nc = a->GetNumberOfComponents();
+  if (nc == 1) return a->GetComponent(i, 0);
+  double s = 0;
+  for (int k = 0; k < nc; ++k) s += a->GetComponent(i, k) * a->GetComponent(i, k);
+  return std::sqrt(s);
+}
+
+void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>& maps, Mesh& mesh) {
+  struct Source {
+    std::vector<vtkDataArray*> per_leaf;
+    bool cell;
+    std::string array;
+  };
+  std::map<std::string, Source> sources;  // field name -> array in each leaf
+  auto collect = [&](vtkFieldData* fd, std::size_t b, bool cell) {
+    for (int i = 0; i < fd->GetNumberOfArrays(); ++i) {
+      vtkDataArray* a = vtkDataArray::SafeDownCast(fd->GetAbstractArray(i));
+      if (!a || internal_array(a->GetName())) continue;
+      std::string name = a->GetName();
+      if (a->GetNumberOfComponents() > 1) name += "_magnitude";
+      if (cell && sources.count(name) && !sources[name].cell) name += "_cell";
+      auto& s = sources[name];
+      s.cell = cell;
+      s.array = a->GetName();
+      s.per_leaf.resize(leaves.size(), nullptr);
+      s.per_leaf[b] = a;
+    }
+  };
+  for (std::size_t b = 0; b < leaves.size(); ++b) collect(leaves[b].data->GetPointData(), b, false);
+  for (std::size_t b = 0; b < leaves.size(); ++b) collect(leaves[b].data->GetCellData(), b, true);
+
+  std::vector<double> volume;
+  for (auto& [name, s] : sources) {
+    if (std::find(s.per_leaf.begin(), s.per_leaf.end(), nullptr) != s.per_leaf.end()) {
+      mesh.notes.push_back("field '" + name + "' dropped: not present in every block");
+      continue;
+    }
+    if (!s.cell) {
+      PointField& f = mesh.add_field(name, s.per_leaf[0]->GetNumberOfComponents() > 1 ? "point data, magnitude of " +
+                                               std::to_string(s.per_leaf[0]->GetNumberOfComponents()) + " components"
+                                                                                          : "point data");
+      for (std::size_t b = 0; b < leaves.size(); ++b)
+        for (std::size_t p = 0; p < maps[b].point.size(); ++p)
+          f.values[maps[b].point[p]] = tuple_value(s.per_leaf[b], static_cast<vtkIdType>(p));
+      continue;
+    }
+    if (volume.empty()) {  // cell volumes for the averaging weights
+      const MeshView view = mesh.view();
+      volume.resize(static_cast<std::size_t>(mesh.n_cells()), 0.0);
+      for (std::int64_t c = 0; c < mesh.n_cells(); ++c)
+        if (is_supported(mesh.types[c]) && view.cell_size(c) == cell_def(view.type(c)).vertices)
+          volume[c] = std::abs(cell_signed_volume(view, c));
+    }
+    // Cell data to point data: each point takes the volume-weighted mean of the cells around it.
+    std::vector<double> sum(static_cast<std::size_t>(mesh.n_points()), 0.0), weight(sum), plain(sum), count(sum);
+    for (std::size_t b = 0; b < leaves.size(); ++b)
+      for (std::size_t lc = 0; lc < maps[b].cell.size(); ++lc) {
+        const std::int64_t c = maps[b].cell[lc];
+        if (c < 0) continue;
+        const double v = tuple_value(s.per_leaf[b], static_cast<vtkIdType>(lc));
+        for (std::int64_t k = mesh.offsets[c]; k < mesh.offsets[c + 1]; ++k) {
+          const std::int64_t p = mesh.connectivity[k];
+          if (p < 0 || p >= mesh.n_points()) continue;  // validation reports it
+          sum[p] += volume[c] * v;
+          weight[p] += volume[c];
+          plain[p] += v;
+          count[p] += 1;
+        }
+      }
+    PointField& f = mesh.add_field(name, "cell data '" + s.array + "', volume-weighted average at points");
+    for (std::int64_t p = 0; p < mesh.n_points(); ++p)
+      f.values[p] = weight[p] > 0 ? sum[p] / weight[p] : count[p] > 0 ? plain[p] / count[p] : 0.0;
+    mesh.notes.push_back("cell field '" + s.array + "' converted to point field '" + name +
+                         "' by volume-weighted averaging");
+  }
+}
+
+Mesh assemble(vtkDataObject* data, const std::string& path, const std::string& zone) {
+  std::vector<Leaf> leaves = leaves_of(data);
+  if (!zone.empty()) {
+    std::vector<Leaf> picked;
+    std::vector<std::string> names;
+    for (const auto& l : leaves) {
+      names.push_back(l.path);
+      if (l.path == zone) picked.push_back(l);
+    }
+    if (picked.empty()) {
+      std::string list;
+      for (const auto& n : names) list += (list.empty() ? "" : ", ") + n;
+      throw InputError(where(path, "no zone named '" + zone + "'; the zones are: " + list));
+    }
+    leaves = picked;
+  }
+  if (leaves.empty()) throw InputError(where(path, "contains no dataset with points"));
+  Mesh mesh;
+  const auto maps = assemble_geometry(leaves, mesh);
+  assemble_fields(leaves, maps, mesh);
+  if (leaves.size() > 1) mesh.notes.push_back("assembled from " + std::to_string(leaves.size()) + " blocks");
+  return mesh;
+}
+
+template <class Reader>
+Mesh run(Reader* reader, const std::string& path, const VtkMessages& messages, const std::string& zone = "") {
+  reader->Update();
+  messages.throw_if_failed(path);
+  if (!reader->GetOutputDataObject(0)) throw InputError(where(path, "VTK produced no data"));
+  return assemble(reader->GetOutputDataObject(0), path, zone);
+}
+
+std::string plot3d_q_file(const std::string& xyz, const ReadOptions& o) {
+  if (!o.q_file.empty()) {
+    if (!fs::exists(o.q_file)) throw InputError(where(o.q_file, "PLOT3D solution (q) file not found"));
+    return o.q_file;
+  }
+  const fs::path p(xyz);
+  std::string name = p.filename().string();
+  const auto at = name.rfind("xyz");
+  if (at == std::string::npos) return "";
+  name.replace(at, 3, "q");
+  const fs::path q = p.parent_path() / name;
+  return fs::exists(q) ? q.string() : "";
+}
+
+bool all_zero(const Mesh& m, const std::string& field) {
+  const auto* f = m.find_field(field);
+  return f && std::all_of(f->values.begin(), f->values.end(), [](double v) { return v == 0.0; });
+}
+
+}  // namespace
+
+Mesh read_vtk_family(const std::string& path, const std::string& format, const ReadOptions& o) {
+  VtkMessages messages;
+  if (format == "vtk-xml") {
+    auto r = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
+    r->SetFileName(path.c_str());
+    return run(r.Get(), path, messages);
+  }
+  if (format == "vtk-legacy") {
+    auto r = vtkSmartPointer<vtkDataSetReader>::New();
+    r->SetFileName(path.c_str());
+    r->ReadAllScalarsOn();
+    r->ReadAllVectorsOn();
+    r->ReadAllFieldsOn();
+    return run(r.Get(), path, messages);
+  }
+  if (format == "exodus") {
+    auto r = vtkSmartPointer<vtkExodusIIReader>::New();
+    if (!r->CanReadFile(path.c_str())) throw InputError(where(path, "not a readable Exodus II file"));
+    r->SetFileName(path.c_str());
+    r->UpdateInformation();
+    messages.throw_if_failed(path);
+    r->SetAllArrayStatus(vtkExodusIIReader::NODAL, 1);
+    r->SetAllArrayStatus(vtkExodusIIReader::ELEM_BLOCK, 1);
+    r->GenerateGlobalNodeIdArrayOn();
+    const int steps = r->GetNumberOfTimeSteps();
+    if (o.time_step < 0 || (steps > 0 && o.time_step >= steps) || (steps == 0 && o.time_step != 0))
+      throw InputError(where(path, "time step " + std::to_string(o.time_step) + " out of range: the file has " +
+                                       std::to_string(steps) + " time steps"));
+    r->SetTimeStep(o.time_step);
+    return run(r.Get(), path, messages);
+  }
+  if (format == "cgns") {
+    auto r = vtkSmartPointer<vtkCGNSReader>::New();
+    if (!r->CanReadFile(path.c_str())) throw InputError(where(path, "not a readable CGNS file"));
+    r->SetFileName(path.c_str());
+    r->UpdateInformation();
+    messages.throw_if_failed(path);
+    r->EnableAllBases();
+    r->EnableAllPointArrays();
+    r->EnableAllCellArrays();
+    r->LoadBndPatchOff();
+    return run(r.Get(), path, messages, o.zone);
+  }
+  if (format == "plot3d") {
+    auto r = vtkSmartPointer<vtkMultiBlockPLOT3DReader>::New();
+    r->SetXYZFileName(path.c_str());
+    const std::string q = plot3d_q_file(path, o);
+    if (!q.empty()) r->SetQFileName(q.c_str());
+    r->AutoDetectFormatOn();
+    if (!q.empty()) {
+      r->AddFunction(110);  // pressure
+      r->AddFunction(153);  // velocity magnitude
+    }
+    Mesh m = run(r.Get(), path, messages);
+    if (m.n_cells() == 0) throw InputError(where(path, "PLOT3D grid has no 3D cells (wrong format or dimensions?)"));
+    if (q.empty()) m.notes.push_back("PLOT3D grid read without a solution (q) file: no fields");
+    else m.notes.push_back("PLOT3D solution from " + q);
+    if (all_zero(m, "StagnationEnergy")) {  // pressure from zero energy is meaningless
+      m.fields.erase(std::remove_if(m.fields.begin(), m.fields.end(), [](const PointField& f) { return f.name == "Pressure"; }),
+                     m.fields.end());
+      m.notes.push_back("StagnationEnergy is zero everywhere: derived Pressure omitted");
+    }
+    return m;
+  }
+  throw InputError(where(path, "not a VTK-family format: " + format));
+}
+
+}  // namespace cellproj
+
+#include <vtkPolyData.h>
+#include <vtkXMLPolyDataReader.h>
+
+#include "grid/vtk_points.hpp"
+
+namespace cellproj {
+
+Mesh read_vtk_points(const std::string& path) {
+  VtkMessages messages;
+  auto r = vtkSmartPointer<vtkXMLPolyDataReader>::New();
+  r->SetFileName(path.c_str());
+  r->Update();
+  messages.throw_if_failed(path);
+  vtkDataSet* ds = r->GetOutput();
+  if (!ds || ds->GetNumberOfPoints() == 0) throw InputError(where(path, "contains no points"));
+  Mesh m;
+  const std::vector<Leaf> leaves{{ds, ""}};
+  assemble_fields(leaves, assemble_geometry(leaves, m), m);
+  m.connectivity.clear();  // the polydata's own vertices or polygons are not volume cells
+  m.offsets.assign(1, 0);
+  m.types.clear();
+  m.notes.clear();
+  return m;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,188 @@
+#include "grid/topology.hpp"
+
+#include <algorithm>
+
+#include <glm/common.hpp>
+#include <array>
+#include <limits>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
+#include <CGAL/Surface_mesh.h>
+#include <CGAL/convex_hull_3.h>
+#include <tbb/parallel_for.h>
+
+#include "grid/geometry.hpp"
+
+namespace cellproj {
+namespace {
+
+using FaceKey = std::array<std::int64_t, 4>;  // sorted vertex ids; a triangle's 4th is max()
+
+FaceKey face_key(const std::int64_t* ids, const FaceDef& face) {
+  FaceKey k{0, 0, 0, std::numeric_limits<std::int64_t>::max()};
+  for (int i = 0; i < face.size; ++i) k[i] = ids[face.v[i]];
+  std::sort(k.begin(), k.begin() + face.size);
+  return k;
+}
+
+// Positions of one cell face's vertices, in the face's cyclic order.
+int face_points(const MeshView& m, std::int64_t cell, int local, glm::dvec3 p[4]) {
+  const FaceDef& face = cell_def(m.type(cell)).face[local];
+  for (int i = 0; i < face.size; ++i) p[i] = m.point(m.cell(cell)[face.v[i]]);
+  return face.size;
+}
+
+// Newell's normal: twice the vector area of a (possibly non-planar) polygon.
+glm::dvec3 newell_normal(const glm::dvec3* p, int n) {
+  glm::dvec3 s(0.0);
+  for (int i = 0; i < n; ++i) s += glm::cross(p[i], p[(i + 1) % n]);
+  return s;
+}
+
+}  // namespace
+
+std::int64_t FaceTopology::cell_of(std::int64_t cf) const {
+  return static_cast<std::int64_t>(std::upper_bound(face_offsets.begin(), face_offsets.end(), cf) -
+                                   face_offsets.begin()) - 1;
+}
+
+FaceTopology build_topology(const MeshView& m) {
+  FaceTopology t;
+  t.face_offsets.resize(static_cast<std::size_t>(m.n_cells) + 1, 0);
+  for (std::int64_t c = 0; c < m.n_cells; ++c) t.face_offsets[c + 1] = t.face_offsets[c] + cell_def(m.type(c)).faces;
+  const std::int64_t n_faces = t.face_offsets.back();
+  t.neighbor.assign(static_cast<std::size_t>(n_faces), kBoundary);
+
+  std::vector<FaceKey> keys(static_cast<std::size_t>(n_faces));
+  std::vector<std::int64_t> owner(static_cast<std::size_t>(n_faces));
+  tbb::parallel_for(std::int64_t(0), m.n_cells, [&](std::int64_t c) {
+    const CellDef& def = cell_def(m.type(c));
+    for (int f = 0; f < def.faces; ++f) {
+      keys[t.face_offsets[c] + f] = face_key(m.cell(c), def.face[f]);
+      owner[t.face_offsets[c] + f] = c;
+    }
+  });
+
+  // Counting sort by the lowest vertex, then a small sort inside each bucket.
+  std::vector<std::int64_t> start(static_cast<std::size_t>(m.n_points) + 1, 0);
+  for (const auto& k : keys) ++start[k[0] + 1];
+  for (std::int64_t p = 0; p < m.n_points; ++p) start[p + 1] += start[p];
+  std::vector<std::int64_t> order(static_cast<std::size_t>(n_faces));
+  {
+    std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
+    for (std::int64_t f = 0; f < n_faces; ++f) order[fill[keys[f][0]]++] = f;
+  }
+  tbb::parallel_for(std::int64_t(0), m.n_points, [&](std::int64_t p) {
+    std::sort(order.begin() + start[p], order.begin() + start[p + 1],
+              [&](std::int64_t a, std::int64_t b) { return keys[a] < keys[b] || (keys[a] == keys[b] && a < b); });
+  });
+
+  for (std::int64_t i = 0; i < n_faces;) {
+    std::int64_t j = i + 1;
+    while (j < n_faces && keys[order[j]] == keys[order[i]]) ++j;
+    const std::int64_t a = order[i];
+    if (j - i == 2) {
+      t.neighbor[a] = owner[order[i + 1]];
+      t.neighbor[order[i + 1]] = owner[a];
+      ++t.shared_faces;
+    } else if (j - i > 2) {
+      for (std::int64_t k = i; k < j; ++k) t.neighbor[order[k]] = kNonManifold;
+      if (t.nonmanifold_faces++ == 0) t.first_nonmanifold_cell = owner[a];
+    }
+    if (keys[a][3] != std::numeric_limits<std::int64_t>::max()) {  // a quad: measure it once
+      glm::dvec3 q[4];
+      face_points(m, owner[a], static_cast<int>(a - t.face_offsets[owner[a]]), q);
+      const double warp = quad_warp(q[0], q[1], q[2], q[3]);
+      const double diag = 0.5 * (glm::length(q[2] - q[0]) + glm::length(q[3] - q[1]));
+      const double rel = diag > 0 ? warp / diag : 0.0;
+      t.max_nonplanarity = std::max(t.max_nonplanarity, warp);
+      t.max_relative_nonplanarity = std::max(t.max_relative_nonplanarity, rel);
+      if (rel > kNonPlanarRelative) ++t.nonplanar_faces;
+    }
+    i = j;
+  }
+  for (std::int64_t f = 0; f < n_faces; ++f)
+    if (t.neighbor[f] == kBoundary) t.boundary.push_back(f);
+  return t;
+}
+
+HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  HullReport r;
+  if (t.boundary.empty()) return r;
+
+  std::vector<char> on_boundary(static_cast<std::size_t>(m.n_points), 0);
+  std::vector<K::Point_3> pts;
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (std::int64_t cf : t.boundary) {
+    const std::int64_t c = t.cell_of(cf);
+    const FaceDef& face = cell_def(m.type(c)).face[cf - t.face_offsets[c]];
+    for (int i = 0; i < face.size; ++i) {
+      const std::int64_t p = m.cell(c)[face.v[i]];
+      if (on_boundary[p]) continue;
+      on_boundary[p] = 1;
+      const glm::dvec3 x = m.point(p);
+      pts.emplace_back(x.x, x.y, x.z);
+      lo = glm::min(lo, x);
+      hi = glm::max(hi, x);
+    }
+  }
+  CGAL::Surface_mesh<K::Point_3> hull;
+  CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
+  if (hull.number_of_faces() == 0) return r;  // flat or lower-dimensional: no volume to be convex
+
+  // Hull vertices and their neighbours, for climbing to the support point of a direction.
+  std::vector<glm::dvec3> hp;
+  std::vector<std::vector<int>> adj;
+  for (auto v : hull.vertices()) {
+    const auto& p = hull.point(v);
+    hp.emplace_back(p.x(), p.y(), p.z());
+    adj.emplace_back();
+    for (auto u : CGAL::vertices_around_target(hull.halfedge(v), hull)) adj.back().push_back(static_cast<int>(u));
+  }
+  // On a convex polytope a vertex with no better neighbour maximizes a linear function.
+  auto support = [&](const glm::dvec3& n, int& v) {
+    double best = glm::dot(n, hp[v]);
+    for (bool moved = true; moved;) {
+      moved = false;
+      for (int u : adj[v])
+        if (const double d = glm::dot(n, hp[u]); d > best) {
+          best = d;
+          v = u;
+          moved = true;
+          break;
+        }
+    }
+    return best;
+  };
+
+  const double tol = 1e-6 * glm::length(hi - lo);  // float32 files round curved hulls by ~1e-7
+  int up = 0, down = 0;
+  double area = 0.0, off_area = 0.0;
+  for (std::int64_t cf : t.boundary) {
+    const std::int64_t c = t.cell_of(cf);
+    glm::dvec3 p[4];
+    const int n = face_points(m, c, static_cast<int>(cf - t.face_offsets[c]), p);
+    const glm::dvec3 nn = newell_normal(p, n);
+    const double len = glm::length(nn);
+    area += 0.5 * len;
+    if (len == 0.0) continue;
+    const glm::dvec3 dir = nn / len;
+    double fmax = -std::numeric_limits<double>::max(), fmin = std::numeric_limits<double>::max();
+    for (int i = 0; i < n; ++i) {
+      fmax = std::max(fmax, glm::dot(dir, p[i]));
+      fmin = std::min(fmin, glm::dot(dir, p[i]));
+    }
+    // Either side of the face may be the outside (inverted cells are not re-oriented in a view).
+    const bool on_hull = support(dir, up) <= fmax + tol || -support(-dir, down) >= fmin - tol;
+    if (!on_hull) {
+      ++r.boundary_faces_off_hull;
+      off_area += 0.5 * len;
+    }
+  }
+  r.convex = r.boundary_faces_off_hull == 0;
+  r.off_hull_area_share = area > 0 ? off_area / area : 0.0;
+  return r;
+}
+
+}  // namespace cellproj

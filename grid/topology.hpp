@@ -1,0 +1,46 @@
+#pragma once
+// Face topology: which cells share a face (a quad matched by its four vertices, a triangle by its
+// three), the boundary faces, non-planar quadrilaterals, and whether the boundary is convex.
+#include <cstdint>
+#include <vector>
+
+#include "grid/mesh.hpp"
+
+namespace cellproj {
+
+constexpr std::int64_t kBoundary = -1;     // no cell across this face
+constexpr std::int64_t kNonManifold = -2;  // more than two cells share this face
+
+struct FaceTopology {
+  // Cell c's faces are the "cell faces" [face_offsets[c], face_offsets[c+1]), in the order of its
+  // CellDef; neighbor[cf] is the cell across cell face cf, kBoundary or kNonManifold.
+  std::vector<std::int64_t> face_offsets;
+  std::vector<std::int64_t> neighbor;
+  std::vector<std::int64_t> boundary;   // the cell faces with no cell across them
+  std::int64_t shared_faces = 0;        // faces (counted once) between exactly two cells
+  std::int64_t nonmanifold_faces = 0;   // faces (counted once) used by three or more cells
+  std::int64_t first_nonmanifold_cell = -1;
+  std::int64_t nonplanar_faces = 0;     // quads (counted once) warped beyond kNonPlanarRelative
+  double max_nonplanarity = 0.0;        // largest distance between a quad's diagonals (world units)
+  double max_relative_nonplanarity = 0.0;  // the same over the quad's mean diagonal length
+
+  std::int64_t cell_of(std::int64_t cell_face) const;  // the cell a cell face belongs to
+};
+
+// A quad is non-planar when its diagonals pass further apart than this share of their length.
+constexpr double kNonPlanarRelative = 1e-6;
+
+// O(F) after a counting sort of the faces by their lowest vertex; parallel over buckets.
+FaceTopology build_topology(const MeshView& mesh);
+
+struct HullReport {
+  bool convex = false;
+  std::int64_t boundary_faces_off_hull = 0;  // boundary faces not on a supporting plane of the hull
+  double off_hull_area_share = 0.0;
+};
+
+// The boundary is convex when every boundary face lies on the convex hull of the mesh (a face on
+// a supporting plane, within 1e-6 of the bounding-box diagonal: thinner concavities are invisible). Uses CGAL's 3D convex hull.
+HullReport boundary_convexity(const MeshView& mesh, const FaceTopology& topo);
+
+}  // namespace cellproj

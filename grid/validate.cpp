@@ -1,0 +1,142 @@
+#include "grid/validate.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <numeric>
+
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
+
+#include "grid/error.hpp"
+#include "grid/geometry.hpp"
+
+namespace cellproj {
+namespace {
+
+void check_cells(const MeshView& m) {
+  std::map<int, std::pair<std::int64_t, std::int64_t>> unsupported;  // type -> (count, first cell)
+  for (std::int64_t c = 0; c < m.n_cells; ++c) {
+    const std::uint8_t t = m.types[c];
+    if (!is_supported(t)) {
+      auto& u = unsupported.try_emplace(t, 0, c).first->second;
+      ++u.first;
+      continue;
+    }
+    const int expected = cell_def(static_cast<CellType>(t)).vertices;
+    if (m.offsets[c + 1] - m.offsets[c] != expected)
+      throw InputError(where(m.source, "cell " + std::to_string(c) + " (" + cell_name(m.type(c)) + ") has " +
+                                           std::to_string(m.offsets[c + 1] - m.offsets[c]) + " vertices, expected " +
+                                           std::to_string(expected)));
+    const std::int64_t* ids = m.cell(c);
+    for (int k = 0; k < expected; ++k)
+      if (ids[k] < 0 || ids[k] >= m.n_points)
+        throw InputError(where(m.source, "cell " + std::to_string(c) + " (" + cell_name(m.type(c)) +
+                                             ") refers to point " + std::to_string(ids[k]) + ", out of range [0, " +
+                                             std::to_string(m.n_points) + ")"));
+  }
+  if (unsupported.empty()) return;
+  std::string what = "unsupported cell types:";
+  for (const auto& [t, u] : unsupported)
+    what += " " + vtk_type_name(t) + ": " + std::to_string(u.first) + " cells (first: cell " +
+            std::to_string(u.second) + ");";
+  what += " cellproj renders tetra, voxel, hexahedron, wedge and pyramid";
+  throw InputError(where(m.source, what));
+}
+
+void check_points(const MeshView& m) {
+  for (std::int64_t i = 0; i < 3 * m.n_points; ++i)
+    if (!std::isfinite(m.points[i]))
+      throw InputError(where(m.source, "point " + std::to_string(i / 3) + " has a non-finite coordinate (" +
+                                           "xyz"[i % 3] + " = " + std::to_string(m.points[i]) + ")"));
+  if (m.scalar)
+    for (std::int64_t p = 0; p < m.n_points; ++p)
+      if (!std::isfinite(m.scalar[p]))
+        throw InputError(where(m.source, "field '" + m.field + "' is not finite at point " + std::to_string(p) +
+                                             " (" + std::to_string(m.scalar[p]) + ")"));
+}
+
+void count_duplicates(const MeshView& m, ValidationReport& r) {
+  std::vector<std::int64_t> order(static_cast<std::size_t>(m.n_points));
+  std::iota(order.begin(), order.end(), 0);
+  const double* x = m.points;
+  auto less = [x](std::int64_t a, std::int64_t b) {
+    return std::lexicographical_compare(x + 3 * a, x + 3 * a + 3, x + 3 * b, x + 3 * b + 3) ||
+           (std::equal(x + 3 * a, x + 3 * a + 3, x + 3 * b) && a < b);
+  };
+  tbb::parallel_sort(order.begin(), order.end(), less);
+  for (std::size_t i = 1; i < order.size(); ++i)
+    if (std::equal(x + 3 * order[i], x + 3 * order[i] + 3, x + 3 * order[i - 1])) {
+      ++r.duplicate_points;
+      if (r.first_duplicate < 0 || order[i] < r.first_duplicate) r.first_duplicate = order[i];
+    }
+}
+
+}  // namespace
+
+void check_finite(const std::string& source, const PointField& field) {
+  for (std::size_t p = 0; p < field.values.size(); ++p)
+    if (!std::isfinite(field.values[p]))
+      throw InputError(where(source, "field '" + field.name + "' is not finite at point " + std::to_string(p) + " (" +
+                                         std::to_string(field.values[p]) + ")"));
+}
+
+ValidationReport validate(const MeshView& m) {
+  if (m.n_cells <= 0) throw InputError(where(m.source, "the mesh has no 3D cells"));
+  if (m.offsets[0] != 0) throw InputError(where(m.source, "offsets[0] must be 0"));
+  for (std::int64_t c = 0; c < m.n_cells; ++c)
+    if (m.offsets[c + 1] < m.offsets[c])
+      throw InputError(where(m.source, "offsets decrease at cell " + std::to_string(c)));
+  check_cells(m);
+  check_points(m);
+
+  ValidationReport r;
+  r.volumes.resize(static_cast<std::size_t>(m.n_cells));
+  tbb::parallel_for(std::int64_t(0), m.n_cells, [&](std::int64_t c) { r.volumes[c] = cell_signed_volume(m, c); });
+  for (std::int64_t c = 0; c < m.n_cells; ++c) {
+    const double v = r.volumes[c], size = cell_size(m, c);
+    if (std::abs(v) <= kDegenerateRelativeVolume * size * size * size) {
+      if (r.degenerate_cells++ == 0) r.first_degenerate = c;
+    } else if (v < 0) {
+      if (r.inverted_cells++ == 0) r.first_inverted = c;
+    }
+  }
+  count_duplicates(m, r);
+  return r;
+}
+
+std::vector<std::string> ValidationReport::warnings(const std::string& source) const {
+  std::vector<std::string> w;
+  if (inverted_cells)
+    w.push_back(where(source, std::to_string(inverted_cells) + " inverted cells (negative volume; first: cell " +
+                                  std::to_string(first_inverted) + ") re-oriented"));
+  if (degenerate_cells)
+    w.push_back(where(source, std::to_string(degenerate_cells) + " degenerate cells (zero volume; first: cell " +
+                                  std::to_string(first_degenerate) + ") contribute nothing"));
+  if (duplicate_points)
+    w.push_back(where(source, std::to_string(duplicate_points) + " duplicate points (first: point " +
+                                  std::to_string(first_duplicate) +
+                                  "): cells joined only through them leave internal boundary faces"));
+  return w;
+}
+
+std::int64_t reorient_inverted(Mesh& mesh, const ValidationReport& r) {
+  std::int64_t flipped = 0;
+  const MeshView view = mesh.view();
+  for (std::int64_t c = 0; c < mesh.n_cells(); ++c) {
+    const double v = r.volumes[c];
+    if (!(v < 0) || std::abs(v) <= kDegenerateRelativeVolume * std::pow(cell_size(view, c), 3)) continue;
+    std::int64_t* ids = mesh.connectivity.data() + mesh.offsets[c];
+    switch (view.type(c)) {
+      case CellType::Tetra: std::swap(ids[1], ids[2]); break;
+      case CellType::Pyramid: std::swap(ids[1], ids[3]); break;  // reverse the base
+      case CellType::Wedge: std::swap_ranges(ids, ids + 3, ids + 3); break;
+      case CellType::Hexahedron:
+      case CellType::Voxel: std::swap_ranges(ids, ids + 4, ids + 4); break;
+    }
+    ++flipped;
+  }
+  return flipped;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,33 @@
+#pragma once
+// Mesh validation. Defects that make a picture wrong or a program crash are errors (InputError);
+// defects a renderer can live with are counted in the report and shown as warnings.
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "grid/mesh.hpp"
+
+namespace cellproj {
+
+struct ValidationReport {
+  std::int64_t inverted_cells = 0;     // negative volume: re-oriented by reorient_inverted()
+  std::int64_t degenerate_cells = 0;   // zero volume (round-off level): they contribute nothing
+  std::int64_t duplicate_points = 0;   // points at the same coordinates as an earlier point
+  std::int64_t first_inverted = -1, first_degenerate = -1, first_duplicate = -1;
+  std::vector<double> volumes;         // signed volume per cell, as read
+
+  std::vector<std::string> warnings(const std::string& source) const;
+};
+
+// Throws InputError (naming the source and the first offending element) for: a cell with a wrong
+// vertex count, an unsupported or unknown cell type (with the count of each), a point id out of
+// range, a NaN or infinite coordinate, and a NaN or infinite value of the view's scalar field.
+ValidationReport validate(const MeshView& mesh);
+
+// Throws InputError for the first non-finite value of a field.
+void check_finite(const std::string& source, const PointField& field);
+
+// Flips every inverted cell of an owned mesh so its volume is positive; returns how many.
+std::int64_t reorient_inverted(Mesh& mesh, const ValidationReport& report);
+
+}  // namespace cellproj

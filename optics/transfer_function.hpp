@@ -1,0 +1,63 @@
+#pragma once
+// The transfer function: colour C(s) and extinction kappa(s), each piecewise linear in the scalar s
+// and clamped outside its first and last control points. Two control points at the same s make a
+// step; at the step itself the value on the right applies.
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+namespace cellproj {
+
+struct ColorPoint {
+  double s;
+  glm::dvec3 rgb;  // each in [0, 1]
+};
+struct ExtinctionPoint {
+  double s;
+  double kappa;  // >= 0, per unit of world length
+};
+
+class TransferFunction {
+ public:
+  // Throws InputError (prefixed with `source`) for an empty list, a non-finite number, a colour
+  // outside [0, 1], a negative extinction, or control points out of order.
+  TransferFunction(std::vector<ColorPoint> color, std::vector<ExtinctionPoint> extinction,
+                   const std::string& source = "transfer function");
+
+  glm::dvec3 color(double s) const;
+  double extinction(double s) const;
+
+  // Every s at which colour or extinction changes slope, sorted, without repeats.
+  const std::vector<double>& breakpoints() const { return breakpoints_; }
+
+  // Colour and extinction at the ends of [sa, sb] (either order) as the linear function of s that
+  // holds inside that interval, which must not contain a breakpoint in its interior. At a step,
+  // the limit from inside the interval is used, so a piece never picks up the other side's value.
+  struct Ends {
+    glm::dvec3 ca, cb;
+    double ka, kb;
+  };
+  Ends piece(double sa, double sb) const;
+
+  const std::vector<ColorPoint>& color_points() const { return color_; }
+  const std::vector<ExtinctionPoint>& extinction_points() const { return extinction_; }
+  bool is_linear() const { return breakpoints_.size() <= 2; }  // one linear piece between clamps
+
+ private:
+  std::vector<ColorPoint> color_;
+  std::vector<ExtinctionPoint> extinction_;
+  std::vector<double> breakpoints_;
+};
+
+// From the scene's JSON object:
+//   {"color": [[s, r, g, b], ...] | "color_preset": {"file": F, "name": N, "range": [s0, s1]},
+//    "extinction": [[s, kappa], ...]}
+// A ParaView colour-map preset (an exported JSON array of maps with "Name" and "RGBPoints") has its
+// x range mapped onto `range` (default: `field_range`). Relative preset paths resolve against
+// `base_dir`. Errors name `source` and the key.
+TransferFunction transfer_function_from_json(const nlohmann::json& j, const std::string& source,
+                                             const std::string& base_dir, double field_min, double field_max);
+
+}  // namespace cellproj

@@ -1,0 +1,181 @@
+#include "raycast/cell_ray_tracer.hpp"
+
+#include <algorithm>
+
+#include <glm/common.hpp>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "grid/geometry.hpp"
+
+namespace cellproj {
+namespace {
+
+constexpr int kTile = 16;
+
+// Tetrahedron faces (outward for a positive tetrahedron), each listed opposite its vertex.
+constexpr int kFace[4][3] = {{1, 2, 3}, {2, 0, 3}, {0, 1, 3}, {0, 2, 1}};
+
+struct PixelBox {
+  int x0, x1, y0, y1;  // inclusive pixel ranges; empty when x0 > x1
+};
+
+// The clipped tetrahedron along one ray, with barycentric planes for the scalar.
+struct TetPlanes {
+  glm::dvec3 n[4];  // face normals, outward; face k is opposite vertex k
+  double d[4];      // n[k] . x = d[k] on face k
+  double volume6;
+  double s[4];
+
+  bool clip(const Ray& r, double& t0, double& t1) const {
+    t0 = 0.0;
+    t1 = std::numeric_limits<double>::infinity();
+    for (int k = 0; k < 4; ++k) {
+      const double nd = glm::dot(n[k], r.dir), gap = d[k] - glm::dot(n[k], r.origin);
+      if (nd > 0) t1 = std::min(t1, gap / nd);
+      else if (nd < 0) t0 = std::max(t0, gap / nd);
+      else if (gap < 0 || (gap == 0 && !owns_face(n[k]))) return false;
+    }
+    return t1 > t0;
+  }
+  // A ray lying exactly in a face belongs to one of its two cells: the one whose outward normal
+  // has its first non-zero component negative (the neighbour's normal points the other way).
+  static bool owns_face(const glm::dvec3& n) { return n.x != 0 ? n.x < 0 : n.y != 0 ? n.y < 0 : n.z < 0; }
+  double scalar_at(const glm::dvec3& x) const {
+    double s_ = 0.0;
+    for (int k = 0; k < 4; ++k) s_ += (d[k] - glm::dot(n[k], x)) * s[k];
+    return s_ / volume6;
+  }
+};
+
+}  // namespace
+
+CellRayTracer::CellRayTracer(const MeshView& mesh) {
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (std::int64_t p = 0; p < mesh.n_points; ++p) {
+    lo = glm::min(lo, mesh.point(p));
+    hi = glm::max(hi, mesh.point(p));
+  }
+  centre_ = mesh.n_points ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+  points_.resize(static_cast<std::size_t>(3 * mesh.n_points));
+  for (std::int64_t p = 0; p < mesh.n_points; ++p)
+    for (int k = 0; k < 3; ++k) points_[3 * p + k] = mesh.points[3 * p + k] - centre_[k];
+  scalar_.assign(static_cast<std::size_t>(mesh.n_points), 0.0);
+  if (mesh.scalar) std::copy(mesh.scalar, mesh.scalar + mesh.n_points, scalar_.begin());
+
+  auto P = [&](std::int64_t i) { return glm::dvec3(points_[3 * i], points_[3 * i + 1], points_[3 * i + 2]); };
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
+    Tet tets[kMaxTetsPerCell];
+    const int n = canonical_tetrahedra(mesh, c, tets);
+    for (int k = 0; k < n; ++k) {
+      Tet t = tets[k];
+      const glm::dvec3 a = P(t[0]), b = P(t[1]), cc = P(t[2]), d = P(t[3]);
+      double v6 = tet_volume6(a, b, cc, d);
+      const double size = std::max({glm::length(b - a), glm::length(cc - a), glm::length(d - a)});
+      if (std::abs(v6) <= kDegenerateRelativeVolume * size * size * size) {
+        ++dropped_;
+        continue;
+      }
+      if (v6 < 0) std::swap(t[1], t[2]);
+      tets_.push_back(t);
+      parent_.push_back(c);
+    }
+  }
+}
+
+void CellRayTracer::trace(const Camera& camera, int width, int height, const Visitor& visit,
+                          const std::function<void(double)>& progress) const {
+  Camera local = camera;  // in the recentred frame
+  local.eye -= centre_;
+  local.target -= centre_;
+  const PixelRays rays(local, width, height);
+  auto P = [&](std::int64_t i) { return glm::dvec3(points_[3 * i], points_[3 * i + 1], points_[3 * i + 2]); };
+
+  // Pixel boxes of the tetrahedra: the pixel centres their projection may cover, one pixel wider.
+  const std::size_t nt = tets_.size();
+  std::vector<PixelBox> box(nt);
+  tbb::parallel_for(std::size_t(0), nt, [&](std::size_t t) {
+    double x0 = std::numeric_limits<double>::max(), x1 = -x0, y0 = x0, y1 = -x0;
+    bool all_in_front = true;
+    for (int k = 0; k < 4; ++k) {
+      double x, y;
+      if (!rays.project(P(tets_[t][k]), x, y)) {
+        all_in_front = false;
+        break;
+      }
+      x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
+    }
+    if (!all_in_front) {  // crosses the eye plane: any pixel may see it
+      box[t] = {0, width - 1, 0, height - 1};
+      return;
+    }
+    auto lo = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - 0.5) - 1.0, 0.0, double(n))); };
+    auto hi = [](double v, int n) { return static_cast<int>(std::clamp(std::floor(v - 0.5) + 1.0, -1.0, double(n - 1))); };
+    box[t] = {lo(x0, width), hi(x1, width), lo(y0, height), hi(y1, height)};
+  });
+
+  // Tetrahedra binned by image tile (counting sort).
+  const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
+  std::vector<std::int64_t> start(static_cast<std::size_t>(tiles_x) * tiles_y + 1, 0);
+  auto for_tiles = [&](const PixelBox& b, auto&& f) {
+    if (b.x0 > b.x1 || b.y0 > b.y1) return;
+    for (int ty = b.y0 / kTile; ty <= b.y1 / kTile; ++ty)
+      for (int tx = b.x0 / kTile; tx <= b.x1 / kTile; ++tx) f(static_cast<std::size_t>(ty) * tiles_x + tx);
+  };
+  for (std::size_t t = 0; t < nt; ++t) for_tiles(box[t], [&](std::size_t tile) { ++start[tile + 1]; });
+  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
+  std::vector<std::uint32_t> binned(static_cast<std::size_t>(start.back()));
+  {
+    std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t t = 0; t < nt; ++t)
+      for_tiles(box[t], [&](std::size_t tile) { binned[fill[tile]++] = static_cast<std::uint32_t>(t); });
+  }
+
+  tbb::enumerable_thread_specific<std::vector<std::vector<RaySegment>>> lists(
+      [] { return std::vector<std::vector<RaySegment>>(kTile * kTile); });
+  std::atomic<int> done{0};
+  const int n_tiles = tiles_x * tiles_y;
+  tbb::parallel_for(0, n_tiles, [&](int tile) {
+    auto& pixel_lists = lists.local();
+    for (auto& l : pixel_lists) l.clear();
+    const int tx0 = (tile % tiles_x) * kTile, ty0 = (tile / tiles_x) * kTile;
+    for (std::int64_t b = start[tile]; b < start[tile + 1]; ++b) {
+      const std::uint32_t t = binned[b];
+      const Tet& tet = tets_[t];
+      TetPlanes tp;
+      glm::dvec3 p[4];
+      for (int k = 0; k < 4; ++k) p[k] = P(tet[k]), tp.s[k] = scalar_[tet[k]];
+      for (int k = 0; k < 4; ++k) {
+        const glm::dvec3 &a = p[kFace[k][0]], &bb = p[kFace[k][1]], &c = p[kFace[k][2]];
+        tp.n[k] = glm::cross(bb - a, c - a);
+        tp.d[k] = glm::dot(tp.n[k], a);
+      }
+      tp.volume6 = tet_volume6(p[0], p[1], p[2], p[3]);
+      const PixelBox& bx = box[t];
+      for (int j = std::max(bx.y0, ty0); j <= std::min(bx.y1, ty0 + kTile - 1); ++j)
+        for (int i = std::max(bx.x0, tx0); i <= std::min(bx.x1, tx0 + kTile - 1); ++i) {
+          const Ray r = rays.ray(i + 0.5, j + 0.5);
+          double t0, t1;
+          if (!tp.clip(r, t0, t1)) continue;
+          pixel_lists[(j - ty0) * kTile + (i - tx0)].push_back(
+              {t0, t1, tp.scalar_at(r.origin + t0 * r.dir), tp.scalar_at(r.origin + t1 * r.dir), parent_[t]});
+        }
+    }
+    for (int j = ty0; j < std::min(ty0 + kTile, height); ++j)
+      for (int i = tx0; i < std::min(tx0 + kTile, width); ++i) {
+        auto& l = pixel_lists[(j - ty0) * kTile + (i - tx0)];
+        std::sort(l.begin(), l.end(), [](const RaySegment& a, const RaySegment& b) {
+          return a.t0 < b.t0 || (a.t0 == b.t0 && a.t1 < b.t1);
+        });
+        visit(i, j, l.data(), l.size());
+      }
+    if (progress) progress(double(++done) / n_tiles);
+  });
+}
+
+}  // namespace cellproj

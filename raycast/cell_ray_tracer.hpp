@@ -1,0 +1,45 @@
+#pragma once
+// Exact traversal of the rays through pixel centres: for every pixel, the segments of the ray in
+// each cell, front to back. Cells other than tetrahedra are traversed through their canonical
+// tetrahedralization (grid/tetrahedralize.hpp), inside which the field is linear.
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+#include "grid/mesh.hpp"
+#include "grid/tetrahedralize.hpp"
+#include "view/camera.hpp"
+
+namespace cellproj {
+
+struct RaySegment {
+  double t0, t1;      // world distance along the ray (from the eye, or the eye plane if orthographic)
+  double s0, s1;      // the scalar at the segment's front and back ends
+  std::int64_t cell;  // the mesh cell it crosses
+};
+
+class CellRayTracer {
+ public:
+  // Copies the points (recentred on the bounding box, so huge offsets lose no precision) and the
+  // scalar; drops zero-volume tetrahedra and orients the rest positively.
+  explicit CellRayTracer(const MeshView& mesh);
+
+  // Calls visit(i, j, segments, n) for every pixel with the segments sorted front to back. Pixels
+  // are visited concurrently from the calling task arena's threads, each pixel once.
+  using Visitor = std::function<void(int i, int j, const RaySegment* segments, std::size_t n)>;
+  void trace(const Camera& camera, int width, int height, const Visitor& visit,
+             const std::function<void(double done)>& progress = {}) const;
+
+  std::int64_t tetrahedra() const { return static_cast<std::int64_t>(tets_.size()); }
+  std::int64_t dropped_degenerate() const { return dropped_; }
+
+ private:
+  std::vector<double> points_;       // recentred x y z
+  std::vector<double> scalar_;
+  std::vector<Tet> tets_;            // positively oriented
+  std::vector<std::int64_t> parent_; // the mesh cell of each tetrahedron
+  glm::dvec3 centre_{0.0};
+  std::int64_t dropped_ = 0;
+};
+
+}  // namespace cellproj

@@ -1,0 +1,132 @@
+// cellproj info MESH
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <map>
+
+#include <nlohmann/json.hpp>
+
+#include "grid/read_mesh.hpp"
+#include "grid/topology.hpp"
+#include "tools/commands.hpp"
+#include "tools/scene_setup.hpp"
+
+namespace cellproj {
+namespace {
+
+struct InfoArgs {
+  std::string mesh;
+  ReadOptions reader;
+  bool json = false;
+};
+
+nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
+  const Mesh& m = loaded.mesh;
+  const MeshView view = m.view();
+  const auto t0 = std::chrono::steady_clock::now();
+  const FaceTopology topo = build_topology(view);
+  const double seconds_topology = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const HullReport hull = boundary_convexity(view, topo);
+
+  std::map<std::string, std::int64_t> by_type = {{"tetra", 0}, {"hexahedron", 0}, {"wedge", 0}, {"pyramid", 0}};
+  for (auto t : m.types) ++by_type[cell_name(static_cast<CellType>(t))];
+  const auto [lo, hi] = bounds(m);
+  nlohmann::json fields = nlohmann::json::object(), constant = nlohmann::json::array(), nonfinite = nlohmann::json::object();
+  for (const auto& f : m.fields) {
+    double fmin = std::numeric_limits<double>::infinity(), fmax = -fmin;
+    std::int64_t bad = 0;
+    for (double v : f.values) {
+      if (!std::isfinite(v)) { ++bad; continue; }
+      fmin = std::min(fmin, v);
+      fmax = std::max(fmax, v);
+    }
+    fields[f.name] = bad == static_cast<std::int64_t>(f.values.size()) ? nlohmann::json::array({nullptr, nullptr})
+                                                                        : nlohmann::json::array({fmin, fmax});
+    if (bad) nonfinite[f.name] = bad;
+    if (fmin == fmax) constant.push_back(f.name);
+  }
+  nlohmann::json origins = nlohmann::json::object();
+  for (const auto& f : m.fields) origins[f.name] = f.origin;
+  return {{"file", m.source},
+          {"points", m.n_points()},
+          {"cells", m.n_cells()},
+          {"cells_by_type", by_type},
+          {"bounds", {lo.x, hi.x, lo.y, hi.y, lo.z, hi.z}},
+          {"fields", fields},
+          {"field_origins", origins},
+          {"constant_fields", constant},
+          {"nonfinite_values", nonfinite},
+          {"boundary_faces", static_cast<std::int64_t>(topo.boundary.size())},
+          {"shared_faces", topo.shared_faces},
+          {"nonmanifold_faces", topo.nonmanifold_faces},
+          {"convex", hull.convex},
+          {"boundary_faces_off_hull", hull.boundary_faces_off_hull},
+          {"boundary_area_off_hull", hull.off_hull_area_share},
+          {"nonplanar_faces", topo.nonplanar_faces},
+          {"max_nonplanarity", topo.max_nonplanarity},
+          {"max_relative_nonplanarity", topo.max_relative_nonplanarity},
+          {"degenerate_cells", loaded.report.degenerate_cells},
+          {"inverted_cells", loaded.report.inverted_cells},
+          {"duplicate_points", loaded.report.duplicate_points},
+          {"notes", m.notes},
+          {"read_seconds", seconds_read},
+          {"topology_seconds", seconds_topology}};
+}
+
+void print_text(const nlohmann::json& j) {
+  std::printf("%s\n", j["file"].get<std::string>().c_str());
+  std::printf("  points %lld, cells %lld:", j["points"].get<long long>(), j["cells"].get<long long>());
+  for (const auto& [k, v] : j["cells_by_type"].items())
+    if (v.get<long long>()) std::printf(" %s %lld", k.c_str(), v.get<long long>());
+  const auto& b = j["bounds"];
+  std::printf("\n  bounds x [%g, %g]  y [%g, %g]  z [%g, %g]\n", b[0].get<double>(), b[1].get<double>(),
+              b[2].get<double>(), b[3].get<double>(), b[4].get<double>(), b[5].get<double>());
+  std::printf("  fields:%s\n", j["fields"].empty() ? " (none)" : "");
+  for (const auto& [k, v] : j["fields"].items())
+    std::printf("    %-28s [%s, %s]  (%s)\n", k.c_str(), v[0].dump().c_str(), v[1].dump().c_str(),
+                j["field_origins"][k].get<std::string>().c_str());
+  std::printf("  boundary faces %lld, shared faces %lld; boundary %s", j["boundary_faces"].get<long long>(),
+              j["shared_faces"].get<long long>(), j["convex"].get<bool>() ? "convex" : "NOT convex");
+  if (!j["convex"].get<bool>())
+    std::printf(" (%lld boundary faces, %.1f%% of the boundary area, off the convex hull)",
+                j["boundary_faces_off_hull"].get<long long>(), 100 * j["boundary_area_off_hull"].get<double>());
+  std::printf("\n  non-planar quadrilateral faces %lld (largest warp %g, %.3g of the face's size)\n",
+              j["nonplanar_faces"].get<long long>(), j["max_nonplanarity"].get<double>(),
+              j["max_relative_nonplanarity"].get<double>());
+  std::printf("  degenerate cells %lld, inverted cells %lld (re-oriented), duplicate points %lld, non-manifold faces %lld\n",
+              j["degenerate_cells"].get<long long>(), j["inverted_cells"].get<long long>(),
+              j["duplicate_points"].get<long long>(), j["nonmanifold_faces"].get<long long>());
+  for (const auto& c : j["constant_fields"]) std::printf("  note: field '%s' is constant\n", c.get<std::string>().c_str());
+  for (const auto& [k, v] : j["nonfinite_values"].items())
+    std::printf("  WARNING: field '%s' has %lld non-finite values: it cannot be rendered\n", k.c_str(), v.get<long long>());
+  for (const auto& n : j["notes"]) std::printf("  note: %s\n", n.get<std::string>().c_str());
+}
+
+int run_info(const InfoArgs& a) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const LoadedMesh loaded = load_mesh(a.mesh, a.reader);
+  const double read = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  const nlohmann::json j = describe(loaded, read);
+  if (a.json) std::printf("%s\n", j.dump().c_str());
+  else print_text(j);
+  return kExitOk;
+}
+
+}  // namespace
+
+Action add_info(CLI::App& app) {
+  auto args = std::make_shared<InfoArgs>();
+  CLI::App* cmd = app.add_subcommand("info", "Describe a mesh: cells, bounds, fields, boundary, defects");
+  cmd->add_option("mesh", args->mesh, "Mesh file (.vtu .pvtu .vts .vtk .exo/.ex2/.e .cgns[.gz] PLOT3D .node/.ele .off .xyzs .vtp)")
+      ->required();
+  cmd->add_option("--format", args->reader.format, "Override the format chosen by extension: vtk-xml, vtk-legacy, "
+                                                   "exodus, cgns, plot3d, tetgen, off, points");
+  cmd->add_option("--q", args->reader.q_file, "PLOT3D solution (q) file");
+  cmd->add_option("--zone", args->reader.zone, "CGNS: read only this zone");
+  cmd->add_option("--time-step", args->reader.time_step, "Exodus II: time step of the fields (from 0)")->check(CLI::NonNegativeNumber);
+  cmd->add_flag("--json", args->json, "Print one JSON object instead of text");
+  return [args] { return run_info(*args); };
+}
+
+}  // namespace cellproj

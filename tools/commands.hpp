@@ -1,0 +1,21 @@
+#pragma once
+// The cellproj subcommands. Each registers its options on the CLI11 app and returns the action to
+// run once the command line is parsed; the action returns the exit code.
+#include <functional>
+
+#include <CLI/CLI.hpp>
+
+namespace cellproj {
+
+// Exit codes (docs/cli.md).
+constexpr int kExitOk = 0;
+constexpr int kExitInput = 1;     // bad input: mesh, scene, transfer function, camera, field
+constexpr int kExitUsage = 2;     // bad command line
+constexpr int kExitInternal = 3;  // a bug or an exhausted resource
+
+using Action = std::function<int()>;
+Action add_render(CLI::App& app);
+Action add_info(CLI::App& app);
+Action add_generate(CLI::App& app);
+
+}  // namespace cellproj

@@ -1,0 +1,39 @@
+// cellproj: direct volume rendering of unstructured and curvilinear grids.
+#include <cstdio>
+#include <new>
+
+#include <nlohmann/json.hpp>
+
+#include "grid/error.hpp"
+#include "tools/commands.hpp"
+
+int main(int argc, char** argv) {
+  using namespace cellproj;
+  CLI::App app{"cellproj: direct volume rendering of unstructured and curvilinear grids by cell projection"};
+  app.require_subcommand(1);
+  app.set_version_flag("--version", "cellproj 0.1.0");
+  const Action render = add_render(app), info = add_info(app), generate = add_generate(app);
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::ParseError& e) {
+    const int code = app.exit(e);
+    return code == 0 ? kExitOk : kExitUsage;
+  }
+  try {
+    if (app.got_subcommand("render")) return render();
+    if (app.got_subcommand("info")) return info();
+    return generate();
+  } catch (const InputError& e) {
+    std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    return kExitInput;
+  } catch (const nlohmann::json::exception& e) {
+    std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    return kExitInput;
+  } catch (const std::bad_alloc&) {
+    std::fprintf(stderr, "cellproj: error: out of memory\n");
+    return kExitInternal;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cellproj: internal error: %s\n", e.what());
+    return kExitInternal;
+  }
+}

@@ -1,0 +1,106 @@
+#include "tools/scene.hpp"
+
+#include <filesystem>
+#include <fstream>
+
+#include "grid/error.hpp"
+
+namespace fs = std::filesystem;
+
+namespace cellproj {
+namespace {
+
+void only_keys(const nlohmann::json& j, const std::string& at, std::initializer_list<const char*> known) {
+  for (const auto& [k, v] : j.items()) {
+    bool ok = false;
+    std::string list;
+    for (const char* name : known) {
+      ok |= k == name;
+      list += (list.empty() ? "" : ", ") + std::string(name);
+    }
+    if (!ok) throw InputError(at + ": unknown key '" + k + "' (known: " + list + ")");
+  }
+}
+
+std::string text(const nlohmann::json& v, const std::string& at) {
+  if (!v.is_string()) throw InputError(at + ": expected a string, got " + v.dump());
+  return v.get<std::string>();
+}
+
+int positive_int(const nlohmann::json& v, const std::string& at, int max, int min = 1) {
+  if (!v.is_number_integer() || v.get<long long>() < min || v.get<long long>() > max)
+    throw InputError(at + ": expected an integer in [" + std::to_string(min) + ", " + std::to_string(max) + "], got " +
+                     v.dump());
+  return v.get<int>();
+}
+
+}  // namespace
+
+void parse_size(const std::string& t, int& w, int& h) {
+  const auto x = t.find('x');
+  try {
+    std::size_t a = 0, b = 0;
+    if (x == std::string::npos) throw std::invalid_argument("no x");
+    w = std::stoi(t.substr(0, x), &a);
+    h = std::stoi(t.substr(x + 1), &b);
+    if (a != x || b != t.size() - x - 1 || w < 1 || h < 1 || w > 16384 || h > 16384) throw std::invalid_argument("range");
+  } catch (const std::exception&) {
+    throw InputError("--size: expected WxH with W and H in [1, 16384], e.g. 512x512; got '" + t + "'");
+  }
+}
+
+Scene load_scene(const std::string& path) {
+  std::ifstream in(path);
+  if (!in) throw InputError(where(path, "cannot open scene file"));
+  nlohmann::json j;
+  try {
+    j = nlohmann::json::parse(in);
+  } catch (const nlohmann::json::parse_error& e) {
+    throw InputError(where(path, std::string("not valid JSON: ") + e.what()));
+  }
+  if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
+  only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image"});
+  Scene s;
+  s.source = path;
+  s.base_dir = fs::path(path).parent_path().string();
+  if (!j.contains("mesh")) throw InputError(where(path, "missing \"mesh\" (the mesh file)"));
+  fs::path mesh = text(j["mesh"], path + ": mesh");
+  s.mesh = mesh.is_relative() ? (fs::path(s.base_dir) / mesh).lexically_normal().string() : mesh.string();
+  if (j.contains("reader")) {
+    const auto& r = j["reader"];
+    const std::string at = path + ": reader";
+    if (!r.is_object()) throw InputError(at + ": expected an object");
+    only_keys(r, at, {"format", "q_file", "zone", "time_step"});
+    if (r.contains("format")) s.reader.format = text(r["format"], at + ".format");
+    if (r.contains("q_file")) {
+      fs::path q = text(r["q_file"], at + ".q_file");
+      s.reader.q_file = q.is_relative() ? (fs::path(s.base_dir) / q).string() : q.string();
+    }
+    if (r.contains("zone")) s.reader.zone = text(r["zone"], at + ".zone");
+    if (r.contains("time_step")) s.reader.time_step = positive_int(r["time_step"], at + ".time_step", 1 << 30, 0);
+  }
+  if (j.contains("field")) s.field = text(j["field"], path + ": field");
+  if (!j.contains("transfer_function")) throw InputError(where(path, "missing \"transfer_function\""));
+  s.transfer_function = j["transfer_function"];
+  if (j.contains("camera")) s.camera = camera_from_json(j["camera"], path);
+  if (j.contains("image")) {
+    const auto& im = j["image"];
+    const std::string at = path + ": image";
+    if (!im.is_object()) throw InputError(at + ": expected an object");
+    only_keys(im, at, {"width", "height", "background"});
+    if (im.contains("width")) s.width = positive_int(im["width"], at + ".width", 16384);
+    if (im.contains("height")) s.height = positive_int(im["height"], at + ".height", 16384);
+    if (im.contains("background")) {
+      const auto& b = im["background"];
+      if (!b.is_array() || b.size() != 3) throw InputError(at + ".background: expected [r, g, b], got " + b.dump());
+      for (int k = 0; k < 3; ++k) {
+        if (!b[k].is_number() || b[k].get<double>() < 0 || b[k].get<double>() > 1)
+          throw InputError(at + ".background: components must be numbers in [0, 1], got " + b.dump());
+        s.background[k] = b[k].get<double>();
+      }
+    }
+  }
+  return s;
+}
+
+}  // namespace cellproj

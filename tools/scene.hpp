@@ -1,0 +1,32 @@
+#pragma once
+// A scene file (docs/scene.md): which mesh and field, the transfer function, the camera, the image.
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json.hpp>
+
+#include "grid/read_mesh.hpp"
+#include "view/camera.hpp"
+
+namespace cellproj {
+
+struct Scene {
+  std::string source;           // the scene file, for messages
+  std::string mesh;             // resolved against the scene file's folder
+  ReadOptions reader;
+  std::string field;            // empty: the mesh's only field
+  nlohmann::json transfer_function;  // parsed once the field's range is known
+  std::optional<Camera> camera; // absent: frame the mesh
+  int width = 512, height = 512;
+  glm::dvec3 background{0.0};
+  std::string base_dir;         // the scene file's folder
+};
+
+// Throws InputError naming the file and the key for unknown keys, wrong types and missing keys.
+Scene load_scene(const std::string& path);
+
+// "WxH" -> width, height; throws InputError.
+void parse_size(const std::string& text, int& width, int& height);
+
+}  // namespace cellproj

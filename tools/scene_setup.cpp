@@ -1,0 +1,55 @@
+#include "tools/scene_setup.hpp"
+
+#include <algorithm>
+
+#include <glm/common.hpp>
+#include <limits>
+
+#include "grid/error.hpp"
+#include "grid/validate.hpp"
+
+namespace cellproj {
+
+std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& m) {
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (std::int64_t p = 0; p < m.n_points(); ++p) {
+    const glm::dvec3 x(m.points[3 * p], m.points[3 * p + 1], m.points[3 * p + 2]);
+    lo = glm::min(lo, x);
+    hi = glm::max(hi, x);
+  }
+  return {lo, hi};
+}
+
+namespace {
+
+std::string pick_field(const Scene& s, const Mesh& m) {
+  if (!s.field.empty()) return m.field(s.field).name;  // throws, listing the fields
+  if (m.fields.size() == 1) return m.fields.front().name;
+  std::string list;
+  for (const auto& f : m.fields) list += (list.empty() ? "" : ", ") + f.name;
+  throw InputError(where(s.source, m.fields.empty() ? "the mesh " + s.mesh + " has no point fields to render"
+                                                    : "give \"field\": the mesh has several: " + list));
+}
+
+}  // namespace
+
+PreparedScene prepare_scene(const Scene& s) {
+  LoadedMesh loaded = load_mesh(s.mesh, s.reader);
+  const std::string field = pick_field(s, loaded.mesh);
+  const PointField& f = loaded.mesh.field(field);
+  check_finite(s.mesh, f);
+  const auto [lo, hi] = std::minmax_element(f.values.begin(), f.values.end());
+  // A colour preset is stretched over the field's range unless the scene gives one.
+  TransferFunction tf = transfer_function_from_json(s.transfer_function, s.source, s.base_dir, *lo, *hi);
+  PreparedScene p{std::move(loaded), field, *lo, *hi, std::move(tf), Camera{}, {}};
+  const auto [blo, bhi] = bounds(p.loaded.mesh);
+  p.camera = s.camera ? *s.camera
+                      : frame_box(blo, bhi, Projection::Orthographic, {0.6, 0.5, 1.0}, {0, 1, 0},
+                                  double(s.width) / s.height);
+  p.warnings = p.loaded.report.warnings(s.mesh);
+  for (const auto& n : p.loaded.mesh.notes) p.warnings.push_back(s.mesh + ": " + n);
+  if (p.field_min == p.field_max) p.warnings.push_back(s.mesh + ": field '" + field + "' is constant (" + std::to_string(p.field_min) + ")");
+  return p;
+}
+
+}  // namespace cellproj

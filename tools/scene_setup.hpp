@@ -1,0 +1,28 @@
+#pragma once
+// A scene made ready to render: the mesh loaded and validated, the field picked and checked, the
+// transfer function parsed against the field's range, the camera chosen.
+#include <string>
+#include <vector>
+
+#include "grid/read_mesh.hpp"
+#include "optics/transfer_function.hpp"
+#include "tools/scene.hpp"
+#include "view/camera.hpp"
+
+namespace cellproj {
+
+struct PreparedScene {
+  LoadedMesh loaded;
+  std::string field;
+  double field_min = 0, field_max = 0;
+  TransferFunction tf;
+  Camera camera;
+  std::vector<std::string> warnings;  // mesh defects and what reading did, for stderr
+};
+
+PreparedScene prepare_scene(const Scene& scene);
+
+// The box of the points, as {lo, hi}.
+std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& mesh);
+
+}  // namespace cellproj

@@ -1,0 +1,123 @@
+#include "view/camera.hpp"
+
+#include <cmath>
+
+#include <glm/geometric.hpp>
+#include <nlohmann/json.hpp>
+
+#include "grid/error.hpp"
+
+namespace cellproj {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
+
+glm::dvec3 vec3(const nlohmann::json& j, const std::string& at) {
+  if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
+    throw InputError(at + ": expected [x, y, z], got " + j.dump());
+  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
+}
+
+}  // namespace
+
+void check_camera(const Camera& c, const std::string& source) {
+  const std::string at = source + ": camera";
+  if (!finite(c.eye) || !finite(c.target) || !finite(c.up)) throw InputError(at + ": eye, target and up must be finite");
+  const glm::dvec3 view = c.target - c.eye;
+  if (glm::length(view) == 0.0) throw InputError(at + ": eye and target are the same point");
+  if (glm::length(c.up) == 0.0) throw InputError(at + ": up is the zero vector");
+  if (glm::length(glm::cross(glm::normalize(view), glm::normalize(c.up))) < 1e-9)
+    throw InputError(at + ": up is parallel to the view direction (target - eye)");
+  if (c.projection == Projection::Orthographic && !(c.height > 0.0 && std::isfinite(c.height)))
+    throw InputError(at + ": height must be positive for an orthographic camera, got " + std::to_string(c.height));
+  if (c.projection == Projection::Perspective && !(c.fov_y > 0.0 && c.fov_y < 180.0))
+    throw InputError(at + ": fov_y must be in (0, 180) degrees, got " + std::to_string(c.fov_y));
+}
+
+Camera orbit(const Camera& c, double degrees) {
+  const glm::dvec3 axis = glm::normalize(c.up);
+  const double a = degrees * kPi / 180.0;
+  const glm::dvec3 v = c.eye - c.target;  // Rodrigues' rotation about the up axis
+  const glm::dvec3 r = v * std::cos(a) + glm::cross(axis, v) * std::sin(a) + axis * glm::dot(axis, v) * (1 - std::cos(a));
+  Camera out = c;
+  out.eye = c.target + r;
+  return out;
+}
+
+Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, Projection projection, const glm::dvec3& from,
+                 const glm::dvec3& up, double aspect) {
+  Camera c;
+  c.projection = projection;
+  c.target = 0.5 * (lo + hi);
+  c.up = up;
+  const double radius = 0.5 * glm::length(hi - lo);
+  const double fit = radius * (aspect < 1.0 ? 1.0 / aspect : 1.0) * 1.05;
+  c.height = 2.0 * fit;
+  c.fov_y = 30.0;
+  const double distance = projection == Projection::Perspective ? fit / std::sin(c.fov_y * kPi / 360.0) : 3.0 * radius;
+  c.eye = c.target + glm::normalize(from) * distance;
+  return c;
+}
+
+Camera camera_from_json(const nlohmann::json& j, const std::string& source) {
+  const std::string at = source + ": camera";
+  if (!j.is_object()) throw InputError(at + ": expected an object");
+  Camera c;
+  for (const auto& [k, v] : j.items()) {
+    if (k == "projection") {
+      const std::string p = v.is_string() ? v.get<std::string>() : "";
+      if (p == "orthographic") c.projection = Projection::Orthographic;
+      else if (p == "perspective") c.projection = Projection::Perspective;
+      else throw InputError(at + ".projection: expected \"orthographic\" or \"perspective\", got " + v.dump());
+    } else if (k == "eye") c.eye = vec3(v, at + ".eye");
+    else if (k == "target") c.target = vec3(v, at + ".target");
+    else if (k == "up") c.up = vec3(v, at + ".up");
+    else if (k == "height" || k == "fov_y") {
+      if (!v.is_number()) throw InputError(at + "." + k + ": expected a number, got " + v.dump());
+      (k == "height" ? c.height : c.fov_y) = v.get<double>();
+    } else {
+      throw InputError(at + ": unknown key '" + k + "' (known: projection, eye, target, up, height, fov_y)");
+    }
+  }
+  check_camera(c, source);
+  return c;
+}
+
+PixelRays::PixelRays(const Camera& c, int width, int height) : camera_(c), width_(width), height_(height) {
+  check_camera(c, "view");
+  if (width < 1 || height < 1) throw InputError("image size must be at least 1x1");
+  forward_ = glm::normalize(c.target - c.eye);
+  right_ = glm::normalize(glm::cross(forward_, c.up));
+  up_ = glm::cross(right_, forward_);
+  const double aspect = double(width) / height;
+  if (c.projection == Projection::Orthographic) {
+    half_h_ = 0.5 * c.height;
+  } else {
+    half_h_ = std::tan(0.5 * c.fov_y * kPi / 180.0);
+  }
+  half_w_ = half_h_ * aspect;
+}
+
+Ray PixelRays::ray(double x, double y) const {
+  const double u = (2.0 * x / width_ - 1.0) * half_w_, v = (1.0 - 2.0 * y / height_) * half_h_;
+  if (camera_.projection == Projection::Orthographic) return {camera_.eye + u * right_ + v * up_, forward_};
+  return {camera_.eye, glm::normalize(forward_ + u * right_ + v * up_)};
+}
+
+bool PixelRays::project(const glm::dvec3& p, double& x, double& y) const {
+  const glm::dvec3 d = p - camera_.eye;
+  double u = glm::dot(d, right_), v = glm::dot(d, up_);
+  if (camera_.projection == Projection::Perspective) {
+    const double z = glm::dot(d, forward_);
+    if (!(z > 0.0)) return false;
+    u /= z;
+    v /= z;
+  }
+  x = (u / half_w_ + 1.0) * 0.5 * width_;
+  y = (1.0 - v / half_h_) * 0.5 * height_;
+  return true;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,58 @@
+#pragma once
+// The camera and the rays through pixel centres. Pixel (i, j) is column i from the left and row j
+// from the top; its ray passes through (i + 0.5, j + 0.5).
+#include <string>
+
+#include <glm/vec3.hpp>
+#include <nlohmann/json_fwd.hpp>
+
+namespace cellproj {
+
+enum class Projection { Orthographic, Perspective };
+
+struct Camera {
+  Projection projection = Projection::Orthographic;
+  glm::dvec3 eye{0, 0, 5}, target{0, 0, 0}, up{0, 1, 0};
+  double height = 2.0;  // orthographic: world-space height of the view
+  double fov_y = 30.0;  // perspective: full vertical angle in degrees
+};
+
+// Throws InputError (prefixed with `source`) for eye == target, an up vector parallel to the view
+// direction or zero, a non-positive height, a field of view outside (0, 180), non-finite values.
+void check_camera(const Camera& camera, const std::string& source);
+
+// The camera turned by `degrees` about the up axis through the target (for --frames).
+Camera orbit(const Camera& camera, double degrees);
+
+// A camera looking at the box [lo, hi] from direction `from` (towards the eye), framing it whole.
+Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, Projection projection, const glm::dvec3& from,
+                 const glm::dvec3& up, double aspect);
+
+Camera camera_from_json(const nlohmann::json& j, const std::string& source);
+
+struct Ray {
+  glm::dvec3 origin, dir;  // dir has unit length; t along it is world distance from the origin
+};
+
+// A camera fixed to an image size: the rays of its pixels and the projection of points onto them.
+// In perspective rays start at the eye; in orthographic projection they start on the plane through
+// the eye perpendicular to the view direction.
+class PixelRays {
+ public:
+  PixelRays(const Camera& camera, int width, int height);
+  Ray ray(double x, double y) const;  // (x, y) in pixel units: the centre of pixel (i, j) is (i + .5, j + .5)
+  // Image position (x, y) of world point p; false when p is not in front of the eye (perspective).
+  bool project(const glm::dvec3& p, double& x, double& y) const;
+  int width() const { return width_; }
+  int height() const { return height_; }
+  const Camera& camera() const { return camera_; }
+  const glm::dvec3& forward() const { return forward_; }
+
+ private:
+  Camera camera_;
+  int width_, height_;
+  glm::dvec3 forward_, right_, up_;
+  double half_w_, half_h_;  // orthographic: world half extents; perspective: tangents of the half angles
+};
+
+}  // namespace cellproj

@@ -1,0 +1,101 @@
+#include "view/image.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <memory>
+
+#include <png.h>
+
+#include "grid/error.hpp"
+
+namespace cellproj {
+
+void write_png(const Image& img, const glm::dvec3& bg, const std::string& path) {
+  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "wb"), &std::fclose);
+  if (!f) throw InputError(where(path, "cannot open for writing"));
+  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  png_infop info = png ? png_create_info_struct(png) : nullptr;
+  if (!info) {
+    png_destroy_write_struct(&png, nullptr);
+    throw InputError(where(path, "libpng could not start"));
+  }
+  std::vector<png_byte> row(static_cast<std::size_t>(img.width) * 3);
+  if (setjmp(png_jmpbuf(png))) {
+    png_destroy_write_struct(&png, &info);
+    throw InputError(where(path, "libpng failed while writing"));
+  }
+  png_init_io(png, f.get());
+  png_set_IHDR(png, info, img.width, img.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
+               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(png, info);
+  for (int j = 0; j < img.height; ++j) {
+    for (int i = 0; i < img.width; ++i) {
+      const float* p = img.pixel(i, j);
+      for (int k = 0; k < 3; ++k) {
+        const double v = std::clamp(p[k] + (1.0 - p[3]) * bg[k], 0.0, 1.0);
+        row[3 * i + k] = static_cast<png_byte>(std::lround(v * 255.0));
+      }
+    }
+    png_write_row(png, row.data());
+  }
+  png_write_end(png, nullptr);
+  png_destroy_write_struct(&png, &info);
+}
+
+void write_npy(const Image& img, const std::string& path) {
+  std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + std::to_string(img.height) + ", " +
+                       std::to_string(img.width) + ", 4), }";
+  const std::size_t total = 10 + header.size() + 1;
+  header.append((64 - total % 64) % 64, ' ');
+  header.push_back('\n');
+  std::ofstream out(path, std::ios::binary);
+  if (!out) throw InputError(where(path, "cannot open for writing"));
+  const unsigned char magic[8] = {0x93, 'N', 'U', 'M', 'P', 'Y', 1, 0};
+  out.write(reinterpret_cast<const char*>(magic), 8);
+  const std::uint16_t len = static_cast<std::uint16_t>(header.size());
+  const unsigned char len_le[2] = {static_cast<unsigned char>(len & 0xff), static_cast<unsigned char>(len >> 8)};
+  out.write(reinterpret_cast<const char*>(len_le), 2);
+  out << header;
+  out.write(reinterpret_cast<const char*>(img.rgba.data()), static_cast<std::streamsize>(img.rgba.size() * sizeof(float)));
+  if (!out) throw InputError(where(path, "write failed"));
+}
+
+Image read_npy(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw InputError(where(path, "cannot open"));
+  char magic[10];
+  if (!in.read(magic, 10) || std::memcmp(magic, "\x93NUMPY", 6) != 0) throw InputError(where(path, "not a .npy file"));
+  const std::size_t len = static_cast<unsigned char>(magic[8]) | (static_cast<unsigned char>(magic[9]) << 8);
+  std::string header(len, '\0');
+  in.read(header.data(), static_cast<std::streamsize>(len));
+  if (header.find("'<f4'") == std::string::npos || header.find("False") == std::string::npos)
+    throw InputError(where(path, "expected little-endian float32 in C order"));
+  int h = 0, w = 0, c = 0;
+  const auto at = header.find("'shape': (");
+  if (at == std::string::npos || std::sscanf(header.c_str() + at + 10, "%d, %d, %d", &h, &w, &c) != 3 || c != 4)
+    throw InputError(where(path, "expected shape (height, width, 4)"));
+  Image img(w, h);
+  if (!in.read(reinterpret_cast<char*>(img.rgba.data()), static_cast<std::streamsize>(img.rgba.size() * sizeof(float))))
+    throw InputError(where(path, "truncated image data"));
+  return img;
+}
+
+ImageDifference compare(const Image& a, const Image& b) {
+  if (a.width != b.width || a.height != b.height)
+    throw InputError("cannot compare images of different sizes: " + std::to_string(a.width) + "x" +
+                     std::to_string(a.height) + " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
+  ImageDifference d;
+  double sum = 0.0;
+  for (std::size_t i = 0; i < a.rgba.size(); ++i) {
+    const double e = std::abs(double(a.rgba[i]) - double(b.rgba[i]));
+    sum += e * e;
+    d.max_abs = std::max(d.max_abs, e);
+  }
+  d.rmse = a.rgba.empty() ? 0.0 : std::sqrt(sum / a.rgba.size());
+  return d;
+}
+
+}  // namespace cellproj

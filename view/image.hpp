@@ -1,0 +1,33 @@
+#pragma once
+// A float RGBA image (premultiplied, without background) and its output: PNG for people, .npy for
+// comparisons. Row 0 is the top row.
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+namespace cellproj {
+
+struct Image {
+  int width = 0, height = 0;
+  std::vector<float> rgba;  // 4 floats per pixel, row-major from the top
+
+  Image() = default;
+  Image(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0.0f) {}
+  float* pixel(int i, int j) { return rgba.data() + (static_cast<std::size_t>(j) * width + i) * 4; }
+  const float* pixel(int i, int j) const { return rgba.data() + (static_cast<std::size_t>(j) * width + i) * 4; }
+};
+
+// 8-bit RGB: colour + (1 - alpha) * background, clamped to [0, 1]. Throws InputError if unwritable.
+void write_png(const Image& image, const glm::dvec3& background, const std::string& path);
+// float32, shape (height, width, 4), little-endian, C order.
+void write_npy(const Image& image, const std::string& path);
+Image read_npy(const std::string& path);
+
+struct ImageDifference {
+  double rmse = 0.0;     // over all channels of all pixels
+  double max_abs = 0.0;  // largest channel difference
+};
+ImageDifference compare(const Image& a, const Image& b);
+
+}  // namespace cellproj
