@@ -1,1 +1,13 @@
 #pragma once
+// cellproj's public API in one include: the mesh model and readers, optics, camera and images, and
+// the renderers. Link cellproj::raycast (it brings the earlier stages).
+#include "grid/error.hpp"
+#include "grid/mesh.hpp"
+#include "grid/read_mesh.hpp"
+#include "grid/topology.hpp"
+#include "grid/validate.hpp"
+#include "optics/segment_integral.hpp"
+#include "optics/transfer_function.hpp"
+#include "raycast/reference_renderer.hpp"
+#include "view/camera.hpp"
+#include "view/image.hpp"

@@ -1,6 +1,8 @@
 // Readers that go through VTK: XML and legacy VTK files, Exodus II, CGNS and PLOT3D.
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <sstream>
 #include <map>
 #include <unordered_map>
 
@@ -19,12 +21,16 @@
 #include <vtkMultiBlockPLOT3DReader.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
+#include <vtkCellArray.h>
 #include <vtkPointData.h>
+#include <vtkPointSet.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkSmartPointer.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
 #include "grid/error.hpp"
 #include "grid/geometry.hpp"
+#include "grid/netcdf_check.hpp"
 #include "grid/read_mesh.hpp"
 
 namespace fs = std::filesystem;
@@ -150,7 +156,13 @@ std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& me
       }
       ds->GetCellPoints(c, ids);
       std::vector<std::int64_t> v(static_cast<std::size_t>(ids->GetNumberOfIds()));
-      for (std::size_t k = 0; k < v.size(); ++k) v[k] = map.point[ids->GetId(static_cast<vtkIdType>(k))];
+      for (std::size_t k = 0; k < v.size(); ++k) {
+        const vtkIdType id = ids->GetId(static_cast<vtkIdType>(k));
+        if (id < 0 || id >= ds->GetNumberOfPoints())  // VTK's legacy reader lets these through
+          throw InputError("cell " + std::to_string(mesh.n_cells()) + " (" + vtk_type_name(type) + ") refers to point " +
+                           std::to_string(id) + ", out of range [0, " + std::to_string(ds->GetNumberOfPoints()) + ")");
+        v[k] = map.point[id];
+      }
       std::uint8_t stored = static_cast<std::uint8_t>(type);
       if (type == 11 && v.size() == 8) {  // voxel -> hexahedron: VTK's voxel numbers its corners (x, y, z) binary
         std::swap(v[2], v[3]);
@@ -257,8 +269,18 @@ void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>
   }
 }
 
+Mesh assemble_leaves(std::vector<Leaf> leaves, const std::string& path, const std::string& zone);
+
 Mesh assemble(vtkDataObject* data, const std::string& path, const std::string& zone) {
-  std::vector<Leaf> leaves = leaves_of(data);
+  try {
+    return assemble_leaves(leaves_of(data), path, zone);
+  } catch (const InputError& e) {
+    const std::string what = e.what();
+    throw InputError(what.rfind(path, 0) == 0 ? what : where(path, what));
+  }
+}
+
+Mesh assemble_leaves(std::vector<Leaf> leaves, const std::string& path, const std::string& zone) {
   if (!zone.empty()) {
     std::vector<Leaf> picked;
     std::vector<std::string> names;
@@ -279,6 +301,36 @@ Mesh assemble(vtkDataObject* data, const std::string& path, const std::string& z
   assemble_fields(leaves, maps, mesh);
   if (leaves.size() > 1) mesh.notes.push_back("assembled from " + std::to_string(leaves.size()) + " blocks");
   return mesh;
+}
+
+// VTK's legacy reader fills a truncated ASCII array with zeros without a word. The values the
+// returned dataset holds must all be in the file: count the numbers on its data lines.
+void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
+  auto* ds = vtkDataSet::SafeDownCast(obj);
+  if (!ds) return;
+  std::ifstream in(path);
+  std::string line;
+  for (int i = 0; i < 3 && std::getline(in, line); ++i) {}
+  if (line.rfind("ASCII", 0) != 0) return;
+  std::uintmax_t numbers = 0;
+  while (std::getline(in, line)) {
+    const auto first = line.find_first_not_of(" \t\r");
+    if (first == std::string::npos || !(std::isdigit(static_cast<unsigned char>(line[first])) || line[first] == '-' ||
+                                        line[first] == '+' || line[first] == '.'))
+      continue;  // a keyword line
+    std::istringstream words(line);
+    for (std::string w; words >> w;) ++numbers;
+  }
+  std::uintmax_t needed = 0;
+  if (vtkPointSet::SafeDownCast(ds)) needed += 3 * static_cast<std::uintmax_t>(ds->GetNumberOfPoints());
+  if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds); ug && ug->GetCells())
+    needed += static_cast<std::uintmax_t>(ug->GetCells()->GetNumberOfConnectivityIds() + 2 * ug->GetNumberOfCells());
+  for (vtkFieldData* fd : {static_cast<vtkFieldData*>(ds->GetPointData()), static_cast<vtkFieldData*>(ds->GetCellData())})
+    for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
+      if (auto* a = fd->GetAbstractArray(i)) needed += static_cast<std::uintmax_t>(a->GetNumberOfValues());
+  if (numbers < needed)
+    throw InputError(where(path, "truncated: its arrays need " + std::to_string(needed) + " numbers, the file holds " +
+                                     std::to_string(numbers)));
 }
 
 template <class Reader>
@@ -323,10 +375,14 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     r->ReadAllScalarsOn();
     r->ReadAllVectorsOn();
     r->ReadAllFieldsOn();
+    r->Update();
+    messages.throw_if_failed(path);
+    check_legacy_ascii_complete(path, r->GetOutputDataObject(0));
     return run(r.Get(), path, messages);
   }
   if (format == "exodus") {
     auto r = vtkSmartPointer<vtkExodusIIReader>::New();
+    check_netcdf_readable(path);
     if (!r->CanReadFile(path.c_str())) throw InputError(where(path, "not a readable Exodus II file"));
     r->SetFileName(path.c_str());
     r->UpdateInformation();

@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <glm/geometric.hpp>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
@@ -32,20 +33,58 @@ struct TetPlanes {
   double volume6;
   double s[4];
 
+  std::int64_t sorted[4][3];  // face k's vertex ids, increasing
+  bool flipped[4];            // whether that order turns against the outward orientation
+  const double* xyz;
+
   bool clip(const Ray& r, double& t0, double& t1) const {
     t0 = 0.0;
     t1 = std::numeric_limits<double>::infinity();
     for (int k = 0; k < 4; ++k) {
-      const double nd = glm::dot(n[k], r.dir), gap = d[k] - glm::dot(n[k], r.origin);
+      const double nd = glm::dot(n[k], r.dir);
+      if (nd == 0) {  // the ray runs parallel to the face: which side it is on decides it all
+        if (!inside_parallel(k, r.origin)) return false;
+        continue;
+      }
+      const double gap = d[k] - glm::dot(n[k], r.origin);
       if (nd > 0) t1 = std::min(t1, gap / nd);
-      else if (nd < 0) t0 = std::max(t0, gap / nd);
-      else if (gap < 0 || (gap == 0 && !owns_face(n[k]))) return false;
+      else t0 = std::max(t0, gap / nd);
     }
     return t1 > t0;
+  }
+
+  // Exact side test (CGAL): every face through one edge is asked about the same point exactly, so
+  // a ray along an edge lies in exactly one tetrahedron of the fan around it. A ray in the face's
+  // plane goes to the side a fixed symbolic perturbation of the origin falls on (owns_face).
+  bool inside_parallel(int k, const glm::dvec3& o) const {
+    using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+    auto P = [&](std::int64_t i) { return K::Point_3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); };
+    const auto side = CGAL::orientation(P(sorted[k][0]), P(sorted[k][1]), P(sorted[k][2]), K::Point_3(o.x, o.y, o.z));
+    if (side == CGAL::COPLANAR) return owns_face(n[k]);
+    return (side == CGAL::NEGATIVE) != flipped[k];
   }
   // A ray lying exactly in a face belongs to one of its two cells: the one whose outward normal
   // has its first non-zero component negative (the neighbour's normal points the other way).
   static bool owns_face(const glm::dvec3& n) { return n.x != 0 ? n.x < 0 : n.y != 0 ? n.y < 0 : n.z < 0; }
+
+  // Face k's plane, computed from its vertices in increasing global id, then signed outward: the
+  // two tetrahedra sharing a face get bit-identical planes of opposite sign, so a ray grazing the
+  // face is inside exactly one of them and their segments meet without gap or overlap.
+  void set_face(int k, const Tet& tet, const double* xyz) {
+    std::int64_t id[3] = {tet[kFace[k][0]], tet[kFace[k][1]], tet[kFace[k][2]]};
+    bool flip = false;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2 - i; ++j)
+        if (id[j] > id[j + 1]) std::swap(id[j], id[j + 1]), flip = !flip;
+    auto P = [&](std::int64_t i) { return glm::dvec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); };
+    const glm::dvec3 a = P(id[0]);
+    n[k] = glm::cross(P(id[1]) - a, P(id[2]) - a);
+    d[k] = glm::dot(n[k], a);
+    if (flip) n[k] = -n[k], d[k] = -d[k];
+    std::copy(id, id + 3, sorted[k]);
+    flipped[k] = flip;
+    this->xyz = xyz;
+  }
   double scalar_at(const glm::dvec3& x) const {
     double s_ = 0.0;
     for (int k = 0; k < 4; ++k) s_ += (d[k] - glm::dot(n[k], x)) * s[k];
@@ -150,11 +189,7 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const Vis
       TetPlanes tp;
       glm::dvec3 p[4];
       for (int k = 0; k < 4; ++k) p[k] = P(tet[k]), tp.s[k] = scalar_[tet[k]];
-      for (int k = 0; k < 4; ++k) {
-        const glm::dvec3 &a = p[kFace[k][0]], &bb = p[kFace[k][1]], &c = p[kFace[k][2]];
-        tp.n[k] = glm::cross(bb - a, c - a);
-        tp.d[k] = glm::dot(tp.n[k], a);
-      }
+      for (int k = 0; k < 4; ++k) tp.set_face(k, tet, points_.data());
       tp.volume6 = tet_volume6(p[0], p[1], p[2], p[3]);
       const PixelBox& bx = box[t];
       for (int j = std::max(bx.y0, ty0); j <= std::min(bx.y1, ty0 + kTile - 1); ++j)

@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# The command line on bad input: a clear message on stderr and the documented exit code.
+# usage: cli_errors.sh CELLPROJ SOURCE_DIR
+set -u
+exe=$1; src=$2
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+failed=0; passed=0
+
+expect() {  # expect CODE REGEX -- ARGS...
+  local code=$1 regex=$2; shift 3
+  "$exe" "$@" >"$tmp/out" 2>"$tmp/err"; local got=$?
+  if [ "$got" -ne "$code" ] || ! grep -Eq -- "$regex" "$tmp/err" "$tmp/out"; then
+    echo "FAIL: cellproj $* -> exit $got (want $code), output:"; cat "$tmp/err" "$tmp/out"; failed=$((failed+1))
+  else passed=$((passed+1)); fi
+}
+
+expect 2 "subcommand" -- 
+for sub in render info generate; do expect 0 "Usage" -- $sub --help; done
+expect 1 "missing.vtu: no such file" -- info "$tmp/missing.vtu"
+touch "$tmp/mesh.stl"
+expect 1 "unknown mesh format '.stl'" -- info "$tmp/mesh.stl"
+printf '4 1\n0 0 0 1\n1 0 0 1\n0 nan 0 1\n0 0 1 1\n0 1 2 3\n' > "$tmp/nan.off"
+expect 1 "nan.off: point 2 has a non-finite coordinate" -- info "$tmp/nan.off"
+printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n4 0 1 2 9\nCELL_TYPES 1\n10\n' > "$tmp/range.vtk"
+expect 1 "range.vtk: cell 0 \\(tetra \\(10\\)\\) refers to point 9, out of range \\[0, 4\\)" -- info "$tmp/range.vtk"
+"$exe" generate box -n 4 -o "$tmp/box.vtu" >/dev/null || { echo "FAIL: generate"; failed=$((failed+1)); }
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}' > "$tmp/broken.json"
+expect 1 "broken.json: not valid JSON" -- render "$tmp/broken.json"
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, -1]]}}' > "$tmp/kappa.json"
+expect 1 "kappa.json: transfer_function: extinction\[0\]: kappa = -1.* must be finite and >= 0" -- render "$tmp/kappa.json"
+echo '{"mesh": "box.vtu", "field": "nope", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}}' > "$tmp/field.json"
+expect 1 "no point field named 'nope'; the fields are: scalar" -- render "$tmp/field.json"
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "camera": {"up": [0, 0, 1]}}' > "$tmp/cam.json"
+expect 1 "cam.json: camera: up is parallel to the view direction" -- render "$tmp/cam.json"
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}}' > "$tmp/ok.json"
+expect 1 "size: expected WxH" -- render "$tmp/ok.json" --size 0x5
+expect 1 "unknown method 'pt-magic'" -- render "$tmp/ok.json" --method pt-magic
+expect 2 "threads" -- render "$tmp/ok.json" --threads 0
+expect 0 "wrote .*ok.png" -- render "$tmp/ok.json" --size 32x24 -o "$tmp/ok.png" --npy "$tmp/ok.npy" --stats --frames 3
+grep -q '"frame_seconds"' "$tmp/err" && grep -q '"load_seconds"' "$tmp/err" || { echo "FAIL: --stats JSON"; failed=$((failed+1)); }
+[ "$(stat -c %s "$tmp/ok.npy")" -eq $((128 + 32 * 24 * 16)) ] || { echo "FAIL: npy size"; failed=$((failed+1)); }
+
+# info --json: the documented keys with this mesh's values.
+"$exe" info "$tmp/box.vtu" --json > "$tmp/info.json" || { echo "FAIL: info --json"; failed=$((failed+1)); }
+python3 - "$tmp/info.json" <<'PY' || failed=$((failed+1))
+import json, sys
+j = json.load(open(sys.argv[1]))
+want = {"points": 125, "cells": 64, "boundary_faces": 96, "convex": True, "nonplanar_faces": 0,
+        "degenerate_cells": 0, "inverted_cells": 0}
+bad = {k: (j.get(k), v) for k, v in want.items() if j.get(k) != v}
+bad.update({k: "missing" for k in ("bounds", "fields", "cells_by_type") if k not in j})
+if j["cells_by_type"] != {"tetra": 0, "hexahedron": 64, "wedge": 0, "pyramid": 0}: bad["cells_by_type"] = j["cells_by_type"]
+if j["fields"]["scalar"][1] != 1.0: bad["fields"] = j["fields"]
+if bad: print("FAIL: info --json", bad); sys.exit(1)
+PY
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

@@ -1,0 +1,57 @@
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "grid/error.hpp"
+#include "grid/write_mesh.hpp"
+#include "test_util.hpp"
+#include "tools/scene.hpp"
+#include "tools/scene_setup.hpp"
+
+using namespace cellproj;
+
+namespace {
+
+std::string scene_error(const std::string& path) {
+  try {
+    prepare_scene(load_scene(path));
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Scene, RelativeMeshPathAndErrorsNamingTheKey) {
+  test::TempDir dir;
+  Mesh m = make_box(2, 2, 2, glm::dvec3(0), glm::dvec3(1), true);
+  set_field(m, "a", [](const glm::dvec3& x) { return x.x; });
+  set_field(m, "b", [](const glm::dvec3& x) { return x.y; });
+  write_vtu(m, dir.file("m.vtu"));
+  auto write = [&](const std::string& text) {
+    std::ofstream(dir.file("s.json")) << text;
+    return dir.file("s.json");
+  };
+  const std::string tf = R"("transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]})";
+  const Scene ok = load_scene(write(R"({"mesh": "m.vtu", "field": "b", )" + tf + "}"));
+  EXPECT_EQ(ok.mesh, dir.file("m.vtu"));
+  const PreparedScene p = prepare_scene(ok);
+  EXPECT_EQ(p.field, "b");
+  EXPECT_DOUBLE_EQ(p.field_max, 1.0);
+
+  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", )" + tf + "}")).find("give \"field\": the mesh has several: a, b"),
+            std::string::npos);
+  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "c", )" + tf + "}")).find("the fields are: a, b"),
+            std::string::npos);
+  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "feild": "a", )" + tf + "}")).find("unknown key 'feild'"),
+            std::string::npos);
+  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "a", "camera": {"eye": [0, 0, 1], "target": [0, 0, 1]}, )" + tf + "}"))
+                .find("eye and target are the same point"),
+            std::string::npos);
+  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "a", "image": {"width": 0}, )" + tf + "}")).find("image.width"),
+            std::string::npos);
+  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "a" )")).find("not valid JSON"), std::string::npos);
+  EXPECT_NE(scene_error(write(R"({"mesh": "gone.vtu", "field": "a", )" + tf + "}")).find("gone.vtu: no such file"),
+            std::string::npos);
+}

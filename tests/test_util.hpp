@@ -1,0 +1,54 @@
+#pragma once
+// Helpers shared by the tests: small meshes with analytic answers, temporary folders.
+#include <cmath>
+#include <filesystem>
+#include <string>
+
+#include "grid/generate.hpp"
+#include "optics/transfer_function.hpp"
+
+namespace cellproj::test {
+
+// A fresh empty folder under the system's temporary folder, removed at the end of the test.
+class TempDir {
+ public:
+  TempDir();
+  ~TempDir();
+  std::string file(const std::string& name) const { return (path_ / name).string(); }
+
+ private:
+  std::filesystem::path path_;
+};
+
+// Constant colour and extinction.
+inline TransferFunction constant_tf(double kappa, glm::dvec3 rgb) {
+  return TransferFunction({{0.0, rgb}}, {{0.0, kappa}});
+}
+
+inline std::string shared_data(const std::string& rel) { return std::string(CELLPROJ_SHARED_DATA) + "/" + rel; }
+
+}  // namespace cellproj::test
+
+namespace cellproj::test {
+
+// b's points and cells appended to a (fields: the first field of each, concatenated).
+void append(Mesh& a, const Mesh& b);
+
+// int_0^L C(t) kappa(t) exp(-int_0^t kappa) dt by composite Simpson (2e5 intervals): an
+// independent check on the renderer's integrals.
+template <class Kappa, class Colour>
+glm::dvec3 simpson_light(double L, Kappa kappa, Colour colour) {
+  const int n = 200000;
+  const double h = L / n;
+  glm::dvec3 sum(0.0);
+  double depth = 0.0, k_prev = kappa(0.0);
+  for (int i = 0; i <= n; ++i) {
+    const double t = i * h, k = kappa(t);
+    if (i > 0) depth += 0.5 * h * (k_prev + k);  // trapezoid depth: O(h^2) = 1e-11 for L ~ 1
+    k_prev = k;
+    sum += double(i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * colour(t) * k * std::exp(-depth);
+  }
+  return sum * (h / 3);
+}
+
+}  // namespace cellproj::test

@@ -1,0 +1,120 @@
+#include <cmath>
+
+#include <gtest/gtest.h>
+
+#include "grid/error.hpp"
+#include "grid/geometry.hpp"
+#include "grid/tetrahedralize.hpp"
+#include "grid/topology.hpp"
+#include "grid/validate.hpp"
+#include "test_util.hpp"
+
+using namespace cellproj;
+
+namespace {
+
+Mesh unit_tet() {
+  Mesh m;
+  m.source = "t.vtu";
+  for (glm::dvec3 p : {glm::dvec3(0, 0, 0), {1, 0, 0}, {0, 1, 0}, {0, 0, 1}}) m.add_point(p);
+  m.add_cell(CellType::Tetra, {0, 1, 2, 3});
+  m.add_field("s", "test").values = {0, 1, 2, 3};
+  return m;
+}
+
+std::string error_of(const MeshView& v) {
+  try {
+    validate(v);
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
+
+}  // namespace
+
+TEST(Validation, ErrorsNameTheFileAndTheElement) {
+  Mesh m = unit_tet();
+  m.connectivity[2] = 7;
+  EXPECT_NE(error_of(m.view()).find("t.vtu: cell 0 (tetra) refers to point 7, out of range [0, 4)"), std::string::npos);
+  m = unit_tet();
+  m.points[4] = NAN;
+  EXPECT_NE(error_of(m.view()).find("point 1 has a non-finite coordinate (y"), std::string::npos);
+  m = unit_tet();
+  m.fields[0].values[2] = INFINITY;
+  EXPECT_NE(error_of(m.view("s")).find("field 's' is not finite at point 2"), std::string::npos);
+  m = unit_tet();
+  m.types[0] = 24;  // quadratic tetra
+  EXPECT_NE(error_of(m.view()).find("quadratic_tetra (24): 1 cells (first: cell 0)"), std::string::npos);
+  try {
+    m.field("pressure");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("no point field named 'pressure'; the fields are: s"), std::string::npos);
+  }
+}
+
+TEST(Validation, InvertedDegenerateAndDuplicateAreCounted) {
+  Mesh m = unit_tet();
+  m.add_point({0, 0, 0});          // a duplicate of point 0
+  m.add_point({2, 0, 0});
+  m.add_point({0, 2, 0});
+  m.add_point({3, 0, 0});
+  m.fields[0].values.resize(8, 0.0);
+  m.add_cell(CellType::Tetra, {5, 4, 6, 0 + 3});  // inverted
+  m.add_cell(CellType::Tetra, {4, 5, 7, 6});      // flat: all in z = 0
+  const auto r = validate(m.view());
+  EXPECT_EQ(r.inverted_cells, 1);
+  EXPECT_EQ(r.first_inverted, 1);
+  EXPECT_EQ(r.degenerate_cells, 1);
+  EXPECT_EQ(r.duplicate_points, 1);
+  EXPECT_EQ(r.first_duplicate, 4);
+  EXPECT_EQ(reorient_inverted(m, r), 1);
+  EXPECT_GT(cell_signed_volume(m.view(), 1), 0);
+}
+
+TEST(Validation, EveryCellTypeReorientsToPositiveVolume) {
+  // A hexahedron, wedge and pyramid mirrored (z -> -z) have negative volume until re-oriented.
+  Mesh m;
+  for (int k = 0; k < 2; ++k)
+    for (glm::dvec3 p : {glm::dvec3(0, 0, 0), {1, 0, 0}, {1, 1, 0}, {0, 1, 0}}) m.add_point(p + glm::dvec3(0, 0, -k));
+  m.add_point({0.5, 0.5, -1});
+  m.add_cell(CellType::Hexahedron, {0, 1, 2, 3, 4, 5, 6, 7});
+  m.add_cell(CellType::Wedge, {0, 3, 1, 4, 7, 5});
+  m.add_cell(CellType::Pyramid, {0, 1, 2, 3, 8});
+  const auto r = validate(m.view());
+  EXPECT_EQ(r.inverted_cells, 3);
+  reorient_inverted(m, r);
+  for (int c = 0; c < 3; ++c) EXPECT_GT(cell_signed_volume(m.view(), c), 0) << c;
+  EXPECT_NEAR(cell_signed_volume(m.view(), 0), 1.0, 1e-12);
+  EXPECT_NEAR(cell_signed_volume(m.view(), 1), 0.5, 1e-12);
+  EXPECT_NEAR(cell_signed_volume(m.view(), 2), 1.0 / 3, 1e-12);
+}
+
+TEST(Tetrahedralize, CanonicalSplitConservesVolumeAndConforms) {
+  Mesh hex = make_curvilinear(2, 2, 2, [](const glm::dvec3& u) {
+    return glm::dvec3(u.x + 0.2 * u.y * u.z, u.y + 0.15 * u.x * u.x, u.z + 0.1 * std::sin(3 * u.x));
+  }, false);
+  const Mesh tets = make_curvilinear(2, 2, 2, [](const glm::dvec3& u) {
+    return glm::dvec3(u.x + 0.2 * u.y * u.z, u.y + 0.15 * u.x * u.x, u.z + 0.1 * std::sin(3 * u.x));
+  }, true);
+  EXPECT_EQ(tets.n_cells(), 6 * hex.n_cells());
+  const auto rt = validate(tets.view());
+  EXPECT_EQ(rt.inverted_cells, 0);
+  EXPECT_EQ(rt.degenerate_cells, 0);
+  // Conforming: every interior triangle is shared by exactly two tetrahedra, no hanging faces.
+  const FaceTopology t = build_topology(tets.view());
+  EXPECT_EQ(t.nonmanifold_faces, 0);
+  EXPECT_EQ(static_cast<std::int64_t>(t.boundary.size()), 6 * 4 * 2);  // 6 sides x 4 quads x 2 triangles
+  double vt = 0;
+  for (double v : rt.volumes) vt += v;
+  double vh = 0;  // hexahedra with their faces split the same way have the same volume
+  for (std::int64_t c = 0; c < hex.n_cells(); ++c) {
+    Tet out[kMaxTetsPerCell];
+    const int n = canonical_tetrahedra(hex.view(), c, out);
+    for (int k = 0; k < n; ++k)
+      vh += tet_volume6(hex.view().point(out[k][0]), hex.view().point(out[k][1]), hex.view().point(out[k][2]),
+                        hex.view().point(out[k][3])) / 6;
+  }
+  EXPECT_NEAR(vt, vh, 1e-12);
+}
