@@ -365,6 +365,14 @@ bool all_zero(const Mesh& m, const std::string& field) {
 Mesh read_vtk_family(const std::string& path, const std::string& format, const ReadOptions& o) {
   VtkMessages messages;
   if (format == "vtk-xml") {
+    // VTK does not always notice raw appended data cut short; a whole file ends with </VTKFile>.
+    std::ifstream in(path, std::ios::binary | std::ios::ate);
+    const std::streamoff size = in.tellg();
+    std::string tail(static_cast<std::size_t>(std::min<std::streamoff>(size, 256)), '\0');
+    in.seekg(size - static_cast<std::streamoff>(tail.size()));
+    in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
+    if (tail.find("</VTKFile>") == std::string::npos)
+      throw InputError(where(path, "truncated: a VTK XML file ends with </VTKFile>, this one does not"));
     auto r = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
     r->SetFileName(path.c_str());
     return run(r.Get(), path, messages);

@@ -21,7 +21,14 @@ using FaceKey = std::array<std::int64_t, 4>;  // sorted vertex ids; a triangle's
 FaceKey face_key(const std::int64_t* ids, const FaceDef& face) {
   FaceKey k{0, 0, 0, std::numeric_limits<std::int64_t>::max()};
   for (int i = 0; i < face.size; ++i) k[i] = ids[face.v[i]];
-  std::sort(k.begin(), k.begin() + face.size);
+  auto order = [&](int a, int b) {
+    if (k[a] > k[b]) std::swap(k[a], k[b]);
+  };
+  if (face.size == 3) {
+    order(0, 1), order(1, 2), order(0, 1);
+  } else {  // a 5-comparator sorting network for 4
+    order(0, 1), order(2, 3), order(0, 2), order(1, 3), order(1, 2);
+  }
   return k;
 }
 

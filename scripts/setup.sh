@@ -1,0 +1,20 @@
+#!/usr/bin/env bash
+# Installs the Debian packages cellproj builds against, when missing. Idempotent: with everything
+# present it only asks dpkg (well under a second). apt-get as root, sudo otherwise.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config python3
+  libvtk9-dev libcgal-dev libtet1.5-dev libglm-dev libtbb-dev libnetcdf-dev zlib1g-dev libpng-dev
+  libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+[ ${#missing[@]} -eq 0 ] && exit 0
+echo "setup: installing ${missing[*]}" >&2
+sudo=""
+[ "$(id -u)" -ne 0 ] && sudo="sudo"
+export DEBIAN_FRONTEND=noninteractive
+$sudo apt-get update -q >&2
+$sudo apt-get install -y -q --no-install-recommends "${missing[@]}" >&2
