@@ -1,5 +1,6 @@
 #pragma once
 // Small geometric quantities of cells and faces.
+#include <cmath>
 #include <cstdint>
 
 #include <glm/geometric.hpp>
@@ -19,13 +20,16 @@ inline double tet_volume6(const glm::dvec3& a, const glm::dvec3& b, const glm::d
 // centroid, so a non-planar face counts as the bilinear-ish surface it approximates).
 double cell_signed_volume(const MeshView& mesh, std::int64_t cell);
 
-// The longest edge of the cell's bounding box diagonal: a length scale for tolerances.
+// The diagonal of the cell's bounding box: a length scale for tolerances.
 double cell_size(const MeshView& mesh, std::int64_t cell);
 
 // Non-planarity of quad (a, b, c, d): the distance between its two diagonals (0 when planar).
 double quad_warp(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d);
 
-// A cell is degenerate when |volume| is at round-off level for its size.
+// A cell is degenerate when |volume| is at round-off level for its size (a length).
 constexpr double kDegenerateRelativeVolume = 1e-14;
+inline bool degenerate_volume(double volume, double size) {
+  return std::abs(volume) <= kDegenerateRelativeVolume * size * size * size;
+}
 
 }  // namespace cellproj

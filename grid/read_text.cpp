@@ -54,7 +54,7 @@ void delaunay(Mesh& m, const std::string& path) {
   std::vector<std::pair<K::Point_3, std::int64_t>> pts;
   pts.reserve(static_cast<std::size_t>(m.n_points()));
   for (std::int64_t p = 0; p < m.n_points(); ++p) {
-    const glm::dvec3 x = m.view().point(p);
+    const glm::dvec3 x(m.points[3 * p], m.points[3 * p + 1], m.points[3 * p + 2]);
     if (!std::isfinite(x.x) || !std::isfinite(x.y) || !std::isfinite(x.z))
       throw InputError(where(path, "point " + std::to_string(p) + " has a non-finite coordinate"));
     pts.emplace_back(K::Point_3(x.x, x.y, x.z), p);

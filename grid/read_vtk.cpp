@@ -130,6 +130,7 @@ std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& me
   std::map<std::string, std::int64_t> skipped;
   std::vector<LeafMap> maps(leaves.size());
   auto ids = vtkSmartPointer<vtkIdList>::New();
+  std::vector<std::int64_t> v;  // one cell's point ids, reused
   for (std::size_t b = 0; b < leaves.size(); ++b) {
     vtkDataSet* ds = leaves[b].data;
     vtkDataArray* gid = global_ids ? ds->GetPointData()->GetArray("GlobalNodeId") : nullptr;
@@ -155,7 +156,7 @@ std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& me
         continue;
       }
       ds->GetCellPoints(c, ids);
-      std::vector<std::int64_t> v(static_cast<std::size_t>(ids->GetNumberOfIds()));
+      v.resize(static_cast<std::size_t>(ids->GetNumberOfIds()));
       for (std::size_t k = 0; k < v.size(); ++k) {
         const vtkIdType id = ids->GetId(static_cast<vtkIdType>(k));
         if (id < 0 || id >= ds->GetNumberOfPoints())  // VTK's legacy reader lets these through

@@ -95,12 +95,14 @@ ValidationReport validate(const MeshView& m) {
   tbb::parallel_for(std::int64_t(0), m.n_cells, [&](std::int64_t c) { r.volumes[c] = cell_signed_volume(m, c); });
   for (std::int64_t c = 0; c < m.n_cells; ++c) {
     const double v = r.volumes[c], size = cell_size(m, c);
-    if (std::abs(v) <= kDegenerateRelativeVolume * size * size * size) {
+    if (degenerate_volume(v, size)) {
       if (r.degenerate_cells++ == 0) r.first_degenerate = c;
     } else if (v < 0) {
-      if (r.inverted_cells++ == 0) r.first_inverted = c;
+      r.inverted.push_back(c);
     }
   }
+  r.inverted_cells = static_cast<std::int64_t>(r.inverted.size());
+  if (!r.inverted.empty()) r.first_inverted = r.inverted.front();
   count_duplicates(m, r);
   return r;
 }
@@ -121,22 +123,17 @@ std::vector<std::string> ValidationReport::warnings(const std::string& source) c
 }
 
 std::int64_t reorient_inverted(Mesh& mesh, const ValidationReport& r) {
-  std::int64_t flipped = 0;
-  const MeshView view = mesh.view();
-  for (std::int64_t c = 0; c < mesh.n_cells(); ++c) {
-    const double v = r.volumes[c];
-    if (!(v < 0) || std::abs(v) <= kDegenerateRelativeVolume * std::pow(cell_size(view, c), 3)) continue;
+  for (std::int64_t c : r.inverted) {
     std::int64_t* ids = mesh.connectivity.data() + mesh.offsets[c];
-    switch (view.type(c)) {
+    switch (static_cast<CellType>(mesh.types[c])) {
       case CellType::Tetra: std::swap(ids[1], ids[2]); break;
       case CellType::Pyramid: std::swap(ids[1], ids[3]); break;  // reverse the base
       case CellType::Wedge: std::swap_ranges(ids, ids + 3, ids + 3); break;
       case CellType::Hexahedron:
       case CellType::Voxel: std::swap_ranges(ids, ids + 4, ids + 4); break;
     }
-    ++flipped;
   }
-  return flipped;
+  return static_cast<std::int64_t>(r.inverted.size());
 }
 
 }  // namespace cellproj

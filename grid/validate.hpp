@@ -15,6 +15,7 @@ struct ValidationReport {
   std::int64_t duplicate_points = 0;   // points at the same coordinates as an earlier point
   std::int64_t first_inverted = -1, first_degenerate = -1, first_duplicate = -1;
   std::vector<double> volumes;         // signed volume per cell, as read
+  std::vector<std::int64_t> inverted;  // the inverted cells, in order
 
   std::vector<std::string> warnings(const std::string& source) const;
 };

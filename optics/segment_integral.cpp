@@ -11,7 +11,6 @@ constexpr double kNode[4] = {0.1834346424956498, 0.5255324099163290, 0.796666477
 constexpr double kWeight[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
 
 constexpr double kDepthStep = 0.25;   // optical depth per quadrature piece
-constexpr double kDepthCutoff = 60.0; // exp(-60) ~ 1e-26: nothing behind is visible
 
 }  // namespace
 
@@ -41,7 +40,7 @@ SegmentLight integrate_linear_reference(double L, double k0, double k1, const gl
   glm::dvec3 sum(0.0);
   for (int p = 0; p < pieces; ++p) {
     const double u0 = double(p) / pieces, u1 = double(p + 1) / pieces, half = 0.5 * (u1 - u0), mid = 0.5 * (u0 + u1);
-    if (tau(u0) > kDepthCutoff) break;
+    if (tau(u0) > kOpaqueDepth) break;
     for (int i = 0; i < 8; ++i) {
       const double u = mid + (i < 4 ? -kNode[i] : kNode[i - 4]) * half;
       const double w = kWeight[i < 4 ? i : i - 4] * half;

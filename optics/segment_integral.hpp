@@ -9,6 +9,9 @@
 
 namespace cellproj {
 
+// Behind this optical depth nothing shows: exp(-60) ~ 1e-26.
+constexpr double kOpaqueDepth = 60.0;
+
 struct SegmentLight {
   glm::dvec3 rgb{0.0};  // premultiplied light leaving the front end
   double depth = 0.0;   // optical depth; kept instead of 1 - alpha so tiny opacities stay exact

@@ -116,7 +116,7 @@ CellRayTracer::CellRayTracer(const MeshView& mesh) {
       const glm::dvec3 a = P(t[0]), b = P(t[1]), cc = P(t[2]), d = P(t[3]);
       double v6 = tet_volume6(a, b, cc, d);
       const double size = std::max({glm::length(b - a), glm::length(cc - a), glm::length(d - a)});
-      if (std::abs(v6) <= kDegenerateRelativeVolume * size * size * size) {
+      if (degenerate_volume(v6, size)) {
         ++dropped_;
         continue;
       }
@@ -183,6 +183,10 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const Vis
     auto& pixel_lists = lists.local();
     for (auto& l : pixel_lists) l.clear();
     const int tx0 = (tile % tiles_x) * kTile, ty0 = (tile / tiles_x) * kTile;
+    Ray tile_rays[kTile * kTile];
+    for (int j = ty0; j < std::min(ty0 + kTile, height); ++j)
+      for (int i = tx0; i < std::min(tx0 + kTile, width); ++i)
+        tile_rays[(j - ty0) * kTile + (i - tx0)] = rays.ray(i + 0.5, j + 0.5);
     for (std::int64_t b = start[tile]; b < start[tile + 1]; ++b) {
       const std::uint32_t t = binned[b];
       const Tet& tet = tets_[t];
@@ -194,10 +198,11 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const Vis
       const PixelBox& bx = box[t];
       for (int j = std::max(bx.y0, ty0); j <= std::min(bx.y1, ty0 + kTile - 1); ++j)
         for (int i = std::max(bx.x0, tx0); i <= std::min(bx.x1, tx0 + kTile - 1); ++i) {
-          const Ray r = rays.ray(i + 0.5, j + 0.5);
+          const int px = (j - ty0) * kTile + (i - tx0);
+          const Ray& r = tile_rays[px];
           double t0, t1;
           if (!tp.clip(r, t0, t1)) continue;
-          pixel_lists[(j - ty0) * kTile + (i - tx0)].push_back(
+          pixel_lists[px].push_back(
               {t0, t1, tp.scalar_at(r.origin + t0 * r.dir), tp.scalar_at(r.origin + t1 * r.dir), parent_[t]});
         }
     }

@@ -14,7 +14,7 @@ Image ExactRenderer::render(const TransferFunction& tf, const Camera& camera, in
   std::atomic<std::int64_t> segments{0};
   tracer_.trace(camera, width, height, [&](int i, int j, const RaySegment* seg, std::size_t n) {
     SegmentLight acc;
-    for (std::size_t k = 0; k < n && acc.depth < 60.0; ++k)  // beyond depth 60 nothing shows
+    for (std::size_t k = 0; k < n && acc.depth < kOpaqueDepth; ++k)
       acc = under(acc, integrate_segment_reference(tf, seg[k].t1 - seg[k].t0, seg[k].s0, seg[k].s1));
     float* px = img.pixel(i, j);
     px[0] = static_cast<float>(acc.rgb.r);

@@ -92,12 +92,11 @@ TEST(Validation, EveryCellTypeReorientsToPositiveVolume) {
 }
 
 TEST(Tetrahedralize, CanonicalSplitConservesVolumeAndConforms) {
-  Mesh hex = make_curvilinear(2, 2, 2, [](const glm::dvec3& u) {
+  auto warp = [](const glm::dvec3& u) {
     return glm::dvec3(u.x + 0.2 * u.y * u.z, u.y + 0.15 * u.x * u.x, u.z + 0.1 * std::sin(3 * u.x));
-  }, false);
-  const Mesh tets = make_curvilinear(2, 2, 2, [](const glm::dvec3& u) {
-    return glm::dvec3(u.x + 0.2 * u.y * u.z, u.y + 0.15 * u.x * u.x, u.z + 0.1 * std::sin(3 * u.x));
-  }, true);
+  };
+  const Mesh hex = make_curvilinear(2, 2, 2, warp, false);
+  const Mesh tets = make_curvilinear(2, 2, 2, warp, true);
   EXPECT_EQ(tets.n_cells(), 6 * hex.n_cells());
   const auto rt = validate(tets.view());
   EXPECT_EQ(rt.inverted_cells, 0);
