@@ -35,6 +35,42 @@ Mesh make_curvilinear(int nx, int ny, int nz, const std::function<glm::dvec3(con
   return t;
 }
 
+Mesh make_mixed(int nx, int ny, int nz, const std::function<glm::dvec3(const glm::dvec3&)>& map) {
+  Mesh grid = make_curvilinear(nx, ny, nz, map, false);
+  Mesh m;
+  m.points = grid.points;
+  const CellDef& hex = cell_def(CellType::Hexahedron);
+  const MeshView gv = grid.view();
+  for (std::int64_t c = 0; c < grid.n_cells(); ++c) {
+    const std::int64_t* v = gv.cell(c);  // hexahedron vertices, 0-3 the bottom
+    const int i = static_cast<int>(c % nx), j = static_cast<int>(c / nx % ny);
+    switch ((i + j) % 3) {
+      case 0: m.add_cell(CellType::Hexahedron, v); break;
+      case 1:  // two wedges, every cell of the column split by the same diagonal 0-2 of its quads
+        m.add_cell(CellType::Wedge, {v[0], v[2], v[1], v[4], v[6], v[5]});
+        m.add_cell(CellType::Wedge, {v[0], v[3], v[2], v[4], v[7], v[6]});
+        break;
+      default: {  // pyramids on the four side faces, tetrahedra on the split top and bottom
+        glm::dvec3 centre(0.0);
+        for (int k = 0; k < 8; ++k) centre += gv.point(v[k]) / 8.0;
+        const std::int64_t apex = m.add_point(centre);
+        for (int f = 0; f < hex.faces; ++f) {
+          const std::uint8_t* fv = hex.face[f].v;  // outward: the base of a pyramid turns inward
+          const std::int64_t q[4] = {v[fv[0]], v[fv[1]], v[fv[2]], v[fv[3]]};
+          if (f < 4) {
+            m.add_cell(CellType::Pyramid, {q[0], q[3], q[2], q[1], apex});
+            continue;
+          }
+          std::int64_t tri[2][3];
+          split_quad(q, tri);
+          for (const auto& t : tri) m.add_cell(CellType::Tetra, {t[0], t[2], t[1], apex});
+        }
+      }
+    }
+  }
+  return m;
+}
+
 Mesh make_box(int nx, int ny, int nz, const glm::dvec3& lo, const glm::dvec3& hi, bool tetrahedra) {
   return make_curvilinear(nx, ny, nz, [&](const glm::dvec3& u) { return lo + u * (hi - lo); }, tetrahedra);
 }
@@ -78,7 +114,7 @@ Mesh swirl(int n, bool tets) {
 
 std::string generated_kinds() {
   return "box (hexahedra), box-tets (6 tetrahedra per hexahedron), swirl (non-convex curvilinear ring, hexahedra), "
-         "swirl-tets";
+         "swirl-tets, mixed (twisted box of hexahedra, wedges, pyramids and tetrahedra)";
 }
 
 Mesh generate(const std::string& kind, int n) {
@@ -87,6 +123,13 @@ Mesh generate(const std::string& kind, int n) {
   if (kind == "box" || kind == "box-tets") {
     m = make_box(n, n, n, glm::dvec3(-1), glm::dvec3(1), kind == "box-tets");
     set_field(m, "scalar", [](const glm::dvec3& x) { return 1.0 - glm::dot(x, x) / 3.0; });
+  } else if (kind == "mixed") {
+    m = make_mixed(n, n, n, [](const glm::dvec3& u) {
+      const double a = 0.6 * (u.z - 0.5);  // twisted about z: the side faces are not planar
+      const glm::dvec3 p = 2.0 * u - 1.0;
+      return glm::dvec3(p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a), p.z);
+    });
+    set_field(m, "scalar", [](const glm::dvec3& x) { return 1.0 - glm::dot(x, x) / 3.0 + 0.3 * x.x * x.y * x.z; });
   } else if (kind == "swirl" || kind == "swirl-tets") {
     m = swirl(n, kind == "swirl-tets");
   } else {

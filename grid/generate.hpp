@@ -14,6 +14,10 @@ namespace cellproj {
 // hexahedron split into its canonical tetrahedra (conforming, 6 per hexahedron).
 Mesh make_curvilinear(int nx, int ny, int nz, const std::function<glm::dvec3(const glm::dvec3&)>& map,
                       bool tetrahedra);
+// The same grid with a conforming mix of cell types, by column of cells ((i + j) mod 3): hexahedra;
+// two wedges per cell; four pyramids on the side faces and four tetrahedra on the top and bottom
+// faces around a point added at the cell's centre.
+Mesh make_mixed(int nx, int ny, int nz, const std::function<glm::dvec3(const glm::dvec3&)>& map);
 // An axis-aligned box [lo, hi].
 Mesh make_box(int nx, int ny, int nz, const glm::dvec3& lo, const glm::dvec3& hi, bool tetrahedra);
 // Adds (or replaces) a point field f(x).

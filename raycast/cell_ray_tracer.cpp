@@ -212,7 +212,7 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const Vis
         std::sort(l.begin(), l.end(), [](const RaySegment& a, const RaySegment& b) {
           return a.t0 < b.t0 || (a.t0 == b.t0 && a.t1 < b.t1);
         });
-        visit(i, j, l.data(), l.size());
+        visit(i, j, tile_rays[(j - ty0) * kTile + (i - tx0)], l.data(), l.size());
       }
     if (progress) progress(double(++done) / n_tiles);
   });

@@ -24,14 +24,17 @@ class CellRayTracer {
   // scalar; drops zero-volume tetrahedra and orients the rest positively.
   explicit CellRayTracer(const MeshView& mesh);
 
-  // Calls visit(i, j, segments, n) for every pixel with the segments sorted front to back. Pixels
-  // are visited concurrently from the calling task arena's threads, each pixel once.
-  using Visitor = std::function<void(int i, int j, const RaySegment* segments, std::size_t n)>;
+  // Calls visit(i, j, ray, segments, n) for every pixel with the segments sorted front to back; the
+  // ray is in the recentred frame of points(). Pixels are visited concurrently from the calling
+  // task arena's threads, each pixel once.
+  using Visitor = std::function<void(int i, int j, const Ray& ray, const RaySegment* segments, std::size_t n)>;
   void trace(const Camera& camera, int width, int height, const Visitor& visit,
              const std::function<void(double done)>& progress = {}) const;
 
   std::int64_t tetrahedra() const { return static_cast<std::int64_t>(tets_.size()); }
   std::int64_t dropped_degenerate() const { return dropped_; }
+  const double* points() const { return points_.data(); }  // recentred on the bounding box
+  const double* scalar() const { return scalar_.data(); }
 
  private:
   std::vector<double> points_;       // recentred x y z

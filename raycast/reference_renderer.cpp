@@ -1,21 +1,99 @@
 #include "raycast/reference_renderer.hpp"
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 
-#include "optics/segment_integral.hpp"
+#include "grid/error.hpp"
+#include "optics/polynomial_segment.hpp"
 
 namespace cellproj {
+namespace {
+
+// The scalar along a ray through one non-tetrahedral cell, crossing the segments [first, last) of
+// its canonical tetrahedra; falls back to their linear value where Newton fails.
+struct IsoparametricRun {
+  const IsoparametricField& field;
+  const Ray& ray;
+  const RaySegment* first;
+  const RaySegment* last;
+  glm::dvec3 xi;
+  std::int64_t failures = 0;
+
+  double at(double t) {
+    double s;
+    if (field.value(first->cell, ray.origin + t * ray.dir, xi, s)) return s;
+    xi = field.centre_guess(first->cell);
+    if (field.value(first->cell, ray.origin + t * ray.dir, xi, s)) return s;
+    ++failures;
+    xi = field.centre_guess(first->cell);
+    const RaySegment* g = first;
+    while (g + 1 < last && t > g->t1) ++g;
+    const double u = g->t1 > g->t0 ? std::clamp((t - g->t0) / (g->t1 - g->t0), 0.0, 1.0) : 0.0;
+    return g->s0 + u * (g->s1 - g->s0);
+  }
+};
+
+// s along [ta, tb] as the degree-7 Chebyshev interpolant of the isoparametric field, checked
+// against the field at three more points; where it is off by more than tol the run is halved.
+void integrate_run(const TransferFunction& tf, IsoparametricRun& run, double ta, double tb, double tol, int depth,
+                   SegmentLight& acc) {
+  if (acc.depth >= kOpaqueDepth) return;
+  const double mid = 0.5 * (ta + tb), half = 0.5 * (tb - ta);
+  const ScalarPolynomial s = chebyshev_interpolant([&](double x) { return run.at(mid + half * x); });
+  bool close = true;
+  for (double x : {-0.6, 0.0, 0.6}) close = close && std::abs(s(x) - run.at(mid + half * x)) <= tol;
+  if (close || depth >= 12) {
+    acc = under(acc, integrate_polynomial_reference(tf, tb - ta, s));
+    return;
+  }
+  integrate_run(tf, run, ta, mid, tol, depth + 1, acc);
+  integrate_run(tf, run, mid, tb, tol, depth + 1, acc);
+}
+
+}  // namespace
+
+CellInterpolation cell_interpolation_from_name(const std::string& name) {
+  if (name == "isoparametric") return CellInterpolation::isoparametric;
+  if (name == "canonical-tets") return CellInterpolation::canonical_tets;
+  throw InputError("unknown cell interpolation '" + name + "' (known: isoparametric, canonical-tets)");
+}
+
+const char* name_of(CellInterpolation interpolation) {
+  return interpolation == CellInterpolation::isoparametric ? "isoparametric" : "canonical-tets";
+}
+
+ExactRenderer::ExactRenderer(const MeshView& mesh, CellInterpolation interpolation) : tracer_(mesh) {
+  const bool all_tets = std::all_of(mesh.types, mesh.types + mesh.n_cells,
+                                    [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); });
+  if (interpolation != CellInterpolation::isoparametric || all_tets || !mesh.scalar) return;
+  iso_ = std::make_unique<IsoparametricField>(mesh, tracer_.points(), tracer_.scalar());
+  const auto [lo, hi] = std::minmax_element(mesh.scalar, mesh.scalar + mesh.n_points);
+  scalar_tolerance_ = 1e-9 * (*hi - *lo);
+}
 
 Image ExactRenderer::render(const TransferFunction& tf, const Camera& camera, int width, int height, ExactStats* stats,
                             const std::function<void(double)>& progress) const {
   const auto start = std::chrono::steady_clock::now();
   Image img(width, height);
-  std::atomic<std::int64_t> segments{0};
-  tracer_.trace(camera, width, height, [&](int i, int j, const RaySegment* seg, std::size_t n) {
+  std::atomic<std::int64_t> segments{0}, failures{0};
+  tracer_.trace(camera, width, height, [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t n) {
     SegmentLight acc;
-    for (std::size_t k = 0; k < n && acc.depth < kOpaqueDepth; ++k)
-      acc = under(acc, integrate_segment_reference(tf, seg[k].t1 - seg[k].t0, seg[k].s0, seg[k].s1));
+    for (std::size_t k = 0; k < n && acc.depth < kOpaqueDepth;) {
+      if (!iso_ || iso_->linear(seg[k].cell)) {
+        acc = under(acc, integrate_segment_reference(tf, seg[k].t1 - seg[k].t0, seg[k].s0, seg[k].s1));
+        ++k;
+        continue;
+      }
+      std::size_t end = k + 1;  // the adjoining segments of this cell's tetrahedra
+      while (end < n && seg[end].cell == seg[k].cell && seg[end].t0 <= seg[end - 1].t1 * (1 + 1e-12) + 1e-300) ++end;
+      IsoparametricRun run{*iso_, ray, seg + k, seg + end, iso_->centre_guess(seg[k].cell)};
+      const double ta = seg[k].t0, tb = seg[end - 1].t1;
+      integrate_run(tf, run, ta, tb, scalar_tolerance_, 0, acc);
+      failures.fetch_add(run.failures, std::memory_order_relaxed);
+      k = end;
+    }
     float* px = img.pixel(i, j);
     px[0] = static_cast<float>(acc.rgb.r);
     px[1] = static_cast<float>(acc.rgb.g);
@@ -26,6 +104,7 @@ Image ExactRenderer::render(const TransferFunction& tf, const Camera& camera, in
   if (stats) {
     stats->trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats->segments = segments;
+    stats->newton_failures = failures;
   }
   return img;
 }

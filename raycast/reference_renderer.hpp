@@ -4,31 +4,45 @@
 // front to back. Every other method is measured against it.
 #include <cstdint>
 #include <functional>
+#include <memory>
+#include <string>
 
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
 #include "raycast/cell_ray_tracer.hpp"
+#include "raycast/isoparametric.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {
 
+// How the field varies inside hexahedra, wedges and pyramids (tetrahedra are always linear).
+enum class CellInterpolation {
+  isoparametric,   // the cell's shape functions, followed along the ray by a polynomial to 1e-9 of the field's range
+  canonical_tets,  // linear in each tetrahedron of the canonical split (what projection assumes)
+};
+CellInterpolation cell_interpolation_from_name(const std::string& name);  // throws InputError
+const char* name_of(CellInterpolation interpolation);
+
 struct ExactStats {
-  double trace_seconds = 0.0;   // traversal and integration of one frame
-  std::int64_t segments = 0;    // ray-cell segments integrated
+  double trace_seconds = 0.0;        // traversal and integration of one frame
+  std::int64_t segments = 0;         // ray-tetrahedron segments integrated
+  std::int64_t newton_failures = 0;  // isoparametric points that fell back to the linear value
 };
 
 // Prepared once per mesh and field, then renders any number of frames. Threads: those of the task
 // arena it is called from (oneTBB); the image splits into tiles among them.
 class ExactRenderer {
  public:
-  explicit ExactRenderer(const MeshView& mesh) : tracer_(mesh) {}
+  explicit ExactRenderer(const MeshView& mesh, CellInterpolation interpolation = CellInterpolation::isoparametric);
   Image render(const TransferFunction& tf, const Camera& camera, int width, int height, ExactStats* stats = nullptr,
                const std::function<void(double)>& progress = {}) const;
   const CellRayTracer& tracer() const { return tracer_; }
 
  private:
   CellRayTracer tracer_;
+  std::unique_ptr<IsoparametricField> iso_;  // null when every cell is linear or canonical_tets was asked for
+  double scalar_tolerance_ = 0.0;            // largest error of the polynomial s(t) along a ray
 };
 
 }  // namespace cellproj

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include "optics/polynomial_segment.hpp"
 #include "optics/segment_integral.hpp"
 #include "test_util.hpp"
 
@@ -81,4 +82,43 @@ TEST(SegmentIntegral, BreakpointsSplitTheSegment) {
   // A tent kappa(s) = 4 min(s, 1 - s): depth = its area, 1, over s in [0, 1].
   const TransferFunction tent({{0.0, {1, 1, 1}}}, {{0.0, 0.0}, {0.5, 2.0}, {1.0, 0.0}});
   EXPECT_NEAR(integrate_segment_reference(tent, 1.0, 0.0, 1.0).depth, 1.0, 1e-14);
+}
+
+// --- scalar polynomial along the segment (isoparametric cells) ---
+
+TEST(PolynomialSegment, ChebyshevInterpolantReproducesPolynomialsOfDegreeSeven) {
+  auto f = [](double x) { return 0.3 - 1.2 * x + 0.5 * x * x * x - 0.25 * std::pow(x, 7); };
+  const ScalarPolynomial p = chebyshev_interpolant(f);
+  for (double x = -1.0; x <= 1.0; x += 0.125) EXPECT_NEAR(p(x), f(x), 1e-13) << x;
+}
+
+TEST(PolynomialSegment, LinearScalarAgreesWithTheLinearReference) {
+  const TransferFunction tf({{0.0, {1, 0, 0}}, {0.4, {0, 1, 0}}, {1.0, {0, 0, 1}}},
+                            {{0.0, 0.5}, {0.3, 4.0}, {0.3, 1.0}, {1.0, 2.5}});  // a step at 0.3
+  ScalarPolynomial s;
+  s.c[0] = 0.5, s.c[1] = 0.45;  // from 0.05 at the front to 0.95 at the back
+  const SegmentLight a = integrate_polynomial_reference(tf, 1.7, s);
+  const SegmentLight b = integrate_segment_reference(tf, 1.7, 0.05, 0.95);
+  EXPECT_NEAR(a.depth, b.depth, 1e-12);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(a.rgb[k], b.rgb[k], 1e-12);
+}
+
+// s(x) = 0.9 - 0.8 x^2 rises through the breakpoint at 0.5 and falls back through it: both
+// crossings must be found. Checked against Simpson on the composed integrand.
+TEST(PolynomialSegment, QuadraticScalarCrossingABreakpointTwice) {
+  const TransferFunction tf({{0.0, {0.2, 0.4, 1}}, {0.5, {1, 1, 0}}, {1.0, {1, 0, 0}}},
+                            {{0.0, 0.0}, {0.5, 3.0}, {1.0, 0.5}});
+  ScalarPolynomial s;
+  s.c[0] = 0.9, s.c[2] = -0.8;
+  const double L = 2.0;
+  auto s_at = [&](double t) { return s(t - 1.0); };  // x = t - 1 for L = 2
+  const SegmentLight got = integrate_polynomial_reference(tf, L, s);
+  const glm::dvec3 want = test::simpson_light(L, [&](double t) { return tf.extinction(s_at(t)); },
+                                              [&](double t) { return tf.color(s_at(t)); });
+  double depth = 0.0;  // Simpson on kappa
+  const int n = 200000;
+  for (int i = 0; i <= n; ++i) depth += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * tf.extinction(s_at(L * i / n));
+  depth *= L / n / 3;
+  EXPECT_NEAR(got.depth, depth, 1e-8);
+  for (int k = 0; k < 3; ++k) EXPECT_NEAR(got.rgb[k], want[k], 1e-7);
 }

@@ -21,7 +21,7 @@ namespace cellproj {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, npy, method = "exact", size, field;
+  std::string scene, png, npy, method = "exact", size, field, interpolation = "isoparametric";
   int threads = 0, frames = 1;
   bool stats = false;
 };
@@ -43,6 +43,7 @@ int run_render(const RenderArgs& a) {
   if (!a.field.empty()) scene.field = a.field;
   if (a.method != "exact")
     throw InputError("--method: unknown method '" + a.method + "'; available: exact (the projection methods come with the projection stage)");
+  const CellInterpolation interpolation = cell_interpolation_from_name(a.interpolation);
   const PreparedScene prepared = prepare_scene(scene);
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
   const double load_seconds = seconds_since(t_load);
@@ -55,7 +56,7 @@ int run_render(const RenderArgs& a) {
   ExactStats st;
   arena.execute([&] {
     const auto t_prep = std::chrono::steady_clock::now();
-    const ExactRenderer renderer(prepared.loaded.mesh.view(prepared.field));
+    const ExactRenderer renderer(prepared.loaded.mesh.view(prepared.field), interpolation);
     prepare_seconds = seconds_since(t_prep);
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
@@ -96,7 +97,9 @@ int run_render(const RenderArgs& a) {
                         {"max_frame_seconds", *std::max_element(frame_times.begin(), frame_times.end())},
                         {"prepare_seconds", prepare_seconds},
                         {"trace_seconds", trace_seconds / a.frames},
-                        {"segments", st.segments}};
+                        {"segments", st.segments},
+                        {"interpolation", name_of(interpolation)},
+                        {"newton_failures", st.newton_failures}};
     std::fprintf(stderr, "%s\n", s.dump().c_str());
   }
   return kExitOk;
@@ -111,6 +114,9 @@ Action add_render(CLI::App& app) {
   cmd->add_option("-o,--output", args->png, "PNG to write (default: SCENE's name with .png, in the current folder)");
   cmd->add_option("--npy", args->npy, "Also write the premultiplied float RGBA image as .npy (H, W, 4)");
   cmd->add_option("--method", args->method, "Rendering method: exact (the reference ray integrator)");
+  cmd->add_option("--interpolation", args->interpolation,
+                  "Field inside hexahedra, wedges and pyramids for exact: isoparametric (default) or canonical-tets")
+      ->check(CLI::IsMember({"isoparametric", "canonical-tets"}));
   cmd->add_option("--size", args->size, "Image size WxH, overriding the scene");
   cmd->add_option("--field", args->field, "Point field to render, overriding the scene");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
