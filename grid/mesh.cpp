@@ -1,5 +1,9 @@
 #include "grid/mesh.hpp"
 
+#include <algorithm>
+#include <numeric>
+#include <tuple>
+
 #include "grid/error.hpp"
 
 namespace cellproj {
@@ -52,6 +56,35 @@ MeshView Mesh::view(const std::string& field_name) const {
   v.scalar = field(field_name).values.data();
   v.field = field_name;
   return v;
+}
+
+std::int64_t merge_coincident_points(Mesh& mesh) {
+  const std::int64_t n = mesh.n_points();
+  std::vector<std::int64_t> order(static_cast<std::size_t>(n));
+  std::iota(order.begin(), order.end(), 0);
+  auto coords = [&](std::int64_t p) {
+    return std::tie(mesh.points[3 * p], mesh.points[3 * p + 1], mesh.points[3 * p + 2]);
+  };
+  std::sort(order.begin(), order.end(), [&](std::int64_t a, std::int64_t b) {
+    return coords(a) < coords(b) || (coords(a) == coords(b) && a < b);
+  });
+  std::vector<std::int64_t> keep_as(static_cast<std::size_t>(n));  // point -> the first of its coincident group
+  for (std::size_t i = 0; i < order.size(); ++i)
+    keep_as[order[i]] = i > 0 && coords(order[i]) == coords(order[i - 1]) ? keep_as[order[i - 1]] : order[i];
+  std::vector<std::int64_t> new_id(static_cast<std::size_t>(n), -1);
+  std::int64_t kept = 0;
+  for (std::int64_t p = 0; p < n; ++p) {
+    if (keep_as[p] != p) continue;
+    new_id[p] = kept;
+    for (int k = 0; k < 3; ++k) mesh.points[3 * kept + k] = mesh.points[3 * p + k];
+    for (auto& f : mesh.fields) f.values[kept] = f.values[p];
+    ++kept;
+  }
+  if (kept == n) return 0;
+  mesh.points.resize(static_cast<std::size_t>(3 * kept));
+  for (auto& f : mesh.fields) f.values.resize(static_cast<std::size_t>(kept));
+  for (auto& id : mesh.connectivity) id = new_id[keep_as[id]];
+  return n - kept;
 }
 
 }  // namespace cellproj

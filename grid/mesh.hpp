@@ -61,4 +61,8 @@ class Mesh {
   MeshView view(const std::string& field_name) const;
 };
 
+// Merges points with bit-identical coordinates (the duplicated interface points of the pieces of a
+// parallel file), keeping the first point's field values; returns how many were removed.
+std::int64_t merge_coincident_points(Mesh& mesh);
+
 }  // namespace cellproj

@@ -1,7 +1,9 @@
 // Readers that go through VTK: XML and legacy VTK files, Exodus II, CGNS and PLOT3D.
 #include <cmath>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <sstream>
 #include <map>
 #include <unordered_map>
@@ -26,6 +28,8 @@
 #include <vtkPointSet.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkSmartPointer.h>
+#include <vtkStringArray.h>
+#include <vtkPoints.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
 #include "grid/error.hpp"
@@ -334,6 +338,67 @@ void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
                                      std::to_string(numbers)));
 }
 
+// VTK's legacy reader takes a binary file cut inside its last arrays without a word. The file must
+// hold at least the bytes of every array it returned, besides its four header lines: cell types
+// as 4-byte ints; cells as 4-byte counts and ids before format 5, as offset and connectivity
+// arrays of their declared type from 5 on.
+void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
+  auto* ds = vtkDataSet::SafeDownCast(obj);
+  if (!ds) return;
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  std::uintmax_t needed = 0;  // a lower bound of the file's size
+  double version = 0.0;
+  for (int i = 0; i < 4 && std::getline(in, line); ++i) {
+    needed += line.size() + 1;
+    if (i == 0 && line.find("Version") != std::string::npos) version = std::atof(line.substr(line.find("Version") + 7).c_str());
+    if (i == 2 && line.rfind("BINARY", 0) != 0) return;
+  }
+  auto bytes = [](vtkAbstractArray* a) {
+    return a ? static_cast<std::uintmax_t>(a->GetNumberOfValues()) * static_cast<std::uintmax_t>(a->GetDataTypeSize()) : 0;
+  };
+  if (auto* ps = vtkPointSet::SafeDownCast(ds); ps && ps->GetPoints()) needed += bytes(ps->GetPoints()->GetData());
+  if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds); ug && ug->GetCells()) {
+    vtkCellArray* cells = ug->GetCells();
+    const auto n = static_cast<std::uintmax_t>(ug->GetNumberOfCells());
+    needed += version >= 5.0 ? bytes(cells->GetOffsetsArray()) + bytes(cells->GetConnectivityArray())
+                             : 4 * (n + static_cast<std::uintmax_t>(cells->GetNumberOfConnectivityIds()));
+    needed += 4 * n;
+  }
+  for (vtkFieldData* fd : {ds->GetFieldData(), static_cast<vtkFieldData*>(ds->GetPointData()),
+                           static_cast<vtkFieldData*>(ds->GetCellData())})
+    for (int i = 0; fd && i < fd->GetNumberOfArrays(); ++i)
+      if (auto* a = fd->GetAbstractArray(i); a && a->GetDataTypeSize() > 0 && !vtkStringArray::SafeDownCast(a))
+        needed += bytes(a);
+  // The text lines between the arrays are in the file too: keyword lines, and a FIELD block's
+  // array lines (the array's name, spaces written %20, then its sizes).
+  in.clear();
+  in.seekg(0);
+  const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const auto size = static_cast<std::uintmax_t>(text.size());
+  std::vector<std::string> starts = {"POINTS ", "CELLS ", "OFFSETS ", "CONNECTIVITY ", "CELL_TYPES ", "POINT_DATA ",
+                                     "CELL_DATA ", "SCALARS ", "LOOKUP_TABLE ", "VECTORS ", "NORMALS ", "TENSORS ",
+                                     "FIELD ", "METADATA", "INFORMATION ", "NAME ", "DATA "};
+  for (vtkFieldData* fd : {ds->GetFieldData(), static_cast<vtkFieldData*>(ds->GetPointData()),
+                           static_cast<vtkFieldData*>(ds->GetCellData())})
+    for (int i = 0; fd && i < fd->GetNumberOfArrays(); ++i)
+      if (const char* name = fd->GetAbstractArray(i) ? fd->GetAbstractArray(i)->GetName() : nullptr) {
+        std::string encoded;
+        for (const char* c = name; *c; ++c) encoded += *c == ' ' ? std::string("%20") : std::string(1, *c);
+        starts.push_back(encoded + " ");
+      }
+  std::sort(starts.begin(), starts.end());
+  starts.erase(std::unique(starts.begin(), starts.end()), starts.end());
+  for (const std::string& start : starts)
+    for (auto at = text.find("\n" + start); at != std::string::npos; at = text.find("\n" + start, at + 1)) {
+      const auto end = text.find('\n', at + 1);
+      if (end != std::string::npos && end - at < 256) needed += end - at;
+    }
+  if (size < needed)
+    throw InputError(where(path, "truncated: its arrays need at least " + std::to_string(needed) + " bytes, the file has " +
+                                     std::to_string(size)));
+}
+
 template <class Reader>
 Mesh run(Reader* reader, const std::string& path, const VtkMessages& messages, const std::string& zone = "") {
   reader->Update();
@@ -376,7 +441,12 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
       throw InputError(where(path, "truncated: a VTK XML file ends with </VTKFile>, this one does not"));
     auto r = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
     r->SetFileName(path.c_str());
-    return run(r.Get(), path, messages);
+    Mesh mesh = run(r.Get(), path, messages);
+    const auto ext = fs::path(path).extension().string();
+    if (ext == ".pvtu" || ext == ".pvts")  // the pieces repeat their interface points
+      if (const std::int64_t merged = merge_coincident_points(mesh))
+        mesh.notes.push_back(std::to_string(merged) + " coincident points of the pieces merged");
+    return mesh;
   }
   if (format == "vtk-legacy") {
     auto r = vtkSmartPointer<vtkDataSetReader>::New();
@@ -387,6 +457,7 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     r->Update();
     messages.throw_if_failed(path);
     check_legacy_ascii_complete(path, r->GetOutputDataObject(0));
+    check_legacy_binary_complete(path, r->GetOutputDataObject(0));
     return run(r.Get(), path, messages);
   }
   if (format == "exodus") {

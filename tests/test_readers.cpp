@@ -7,6 +7,7 @@
 
 #include "grid/error.hpp"
 #include "grid/read_mesh.hpp"
+#include "grid/topology.hpp"
 #include "grid/write_mesh.hpp"
 #include "test_util.hpp"
 
@@ -138,7 +139,8 @@ TEST(Readers, TruncatedAndCorruptedFilesAreErrors) {
   std::vector<std::string> files = {dir.file("gen.vtu"), dir.file("legacy.vtk")};
   for (const char* rel : {"exodus_disk_out_ref/disk_out_ref.ex2", "cgns_static_mixer/StaticMixer.cgns.gz",
                           "nasa_bluntfin/bluntfinxyz.bin", "vtkdata_hexa/hexa.vtk", "vtkdata_post_tets/post_tets.vtu",
-                          "nasa_bluntfin/bluntfin.vts"})
+                          "nasa_bluntfin/bluntfin.vts", "vtkdata_post_tets/post.vtk",
+                          "vtkdata_notch_stress/notch_stress_fixed.vtk"})
     if (fs::exists(test::shared_data(rel))) files.push_back(test::shared_data(rel));
   for (const auto& f : files) {
     const std::string bytes = slurp(f), name = fs::path(f).filename().string();
@@ -159,4 +161,57 @@ TEST(Readers, TruncatedAndCorruptedFilesAreErrors) {
     } catch (const InputError&) {
     }
   }
+}
+
+// VTK's legacy reader zero-fills a binary file cut inside its last array; we count the bytes its
+// arrays and text lines need. Cutting one 4-byte value and its newline must be caught.
+TEST(Readers, LegacyBinaryCutInsideTheLastArray) {
+  test::TempDir dir;
+  int tried = 0;
+  for (const char* rel : {"vtkdata_post_tets/post.vtk", "vtkdata_notch_stress/notch_stress_fixed.vtk"}) {
+    if (!fs::exists(test::shared_data(rel))) continue;
+    ++tried;
+    const std::string bytes = slurp(test::shared_data(rel));
+    EXPECT_NO_THROW(read_mesh(test::shared_data(rel)));
+    for (std::size_t cut : {8, 100, 5000}) {
+      const std::string f = dir.file("cut" + std::to_string(cut) + ".vtk");
+      spit(f, bytes.substr(0, bytes.size() - cut));
+      EXPECT_NE(read_error(f).find("truncated"), std::string::npos) << rel << " less " << cut << " bytes";
+    }
+  }
+  if (tried == 0) GTEST_SKIP() << "no ../shared/data beside this clone";
+}
+
+// A parallel file: two pieces of one box, their interface points repeated. Read as one conforming
+// mesh, the interface points merged and its faces shared again.
+TEST(Readers, ParallelVtuPiecesAreMergedAtTheirInterface) {
+  test::TempDir dir;
+  auto half = [](double x0, double x1) {
+    Mesh m = make_box(2, 4, 4, {x0, 0, 0}, {x1, 1, 1}, true);
+    set_field(m, "f", [](const glm::dvec3& x) { return x.x + 2 * x.y; });
+    return m;
+  };
+  write_vtu(half(0.0, 0.5), dir.file("a.vtu"));
+  write_vtu(half(0.5, 1.0), dir.file("b.vtu"));
+  spit(dir.file("box.pvtu"), R"(<?xml version="1.0"?>
+<VTKFile type="PUnstructuredGrid" version="0.1" byte_order="LittleEndian" header_type="UInt64">
+  <PUnstructuredGrid GhostLevel="0">
+    <PPointData Scalars="f"><PDataArray type="Float64" Name="f"/></PPointData>
+    <PPoints><PDataArray type="Float64" NumberOfComponents="3"/></PPoints>
+    <Piece Source="a.vtu"/>
+    <Piece Source="b.vtu"/>
+  </PUnstructuredGrid>
+</VTKFile>
+)");
+  const Mesh m = read_mesh(dir.file("box.pvtu"));
+  const Mesh whole = make_box(4, 4, 4, glm::dvec3(0), glm::dvec3(1), true);
+  EXPECT_EQ(m.n_points(), whole.n_points());  // 5 x 5 x 5, the 25 interface points once
+  EXPECT_EQ(m.n_cells(), whole.n_cells());
+  const FaceTopology topo = build_topology(m.view());
+  EXPECT_EQ(topo.boundary.size(), build_topology(whole.view()).boundary.size());
+  const auto& f = m.field("f").values;
+  for (std::int64_t p = 0; p < m.n_points(); ++p)
+    ASSERT_DOUBLE_EQ(f[p], m.points[3 * p] + 2 * m.points[3 * p + 1]);
+  spit(dir.file("missing.pvtu"), slurp(dir.file("box.pvtu")).replace(slurp(dir.file("box.pvtu")).find("b.vtu"), 5, "c.vtu"));
+  EXPECT_FALSE(read_error(dir.file("missing.pvtu")).empty());
 }
