@@ -166,14 +166,19 @@ HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) {
   const double tol = 1e-6 * glm::length(hi - lo);  // float32 files round curved hulls by ~1e-7
   int up = 0, down = 0;
   double area = 0.0, off_area = 0.0;
-  for (std::int64_t cf : t.boundary) {
+  r.off_hull.assign(t.boundary.size(), 0);
+  for (std::size_t b = 0; b < t.boundary.size(); ++b) {
+    const std::int64_t cf = t.boundary[b];
     const std::int64_t c = t.cell_of(cf);
     glm::dvec3 p[4];
     const int n = face_points(m, c, static_cast<int>(cf - t.face_offsets[c]), p);
     const glm::dvec3 nn = newell_normal(p, n);
     const double len = glm::length(nn);
     area += 0.5 * len;
-    if (len == 0.0) continue;
+    if (len == 0.0) {  // a collapsed face: no area to see, but never assumed on the hull
+      r.off_hull[b] = 1;
+      continue;
+    }
     const glm::dvec3 dir = nn / len;
     double fmax = -std::numeric_limits<double>::max(), fmin = std::numeric_limits<double>::max();
     for (int i = 0; i < n; ++i) {
@@ -183,6 +188,7 @@ HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) {
     // Either side of the face may be the outside (inverted cells are not re-oriented in a view).
     const bool on_hull = support(dir, up) <= fmax + tol || -support(-dir, down) >= fmin - tol;
     if (!on_hull) {
+      r.off_hull[b] = 1;
       ++r.boundary_faces_off_hull;
       off_area += 0.5 * len;
     }

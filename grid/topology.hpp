@@ -37,6 +37,7 @@ struct HullReport {
   bool convex = false;
   std::int64_t boundary_faces_off_hull = 0;  // boundary faces not on a supporting plane of the hull
   double off_hull_area_share = 0.0;
+  std::vector<char> off_hull;  // per FaceTopology::boundary entry: 1 when that face is not on the hull
 };
 
 // The boundary is convex when every boundary face lies on the convex hull of the mesh (a face on

@@ -13,6 +13,7 @@
 #include "optics/transfer_function.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "tools/commands.hpp"
+#include "tools/timing.hpp"
 #include "tools/progress.hpp"
 #include "tools/scene.hpp"
 #include "tools/scene_setup.hpp"
@@ -25,16 +26,6 @@ struct RenderArgs {
   int threads = 0, frames = 1;
   bool stats = false;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-double median(std::vector<double> v) {
-  std::sort(v.begin(), v.end());
-  const std::size_t n = v.size();
-  return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
-}
 
 int run_render(const RenderArgs& a) {
   const auto t_load = std::chrono::steady_clock::now();

@@ -17,5 +17,6 @@ using Action = std::function<int()>;
 Action add_render(CLI::App& app);
 Action add_info(CLI::App& app);
 Action add_generate(CLI::App& app);
+Action add_sortbench(CLI::App& app);
 
 }  // namespace cellproj

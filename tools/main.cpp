@@ -12,7 +12,8 @@ int main(int argc, char** argv) {
   CLI::App app{"cellproj: direct volume rendering of unstructured and curvilinear grids by cell projection"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "cellproj 0.1.0");
-  const Action render = add_render(app), info = add_info(app), generate = add_generate(app);
+  const Action render = add_render(app), info = add_info(app), generate = add_generate(app),
+               sortbench = add_sortbench(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -22,6 +23,7 @@ int main(int argc, char** argv) {
   try {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("info")) return info();
+    if (app.got_subcommand("sortbench")) return sortbench();
     return generate();
   } catch (const InputError& e) {
     std::fprintf(stderr, "cellproj: error: %s\n", e.what());

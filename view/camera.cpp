@@ -1,5 +1,6 @@
 #include "view/camera.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include <glm/geometric.hpp>
@@ -59,6 +60,20 @@ Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, Projection projecti
   const double distance = projection == Projection::Perspective ? fit / std::sin(c.fov_y * kPi / 360.0) : 3.0 * radius;
   c.eye = c.target + glm::normalize(from) * distance;
   return c;
+}
+
+std::vector<glm::dvec3> sphere_directions(int n) {
+  std::vector<glm::dvec3> out;
+  constexpr double kGoldenAngle = 2.399963229728653;  // pi (3 - sqrt 5)
+  for (int k = 0; k < n; ++k) {
+    const double z = 1.0 - (2.0 * k + 1.0) / n, r = std::sqrt(std::max(0.0, 1 - z * z)), phi = k * kGoldenAngle;
+    out.emplace_back(r * std::cos(phi), r * std::sin(phi), z);
+  }
+  return out;
+}
+
+glm::dvec3 up_for(const glm::dvec3& from) {
+  return std::abs(glm::normalize(from).z) > 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
 }
 
 Camera camera_from_json(const nlohmann::json& j, const std::string& source) {

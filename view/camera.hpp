@@ -2,6 +2,7 @@
 // The camera and the rays through pixel centres. Pixel (i, j) is column i from the left and row j
 // from the top; its ray passes through (i + 0.5, j + 0.5).
 #include <string>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json_fwd.hpp>
@@ -27,6 +28,11 @@ Camera orbit(const Camera& camera, double degrees);
 // A camera looking at the box [lo, hi] from direction `from` (towards the eye), framing it whole.
 Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, Projection projection, const glm::dvec3& from,
                  const glm::dvec3& up, double aspect);
+
+// n unit directions spread evenly over the sphere (a Fibonacci lattice), for benchmark views.
+std::vector<glm::dvec3> sphere_directions(int n);
+// An up vector not parallel to `from` (z, or x when `from` is nearly vertical).
+glm::dvec3 up_for(const glm::dvec3& from);
 
 Camera camera_from_json(const nlohmann::json& j, const std::string& source);
 

@@ -1,0 +1,183 @@
+// cellproj sortbench MESH... : every sort from N views over a sphere, timed, optionally checked
+// against the order oracle.
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "grid/error.hpp"
+#include "grid/read_mesh.hpp"
+#include "grid/topology.hpp"
+#include "raycast/order_oracle.hpp"
+#include "tools/commands.hpp"
+#include "tools/timing.hpp"
+#include "tools/scene.hpp"
+#include "tools/scene_setup.hpp"
+#include "visibility/sort.hpp"
+
+namespace cellproj {
+namespace {
+
+struct SortbenchArgs {
+  std::vector<std::string> meshes;
+  std::string sorts = "centroid,mpvo,mpvo-abuffer,pairwise", size = "512x512", projection = "ortho", csv;
+  int views = 8;
+  bool check = false, json = false;
+  std::int64_t pairwise_limit = 50000;
+};
+
+std::vector<std::string> split(const std::string& list) {
+  std::vector<std::string> out;
+  std::stringstream in(list);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+// One (mesh, sort, projection) row.
+nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const VisibilitySorter& sorter,
+                         const CellRayTracer* tracer, SortMethod method, Projection projection, int views, int w, int h) {
+  const auto [lo, hi] = bounds(mesh);
+  std::vector<double> times;
+  std::map<std::string, std::vector<double>> phases;
+  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0;
+  std::string ran;
+  for (const glm::dvec3& d : sphere_directions(views)) {
+    const Camera camera = frame_box(lo, hi, projection, d, up_for(d), double(w) / h);
+    const SortResult r = sorter.sort(method, {camera, w, h});
+    ran = name_of(r.stats.method);
+    times.push_back(r.stats.seconds);
+    for (const auto& [phase, s] : r.stats.phase_seconds) phases[phase].push_back(s);
+    face += r.stats.face_relations, gap += r.stats.gap_relations, pair += r.stats.pair_relations;
+    cycles += static_cast<std::int64_t>(r.stats.cycles.size());
+    if (tracer) {
+      const OrderCheck k = check_order(*tracer, mesh.n_cells(), r.order, camera, w, h);
+      if (k.missing_cells || k.repeated_cells)
+        throw std::logic_error(std::string(name_of(method)) + " dropped or repeated cells");  // a bug, exit 3
+      violations += k.violations, violating_pixels += k.violating_pixels;
+    }
+  }
+  nlohmann::json phase_json = nlohmann::json::object();
+  for (const auto& [phase, s] : phases) phase_json[phase] = median(s);
+  const double med = median(times);
+  return {{"mesh", mesh_name},
+          {"sort", name_of(method)},
+          {"ran", ran},
+          {"projection", projection == Projection::Perspective ? "persp" : "ortho"},
+          {"views", views},
+          {"width", w},
+          {"height", h},
+          {"cells", mesh.n_cells()},
+          {"median_seconds", med},
+          {"min_seconds", *std::min_element(times.begin(), times.end())},
+          {"max_seconds", *std::max_element(times.begin(), times.end())},
+          {"phase_seconds", phase_json},
+          {"cells_per_second", med > 0 ? mesh.n_cells() / med : 0.0},
+          {"face_relations", face / views},
+          {"gap_relations", gap / views},
+          {"pair_relations", pair / views},
+          {"cycles", cycles},
+          {"violations", tracer ? nlohmann::json(violations) : nlohmann::json(nullptr)},
+          {"violating_pixels", tracer ? nlohmann::json(violating_pixels) : nlohmann::json(nullptr)}};
+}
+
+std::string cell(const nlohmann::json& v) {
+  if (v.is_null()) return "-";
+  char b[64];
+  if (v.is_number_float()) std::snprintf(b, sizeof b, "%.4g", v.get<double>());
+  else return v.is_string() ? v.get<std::string>() : v.dump();
+  return b;
+}
+
+int run_sortbench(const SortbenchArgs& a) {
+  int w = 0, h = 0;
+  parse_size(a.size, w, h);
+  std::vector<SortMethod> methods;
+  for (const auto& s : split(a.sorts)) methods.push_back(sort_method_from_name(s));
+  if (methods.empty()) throw InputError("--sorts: no sort named; known: " + sort_method_names());
+  std::vector<Projection> projections;
+  if (a.projection == "ortho" || a.projection == "both") projections.push_back(Projection::Orthographic);
+  if (a.projection == "persp" || a.projection == "both") projections.push_back(Projection::Perspective);
+
+  static const char* kColumns[] = {"mesh", "sort", "projection", "views", "cells", "median_seconds", "min_seconds",
+                                   "max_seconds", "cells_per_second", "face_relations", "gap_relations",
+                                   "pair_relations", "cycles", "violations", "violating_pixels"};
+  std::ofstream csv;
+  if (!a.csv.empty()) {
+    csv.open(a.csv);
+    if (!csv) throw InputError(where(a.csv, "cannot write the CSV file"));
+    for (const char* c : kColumns) csv << c << (c == kColumns[14] ? "\n" : ",");
+  }
+  for (const std::string& path : a.meshes) {
+    const auto t0 = std::chrono::steady_clock::now();
+    LoadedMesh loaded = load_mesh(path);
+    const Mesh& mesh = loaded.mesh;
+    const double load_seconds = seconds_since(t0);
+    const auto t1 = std::chrono::steady_clock::now();
+    const FaceTopology topo = build_topology(mesh.view());
+    const HullReport hull = boundary_convexity(mesh.view(), topo);
+    const bool convex = hull.convex;
+    const VisibilitySorter sorter(mesh.view(), topo, hull);
+    const double prepare_seconds = seconds_since(t1);
+    std::unique_ptr<CellRayTracer> tracer;
+    if (a.check) tracer = std::make_unique<CellRayTracer>(mesh.view());
+    if (!a.json)
+      std::printf("%s: %lld cells, boundary %s; read %.3f s, topology and sort preparation %.3f s; %d views, %dx%d\n",
+                  path.c_str(), static_cast<long long>(mesh.n_cells()), convex ? "convex" : "not convex", load_seconds,
+                  prepare_seconds, a.views, w, h);
+    for (SortMethod method : methods) {
+      if (method == SortMethod::pairwise && mesh.n_cells() > a.pairwise_limit) {
+        if (!a.json)
+          std::printf("  pairwise skipped: %lld cells is above --pairwise-limit %lld (it is O(n^2))\n",
+                      static_cast<long long>(mesh.n_cells()), static_cast<long long>(a.pairwise_limit));
+        continue;
+      }
+      for (Projection projection : projections) {
+        const nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, projection, a.views, w, h);
+        if (a.json) std::printf("%s\n", row.dump().c_str());
+        else {
+          std::printf("  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  cycles %lld",
+                      cell(row["sort"]).c_str(), cell(row["projection"]).c_str(), row["median_seconds"].get<double>(),
+                      row["min_seconds"].get<double>(), row["max_seconds"].get<double>(),
+                      row["cells_per_second"].get<double>(), row["face_relations"].get<long long>(),
+                      row["gap_relations"].get<long long>(), row["pair_relations"].get<long long>(),
+                      row["cycles"].get<long long>());
+          if (a.check) std::printf("  violations %s (%s pixels)", cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str());
+          std::printf("\n    phases:");
+          for (const auto& [phase, s] : row["phase_seconds"].items()) std::printf(" %s %.5f s", phase.c_str(), s.get<double>());
+          std::printf("\n");
+        }
+        if (csv.is_open())
+          for (const char* c : kColumns) csv << cell(row[c]) << (c == kColumns[14] ? "\n" : ",");
+        std::fflush(stdout);
+      }
+    }
+  }
+  return kExitOk;
+}
+
+}  // namespace
+
+Action add_sortbench(CLI::App& app) {
+  auto args = std::make_shared<SortbenchArgs>();
+  CLI::App* cmd = app.add_subcommand("sortbench", "Time the visibility sorts from views spread over a sphere, and check them");
+  cmd->add_option("meshes", args->meshes, "Mesh files (any format `info` reads)")->required();
+  cmd->add_option("--sorts", args->sorts, "Comma-separated sorts: " + sort_method_names())->capture_default_str();
+  cmd->add_option("--views", args->views, "Viewpoints, spread evenly over a sphere around the mesh")
+      ->check(CLI::Range(1, 100000))->capture_default_str();
+  cmd->add_option("--size", args->size, "Image size WxH (the A-buffer samples its pixel centres)")->capture_default_str();
+  cmd->add_option("--projection", args->projection, "ortho, persp or both")
+      ->check(CLI::IsMember({"ortho", "persp", "both"}))->capture_default_str();
+  cmd->add_flag("--check", args->check, "Count order violations with the ray-traced oracle (slow)");
+  cmd->add_option("--csv", args->csv, "Also write the rows to this CSV file");
+  cmd->add_flag("--json", args->json, "One JSON object per line per (mesh, sort, projection) instead of the table");
+  cmd->add_option("--pairwise-limit", args->pairwise_limit, "Skip pairwise on meshes with more cells than this")
+      ->capture_default_str();
+  return [args] { return run_sortbench(*args); };
+}
+
+}  // namespace cellproj

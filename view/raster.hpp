@@ -1,0 +1,52 @@
+#pragma once
+// The coverage rule of every rasterizing path (the A-buffer of the visibility sort, the projection
+// back ends): a triangle covers the pixel centres (i + 0.5, j + 0.5) strictly inside it, and a
+// centre exactly on an edge belongs to the triangle for which that edge is a top or left edge.
+// Edge functions are evaluated with the edge's endpoints in a fixed order, so two triangles sharing
+// an edge compute exactly opposite values: a centre on a shared edge is covered exactly once.
+#include <algorithm>
+#include <cmath>
+
+#include <glm/vec2.hpp>
+
+namespace cellproj {
+
+namespace raster_detail {
+inline bool before(const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); }
+// (b - a) x (p - a), computed from the lesser endpoint so that edge (b, a) gives exactly the negation.
+inline double edge(const glm::dvec2& a, const glm::dvec2& b, double px, double py) {
+  if (before(b, a)) return -edge(b, a, px, py);
+  return (b.x - a.x) * (py - a.y) - (b.y - a.y) * (px - a.x);
+}
+// Whether a centre exactly on edge a->b (of a positively oriented triangle) belongs to it: true for
+// exactly one of the two directions of any edge.
+inline bool owns(const glm::dvec2& a, const glm::dvec2& b) { return a.y > b.y || (a.y == b.y && a.x < b.x); }
+}  // namespace raster_detail
+
+// Calls covered(i, j) for every pixel of a width x height image whose centre the triangle
+// (p0, p1, p2) in pixel coordinates (x right, y down) covers. Degenerate triangles cover nothing.
+template <class Covered>
+void rasterize_triangle(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Covered&& covered) {
+  using namespace raster_detail;
+  double area = edge(p0, p1, p2.x, p2.y);
+  if (!(area != 0.0) || !std::isfinite(area)) return;
+  if (area < 0) std::swap(p1, p2);
+  const double xmin = std::min({p0.x, p1.x, p2.x}), xmax = std::max({p0.x, p1.x, p2.x});
+  const double ymin = std::min({p0.y, p1.y, p2.y}), ymax = std::max({p0.y, p1.y, p2.y});
+  const int i0 = static_cast<int>(std::max(0.0, std::ceil(xmin - 0.5)));
+  const int i1 = static_cast<int>(std::min(double(width - 1), std::floor(xmax - 0.5)));
+  const int j0 = static_cast<int>(std::max(0.0, std::ceil(ymin - 0.5)));
+  const int j1 = static_cast<int>(std::min(double(height - 1), std::floor(ymax - 0.5)));
+  const bool own01 = owns(p0, p1), own12 = owns(p1, p2), own20 = owns(p2, p0);
+  for (int j = j0; j <= j1; ++j) {
+    const double y = j + 0.5;
+    for (int i = i0; i <= i1; ++i) {
+      const double x = i + 0.5;
+      const double e0 = edge(p0, p1, x, y), e1 = edge(p1, p2, x, y), e2 = edge(p2, p0, x, y);
+      if ((e0 > 0 || (e0 == 0 && own01)) && (e1 > 0 || (e1 == 0 && own12)) && (e2 > 0 || (e2 == 0 && own20)))
+        covered(i, j);
+    }
+  }
+}
+
+}  // namespace cellproj

@@ -1,0 +1,100 @@
+#pragma once
+// What a VisibilitySorter prepares once per mesh, and the pieces each sort is built from.
+// Internal to visibility/.
+#include <array>
+#include <chrono>
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "visibility/sort.hpp"
+
+namespace cellproj {
+
+struct VisibilitySorter::Prepared {
+  MeshView mesh;
+  const FaceTopology* topo = nullptr;
+  bool convex = false;
+  glm::dvec3 centre{0.0};             // coordinates below are relative to it (huge offsets lose nothing)
+  double extent = 0.0;                // half the bounding box's diagonal
+  std::vector<double> xyz;            // recentred points
+  std::vector<glm::dvec3> centroid;   // per cell
+  // Shared faces, each once: cells a and b, the face's unit normal outward from a, and its plane
+  // offset (normal . x on the face; a quad's at its centroid).
+  std::vector<std::int32_t> face_a, face_b;
+  std::vector<glm::dvec3> normal;
+  std::vector<double> offset;
+  std::vector<std::array<std::int64_t, 3>> face_tri;  // a triangle face's ids turning with the normal; [0] = -1 for quads
+  std::vector<std::uint8_t> local_a, local_b;  // per shared face: its index among face_a's / face_b's faces
+  std::vector<std::int32_t> across;   // per cell face (topology order): the cell across a shared face, or -1
+  bool all_tetrahedra = false;        // then cell c's faces start at 4 c
+  // Boundary faces off the convex hull as triangles (quads split by the diagonal from their lowest
+  // id), outward.
+  std::vector<std::int64_t> boundary_cell;
+  std::vector<std::array<std::int64_t, 3>> boundary_tri;
+
+  glm::dvec3 point(std::int64_t p) const { return {xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]}; }
+};
+
+// The view in the recentred frame: the eye, the view direction, and how far each cell is.
+struct ViewFrame {
+  bool perspective = false;
+  glm::dvec3 eye{0.0}, dir{0.0, 0.0, -1.0};
+  double eye_scale = 1.0;  // |eye| plus the mesh's extent: the scale of plane tests in perspective
+  Camera camera;  // recentred
+  // Larger is farther: distance along the view direction (orthographic), squared distance from the eye (perspective).
+  double far_key(const glm::dvec3& p) const {
+    const glm::dvec3 d = p - eye;
+    return perspective ? d.x * d.x + d.y * d.y + d.z * d.z : d.x * dir.x + d.y * dir.y + d.z * dir.z;
+  }
+};
+ViewFrame view_frame(const VisibilitySorter::Prepared& p, const SortView& view);
+
+// Relations "a is composited before b" (a behind b), as a successor list per cell.
+struct Relations {
+  std::vector<std::int64_t> start;  // n + 1
+  std::vector<std::int64_t> to;
+  // Sorts and deduplicates (from, to) pairs into the lists; returns how many distinct pairs.
+  std::int64_t build(std::int64_t n, std::vector<std::pair<std::int64_t, std::int64_t>>& pairs);
+};
+
+// The relations across shared faces for one view, laid out for the topological sort: bit k of
+// ahead[c] is set when the cell across c's k-th face comes after c; in[c] counts the cells that
+// must come before c. A face seen exactly edge-on makes no relation.
+struct FaceOrder {
+  std::vector<std::uint8_t> ahead;
+  std::vector<std::int32_t> in;
+  std::int64_t relations = 0;
+};
+FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v);
+// Relations across the gaps of a non-convex mesh, from an A-buffer of its boundary faces at the
+// view's pixel centres.
+Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, SortStats& stats);
+// Relations from pairwise occlusion tests between every two cells whose projections overlap.
+Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
+                             SortStats& stats);
+// Cells by centroid depth, far first (LSD radix sort on the float keys).
+std::vector<std::int64_t> centroid_order(const VisibilitySorter::Prepared& p, const ViewFrame& v);
+
+// Kahn's topological sort (in-counts and a FIFO queue, O(n + relations)) over the face relations
+// and extra relation lists; when it stalls, the visibility cycles are found (strongly connected
+// components), reported, and broken at their farthest cell. Consumes faces.in.
+std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p, const ViewFrame& v, FaceOrder& faces,
+                                            const std::vector<const Relations*>& extra, SortStats& stats);
+
+class PhaseClock {
+ public:
+  explicit PhaseClock(SortStats& s) : stats_(s), t_(std::chrono::steady_clock::now()) {}
+  void lap(const char* phase) {
+    const auto now = std::chrono::steady_clock::now();
+    stats_.phase_seconds.emplace_back(phase, std::chrono::duration<double>(now - t_).count());
+    t_ = now;
+  }
+
+ private:
+  SortStats& stats_;
+  std::chrono::steady_clock::time_point t_;
+};
+
+}  // namespace cellproj

@@ -1,0 +1,81 @@
+#pragma once
+// Visibility ordering (MWSC section 3): the cells of a mesh back to front for one view, so that
+// compositing them in that order with "over" is right. One `VisibilitySorter` is prepared per mesh
+// (face planes, centroids, boundary faces) and sorts any number of views.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "grid/mesh.hpp"
+#include "grid/topology.hpp"
+#include "view/camera.hpp"
+
+namespace cellproj {
+
+enum class SortMethod {
+  centroid,      // by centroid depth, a radix sort: what common tools do; the baseline
+  mpvo,          // Williams' MPVO: a relation across every shared face, then a topological sort
+  mpvo_abuffer,  // MPVO plus the relations across the gaps of a non-convex mesh (software A-buffer)
+  pairwise,      // Newell-Newell-Sancha for polyhedra: exact occlusion tests between all overlapping cells
+  automatic,     // mpvo on a convex boundary, mpvo-abuffer otherwise
+};
+SortMethod sort_method_from_name(const std::string& name);  // throws InputError listing the names
+const char* name_of(SortMethod method);
+std::string sort_method_names();
+
+// A visibility cycle met by the topological sort: the cells of one strongly connected component
+// (at most kMaxCycleCells listed), and the cell whose remaining relations were dropped to go on.
+struct VisibilityCycle {
+  static constexpr std::size_t kMaxCycleCells = 32;
+  std::int64_t size = 0;            // cells in the component
+  std::vector<std::int64_t> cells;  // the first kMaxCycleCells of them
+  std::int64_t broken_at = -1;      // the cell emitted early
+  std::int64_t relations_dropped = 0;
+};
+
+struct SortStats {
+  SortMethod method = SortMethod::centroid;  // the method that ran (auto resolved)
+  std::int64_t face_relations = 0;  // relations across shared faces
+  std::int64_t gap_relations = 0;   // relations across gaps between boundary faces (A-buffer), distinct
+  std::int64_t pair_relations = 0;  // relations from pairwise occlusion tests
+  std::int64_t abuffer_fragments = 0;  // boundary-face samples in the A-buffer
+  std::int64_t abuffer_out_of_order = 0;  // fragments not inserted at the head of their pixel's list
+  std::vector<VisibilityCycle> cycles;
+  std::vector<std::pair<std::string, double>> phase_seconds;  // in the order they ran
+  double seconds = 0.0;  // the whole sort
+};
+
+struct SortResult {
+  std::vector<std::int64_t> order;  // every cell once, back to front
+  SortStats stats;
+};
+
+// The view a sort is for: the camera (eye point in perspective, direction in orthographic) and
+// the image whose pixel centres the A-buffer samples (the rasterizer's, so the picture is right).
+struct SortView {
+  Camera camera;
+  int width = 512, height = 512;
+};
+
+class VisibilitySorter {
+ public:
+  // The mesh's arrays and the topology must outlive the sorter. The hull report
+  // (boundary_convexity) decides what `automatic` runs, and which boundary faces can bound a gap.
+  VisibilitySorter(const MeshView& mesh, const FaceTopology& topology, const HullReport& hull);
+  ~VisibilitySorter();
+  VisibilitySorter(VisibilitySorter&&) noexcept;
+
+  SortResult sort(SortMethod method, const SortView& view) const;
+
+  std::int64_t cells() const;
+  bool convex_boundary() const;
+
+  struct Prepared;  // face planes, centroids and boundary faces, recentred (visibility/prepared.hpp)
+
+ private:
+  std::unique_ptr<Prepared> p_;
+};
+
+}  // namespace cellproj

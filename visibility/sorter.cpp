@@ -1,0 +1,239 @@
+#include <cstring>
+#include <algorithm>
+#include <climits>
+#include <limits>
+
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
+
+#include "grid/error.hpp"
+#include "grid/tetrahedralize.hpp"
+#include "visibility/prepared.hpp"
+
+namespace cellproj {
+namespace {
+
+struct MethodName {
+  SortMethod method;
+  const char* name;
+};
+constexpr MethodName kNames[] = {{SortMethod::automatic, "auto"},
+                                 {SortMethod::centroid, "centroid"},
+                                 {SortMethod::mpvo, "mpvo"},
+                                 {SortMethod::mpvo_abuffer, "mpvo-abuffer"},
+                                 {SortMethod::pairwise, "pairwise"}};
+
+// A face's normal (outward for the cell listing it in this order) and centroid. Triangles take
+// their normal from the vertices in increasing id, so both cells of a face get the same plane.
+void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, int n, glm::dvec3& normal,
+                glm::dvec3& point, std::array<std::int64_t, 3>& tri) {
+  point = glm::dvec3(0.0);
+  for (int k = 0; k < n; ++k) point += p.point(ids[k]) / double(n);
+  if (n == 3) {
+    std::array<std::int64_t, 3> s = {ids[0], ids[1], ids[2]};
+    bool flip = false;
+    for (int i = 0; i < 2; ++i)
+      for (int j = 0; j < 2 - i; ++j)
+        if (s[j] > s[j + 1]) std::swap(s[j], s[j + 1]), flip = !flip;
+    normal = glm::cross(p.point(s[1]) - p.point(s[0]), p.point(s[2]) - p.point(s[0]));
+    if (flip) normal = -normal, std::swap(s[1], s[2]);
+    tri = s;
+    return;
+  }
+  normal = glm::dvec3(0.0);  // Newell's normal of the (possibly warped) quad
+  for (int k = 0; k < n; ++k) {
+    const glm::dvec3 a = p.point(ids[k]), b = p.point(ids[(k + 1) % n]);
+    normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
+  }
+  tri = {-1, -1, -1};
+}
+
+}  // namespace
+
+SortMethod sort_method_from_name(const std::string& name) {
+  for (const auto& n : kNames)
+    if (name == n.name) return n.method;
+  throw InputError("unknown sort '" + name + "' (known: " + sort_method_names() + ")");
+}
+
+const char* name_of(SortMethod method) {
+  for (const auto& n : kNames)
+    if (method == n.method) return n.name;
+  return "?";
+}
+
+std::string sort_method_names() {
+  std::string s;
+  for (const auto& n : kNames) s += (s.empty() ? "" : ", ") + std::string(n.name);
+  return s;
+}
+
+VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& topo, const HullReport& hull)
+    : p_(std::make_unique<Prepared>()) {
+  Prepared& p = *p_;
+  p.mesh = mesh;
+  p.topo = &topo;
+  p.convex = hull.convex;
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (std::int64_t i = 0; i < mesh.n_points; ++i) lo = glm::min(lo, mesh.point(i)), hi = glm::max(hi, mesh.point(i));
+  p.centre = mesh.n_points ? 0.5 * (lo + hi) : glm::dvec3(0.0);
+  p.extent = mesh.n_points ? 0.5 * glm::length(hi - lo) : 0.0;
+  p.xyz.resize(static_cast<std::size_t>(3 * mesh.n_points));
+  for (std::int64_t i = 0; i < 3 * mesh.n_points; ++i) p.xyz[i] = mesh.points[i] - p.centre[i % 3];
+
+  p.centroid.resize(static_cast<std::size_t>(mesh.n_cells));
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
+    glm::dvec3 s(0.0);
+    for (int k = 0; k < mesh.cell_size(c); ++k) s += p.point(mesh.cell(c)[k]);
+    p.centroid[c] = s / double(mesh.cell_size(c));
+  }
+
+  if (mesh.n_cells > INT32_MAX) throw InputError(where(mesh.source, "more than 2^31 cells: too many for one sorter"));
+  const auto& fo = topo.face_offsets;
+  p.across.assign(topo.neighbor.size(), -1);
+  std::int64_t ids[4];
+  auto face_ids = [&](std::int64_t c, std::int64_t cf) {
+    const FaceDef& f = cell_def(mesh.type(c)).face[cf - fo[c]];
+    for (int k = 0; k < f.size; ++k) ids[k] = mesh.cell(c)[f.v[k]];
+    return static_cast<int>(f.size);
+  };
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c)
+    for (std::int64_t cf = fo[c]; cf < fo[c + 1]; ++cf) {
+      const std::int64_t m = topo.neighbor[cf];
+      if (m < 0 || m < c) continue;  // boundary, non-manifold, or made from the other side
+      std::int64_t back = -1;  // m's face towards c
+      for (std::int64_t g = fo[m]; g < fo[m + 1]; ++g)
+        if (topo.neighbor[g] == c) back = g;
+      if (back < 0) continue;
+      glm::dvec3 normal, point;
+      std::array<std::int64_t, 3> tri;
+      face_plane(p, ids, face_ids(c, cf), normal, point, tri);
+      p.across[cf] = static_cast<std::int32_t>(m);
+      p.across[back] = static_cast<std::int32_t>(c);
+      p.face_a.push_back(static_cast<std::int32_t>(c));
+      p.face_b.push_back(static_cast<std::int32_t>(m));
+      p.local_a.push_back(static_cast<std::uint8_t>(cf - fo[c]));
+      p.local_b.push_back(static_cast<std::uint8_t>(back - fo[m]));
+      const double len = glm::length(normal);
+      if (len > 0) normal /= len;
+      p.normal.push_back(normal);
+      p.offset.push_back(glm::dot(normal, point));
+      p.face_tri.push_back(tri);
+    }
+  // Boundary faces off the convex hull: only they can bound a gap (a ray leaving through a hull
+  // face never comes back), so only they go into the A-buffer.
+  const bool know_hull = hull.off_hull.size() == topo.boundary.size();
+  for (std::size_t b = 0; b < topo.boundary.size(); ++b) {
+    if (know_hull && !hull.off_hull[b]) continue;
+    const std::int64_t cf = topo.boundary[b], c = topo.cell_of(cf);
+    const int n = face_ids(c, cf);
+    std::int64_t tri[2][3];
+    if (n == 3) std::copy(ids, ids + 3, tri[0]);
+    else split_quad(ids, tri);
+    for (int t = 0; t < (n == 3 ? 1 : 2); ++t) {
+      p.boundary_cell.push_back(c);
+      p.boundary_tri.push_back({tri[t][0], tri[t][1], tri[t][2]});
+    }
+  }
+  p.all_tetrahedra = std::all_of(mesh.types, mesh.types + mesh.n_cells,
+                                 [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); });
+}
+
+VisibilitySorter::~VisibilitySorter() = default;
+VisibilitySorter::VisibilitySorter(VisibilitySorter&&) noexcept = default;
+std::int64_t VisibilitySorter::cells() const { return p_->mesh.n_cells; }
+bool VisibilitySorter::convex_boundary() const { return p_->convex; }
+
+ViewFrame view_frame(const VisibilitySorter::Prepared& p, const SortView& view) {
+  ViewFrame v;
+  v.camera = view.camera;
+  v.camera.eye -= p.centre;
+  v.camera.target -= p.centre;
+  v.perspective = view.camera.projection == Projection::Perspective;
+  v.eye = v.camera.eye;
+  v.dir = glm::normalize(v.camera.target - v.camera.eye);
+  v.eye_scale = glm::length(v.eye) + p.extent;
+  return v;
+}
+
+SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const {
+  check_camera(view.camera, "sort view");
+  const auto start = std::chrono::steady_clock::now();
+  const Prepared& p = *p_;
+  if (method == SortMethod::automatic) method = p.convex ? SortMethod::mpvo : SortMethod::mpvo_abuffer;
+  SortResult r;
+  r.stats.method = method;
+  PhaseClock clock(r.stats);
+  const ViewFrame v = view_frame(p, view);
+  switch (method) {
+    case SortMethod::centroid:
+      r.order = centroid_order(p, v);
+      clock.lap("radix_sort");
+      break;
+    case SortMethod::mpvo:
+    case SortMethod::mpvo_abuffer: {
+      FaceOrder faces = face_relations(p, v);
+      r.stats.face_relations = faces.relations;
+      clock.lap("face_relations");
+      Relations gaps;
+      if (method == SortMethod::mpvo_abuffer) {
+        gaps = gap_relations(p, v, view, r.stats);
+        clock.lap("abuffer");
+      }
+      r.order = topological_order(p, v, faces, {&gaps}, r.stats);
+      clock.lap("topological_sort");
+      break;
+    }
+    case SortMethod::pairwise: {
+      const Relations pairs = pairwise_relations(p, v, view, r.stats);
+      clock.lap("occlusion_tests");
+      FaceOrder none;
+      r.order = topological_order(p, v, none, {&pairs}, r.stats);
+      clock.lap("topological_sort");
+      break;
+    }
+    case SortMethod::automatic: break;
+  }
+  r.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return r;
+}
+
+std::int64_t Relations::build(std::int64_t n, std::vector<std::pair<std::int64_t, std::int64_t>>& pairs) {
+  std::sort(pairs.begin(), pairs.end());
+  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  start.assign(static_cast<std::size_t>(n + 1), 0);
+  for (const auto& e : pairs) ++start[e.first + 1];
+  for (std::int64_t c = 0; c < n; ++c) start[c + 1] += start[c];
+  to.resize(pairs.size());
+  for (std::size_t k = 0; k < pairs.size(); ++k) to[k] = pairs[k].second;  // already grouped by `from`
+  return static_cast<std::int64_t>(pairs.size());
+}
+
+std::vector<std::int64_t> centroid_order(const VisibilitySorter::Prepared& p, const ViewFrame& v) {
+  const std::size_t n = p.centroid.size();
+  // Float keys made sortable as unsigned integers, inverted so the farthest comes first.
+  std::vector<std::uint32_t> key(n), key2(n), idx(n), idx2(n);
+  for (std::size_t c = 0; c < n; ++c) {
+    const float f = static_cast<float>(v.far_key(p.centroid[c]));
+    std::uint32_t u;
+    std::memcpy(&u, &f, sizeof u);
+    u = (u & 0x80000000u) ? ~u : (u | 0x80000000u);
+    key[c] = ~u;
+    idx[c] = static_cast<std::uint32_t>(c);
+  }
+  for (int shift = 0; shift < 32; shift += 11) {  // three stable passes of 11 bits
+    std::uint32_t count[2049] = {};
+    for (std::size_t c = 0; c < n; ++c) ++count[((key[c] >> shift) & 2047u) + 1];
+    for (int b = 0; b < 2048; ++b) count[b + 1] += count[b];
+    for (std::size_t c = 0; c < n; ++c) {
+      const std::uint32_t at = count[(key[c] >> shift) & 2047u]++;
+      key2[at] = key[c];
+      idx2[at] = idx[c];
+    }
+    key.swap(key2);
+    idx.swap(idx2);
+  }
+  return std::vector<std::int64_t>(idx.begin(), idx.end());
+}
+
+}  // namespace cellproj
