@@ -15,7 +15,7 @@ expect() {  # expect CODE REGEX -- ARGS...
 }
 
 expect 2 "subcommand" -- 
-for sub in render info generate; do expect 0 "Usage" -- $sub --help; done
+for sub in render info generate sortbench; do expect 0 "Usage" -- $sub --help; done
 expect 1 "missing.vtu: no such file" -- info "$tmp/missing.vtu"
 touch "$tmp/mesh.stl"
 expect 1 "unknown mesh format '.stl'" -- info "$tmp/mesh.stl"
@@ -38,6 +38,16 @@ expect 1 "unknown method 'pt-magic'" -- render "$tmp/ok.json" --method pt-magic
 expect 2 "threads" -- render "$tmp/ok.json" --threads 0
 expect 0 "wrote .*ok.png" -- render "$tmp/ok.json" --size 32x24 -o "$tmp/ok.png" --npy "$tmp/ok.npy" --stats --frames 3
 grep -q '"frame_seconds"' "$tmp/err" && grep -q '"load_seconds"' "$tmp/err" || { echo "FAIL: --stats JSON"; failed=$((failed+1)); }
+expect 1 "unknown sort 'zsort' \(known: auto, centroid" -- sortbench "$tmp/box.vtu" --sorts mpvo,zsort
+expect 2 "projection" -- sortbench "$tmp/box.vtu" --projection sideways
+expect 1 "missing.vtu: no such file" -- sortbench "$tmp/missing.vtu"
+expect 0 '"sort":"mpvo"' -- sortbench "$tmp/box.vtu" --views 2 --size 32x32 --sorts centroid,mpvo --check --json --csv "$tmp/sorts.csv"
+for key in mesh sort projection views median_seconds min_seconds max_seconds cells cells_per_second face_relations \
+           gap_relations cycles violations violating_pixels; do
+  grep -q "\"$key\":" "$tmp/out" || { echo "FAIL: sortbench --json lacks $key"; failed=$((failed+1)); }
+done
+grep -q '"sort":"mpvo".*"violations":0' "$tmp/out" || { echo "FAIL: mpvo on a box must have no violations"; failed=$((failed+1)); }
+[ "$(wc -l < "$tmp/sorts.csv")" -eq 3 ] || { echo "FAIL: sortbench --csv rows"; failed=$((failed+1)); }
 [ "$(stat -c %s "$tmp/ok.npy")" -eq $((128 + 32 * 24 * 16)) ] || { echo "FAIL: npy size"; failed=$((failed+1)); }
 
 # info --json: the documented keys with this mesh's values.

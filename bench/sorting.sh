@@ -1,0 +1,29 @@
+#!/usr/bin/env bash
+# The table of docs/sorting.md: every sort on the synthetic meshes and on every dataset of
+# ../shared/data, 8 views, orthographic and perspective, checked by the order oracle.
+# usage: bash bench/sorting.sh [BUILD_DIR] [OUT_DIR]     (about 10 minutes on 2 cores)
+set -euo pipefail
+build=${1:-build}; out=${2:-bench/results}
+here=$(cd "$(dirname "$0")/.." && pwd)
+data=$here/../shared/data
+exe=$build/bin/cellproj
+mkdir -p "$out"
+tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
+"$exe" generate box-tets -n 12 -o "$tmp/box-tets-10k.vtu" >/dev/null
+"$exe" generate swirl-tets -n 8 -o "$tmp/swirl-tets-9k.vtu" >/dev/null
+"$exe" generate swirl -n 12 -o "$tmp/swirl-hex-5k.vtu" >/dev/null
+"$exe" generate mixed -n 10 -o "$tmp/mixed-3k.vtu" >/dev/null
+meshes=("$tmp"/*.vtu)
+for f in vtkdata_post_tets/post_tets.vtu cgns_static_mixer/static_mixer.vtu cgns_heating_coil/heating_coil_fluid.vtu \
+         cgns_heating_coil/heating_coil_solid.vtu exodus_disk_out_ref/disk_out_ref.ex2 nasa_bluntfin/bluntfin_tets.vtu \
+         nasa_bluntfin/bluntfin.vts nasa_combustion_chamber/comb_tets.vtu nasa_combustion_chamber/comb.vts \
+         vtkdata_angular_sector/angular_sector.vtu vtkdata_can/can.vtu vtkdata_hexa/hexa.vtu \
+         vtkdata_notch_stress/notch_stress.vtu vtkdata_tetramesh/tetramesh.vtu vtk_small_cell_samples/elements.vtu; do
+  [ -f "$data/$f" ] && meshes+=("$data/$f")
+done
+"$exe" sortbench "${meshes[@]}" --views 8 --size 512x512 --projection both --check --pairwise-limit 20000 \
+  --csv "$out/sorting.csv" | tee "$out/sorting.txt"
+# The 1M-tetrahedra targets: mpvo against the centroid radix sort in the same run.
+"$exe" generate box-tets -n 56 -o "$tmp/box-tets-1m.vtu" >/dev/null
+"$exe" sortbench "$tmp/box-tets-1m.vtu" --views 8 --size 1024x1024 --projection both --sorts centroid,mpvo,mpvo-abuffer \
+  --csv "$out/sorting_1m.csv" | tee "$out/sorting_1m.txt"
