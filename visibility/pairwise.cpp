@@ -153,8 +153,9 @@ Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFram
           else {  // the exact test: along a ray through the overlap, which is met first
             const Ray r = rays.ray(centre.x, -centre.y);
             double ta0, ta1, tb0, tb1;
-            if (clip_ray(p, ca, r, ta0, ta1) && clip_ray(p, cb, r, tb0, tb1)) a_front = ta0 + ta1 < tb0 + tb1;
-            else a_front = v.far_key(p.centroid[ca]) < v.far_key(p.centroid[cb]);
+            // A ray that misses one of them (an overlap too thin to hold a ray) relates nothing.
+            if (!clip_ray(p, ca, r, ta0, ta1) || !clip_ray(p, cb, r, tb0, tb1)) continue;
+            a_front = ta0 + ta1 < tb0 + tb1;
           }
           pairs.emplace_back(a_front ? cb : ca, a_front ? ca : cb);  // the one behind first
         }
