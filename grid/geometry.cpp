@@ -39,6 +39,24 @@ double cell_size(const MeshView& mesh, std::int64_t c) {
   return glm::length(hi - lo);
 }
 
+glm::dvec3 newell_normal(const glm::dvec3* p, int n) {
+  glm::dvec3 s(0.0);
+  for (int i = 0; i < n; ++i) s += glm::cross(p[i], p[(i + 1) % n]);
+  return s;
+}
+
+RecentredPoints recentre(const MeshView& mesh) {
+  RecentredPoints r;
+  if (mesh.n_points == 0) return r;
+  glm::dvec3 lo = mesh.point(0), hi = lo;
+  for (std::int64_t p = 1; p < mesh.n_points; ++p) lo = glm::min(lo, mesh.point(p)), hi = glm::max(hi, mesh.point(p));
+  r.centre = 0.5 * (lo + hi);
+  r.half_diagonal = 0.5 * glm::length(hi - lo);
+  r.xyz.resize(static_cast<std::size_t>(3 * mesh.n_points));
+  for (std::int64_t i = 0; i < 3 * mesh.n_points; ++i) r.xyz[i] = mesh.points[i] - r.centre[i % 3];
+  return r;
+}
+
 double quad_warp(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d) {
   const glm::dvec3 n = glm::cross(c - a, d - b);
   const double len = glm::length(n);

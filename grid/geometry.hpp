@@ -2,6 +2,8 @@
 // Small geometric quantities of cells and faces.
 #include <cmath>
 #include <cstdint>
+#include <utility>
+#include <vector>
 
 #include <glm/geometric.hpp>
 #include <glm/vec3.hpp>
@@ -25,6 +27,29 @@ double cell_size(const MeshView& mesh, std::int64_t cell);
 
 // Non-planarity of quad (a, b, c, d): the distance between its two diagonals (0 when planar).
 double quad_warp(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d);
+
+// Newell's normal: twice the vector area of a (possibly non-planar) polygon, turning with its order.
+glm::dvec3 newell_normal(const glm::dvec3* p, int n);
+
+// Sorts a triangle's three vertex ids increasingly; returns true when that reversed its turning.
+// Planes built from the sorted ids are bit-identical for every cell sharing the face.
+inline bool sort_triangle_ids(std::int64_t id[3]) {
+  bool flip = false;
+  for (int i = 0; i < 2; ++i)
+    for (int j = 0; j < 2 - i; ++j)
+      if (id[j] > id[j + 1]) std::swap(id[j], id[j + 1]), flip = !flip;
+  return flip;
+}
+
+// The mesh's points relative to the centre of their bounding box, so that huge coordinate offsets
+// lose no precision in the differences the geometry is made of.
+struct RecentredPoints {
+  glm::dvec3 centre{0.0};
+  double half_diagonal = 0.0;  // of the bounding box
+  std::vector<double> xyz;
+  glm::dvec3 operator()(std::int64_t p) const { return {xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]}; }
+};
+RecentredPoints recentre(const MeshView& mesh);
 
 // A cell is degenerate when |volume| is at round-off level for its size (a length).
 constexpr double kDegenerateRelativeVolume = 1e-14;

@@ -39,13 +39,6 @@ int face_points(const MeshView& m, std::int64_t cell, int local, glm::dvec3 p[4]
   return face.size;
 }
 
-// Newell's normal: twice the vector area of a (possibly non-planar) polygon.
-glm::dvec3 newell_normal(const glm::dvec3* p, int n) {
-  glm::dvec3 s(0.0);
-  for (int i = 0; i < n; ++i) s += glm::cross(p[i], p[(i + 1) % n]);
-  return s;
-}
-
 }  // namespace
 
 std::int64_t FaceTopology::cell_of(std::int64_t cf) const {

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
-#include <vector>
+#include <utility>
+
+#include <boost/container/small_vector.hpp>
 
 namespace cellproj {
 namespace {
@@ -83,7 +85,7 @@ SegmentLight integrate_polynomial_reference(const TransferFunction& tf, double l
     sample[i] = s(-1.0 + 2.0 * i / kScan);
     lo = std::min(lo, sample[i]), hi = std::max(hi, sample[i]);
   }
-  std::vector<double> cuts{-1.0, 1.0};
+  boost::container::small_vector<double, 16> cuts{-1.0, 1.0};  // called per cell per ray: no heap
   const auto& bp = tf.breakpoints();
   for (auto it = std::upper_bound(bp.begin(), bp.end(), lo); it != bp.end() && *it < hi; ++it)
     for (int i = 0; i < kScan; ++i)
@@ -115,7 +117,7 @@ SegmentLight integrate_polynomial_reference(const TransferFunction& tf, double l
     const double depth0 = acc.depth;
     auto depth_at = [&](double x) { return depth0 + dt_dx * (K(x) - K(xa)); };
     // Pieces of optical depth <= 1/4, each by 8-point Gauss-Legendre.
-    std::vector<std::pair<double, double>> todo{{xa, xb}};
+    boost::container::small_vector<std::pair<double, double>, 48> todo{{xa, xb}};  // depth-first: <= 45 deep
     glm::dvec3 sum(0.0);
     while (!todo.empty()) {
       auto [a, b] = todo.back();

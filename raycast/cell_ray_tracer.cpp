@@ -72,10 +72,7 @@ struct TetPlanes {
   // face is inside exactly one of them and their segments meet without gap or overlap.
   void set_face(int k, const Tet& tet, const double* xyz) {
     std::int64_t id[3] = {tet[kFace[k][0]], tet[kFace[k][1]], tet[kFace[k][2]]};
-    bool flip = false;
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2 - i; ++j)
-        if (id[j] > id[j + 1]) std::swap(id[j], id[j + 1]), flip = !flip;
+    const bool flip = sort_triangle_ids(id);
     auto P = [&](std::int64_t i) { return glm::dvec3(xyz[3 * i], xyz[3 * i + 1], xyz[3 * i + 2]); };
     const glm::dvec3 a = P(id[0]);
     n[k] = glm::cross(P(id[1]) - a, P(id[2]) - a);
@@ -94,20 +91,11 @@ struct TetPlanes {
 
 }  // namespace
 
-CellRayTracer::CellRayTracer(const MeshView& mesh) {
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (std::int64_t p = 0; p < mesh.n_points; ++p) {
-    lo = glm::min(lo, mesh.point(p));
-    hi = glm::max(hi, mesh.point(p));
-  }
-  centre_ = mesh.n_points ? 0.5 * (lo + hi) : glm::dvec3(0.0);
-  points_.resize(static_cast<std::size_t>(3 * mesh.n_points));
-  for (std::int64_t p = 0; p < mesh.n_points; ++p)
-    for (int k = 0; k < 3; ++k) points_[3 * p + k] = mesh.points[3 * p + k] - centre_[k];
+CellRayTracer::CellRayTracer(const MeshView& mesh) : points_(recentre(mesh)) {
   scalar_.assign(static_cast<std::size_t>(mesh.n_points), 0.0);
   if (mesh.scalar) std::copy(mesh.scalar, mesh.scalar + mesh.n_points, scalar_.begin());
 
-  auto P = [&](std::int64_t i) { return glm::dvec3(points_[3 * i], points_[3 * i + 1], points_[3 * i + 2]); };
+  const RecentredPoints& P = points_;
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
     Tet tets[kMaxTetsPerCell];
     const int n = canonical_tetrahedra(mesh, c, tets);
@@ -130,10 +118,10 @@ CellRayTracer::CellRayTracer(const MeshView& mesh) {
 void CellRayTracer::trace(const Camera& camera, int width, int height, const Visitor& visit,
                           const std::function<void(double)>& progress) const {
   Camera local = camera;  // in the recentred frame
-  local.eye -= centre_;
-  local.target -= centre_;
+  local.eye -= points_.centre;
+  local.target -= points_.centre;
   const PixelRays rays(local, width, height);
-  auto P = [&](std::int64_t i) { return glm::dvec3(points_[3 * i], points_[3 * i + 1], points_[3 * i + 2]); };
+  const RecentredPoints& P = points_;
 
   // Pixel boxes of the tetrahedra: the pixel centres their projection may cover, one pixel wider.
   const std::size_t nt = tets_.size();
@@ -193,7 +181,7 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const Vis
       TetPlanes tp;
       glm::dvec3 p[4];
       for (int k = 0; k < 4; ++k) p[k] = P(tet[k]), tp.s[k] = scalar_[tet[k]];
-      for (int k = 0; k < 4; ++k) tp.set_face(k, tet, points_.data());
+      for (int k = 0; k < 4; ++k) tp.set_face(k, tet, points_.xyz.data());
       tp.volume6 = tet_volume6(p[0], p[1], p[2], p[3]);
       const PixelBox& bx = box[t];
       for (int j = std::max(bx.y0, ty0); j <= std::min(bx.y1, ty0 + kTile - 1); ++j)

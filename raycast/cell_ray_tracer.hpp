@@ -6,6 +6,7 @@
 #include <functional>
 #include <vector>
 
+#include "grid/geometry.hpp"
 #include "grid/mesh.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "view/camera.hpp"
@@ -33,15 +34,14 @@ class CellRayTracer {
 
   std::int64_t tetrahedra() const { return static_cast<std::int64_t>(tets_.size()); }
   std::int64_t dropped_degenerate() const { return dropped_; }
-  const double* points() const { return points_.data(); }  // recentred on the bounding box
+  const double* points() const { return points_.xyz.data(); }  // recentred on the bounding box
   const double* scalar() const { return scalar_.data(); }
 
  private:
-  std::vector<double> points_;       // recentred x y z
+  RecentredPoints points_;
   std::vector<double> scalar_;
   std::vector<Tet> tets_;            // positively oriented
   std::vector<std::int64_t> parent_; // the mesh cell of each tetrahedron
-  glm::dvec3 centre_{0.0};
   std::int64_t dropped_ = 0;
 };
 

@@ -38,16 +38,24 @@ std::vector<std::string> split(const std::string& list) {
   return out;
 }
 
-// One (mesh, sort, projection) row.
-nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const VisibilitySorter& sorter,
-                         const CellRayTracer* tracer, SortMethod method, Projection projection, int views, int w, int h) {
+// The benchmark's views of a mesh: n directions over a sphere, each framing its bounding box.
+std::vector<Camera> sphere_views(const Mesh& mesh, Projection projection, int n, double aspect) {
   const auto [lo, hi] = bounds(mesh);
+  std::vector<Camera> cameras;
+  for (const glm::dvec3& d : sphere_directions(n)) cameras.push_back(frame_box(lo, hi, projection, d, up_for(d), aspect));
+  return cameras;
+}
+
+// One (mesh, sort, projection) row over the given views.
+nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const VisibilitySorter& sorter,
+                         const CellRayTracer* tracer, SortMethod method, const std::vector<Camera>& cameras, int w, int h) {
+  const int views = static_cast<int>(cameras.size());
+  const Projection projection = cameras.front().projection;
   std::vector<double> times;
   std::map<std::string, std::vector<double>> phases;
   std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0;
   std::string ran;
-  for (const glm::dvec3& d : sphere_directions(views)) {
-    const Camera camera = frame_box(lo, hi, projection, d, up_for(d), double(w) / h);
+  for (const Camera& camera : cameras) {
     const SortResult r = sorter.sort(method, {camera, w, h});
     ran = name_of(r.stats.method);
     times.push_back(r.stats.seconds);
@@ -125,6 +133,8 @@ int run_sortbench(const SortbenchArgs& a) {
     const double prepare_seconds = seconds_since(t1);
     std::unique_ptr<CellRayTracer> tracer;
     if (a.check) tracer = std::make_unique<CellRayTracer>(mesh.view());
+    std::vector<std::vector<Camera>> views;  // per projection, shared by every sort
+    for (Projection projection : projections) views.push_back(sphere_views(mesh, projection, a.views, double(w) / h));
     if (!a.json)
       std::printf("%s: %lld cells, boundary %s; read %.3f s, topology and sort preparation %.3f s; %d views, %dx%d\n",
                   path.c_str(), static_cast<long long>(mesh.n_cells()), convex ? "convex" : "not convex", load_seconds,
@@ -136,8 +146,8 @@ int run_sortbench(const SortbenchArgs& a) {
                       static_cast<long long>(mesh.n_cells()), static_cast<long long>(a.pairwise_limit));
         continue;
       }
-      for (Projection projection : projections) {
-        const nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, projection, a.views, w, h);
+      for (const auto& cameras : views) {
+        const nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, cameras, w, h);
         if (a.json) std::printf("%s\n", row.dump().c_str());
         else {
           std::printf("  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  cycles %lld",

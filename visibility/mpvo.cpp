@@ -23,7 +23,7 @@ int viewpoint_side(const VisibilitySorter::Prepared& p, const ViewFrame& v, std:
   const double s = n.x * v.eye.x + n.y * v.eye.y + n.z * v.eye.z - p.offset[f];
   if (std::abs(s) > 1e-9 * v.eye_scale || p.face_tri[f][0] < 0) return s > 0 ? 1 : s < 0 ? -1 : 0;
   // Nearly in the face's plane: CGAL's exact orientation decides.
-  auto P = [&](std::int64_t i) { return K::Point_3(p.xyz[3 * i], p.xyz[3 * i + 1], p.xyz[3 * i + 2]); };
+  auto P = [&](std::int64_t i) { const glm::dvec3 x = p.point(i); return K::Point_3(x.x, x.y, x.z); };
   const auto& t = p.face_tri[f];
   const auto o = CGAL::orientation(P(t[0]), P(t[1]), P(t[2]), K::Point_3(v.eye.x, v.eye.y, v.eye.z));
   return o == CGAL::POSITIVE ? -1 : o == CGAL::NEGATIVE ? 1 : 0;  // POSITIVE: below the plane, inside a

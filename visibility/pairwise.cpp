@@ -7,6 +7,7 @@
 #include <cmath>
 #include <limits>
 
+#include <boost/container/small_vector.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -15,7 +16,9 @@
 namespace cellproj {
 namespace {
 
-using Polygon = std::vector<glm::dvec2>;
+// Projections of cells: at most 8 vertices, their intersections at most 16; kept off the heap,
+// since every overlapping pair makes several.
+using Polygon = boost::container::small_vector<glm::dvec2, 16>;
 
 double cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
   return (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
@@ -67,34 +70,48 @@ double area(const Polygon& p, glm::dvec2& centroid) {
   return 0.5 * a;
 }
 
-struct CellShadow {
-  Polygon hull;
-  double x0, x1, y0, y1;  // screen box
-  double z0, z1;          // depth range along the view direction
-  bool usable = false;    // false when the cell crosses the eye plane
+// A convex cell's face planes (Newell normals, outward; a point inside has n . x <= d).
+struct CellPlanes {
+  int count = 0;
+  glm::dvec3 n[6];
+  double d[6];
 };
 
-// The ray's interval [t0, t1] inside convex cell c (faces as Newell planes); false if it misses.
-bool clip_ray(const VisibilitySorter::Prepared& p, std::int64_t c, const Ray& r, double& t0, double& t1) {
+CellPlanes cell_planes(const VisibilitySorter::Prepared& p, std::int64_t c) {
   const CellDef& def = cell_def(p.mesh.type(c));
   const std::int64_t* ids = p.mesh.cell(c);
-  t0 = -std::numeric_limits<double>::infinity();
-  t1 = std::numeric_limits<double>::infinity();
+  CellPlanes planes;
   for (int f = 0; f < def.faces; ++f) {
     const FaceDef& fd = def.face[f];
-    glm::dvec3 n(0.0), q(0.0);
-    for (int k = 0; k < fd.size; ++k) {
-      const glm::dvec3 a = p.point(ids[fd.v[k]]), b = p.point(ids[fd.v[(k + 1) % fd.size]]);
-      n += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-      q += a / double(fd.size);
-    }
-    const double nd = glm::dot(n, r.dir), gap = glm::dot(n, q - r.origin);
+    glm::dvec3 x[4], centre(0.0);
+    for (int k = 0; k < fd.size; ++k) x[k] = p.point(ids[fd.v[k]]), centre += x[k] / double(fd.size);
+    planes.n[f] = newell_normal(x, fd.size);
+    planes.d[f] = glm::dot(planes.n[f], centre);
+  }
+  planes.count = def.faces;
+  return planes;
+}
+
+// The ray's interval [t0, t1] inside a convex cell; false if it misses.
+bool clip_ray(const CellPlanes& planes, const Ray& r, double& t0, double& t1) {
+  t0 = -std::numeric_limits<double>::infinity();
+  t1 = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < planes.count; ++f) {
+    const double nd = glm::dot(planes.n[f], r.dir), gap = planes.d[f] - glm::dot(planes.n[f], r.origin);
     if (nd > 0) t1 = std::min(t1, gap / nd);
     else if (nd < 0) t0 = std::max(t0, gap / nd);
     else if (gap < 0) return false;
   }
   return t1 > t0;
 }
+
+struct CellShadow {
+  Polygon hull;
+  double x0, x1, y0, y1;  // screen box
+  double z0, z1;          // depth range along the view direction
+  bool usable = false;    // false when the cell crosses the eye plane
+  CellPlanes planes;
+};
 
 }  // namespace
 
@@ -107,6 +124,7 @@ Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFram
   for (std::int64_t c = 0; c < n; ++c) {
     CellShadow& s = sh[c];
     Polygon pts;
+    s.planes = cell_planes(p, c);
     s.z0 = std::numeric_limits<double>::max(), s.z1 = -s.z0;
     s.usable = true;
     for (int k = 0; k < p.mesh.cell_size(c); ++k) {
@@ -154,7 +172,7 @@ Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFram
             const Ray r = rays.ray(centre.x, -centre.y);
             double ta0, ta1, tb0, tb1;
             // A ray that misses one of them (an overlap too thin to hold a ray) relates nothing.
-            if (!clip_ray(p, ca, r, ta0, ta1) || !clip_ray(p, cb, r, tb0, tb1)) continue;
+            if (!clip_ray(a.planes, r, ta0, ta1) || !clip_ray(b.planes, r, tb0, tb1)) continue;
             a_front = ta0 + ta1 < tb0 + tb1;
           }
           pairs.emplace_back(a_front ? cb : ca, a_front ? ca : cb);  // the one behind first

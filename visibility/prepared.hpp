@@ -8,6 +8,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "grid/geometry.hpp"
 #include "visibility/sort.hpp"
 
 namespace cellproj {
@@ -16,9 +17,7 @@ struct VisibilitySorter::Prepared {
   MeshView mesh;
   const FaceTopology* topo = nullptr;
   bool convex = false;
-  glm::dvec3 centre{0.0};             // coordinates below are relative to it (huge offsets lose nothing)
-  double extent = 0.0;                // half the bounding box's diagonal
-  std::vector<double> xyz;            // recentred points
+  RecentredPoints pts;                // coordinates below are relative to pts.centre
   std::vector<glm::dvec3> centroid;   // per cell
   // Shared faces, each once: cells a and b, the face's unit normal outward from a, and its plane
   // offset (normal . x on the face; a quad's at its centroid).
@@ -34,7 +33,7 @@ struct VisibilitySorter::Prepared {
   std::vector<std::int64_t> boundary_cell;
   std::vector<std::array<std::int64_t, 3>> boundary_tri;
 
-  glm::dvec3 point(std::int64_t p) const { return {xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]}; }
+  glm::dvec3 point(std::int64_t p) const { return pts(p); }
 };
 
 // The view in the recentred frame: the eye, the view direction, and how far each cell is.

@@ -24,28 +24,23 @@ constexpr MethodName kNames[] = {{SortMethod::automatic, "auto"},
                                  {SortMethod::pairwise, "pairwise"}};
 
 // A face's normal (outward for the cell listing it in this order) and centroid. Triangles take
-// their normal from the vertices in increasing id, so both cells of a face get the same plane.
+// their normal from the vertices in increasing id, so both cells of a face get the same plane;
+// quads take Newell's normal, since they may be warped.
 void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, int n, glm::dvec3& normal,
                 glm::dvec3& point, std::array<std::int64_t, 3>& tri) {
+  glm::dvec3 x[4];
   point = glm::dvec3(0.0);
-  for (int k = 0; k < n; ++k) point += p.point(ids[k]) / double(n);
-  if (n == 3) {
-    std::array<std::int64_t, 3> s = {ids[0], ids[1], ids[2]};
-    bool flip = false;
-    for (int i = 0; i < 2; ++i)
-      for (int j = 0; j < 2 - i; ++j)
-        if (s[j] > s[j + 1]) std::swap(s[j], s[j + 1]), flip = !flip;
-    normal = glm::cross(p.point(s[1]) - p.point(s[0]), p.point(s[2]) - p.point(s[0]));
-    if (flip) normal = -normal, std::swap(s[1], s[2]);
-    tri = s;
+  for (int k = 0; k < n; ++k) x[k] = p.point(ids[k]), point += x[k] / double(n);
+  tri = {-1, -1, -1};
+  if (n != 3) {
+    normal = newell_normal(x, n);
     return;
   }
-  normal = glm::dvec3(0.0);  // Newell's normal of the (possibly warped) quad
-  for (int k = 0; k < n; ++k) {
-    const glm::dvec3 a = p.point(ids[k]), b = p.point(ids[(k + 1) % n]);
-    normal += glm::dvec3((a.y - b.y) * (a.z + b.z), (a.z - b.z) * (a.x + b.x), (a.x - b.x) * (a.y + b.y));
-  }
-  tri = {-1, -1, -1};
+  std::int64_t s[3] = {ids[0], ids[1], ids[2]};
+  const bool flip = sort_triangle_ids(s);
+  normal = glm::cross(p.point(s[1]) - p.point(s[0]), p.point(s[2]) - p.point(s[0]));
+  if (flip) normal = -normal, std::swap(s[1], s[2]);
+  tri = {s[0], s[1], s[2]};
 }
 
 }  // namespace
@@ -74,12 +69,7 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
   p.mesh = mesh;
   p.topo = &topo;
   p.convex = hull.convex;
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (std::int64_t i = 0; i < mesh.n_points; ++i) lo = glm::min(lo, mesh.point(i)), hi = glm::max(hi, mesh.point(i));
-  p.centre = mesh.n_points ? 0.5 * (lo + hi) : glm::dvec3(0.0);
-  p.extent = mesh.n_points ? 0.5 * glm::length(hi - lo) : 0.0;
-  p.xyz.resize(static_cast<std::size_t>(3 * mesh.n_points));
-  for (std::int64_t i = 0; i < 3 * mesh.n_points; ++i) p.xyz[i] = mesh.points[i] - p.centre[i % 3];
+  p.pts = recentre(mesh);
 
   p.centroid.resize(static_cast<std::size_t>(mesh.n_cells));
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
@@ -147,12 +137,12 @@ bool VisibilitySorter::convex_boundary() const { return p_->convex; }
 ViewFrame view_frame(const VisibilitySorter::Prepared& p, const SortView& view) {
   ViewFrame v;
   v.camera = view.camera;
-  v.camera.eye -= p.centre;
-  v.camera.target -= p.centre;
+  v.camera.eye -= p.pts.centre;
+  v.camera.target -= p.pts.centre;
   v.perspective = view.camera.projection == Projection::Perspective;
   v.eye = v.camera.eye;
   v.dir = glm::normalize(v.camera.target - v.camera.eye);
-  v.eye_scale = glm::length(v.eye) + p.extent;
+  v.eye_scale = glm::length(v.eye) + p.pts.half_diagonal;
   return v;
 }
 
