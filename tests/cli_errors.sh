@@ -15,7 +15,7 @@ expect() {  # expect CODE REGEX -- ARGS...
 }
 
 expect 2 "subcommand" -- 
-for sub in render info generate sortbench; do expect 0 "Usage" -- $sub --help; done
+for sub in render info generate sortbench compare; do expect 0 "Usage" -- $sub --help; done
 expect 1 "missing.vtu: no such file" -- info "$tmp/missing.vtu"
 touch "$tmp/mesh.stl"
 expect 1 "unknown mesh format '.stl'" -- info "$tmp/mesh.stl"
@@ -38,6 +38,8 @@ expect 1 "unknown method 'pt-magic'" -- render "$tmp/ok.json" --method pt-magic
 expect 2 "threads" -- render "$tmp/ok.json" --threads 0
 expect 0 "wrote .*ok.png" -- render "$tmp/ok.json" --size 32x24 -o "$tmp/ok.png" --npy "$tmp/ok.npy" --stats --frames 3
 grep -q '"frame_seconds"' "$tmp/err" && grep -q '"load_seconds"' "$tmp/err" || { echo "FAIL: --stats JSON"; failed=$((failed+1)); }
+expect 0 '"max_abs": 0, "rmse": 0' -- compare "$tmp/ok.npy" "$tmp/ok.npy"
+expect 1 "no such file|cannot open" -- compare "$tmp/ok.npy" "$tmp/none.npy"
 expect 1 "unknown sort 'zsort' \(known: auto, centroid" -- sortbench "$tmp/box.vtu" --sorts mpvo,zsort
 expect 2 "projection" -- sortbench "$tmp/box.vtu" --projection sideways
 expect 1 "missing.vtu: no such file" -- sortbench "$tmp/missing.vtu"

@@ -18,5 +18,6 @@ Action add_render(CLI::App& app);
 Action add_info(CLI::App& app);
 Action add_generate(CLI::App& app);
 Action add_sortbench(CLI::App& app);
+Action add_compare(CLI::App& app);
 
 }  // namespace cellproj

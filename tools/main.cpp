@@ -13,7 +13,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "cellproj 0.1.0");
   const Action render = add_render(app), info = add_info(app), generate = add_generate(app),
-               sortbench = add_sortbench(app);
+               sortbench = add_sortbench(app), compare = add_compare(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("render")) return render();
     if (app.got_subcommand("info")) return info();
     if (app.got_subcommand("sortbench")) return sortbench();
+    if (app.got_subcommand("compare")) return compare();
     return generate();
   } catch (const InputError& e) {
     std::fprintf(stderr, "cellproj: error: %s\n", e.what());
