@@ -54,25 +54,10 @@ SegmentLight integrate_linear_reference(double L, double k0, double k1, const gl
 
 SegmentLight integrate_segment_reference(const TransferFunction& tf, double length, double s0, double s1) {
   if (!(length > 0.0)) return {};
-  const auto& bp = tf.breakpoints();
-  // Breakpoints strictly between s0 and s1, in ray order.
-  const double lo = std::min(s0, s1), hi = std::max(s0, s1);
-  auto first = std::upper_bound(bp.begin(), bp.end(), lo);
-  auto last = std::lower_bound(bp.begin(), bp.end(), hi);
   SegmentLight acc;
-  double sa = s0, ta = 0.0;
-  auto add_piece = [&](double sb) {
-    const double tb = s1 == s0 ? 1.0 : (sb - s0) / (s1 - s0);
-    const auto e = tf.piece(sa, sb);
-    acc = under(acc, integrate_linear_reference(length * (tb - ta), e.ka, e.kb, e.ca, e.cb));
-    sa = sb;
-    ta = tb;
-  };
-  if (s1 >= s0)
-    for (auto it = first; it < last; ++it) add_piece(*it);
-  else
-    for (auto it = last; it > first; --it) add_piece(*(it - 1));
-  add_piece(s1);
+  for_each_linear_piece(tf, s0, s1, [&](const TransferFunction::Ends& e, double fraction) {
+    acc = under(acc, integrate_linear_reference(length * fraction, e.ka, e.kb, e.ca, e.cb));
+  });
   return acc;
 }
 

@@ -1,6 +1,7 @@
 #pragma once
 // The optical model along one ray segment (absorption plus emission, Max 1995 section 4; Williams
 // and Max 1992): T = exp(-int kappa dt), emitted light = int C kappa T dt, premultiplied.
+#include <algorithm>
 #include <cmath>
 
 #include <glm/vec3.hpp>
@@ -30,6 +31,30 @@ inline SegmentLight under(const SegmentLight& front, const SegmentLight& back) {
 // integrated with 8-point Gauss-Legendre, relative error below 1e-12; light behind an optical depth
 // of 60 is dropped (below 1e-26).
 SegmentLight integrate_linear_reference(double length, double k0, double k1, const glm::dvec3& c0, const glm::dvec3& c1);
+
+// Calls piece(ends, fraction) for each piece of a segment along which the scalar runs linearly from
+// s0 (front) to s1 (back), cut at the transfer function's breakpoints, front to back: `ends` holds
+// kappa and colour at the piece's ends, `fraction` its share of the segment's length.
+template <class Piece>
+void for_each_linear_piece(const TransferFunction& tf, double s0, double s1, Piece&& piece) {
+  const auto& bp = tf.breakpoints();
+  const double lo = std::min(s0, s1), hi = std::max(s0, s1);
+  // Breakpoints strictly between s0 and s1, in ray order.
+  auto first = std::upper_bound(bp.begin(), bp.end(), lo);
+  auto last = std::lower_bound(bp.begin(), bp.end(), hi);
+  double sa = s0, ta = 0.0;
+  auto cut = [&](double sb) {
+    const double tb = s1 == s0 ? 1.0 : (sb - s0) / (s1 - s0);
+    piece(tf.piece(sa, sb), tb - ta);
+    sa = sb;
+    ta = tb;
+  };
+  if (s1 >= s0)
+    for (auto it = first; it < last; ++it) cut(*it);
+  else
+    for (auto it = last; it > first; --it) cut(*(it - 1));
+  cut(s1);
+}
 
 // A segment along which the scalar runs linearly from s0 (front) to s1 (back): cut at the transfer
 // function's breakpoints, each piece integrated with integrate_linear_reference.

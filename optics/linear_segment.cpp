@@ -1,0 +1,130 @@
+#include "optics/linear_segment.hpp"
+
+#include <cmath>
+
+namespace cellproj {
+namespace {
+
+constexpr double kSqrtPi = 1.7724538509055160273;
+
+// |b| below this share of 1 + a: F by its series in b (the erfcx and Dawson forms cancel there).
+constexpr double kSeriesB = 0.03;
+constexpr int kSeriesTerms = 13;  // n = 0 .. 12: relative error below 1e-13 within kSeriesB
+// Optical depth below which G = 1 - F comes from its Taylor series in (a, b) instead of 1 - F.
+constexpr double kTinyDepth = 1e-3;
+
+// M_k(a) = int_0^1 u^k e^{-a u} du for k = 0 .. 2 (kSeriesTerms - 1).
+void exponential_moments(double a, double m[2 * kSeriesTerms - 1]) {
+  constexpr int K = 2 * kSeriesTerms - 1;
+  if (a < 1.0) {  // sum_j (-a)^j / (j! (k + j + 1)): 20 terms reach 1e-18
+    for (int k = 0; k < K; ++k) {
+      double term = 1.0, sum = 0.0;
+      for (int j = 0; j < 20; ++j) {
+        sum += term / (k + j + 1);
+        term *= -a / (j + 1);
+      }
+      m[k] = sum;
+    }
+    return;
+  }
+  // Upward recursion M_k = (k M_{k-1} - e^-a) / a, by parts; its error growth (k/a per step) is
+  // harmless here since M_k enters multiplied by b^(k/2) / (k/2)!.
+  const double e = std::exp(-a);
+  m[0] = -std::expm1(-a) / a;
+  for (int k = 1; k < K; ++k) m[k] = (k * m[k - 1] - e) / a;
+}
+
+// F(a, b) = int_0^1 exp(-a u - b u^2) du for a >= 0 and a + 2b >= 0 (kappa >= 0 at both ends).
+double mean_transmittance(double a, double b, double depth) {
+  if (std::abs(b) <= kSeriesB * (1.0 + a)) {  // sum_n (-b)^n / n! M_2n(a)
+    double m[2 * kSeriesTerms - 1];
+    exponential_moments(a, m);
+    double sum = 0.0, coef = 1.0;
+    for (int n = 0; n < kSeriesTerms; ++n) {
+      sum += coef * m[2 * n];
+      coef *= -b / (n + 1);
+    }
+    return sum;
+  }
+  const double rb = std::sqrt(std::abs(b)), x0 = a / (2.0 * rb), e = std::exp(-depth);
+  if (b > 0)  // kappa grows: completing the square gives erfc differences, scaled to avoid overflow
+    return 0.5 * kSqrtPi / rb * (erfcx(x0) - erfcx(x0 + rb) * e);
+  // kappa falls: the square has the other sign and the integral is Dawson's
+  return (dawson(x0) - e * dawson(std::max(0.0, x0 - rb))) / rb;
+}
+
+}  // namespace
+
+double erfcx(double x) {
+  if (x < 25.0) return std::exp(x * x) * std::erfc(x);
+  // Laplace's continued fraction 1 / (x + (1/2) / (x + 1 / (x + (3/2) / (x + ...)))) / sqrt(pi).
+  double f = x;
+  for (int k = 16; k >= 1; --k) f = x + 0.5 * k / f;
+  return 1.0 / (kSqrtPi * f);
+}
+
+double dawson(double x) {
+  if (x < 1.0) {  // sum (-2x^2)^n x / (2n+1)!!: alternating, terms below x
+    double term = x, sum = x;
+    for (int n = 1; n < 40 && std::abs(term) > 1e-18 * std::abs(sum); ++n) {
+      term *= -2.0 * x * x / (2 * n + 1);
+      sum += term;
+    }
+    return sum;
+  }
+  if (x < 6.0) {  // e^{-x^2} sum x^(2n+1) / (n! (2n+1)): positive terms, no cancellation
+    const double x2 = x * x;
+    double p = x, sum = x;
+    for (int n = 1; n < 400; ++n) {
+      p *= x2 / n;
+      const double t = p / (2 * n + 1);
+      sum += t;
+      if (n > x2 && t < 1e-18 * sum) break;
+    }
+    return std::exp(-x2) * sum;
+  }
+  // Asymptotic series (1 / 2x) sum (2k-1)!! / (2x^2)^k, cut at its smallest term (< 1e-15 here).
+  const double r = 1.0 / (2.0 * x * x);
+  double term = 1.0, sum = 1.0;
+  for (int k = 1; k < 60; ++k) {
+    const double next = term * (2 * k - 1) * r;
+    if (next >= term || next < 1e-18 * sum) break;
+    term = next;
+    sum += term;
+  }
+  return sum / (2.0 * x);
+}
+
+EndWeights linear_segment_weights(double L, double k0, double k1) {
+  EndWeights w;
+  if (!(L > 0.0) || !(k0 + k1 > 0.0)) return w;
+  // tau(u) = a u + b u^2 along u = t / L in [0, 1].
+  const double a = k0 * L, b = 0.5 * (k1 - k0) * L;
+  w.depth = a + b;
+  if (w.depth < kTinyDepth) {
+    // G = 1 - F = int (1 - e^-tau) du = P1 - P2/2 + P3/6 - P4/24, P_m = int tau^m du (error ~D^5/720).
+    const double a2 = a * a, b2 = b * b;
+    const double p1 = a / 2 + b / 3;
+    const double p2 = a2 / 3 + a * b / 2 + b2 / 5;
+    const double p3 = a2 * a / 4 + 3 * a2 * b / 5 + a * b2 / 2 + b2 * b / 7;
+    const double p4 = a2 * a2 / 5 + 2 * a2 * a * b / 3 + 6 * a2 * b2 / 7 + a * b2 * b / 2 + b2 * b2 / 9;
+    w.front = p1 - p2 / 2 + p3 / 6 - p4 / 24;
+    w.back = -std::expm1(-w.depth) - w.front;
+    return w;
+  }
+  const double F = mean_transmittance(a, b, w.depth);
+  w.front = 1.0 - F;
+  w.back = F - std::exp(-w.depth);
+  return w;
+}
+
+SegmentLight integrate_segment_closed_form(const TransferFunction& tf, double length, double s0, double s1) {
+  if (!(length > 0.0)) return {};
+  SegmentLight acc;
+  for_each_linear_piece(tf, s0, s1, [&](const TransferFunction::Ends& e, double fraction) {
+    acc = under(acc, integrate_linear_closed_form(length * fraction, e.ka, e.kb, e.ca, e.cb));
+  });
+  return acc;
+}
+
+}  // namespace cellproj
