@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <limits>
+#include <memory>
 
 #include <nlohmann/json.hpp>
 #include <tbb/info.h>
@@ -11,6 +12,7 @@
 
 #include "grid/error.hpp"
 #include "optics/transfer_function.hpp"
+#include "parallel/projection_renderer.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "tools/commands.hpp"
 #include "tools/timing.hpp"
@@ -22,18 +24,46 @@ namespace cellproj {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, npy, method = "exact", size, field, interpolation = "isoparametric";
-  int threads = 0, frames = 1;
+  std::string scene, png, npy, method = "pt-analytic", size, field, interpolation = "isoparametric", sort = "auto";
+  int threads = 0, frames = 1, table_size = 256;
   bool stats = false;
 };
+
+nlohmann::json projection_stats_json(const ProjectionStats& p) {
+  nlohmann::json phases = nlohmann::json::object();
+  for (const auto& [name, sec] : p.phase_seconds) phases[name] = sec;
+  const auto& c = p.counters;
+  return {{"sort", name_of(p.sort.method)},
+          {"tets", p.tets},
+          {"cells_split", p.cells_split},
+          {"class1_tets", c.class1},
+          {"class2_tets", c.class2},
+          {"empty_tets", c.empty},
+          {"behind_eye_tets", c.behind_eye},
+          {"fragments", c.fragments},
+          {"breakpoint_cells", c.breakpoint_cells},
+          {"face_relations", p.sort.face_relations},
+          {"gap_relations", p.sort.gap_relations},
+          {"cycles", p.sort.cycles.size()},
+          {"phase_seconds", phases}};
+}
 
 int run_render(const RenderArgs& a) {
   const auto t_load = std::chrono::steady_clock::now();
   Scene scene = load_scene(a.scene);
   if (!a.size.empty()) parse_size(a.size, scene.width, scene.height);
   if (!a.field.empty()) scene.field = a.field;
-  if (a.method != "exact")
-    throw InputError("--method: unknown method '" + a.method + "'; available: exact (the projection methods come with the projection stage)");
+  const bool exact = a.method == "exact";
+  ProjectionOptions projection;
+  if (!exact) {
+    try {
+      projection.method = projection_method_from_name(a.method);
+    } catch (const InputError&) {
+      throw InputError("--method: unknown method '" + a.method + "' (known: exact, " + projection_method_names() + ")");
+    }
+    projection.sort = sort_method_from_name(a.sort);
+    projection.table_size = a.table_size;
+  }
   const CellInterpolation interpolation = cell_interpolation_from_name(a.interpolation);
   const PreparedScene prepared = prepare_scene(scene);
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
@@ -45,20 +75,28 @@ int run_render(const RenderArgs& a) {
   std::vector<double> frame_times;
   double prepare_seconds = 0.0, trace_seconds = 0.0;
   ExactStats st;
+  ProjectionStats pst;
+  nlohmann::json frame_stats;
   arena.execute([&] {
     const auto t_prep = std::chrono::steady_clock::now();
-    const ExactRenderer renderer(prepared.loaded.mesh.view(prepared.field), interpolation);
+    const MeshView view = prepared.loaded.mesh.view(prepared.field);
+    std::unique_ptr<ExactRenderer> exact_renderer;
+    std::unique_ptr<ProjectionRenderer> projector;
+    if (exact) exact_renderer = std::make_unique<ExactRenderer>(view, interpolation);
+    else projector = std::make_unique<ProjectionRenderer>(view);
     prepare_seconds = seconds_since(t_prep);
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
       ProgressBar bar(a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering");
-      Image img = renderer.render(prepared.tf, orbit(prepared.camera, f), scene.width, scene.height, &st,
-                                  [&](double d) { bar(d); });
-      trace_seconds += st.trace_seconds;
+      const Camera camera = orbit(prepared.camera, f);
+      Image img = exact ? exact_renderer->render(prepared.tf, camera, scene.width, scene.height, &st, [&](double d) { bar(d); })
+                        : projector->render(prepared.tf, camera, scene.width, scene.height, projection, &pst);
+      trace_seconds += exact ? st.trace_seconds : pst.seconds;
       frame_times.push_back(seconds_since(t_frame) + (f == 0 ? prepare_seconds : 0.0));
       if (f == 0) first = std::move(img);
     }
   });
+  if (!exact) frame_stats = projection_stats_json(pst);
 
   std::string png = a.png;
   if (png.empty() && a.npy.empty()) png = std::filesystem::path(a.scene).stem().string() + ".png";
@@ -87,10 +125,14 @@ int run_render(const RenderArgs& a) {
                         {"min_frame_seconds", *std::min_element(frame_times.begin(), frame_times.end())},
                         {"max_frame_seconds", *std::max_element(frame_times.begin(), frame_times.end())},
                         {"prepare_seconds", prepare_seconds},
-                        {"trace_seconds", trace_seconds / a.frames},
-                        {"segments", st.segments},
-                        {"interpolation", name_of(interpolation)},
-                        {"newton_failures", st.newton_failures}};
+                        {"render_seconds", trace_seconds / a.frames}};
+    if (exact) {
+      s["segments"] = st.segments;
+      s["interpolation"] = name_of(interpolation);
+      s["newton_failures"] = st.newton_failures;
+    } else {
+      s.update(frame_stats);  // the last frame's
+    }
     std::fprintf(stderr, "%s\n", s.dump().c_str());
   }
   return kExitOk;
@@ -104,7 +146,12 @@ Action add_render(CLI::App& app) {
   cmd->add_option("scene", args->scene, "Scene file (JSON, see docs/scene.md)")->required();
   cmd->add_option("-o,--output", args->png, "PNG to write (default: SCENE's name with .png, in the current folder)");
   cmd->add_option("--npy", args->npy, "Also write the premultiplied float RGBA image as .npy (H, W, 4)");
-  cmd->add_option("--method", args->method, "Rendering method: exact (the reference ray integrator)");
+  cmd->add_option("--method", args->method,
+                  "Rendering method: pt-analytic (default), pt-breakpoints (exact for the transfer function), "
+                  "pt-table, pt-linear (fastest), or exact (the reference ray integrator); see docs/methods.md");
+  cmd->add_option("--sort", args->sort, "Visibility sort for the projection methods: " + sort_method_names());
+  cmd->add_option("--table-size", args->table_size, "pt-table: nodes per axis of the opacity table (default 256)")
+      ->check(CLI::Range(2, 8192));
   cmd->add_option("--interpolation", args->interpolation,
                   "Field inside hexahedra, wedges and pyramids for exact: isoparametric (default) or canonical-tets")
       ->check(CLI::IsMember({"isoparametric", "canonical-tets"}));

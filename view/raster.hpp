@@ -23,14 +23,16 @@ inline double edge(const glm::dvec2& a, const glm::dvec2& b, double px, double p
 inline bool owns(const glm::dvec2& a, const glm::dvec2& b) { return a.y > b.y || (a.y == b.y && a.x < b.x); }
 }  // namespace raster_detail
 
-// Calls covered(i, j) for every pixel of a width x height image whose centre the triangle
-// (p0, p1, p2) in pixel coordinates (x right, y down) covers. Degenerate triangles cover nothing.
+// Calls covered(i, j, w0, w1, w2) for every pixel of a width x height image whose centre the
+// triangle (p0, p1, p2) in pixel coordinates (x right, y down) covers, with the barycentric weights
+// of p0, p1 and p2 at that centre. Degenerate triangles cover nothing.
 template <class Covered>
-void rasterize_triangle(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Covered&& covered) {
+void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Covered&& covered) {
   using namespace raster_detail;
   double area = edge(p0, p1, p2.x, p2.y);
   if (!(area != 0.0) || !std::isfinite(area)) return;
-  if (area < 0) std::swap(p1, p2);
+  const bool swapped = area < 0;
+  if (swapped) std::swap(p1, p2), area = -area;
   const double xmin = std::min({p0.x, p1.x, p2.x}), xmax = std::max({p0.x, p1.x, p2.x});
   const double ymin = std::min({p0.y, p1.y, p2.y}), ymax = std::max({p0.y, p1.y, p2.y});
   const int i0 = static_cast<int>(std::max(0.0, std::ceil(xmin - 0.5)));
@@ -38,15 +40,25 @@ void rasterize_triangle(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, 
   const int j0 = static_cast<int>(std::max(0.0, std::ceil(ymin - 0.5)));
   const int j1 = static_cast<int>(std::min(double(height - 1), std::floor(ymax - 0.5)));
   const bool own01 = owns(p0, p1), own12 = owns(p1, p2), own20 = owns(p2, p0);
+  const double inv = 1.0 / area;
   for (int j = j0; j <= j1; ++j) {
     const double y = j + 0.5;
     for (int i = i0; i <= i1; ++i) {
       const double x = i + 0.5;
       const double e0 = edge(p0, p1, x, y), e1 = edge(p1, p2, x, y), e2 = edge(p2, p0, x, y);
-      if ((e0 > 0 || (e0 == 0 && own01)) && (e1 > 0 || (e1 == 0 && own12)) && (e2 > 0 || (e2 == 0 && own20)))
-        covered(i, j);
+      if ((e0 > 0 || (e0 == 0 && own01)) && (e1 > 0 || (e1 == 0 && own12)) && (e2 > 0 || (e2 == 0 && own20))) {
+        // e1 is opposite p0, e2 opposite p1, e0 opposite p2 (in the possibly swapped order).
+        if (swapped) covered(i, j, e1 * inv, e0 * inv, e2 * inv);
+        else covered(i, j, e1 * inv, e2 * inv, e0 * inv);
+      }
     }
   }
+}
+
+// The same coverage without the weights: covered(i, j).
+template <class Covered>
+void rasterize_triangle(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Covered&& covered) {
+  rasterize_triangle_weights(p0, p1, p2, width, height, [&](int i, int j, double, double, double) { covered(i, j); });
 }
 
 }  // namespace cellproj

@@ -1,0 +1,137 @@
+#include "parallel/projection_renderer.hpp"
+
+#include <algorithm>
+#include <chrono>
+
+#include <tbb/concurrent_queue.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
+
+#include "grid/geometry.hpp"
+#include "grid/tetrahedralize.hpp"
+#include "projection/screen.hpp"
+
+namespace cellproj {
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// The canonical tetrahedra of every cell (MWSC section 4), sharing the mesh's points and field.
+Mesh split_cells(const MeshView& mesh) {
+  Mesh out;
+  out.source = mesh.source;
+  out.points.assign(mesh.points, mesh.points + 3 * mesh.n_points);
+  Tet tets[kMaxTetsPerCell];
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
+    const int n = canonical_tetrahedra(mesh, c, tets);
+    for (int k = 0; k < n; ++k) out.add_cell(CellType::Tetra, tets[k].data());
+  }
+  if (mesh.scalar) out.add_field(mesh.field.empty() ? "scalar" : mesh.field, "point data").values.assign(mesh.scalar, mesh.scalar + mesh.n_points);
+  return out;
+}
+
+struct Batch {
+  std::size_t begin = 0, end = 0;
+  std::vector<Fragment> fragments;
+  ProjectionCounters counters;
+};
+
+}  // namespace
+
+ProjectionRenderer::ProjectionRenderer(const MeshView& mesh) {
+  const auto is_tet = [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); };
+  cells_split_ = mesh.n_cells - std::count_if(mesh.types, mesh.types + mesh.n_cells, is_tet);
+  if (cells_split_ > 0) {
+    split_ = split_cells(mesh);
+    tets_ = split_->view(split_->fields.empty() ? std::string() : split_->fields.front().name);
+    if (split_->fields.empty()) tets_.scalar = nullptr;
+  } else {
+    tets_ = mesh;
+  }
+  topology_ = build_topology(tets_);
+  hull_ = boundary_convexity(tets_, topology_);
+  sorter_ = std::make_unique<VisibilitySorter>(tets_, topology_, hull_);
+  points_ = recentre(tets_);
+  for (std::int64_t c = 0; c < tets_.n_cells; ++c) {
+    const std::int64_t* id = tets_.cell(c);
+    for (int a = 0; a < 4; ++a)
+      for (int b = a + 1; b < 4; ++b) max_edge_ = std::max(max_edge_, glm::distance(points_(id[a]), points_(id[b])));
+  }
+}
+
+ProjectionRenderer::~ProjectionRenderer() = default;
+
+bool ProjectionRenderer::convex_boundary() const { return hull_.convex; }
+
+Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camera, int width, int height,
+                                 const ProjectionOptions& options, ProjectionStats* stats) const {
+  const auto start = std::chrono::steady_clock::now();
+  ProjectionStats st;
+  st.tets = tets_.n_cells;
+  st.cells_split = cells_split_;
+
+  auto t = std::chrono::steady_clock::now();
+  const ScreenMap map(camera, width, height, points_.centre);
+  const ScreenPoints screen = project_points(points_, map);
+  st.phase_seconds.emplace_back("project points", since(t));
+
+  t = std::chrono::steady_clock::now();
+  SortResult sorted = sorter_->sort(options.sort, SortView{camera, width, height});
+  st.phase_seconds.emplace_back("sort", since(t));
+
+  std::optional<OpacityTable> table;
+  if (options.method == ProjectionMethod::pt_table) {
+    double kmax = 0.0;
+    for (const auto& p : tf.extinction_points()) kmax = std::max(kmax, p.kappa);
+    table.emplace(options.table_size, kmax, max_edge_);
+  }
+  const TetFragments project(screen, map, tets_.scalar, tf, options.method, table ? &*table : nullptr);
+
+  t = std::chrono::steady_clock::now();
+  Image image(width, height);
+  const std::vector<std::int64_t>& order = sorted.order;
+  const std::size_t batch = static_cast<std::size_t>(std::max(1, options.batch_cells));
+  const int tokens = 2 * tbb::this_task_arena::max_concurrency();
+  std::vector<Batch> batches(static_cast<std::size_t>(tokens));
+  tbb::concurrent_bounded_queue<Batch*> free;  // batches are reused, keeping their fragment buffers
+  for (auto& b : batches) free.push(&b);
+  std::size_t next = 0;
+  tbb::parallel_pipeline(
+      static_cast<std::size_t>(tokens),
+      tbb::make_filter<void, Batch*>(tbb::filter_mode::serial_in_order,
+                                     [&](tbb::flow_control& fc) -> Batch* {
+                                       if (next >= order.size()) {
+                                         fc.stop();
+                                         return nullptr;
+                                       }
+                                       Batch* b = nullptr;
+                                       free.pop(b);
+                                       b->begin = next, b->end = std::min(order.size(), next + batch);
+                                       next = b->end;
+                                       return b;
+                                     }) &
+          tbb::make_filter<Batch*, Batch*>(tbb::filter_mode::parallel,
+                                           [&](Batch* b) {
+                                             b->fragments.clear();
+                                             b->counters = {};
+                                             for (std::size_t k = b->begin; k < b->end; ++k) {
+                                               const std::int64_t* id = tets_.cell(order[k]);
+                                               project.project(Tet{id[0], id[1], id[2], id[3]}, b->fragments, b->counters);
+                                             }
+                                             return b;
+                                           }) &
+          tbb::make_filter<Batch*, void>(tbb::filter_mode::serial_in_order, [&](Batch* b) {
+            composite_over(image, b->fragments.data(), b->fragments.size());
+            st.counters.add(b->counters);
+            free.push(b);
+          }));
+  st.phase_seconds.emplace_back("project and composite", since(t));
+  st.sort = std::move(sorted.stats);
+  st.seconds = since(start);
+  if (stats) *stats = std::move(st);
+  return image;
+}
+
+}  // namespace cellproj

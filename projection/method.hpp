@@ -1,0 +1,41 @@
+#pragma once
+// The cell-projection methods: a ladder from fastest to exact (docs/methods.md measures each rung
+// against the exact reference renderer).
+#include <algorithm>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace cellproj {
+
+enum class ProjectionMethod {
+  pt_linear,       // Shirley-Tuchman as published: opacity and colour interpolated across the triangles
+  pt_table,        // (kappa_avg, l) interpolated, opacity from a 2D table of 1 - exp(-kappa l) (MWSC sec. 2)
+  pt_analytic,     // per pixel, the exact integral for kappa and colour linear along the segment
+  pt_breakpoints,  // pt_analytic, the segment cut at the transfer function's breakpoints: exact
+};
+ProjectionMethod projection_method_from_name(const std::string& name);  // throws InputError listing the names
+const char* name_of(ProjectionMethod method);
+std::string projection_method_names();
+
+// 1 - exp(-kappa l) tabulated on [0, kappa_max] x [0, l_max] at size x size nodes, read bilinearly:
+// the paper's 2D alpha texture. Arguments beyond the table are clamped to its edge.
+class OpacityTable {
+ public:
+  OpacityTable(int size, double kappa_max, double l_max);
+  double operator()(double kappa, double l) const {
+    const double u = std::min(kappa * kscale_, max_index_), v = std::min(l * lscale_, max_index_);
+    const int i = std::min(static_cast<int>(u), size_ - 2), j = std::min(static_cast<int>(v), size_ - 2);
+    const double fu = u - i, fv = v - j;
+    const float* row = alpha_.data() + static_cast<std::size_t>(j) * size_ + i;
+    return (1 - fv) * ((1 - fu) * row[0] + fu * row[1]) + fv * ((1 - fu) * row[size_] + fu * row[size_ + 1]);
+  }
+  int size() const { return size_; }
+
+ private:
+  int size_;
+  double kscale_, lscale_, max_index_;
+  std::vector<float> alpha_;
+};
+
+}  // namespace cellproj

@@ -1,0 +1,35 @@
+#pragma once
+// Shirley and Tuchman's projected tetrahedra (MWSC section 2): a tetrahedron's image is a triangle
+// with one vertex inside it (class 1: three triangles) or a quadrilateral whose diagonals are two
+// opposite edges (class 2: four triangles). The triangles fan around the thick vertex, where the
+// ray through the cell is longest; along the hull's edges the cell is zero thick. Within each
+// triangle the ray enters through one face and leaves through one face, so its ends' depth and
+// scalar interpolate exactly (perspective-correctly in perspective).
+#include <cstdint>
+
+namespace cellproj {
+
+// One corner of the projected triangles: pixel position, and view depth and scalar where the ray
+// through it enters (front) and leaves (back) the tetrahedron.
+struct ThickVertex {
+  double x = 0, y = 0;
+  double zf = 0, zb = 0, sf = 0, sb = 0;
+};
+
+struct ProjectedTet {
+  int hull_size = 0;      // 3 (class 1), 4 (class 2), 0 (zero projected area: nothing to draw)
+  ThickVertex thick;      // the triangles are (thick, hull[k], hull[k+1]), k cyclic
+  ThickVertex hull[4];    // tetrahedron vertices (zero thickness) around the projected outline
+};
+
+// A tetrahedron vertex in the image: pixel position, view depth, scalar.
+struct ScreenVertex {
+  double x, y, z, s;
+};
+
+// Classifies by the signs of the four projected face areas (CGAL's exact 2D orientation, so two
+// tetrahedra sharing a face always agree and near-degenerate projections never flip). Vertices that
+// project onto an edge or onto each other give zero-area triangles, which cover no pixel.
+ProjectedTet project_tet(const ScreenVertex v[4], bool perspective);
+
+}  // namespace cellproj

@@ -1,0 +1,60 @@
+#pragma once
+// One tetrahedron to the pixel fragments it contributes: projection (projected_tet), rasterization
+// of its triangles with the shared coverage rule (view/raster.hpp), and per pixel the light of the
+// ray segment through it by the chosen method. Fragments are composited in visibility order.
+#include <cstdint>
+#include <vector>
+
+#include "grid/tetrahedralize.hpp"
+#include "optics/transfer_function.hpp"
+#include "projection/method.hpp"
+#include "projection/screen.hpp"
+#include "view/image.hpp"
+
+namespace cellproj {
+
+// A pixel's premultiplied light and opacity from one cell.
+struct Fragment {
+  std::uint32_t pixel;  // j * width + i
+  float rgba[4];
+};
+
+struct ProjectionCounters {
+  std::int64_t tets = 0;              // projected
+  std::int64_t class1 = 0, class2 = 0;
+  std::int64_t empty = 0;             // zero projected area (slivers seen edge-on, zero-volume cells)
+  std::int64_t behind_eye = 0;        // perspective: a vertex at or behind the eye, not drawn
+  std::int64_t fragments = 0;
+  std::int64_t breakpoint_cells = 0;  // cells whose scalar range holds a breakpoint (cut by pt-breakpoints)
+  void add(const ProjectionCounters& o);
+};
+
+// The frame's fixed inputs; project() is const and may run on many threads at once.
+class TetFragments {
+ public:
+  // `table` is needed by pt_table only. All referenced objects must outlive this.
+  TetFragments(const ScreenPoints& screen, const ScreenMap& map, const double* scalar, const TransferFunction& tf,
+               ProjectionMethod method, const OpacityTable* table);
+  // Appends tet's fragments to out.
+  void project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
+
+ private:
+  const ScreenPoints& screen_;
+  const ScreenMap& map_;
+  const double* scalar_;
+  const TransferFunction& tf_;
+  ProjectionMethod method_;
+  const OpacityTable* table_;
+};
+
+// Back-to-front "over" of fragments onto a premultiplied image.
+inline void composite_over(Image& image, const Fragment* f, std::size_t n) {
+  float* px = image.rgba.data();
+  for (std::size_t k = 0; k < n; ++k) {
+    float* d = px + std::size_t(f[k].pixel) * 4;
+    const float t = 1.0f - f[k].rgba[3];
+    for (int c = 0; c < 4; ++c) d[c] = f[k].rgba[c] + t * d[c];
+  }
+}
+
+}  // namespace cellproj
