@@ -1,5 +1,6 @@
 #include "optics/linear_segment.hpp"
 
+#include <array>
 #include <cmath>
 
 namespace cellproj {
@@ -13,37 +14,41 @@ constexpr int kSeriesTerms = 13;  // n = 0 .. 12: relative error below 1e-13 wit
 // Optical depth below which G = 1 - F comes from its Taylor series in (a, b) instead of 1 - F.
 constexpr double kTinyDepth = 1e-3;
 
-// M_k(a) = int_0^1 u^k e^{-a u} du for k = 0 .. 2 (kSeriesTerms - 1).
-void exponential_moments(double a, double m[2 * kSeriesTerms - 1]) {
-  constexpr int K = 2 * kSeriesTerms - 1;
-  if (a < 1.0) {  // sum_j (-a)^j / (j! (k + j + 1)): 20 terms reach 1e-18
-    for (int k = 0; k < K; ++k) {
-      double term = 1.0, sum = 0.0;
-      for (int j = 0; j < 20; ++j) {
-        sum += term / (k + j + 1);
-        term *= -a / (j + 1);
-      }
-      m[k] = sum;
-    }
+// M_k(a) = int_0^1 u^k e^{-a u} du for k = 0 .. kmax, by the recursion M_k = (k M_{k-1} - e^-a) / a
+// (by parts): downward from well above kmax when a is small (where it damps errors by a/k per
+// step), upward when a is large (where it damps them by k/a).
+void exponential_moments(double a, int kmax, double* m) {
+  static const auto inverse = [] {  // 1 / k: the recursion's divisions, as multiplications
+    std::array<double, 128> r{};
+    for (int k = 1; k < 128; ++k) r[k] = 1.0 / k;
+    return r;
+  }();
+  const double e = std::exp(-a);
+  if (a > 8.0) {
+    const double ia = 1.0 / a;
+    m[0] = -std::expm1(-a) * ia;
+    for (int k = 1; k <= kmax; ++k) m[k] = (k * m[k - 1] - e) * ia;
     return;
   }
-  // Upward recursion M_k = (k M_{k-1} - e^-a) / a, by parts; its error growth (k/a per step) is
-  // harmless here since M_k enters multiplied by b^(k/2) / (k/2)!.
-  const double e = std::exp(-a);
-  m[0] = -std::expm1(-a) / a;
-  for (int k = 1; k < K; ++k) m[k] = (k * m[k - 1] - e) / a;
+  // Enough steps that prod a / k over them is below 1e-17 (a <= 8, kmax <= 24: top < 128).
+  const int top = kmax + 16 + static_cast<int>(3.0 * a);
+  double mk = e / (top + 1 - a / (top + 2));  // M_top to first order in a / top
+  for (int k = top; k > kmax; --k) mk = (a * mk + e) * inverse[k];
+  m[kmax] = mk;
+  for (int k = kmax; k > 0; --k) m[k - 1] = (a * m[k] + e) * inverse[k];
 }
 
 // F(a, b) = int_0^1 exp(-a u - b u^2) du for a >= 0 and a + 2b >= 0 (kappa >= 0 at both ends).
 double mean_transmittance(double a, double b, double depth) {
-  if (std::abs(b) <= kSeriesB * (1.0 + a)) {  // sum_n (-b)^n / n! M_2n(a)
-    double m[2 * kSeriesTerms - 1];
-    exponential_moments(a, m);
-    double sum = 0.0, coef = 1.0;
-    for (int n = 0; n < kSeriesTerms; ++n) {
-      sum += coef * m[2 * n];
-      coef *= -b / (n + 1);
-    }
+  if (b == 0.0) return -std::expm1(-a) / a;  // constant kappa (a > 0 here: depth >= kTinyDepth)
+  if (std::abs(b) <= kSeriesB * (1.0 + a)) {  // sum_n (-b)^n / n! M_2n(a), M_2n <= 1
+    double coef[kSeriesTerms];
+    int n = 0;
+    for (double c = 1.0; n < kSeriesTerms && (n == 0 || std::abs(c) > 1e-17); ++n) coef[n] = c, c *= -b / (n + 1);
+    double m[2 * kSeriesTerms];
+    exponential_moments(a, 2 * (n - 1), m);
+    double sum = 0.0;
+    for (int k = n - 1; k >= 0; --k) sum += coef[k] * m[2 * k];
     return sum;
   }
   const double rb = std::sqrt(std::abs(b)), x0 = a / (2.0 * rb), e = std::exp(-depth);
@@ -64,29 +69,38 @@ double erfcx(double x) {
 }
 
 double dawson(double x) {
-  if (x < 1.0) {  // sum (-2x^2)^n x / (2n+1)!!: alternating, terms below x
+  if (x < 0.2) {  // sum (-2x^2)^n x / (2n+1)!!
     double term = x, sum = x;
-    for (int n = 1; n < 40 && std::abs(term) > 1e-18 * std::abs(sum); ++n) {
+    for (int n = 1; n < 20 && std::abs(term) > 1e-18 * std::abs(sum); ++n) {
       term *= -2.0 * x * x / (2 * n + 1);
       sum += term;
     }
     return sum;
   }
-  if (x < 6.0) {  // e^{-x^2} sum x^(2n+1) / (n! (2n+1)): positive terms, no cancellation
-    const double x2 = x * x;
-    double p = x, sum = x;
-    for (int n = 1; n < 400; ++n) {
-      p *= x2 / n;
-      const double t = p / (2 * n + 1);
-      sum += t;
-      if (n > x2 && t < 1e-18 * sum) break;
+  if (x < 10.0) {
+    // Rybicki's sampling theorem: D(x) = lim_{h->0} pi^-1/2 sum_{n odd} e^{-(x - n h)^2} / n, centred
+    // on the even n0 nearest x / h; with h = 1/4 the error is about e^{-(pi / 2h)^2} ~ 1e-17.
+    constexpr double h = 0.25;
+    constexpr int kTerms = 13;  // e^{-((2i+1) h)^2} < 1e-17 beyond
+    static const auto weight = [] {
+      std::array<double, kTerms> c{};
+      for (int i = 0; i < kTerms; ++i) c[i] = std::exp(-((2 * i + 1) * h) * ((2 * i + 1) * h));
+      return c;
+    }();
+    const int n0 = 2 * static_cast<int>(std::lround(0.5 * x / h));
+    const double xp = x - n0 * h, e1 = std::exp(2.0 * xp * h), e2 = e1 * e1;
+    double up = e1, sum = 0.0;
+    for (int i = 0; i < kTerms; ++i) {
+      const int odd = 2 * i + 1;
+      sum += weight[i] * (up / (n0 + odd) + 1.0 / (up * (n0 - odd)));
+      up *= e2;
     }
-    return std::exp(-x2) * sum;
+    return std::exp(-xp * xp) * sum / kSqrtPi;
   }
-  // Asymptotic series (1 / 2x) sum (2k-1)!! / (2x^2)^k, cut at its smallest term (< 1e-15 here).
+  // Asymptotic series (1 / 2x) sum (2k-1)!! / (2x^2)^k, cut at its smallest term (< 1e-16 here).
   const double r = 1.0 / (2.0 * x * x);
   double term = 1.0, sum = 1.0;
-  for (int k = 1; k < 60; ++k) {
+  for (int k = 1; k < 40; ++k) {
     const double next = term * (2 * k - 1) * r;
     if (next >= term || next < 1e-18 * sum) break;
     term = next;
