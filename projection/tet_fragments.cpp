@@ -27,7 +27,9 @@ struct Shade {
   glm::dvec3 c{0.0};
 };
 
+// A fragment that neither adds light nor hides anything (a ray grazing the cell) is not stored.
 void put(std::vector<Fragment>& out, int i, int j, int width, const glm::dvec3& rgb, double alpha) {
+  if (alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0) return;
   out.push_back({static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i),
                  {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b), static_cast<float>(alpha)}});
 }
