@@ -38,6 +38,21 @@ expect 1 "unknown method 'pt-magic'" -- render "$tmp/ok.json" --method pt-magic
 expect 2 "threads" -- render "$tmp/ok.json" --threads 0
 expect 0 "wrote .*ok.png" -- render "$tmp/ok.json" --size 32x24 -o "$tmp/ok.png" --npy "$tmp/ok.npy" --stats --frames 3
 grep -q '"frame_seconds"' "$tmp/err" && grep -q '"load_seconds"' "$tmp/err" || { echo "FAIL: --stats JSON"; failed=$((failed+1)); }
+for m in pt-linear pt-table pt-analytic pt-breakpoints exact; do
+  expect 0 "wrote .*$m.png .*$m" -- render "$tmp/ok.json" --size 40x30 --method $m -o "$tmp/$m.png" --npy "$tmp/$m.npy" --stats
+  grep -q "\"method\":\"$m\"" "$tmp/err" || { echo "FAIL: --stats names $m"; failed=$((failed+1)); }
+done
+"$exe" render "$tmp/ok.json" --size 40x30 --method pt-table -o "$tmp/t.png" --stats 2>"$tmp/err" >/dev/null
+for key in tets cells_split class1_tets class2_tets fragments breakpoint_cells gap_relations phase_seconds sort; do
+  grep -q "\"$key\":" "$tmp/err" || { echo "FAIL: render --stats lacks $key"; failed=$((failed+1)); }
+done
+# pt-breakpoints is exact for the canonical tetrahedra: the same picture as exact --interpolation canonical-tets.
+"$exe" render "$tmp/ok.json" --size 40x30 --method exact --interpolation canonical-tets --npy "$tmp/ct.npy" -o "$tmp/ct.png" >/dev/null
+expect 0 '"max_abs": [0-9.e-]+' -- compare "$tmp/ct.npy" "$tmp/pt-breakpoints.npy"
+python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['max_abs'] < 1e-5 else 1)" <("$exe" compare "$tmp/ct.npy" "$tmp/pt-breakpoints.npy") \
+  || { echo "FAIL: pt-breakpoints differs from exact canonical-tets"; failed=$((failed+1)); }
+expect 1 "unknown sort 'zsort'" -- render "$tmp/ok.json" --sort zsort
+expect 2 "table-size" -- render "$tmp/ok.json" --method pt-table --table-size 1
 expect 0 '"max_abs": 0, "rmse": 0' -- compare "$tmp/ok.npy" "$tmp/ok.npy"
 expect 1 "no such file|cannot open" -- compare "$tmp/ok.npy" "$tmp/none.npy"
 expect 1 "unknown sort 'zsort' \(known: auto, centroid" -- sortbench "$tmp/box.vtu" --sorts mpvo,zsort
