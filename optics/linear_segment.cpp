@@ -133,12 +133,7 @@ EndWeights linear_segment_weights(double L, double k0, double k1) {
 }
 
 SegmentLight integrate_segment_closed_form(const TransferFunction& tf, double length, double s0, double s1) {
-  if (!(length > 0.0)) return {};
-  SegmentLight acc;
-  for_each_linear_piece(tf, s0, s1, [&](const TransferFunction::Ends& e, double fraction) {
-    acc = under(acc, integrate_linear_closed_form(length * fraction, e.ka, e.kb, e.ca, e.cb));
-  });
-  return acc;
+  return integrate_pieces(tf, length, s0, s1, integrate_linear_closed_form);
 }
 
 }  // namespace cellproj

@@ -53,12 +53,7 @@ SegmentLight integrate_linear_reference(double L, double k0, double k1, const gl
 }
 
 SegmentLight integrate_segment_reference(const TransferFunction& tf, double length, double s0, double s1) {
-  if (!(length > 0.0)) return {};
-  SegmentLight acc;
-  for_each_linear_piece(tf, s0, s1, [&](const TransferFunction::Ends& e, double fraction) {
-    acc = under(acc, integrate_linear_reference(length * fraction, e.ka, e.kb, e.ca, e.cb));
-  });
-  return acc;
+  return integrate_pieces(tf, length, s0, s1, integrate_linear_reference);
 }
 
 }  // namespace cellproj

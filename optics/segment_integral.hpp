@@ -56,6 +56,17 @@ void for_each_linear_piece(const TransferFunction& tf, double s0, double s1, Pie
   cut(s1);
 }
 
+// The light of such a segment: each piece integrated by integrate(L, k0, k1, c0, c1), composited.
+template <class Integrate>
+SegmentLight integrate_pieces(const TransferFunction& tf, double length, double s0, double s1, Integrate&& integrate) {
+  SegmentLight acc;
+  if (!(length > 0.0)) return acc;
+  for_each_linear_piece(tf, s0, s1, [&](const TransferFunction::Ends& e, double fraction) {
+    acc = under(acc, integrate(length * fraction, e.ka, e.kb, e.ca, e.cb));
+  });
+  return acc;
+}
+
 // A segment along which the scalar runs linearly from s0 (front) to s1 (back): cut at the transfer
 // function's breakpoints, each piece integrated with integrate_linear_reference.
 SegmentLight integrate_segment_reference(const TransferFunction& tf, double length, double s0, double s1);

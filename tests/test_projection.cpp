@@ -53,27 +53,21 @@ Mesh wavy_tets(int n) {
 
 }  // namespace
 
+void expect_thick(const ProjectedTet& p, int hull_size, const ThickVertex& want) {
+  ASSERT_EQ(p.hull_size, hull_size);
+  const double got[6] = {p.thick.x, p.thick.y, p.thick.zf, p.thick.zb, p.thick.sf, p.thick.sb};
+  const double exp[6] = {want.x, want.y, want.zf, want.zb, want.sf, want.sb};
+  for (int k = 0; k < 6; ++k) EXPECT_DOUBLE_EQ(got[k], exp[k]) << "component " << k;
+}
+
 TEST(ProjectedTet, ClassesFromProjectedFaceSigns) {
   // Vertex 3 straight above the centroid of the base: class 1 with vertex 3 as the thick vertex,
   // its other end on the base (orthographic, looking down z).
   const ScreenVertex up[4] = {{0, 0, 5, 0}, {6, 0, 5, 0}, {0, 6, 5, 0}, {2, 2, 3, 1}};
-  const ProjectedTet a = project_tet(up, false);
-  ASSERT_EQ(a.hull_size, 3);
-  EXPECT_DOUBLE_EQ(a.thick.x, 2);
-  EXPECT_DOUBLE_EQ(a.thick.zf, 3);
-  EXPECT_DOUBLE_EQ(a.thick.zb, 5);
-  EXPECT_DOUBLE_EQ(a.thick.sf, 1);
-  EXPECT_DOUBLE_EQ(a.thick.sb, 0);
+  expect_thick(project_tet(up, false), 3, {2, 2, 3, 5, 1, 0});
   // Two crossing edges (0-1 at depth 1, 2-3 at depth 4): class 2, thick vertex at their crossing.
   const ScreenVertex cross[4] = {{0, 0, 1, 0}, {4, 4, 1, 2}, {4, 0, 4, 10}, {0, 4, 4, 20}};
-  const ProjectedTet b = project_tet(cross, false);
-  ASSERT_EQ(b.hull_size, 4);
-  EXPECT_DOUBLE_EQ(b.thick.x, 2);
-  EXPECT_DOUBLE_EQ(b.thick.y, 2);
-  EXPECT_DOUBLE_EQ(b.thick.zf, 1);
-  EXPECT_DOUBLE_EQ(b.thick.zb, 4);
-  EXPECT_DOUBLE_EQ(b.thick.sf, 1);
-  EXPECT_DOUBLE_EQ(b.thick.sb, 15);
+  expect_thick(project_tet(cross, false), 4, {2, 2, 1, 4, 1, 15});
   // Degenerate: a vertex exactly on an edge's image, and all four on a line.
   const ScreenVertex on_edge[4] = {{0, 0, 5, 0}, {6, 0, 5, 0}, {0, 6, 5, 0}, {3, 0, 3, 1}};
   EXPECT_EQ(project_tet(on_edge, false).hull_size, 3);
