@@ -87,7 +87,10 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
     for (const auto& p : tf.extinction_points()) kmax = std::max(kmax, p.kappa);
     table.emplace(options.table_size, kmax, max_edge_);
   }
-  const TetFragments project(screen, map, tets_.scalar, tf, options.method, table ? &*table : nullptr);
+  PointOptics optics;
+  if (options.method == ProjectionMethod::pt_linear || options.method == ProjectionMethod::pt_table)
+    optics = point_optics(tets_.scalar, tets_.n_points, tf);
+  const TetFragments project(screen, map, tets_.scalar, tf, options.method, table ? &*table : nullptr, &optics);
 
   t = std::chrono::steady_clock::now();
   Image image(width, height);

@@ -74,7 +74,7 @@ ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
     out.thick.x = v[t].x, out.thick.y = v[t].y;
     set_ends(out.thick, v[t].z, v[t].s, z, s);
     out.hull_size = 3;
-    for (int k = 0; k < 3; ++k) out.hull[k] = corner(v[o[k]]);
+    for (int k = 0; k < 3; ++k) out.hull[k] = corner(v[o[k]]), out.hull_vertex[k] = o[k];
     return out;
   }
   if (pos != 2 || neg != 2) return out;  // every face edge-on: zero area
@@ -100,7 +100,8 @@ ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
   out.thick.y = wac[0] * v[a].y + wac[1] * v[c].y;
   set_ends(out.thick, z1, s1, z2, s2);
   out.hull_size = 4;
-  out.hull[0] = corner(v[a]), out.hull[1] = corner(v[b]), out.hull[2] = corner(v[c]), out.hull[3] = corner(v[d]);
+  const int around[4] = {a, b, c, d};
+  for (int k = 0; k < 4; ++k) out.hull[k] = corner(v[around[k]]), out.hull_vertex[k] = around[k];
   return out;
 }
 

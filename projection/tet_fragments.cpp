@@ -4,6 +4,8 @@
 #include <cmath>
 
 #include <glm/vec2.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
 
 #include "optics/linear_segment.hpp"
 #include "projection/projected_tet.hpp"
@@ -28,7 +30,7 @@ struct Shade {
 };
 
 // A fragment that neither adds light nor hides anything (a ray grazing the cell) is not stored.
-void put(std::vector<Fragment>& out, int i, int j, int width, const glm::dvec3& rgb, double alpha) {
+inline void put(std::vector<Fragment>& out, int i, int j, int width, const glm::dvec3& rgb, double alpha) {
   if (alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0) return;
   out.push_back({static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i),
                  {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b), static_cast<float>(alpha)}});
@@ -41,9 +43,21 @@ void ProjectionCounters::add(const ProjectionCounters& o) {
   fragments += o.fragments, breakpoint_cells += o.breakpoint_cells;
 }
 
+PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf) {
+  PointOptics o;
+  if (!scalar) return o;
+  o.kappa.resize(static_cast<std::size_t>(n_points));
+  o.color.resize(static_cast<std::size_t>(n_points));
+  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, n_points, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
+    for (std::int64_t p = r.begin(); p < r.end(); ++p) o.kappa[p] = tf.extinction(scalar[p]), o.color[p] = tf.color(scalar[p]);
+  });
+  return o;
+}
+
 TetFragments::TetFragments(const ScreenPoints& screen, const ScreenMap& map, const double* scalar,
-                           const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table)
-    : screen_(screen), map_(map), scalar_(scalar), tf_(tf), method_(method), table_(table) {}
+                           const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
+                           const PointOptics* optics)
+    : screen_(screen), map_(map), scalar_(scalar), tf_(tf), method_(method), table_(table), optics_(optics) {}
 
 void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
   ++counters.tets;
@@ -89,17 +103,15 @@ void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, Projectio
   if (method_ == ProjectionMethod::pt_linear || method_ == ProjectionMethod::pt_table) {
     // Corner values from the transfer function, Gouraud-interpolated across each triangle (MWSC sec. 2).
     const bool table = method_ == ProjectionMethod::pt_table;
-    auto corner = [&](double zf, double zb, double sf, double sb, double l) {
-      const double kf = tf_.extinction(sf), kb = tf_.extinction(sb), kavg = 0.5 * (kf + kb);
-      Shade s;
-      s.c = zf == zb ? tf_.color(sf) : 0.5 * (tf_.color(sf) + tf_.color(sb));
-      s.l = l;
-      s.a = table ? kavg : -std::expm1(-kavg * l);
-      return s;
-    };
-    const Shade st = corner(T.zf, T.zb, T.sf, T.sb, thick_l);
+    auto shade = [&](double kavg, double l, const glm::dvec3& c) { return Shade{table ? kavg : -std::expm1(-kavg * l), l, c}; };
+    const Shade st = shade(0.5 * (tf_.extinction(T.sf) + tf_.extinction(T.sb)), thick_l,
+                           0.5 * (tf_.color(T.sf) + tf_.color(T.sb)));
     Shade sh[4];
-    for (int k = 0; k < pt.hull_size; ++k) sh[k] = corner(pt.hull[k].zf, pt.hull[k].zf, pt.hull[k].sf, pt.hull[k].sf, 0.0);
+    for (int k = 0; k < pt.hull_size; ++k) {
+      const std::int64_t p = tet[pt.hull_vertex[k]];
+      sh[k] = optics_ && !optics_->kappa.empty() ? shade(optics_->kappa[p], 0.0, optics_->color[p])
+                                                : shade(tf_.extinction(pt.hull[k].sf), 0.0, tf_.color(pt.hull[k].sf));
+    }
     each_triangle([&](int i, int j, int a, int b, double wt, double wa, double wb) {
       const glm::dvec3 c = wt * st.c + wa * sh[a].c + wb * sh[b].c;
       const double x = wt * st.a + wa * sh[a].a + wb * sh[b].a;

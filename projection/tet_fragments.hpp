@@ -29,12 +29,21 @@ struct ProjectionCounters {
   void add(const ProjectionCounters& o);
 };
 
+// Extinction and colour at every point (the corners of the Gouraud-shaded methods), once per frame.
+struct PointOptics {
+  std::vector<double> kappa;
+  std::vector<glm::dvec3> color;
+};
+// Parallel over points (oneTBB, in the caller's task arena); empty without a scalar.
+PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf);
+
 // The frame's fixed inputs; project() is const and may run on many threads at once.
 class TetFragments {
  public:
-  // `table` is needed by pt_table only. All referenced objects must outlive this.
+  // `table` is needed by pt_table only, `optics` by pt_linear and pt_table. All referenced objects
+  // must outlive this.
   TetFragments(const ScreenPoints& screen, const ScreenMap& map, const double* scalar, const TransferFunction& tf,
-               ProjectionMethod method, const OpacityTable* table);
+               ProjectionMethod method, const OpacityTable* table, const PointOptics* optics);
   // Appends tet's fragments to out.
   void project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
 
@@ -45,6 +54,7 @@ class TetFragments {
   const TransferFunction& tf_;
   ProjectionMethod method_;
   const OpacityTable* table_;
+  const PointOptics* optics_;
 };
 
 // Back-to-front "over" of fragments onto a premultiplied image.

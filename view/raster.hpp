@@ -21,6 +21,31 @@ inline double edge(const glm::dvec2& a, const glm::dvec2& b, double px, double p
 // Whether a centre exactly on edge a->b (of a positively oriented triangle) belongs to it: true for
 // exactly one of the two directions of any edge.
 inline bool owns(const glm::dvec2& a, const glm::dvec2& b) { return a.y > b.y || (a.y == b.y && a.x < b.x); }
+
+// edge(a, b, x, y) with its differences hoisted: the same operations on the same values, so the
+// same bits, evaluated per row (row) and then per pixel (at).
+struct EdgeFunction {
+  double ax, ay, dx, dy, sign;
+  bool own;
+  EdgeFunction(const glm::dvec2& a, const glm::dvec2& b) : own(owns(a, b)) {
+    const bool flip = before(b, a);
+    const glm::dvec2& lo = flip ? b : a;
+    const glm::dvec2& hi = flip ? a : b;
+    ax = lo.x, ay = lo.y, dx = hi.x - lo.x, dy = hi.y - lo.y, sign = flip ? -1.0 : 1.0;
+  }
+  double row(double y) const { return dx * (y - ay); }
+  double at(double row_value, double x) const { return sign * (row_value - dy * (x - ax)); }
+  bool inside(double e) const { return e > 0 || (e == 0 && own); }
+  // Narrows [lo, hi] (pixel indices) to where this edge can be non-negative on the row, plus a
+  // pixel of margin for rounding.
+  void clip(double row_value, double& lo, double& hi) const {
+    const double c = sign * dy;  // e = sign * row_value - c (x - ax)
+    if (c == 0) return;
+    const double x = ax + sign * row_value / c - 0.5;  // pixel index whose centre is the crossing
+    if (c > 0) hi = std::min(hi, std::floor(x) + 1);
+    else lo = std::max(lo, std::ceil(x) - 1);
+  }
+};
 }  // namespace raster_detail
 
 // Calls covered(i, j, w0, w1, w2) for every pixel of a width x height image whose centre the
@@ -39,14 +64,18 @@ void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int
   const int i1 = static_cast<int>(std::min(double(width - 1), std::floor(xmax - 0.5)));
   const int j0 = static_cast<int>(std::max(0.0, std::ceil(ymin - 0.5)));
   const int j1 = static_cast<int>(std::min(double(height - 1), std::floor(ymax - 0.5)));
-  const bool own01 = owns(p0, p1), own12 = owns(p1, p2), own20 = owns(p2, p0);
+  const EdgeFunction f0(p0, p1), f1(p1, p2), f2(p2, p0);
   const double inv = 1.0 / area;
   for (int j = j0; j <= j1; ++j) {
     const double y = j + 0.5;
-    for (int i = i0; i <= i1; ++i) {
+    const double r0 = f0.row(y), r1 = f1.row(y), r2 = f2.row(y);
+    // A conservative span of this row (a pixel wider each side); the exact tests decide inside it.
+    double lo = i0, hi = i1;
+    f0.clip(r0, lo, hi), f1.clip(r1, lo, hi), f2.clip(r2, lo, hi);
+    for (int i = static_cast<int>(std::max<double>(i0, lo)), last = static_cast<int>(std::min<double>(i1, hi)); i <= last; ++i) {
       const double x = i + 0.5;
-      const double e0 = edge(p0, p1, x, y), e1 = edge(p1, p2, x, y), e2 = edge(p2, p0, x, y);
-      if ((e0 > 0 || (e0 == 0 && own01)) && (e1 > 0 || (e1 == 0 && own12)) && (e2 > 0 || (e2 == 0 && own20))) {
+      const double e0 = f0.at(r0, x), e1 = f1.at(r1, x), e2 = f2.at(r2, x);
+      if (f0.inside(e0) && f1.inside(e1) && f2.inside(e2)) {
         // e1 is opposite p0, e2 opposite p1, e0 opposite p2 (in the possibly swapped order).
         if (swapped) covered(i, j, e1 * inv, e0 * inv, e2 * inv);
         else covered(i, j, e1 * inv, e2 * inv, e0 * inv);
