@@ -8,14 +8,19 @@ namespace cellproj {
 
 Action add_compare(CLI::App& app) {
   struct Args {
-    std::string a, b;
+    std::string a, b, diff;
+    double scale = 10.0;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("compare", "Largest and RMS difference of two .npy images written by render --npy");
   cmd->add_option("a", args->a, "First image (.npy)")->required();
   cmd->add_option("b", args->b, "Second image (.npy), e.g. the exact reference")->required();
+  cmd->add_option("--diff", args->diff, "Also write |a - b| as a PNG, multiplied by --scale");
+  cmd->add_option("--scale", args->scale, "Gain of the --diff image (default 10)")->check(CLI::PositiveNumber);
   return [args] {
-    const ImageDifference d = compare(read_npy(args->a), read_npy(args->b));
+    const Image a = read_npy(args->a), b = read_npy(args->b);
+    const ImageDifference d = compare(a, b);
+    if (!args->diff.empty()) write_png(difference_image(a, b, args->scale), glm::dvec3(0.0), args->diff);
     std::printf("{\"max_abs\": %.6g, \"rmse\": %.6g}\n", d.max_abs, d.rmse);
     return kExitOk;
   };

@@ -92,7 +92,7 @@ int run_render(const RenderArgs& a) {
       Image img = exact ? exact_renderer->render(prepared.tf, camera, scene.width, scene.height, &st, [&](double d) { bar(d); })
                         : projector->render(prepared.tf, camera, scene.width, scene.height, projection, &pst);
       trace_seconds += exact ? st.trace_seconds : pst.seconds;
-      frame_times.push_back(seconds_since(t_frame) + (f == 0 ? prepare_seconds : 0.0));
+      frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own
       if (f == 0) first = std::move(img);
     }
   });

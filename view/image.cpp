@@ -83,10 +83,28 @@ Image read_npy(const std::string& path) {
   return img;
 }
 
-ImageDifference compare(const Image& a, const Image& b) {
+namespace {
+void check_same_size(const Image& a, const Image& b) {
   if (a.width != b.width || a.height != b.height)
     throw InputError("cannot compare images of different sizes: " + std::to_string(a.width) + "x" +
                      std::to_string(a.height) + " and " + std::to_string(b.width) + "x" + std::to_string(b.height));
+}
+}  // namespace
+
+Image difference_image(const Image& a, const Image& b, double scale) {
+  check_same_size(a, b);
+  Image d(a.width, a.height);
+  for (std::size_t p = 0; p < a.rgba.size(); p += 4) {
+    for (int c = 0; c < 3; ++c)  // colour differences, plus the opacity difference in every channel
+      d.rgba[p + c] = static_cast<float>(std::min(1.0, scale * std::max(std::abs(double(a.rgba[p + c]) - b.rgba[p + c]),
+                                                                        std::abs(double(a.rgba[p + 3]) - b.rgba[p + 3]))));
+    d.rgba[p + 3] = 1.0f;
+  }
+  return d;
+}
+
+ImageDifference compare(const Image& a, const Image& b) {
+  check_same_size(a, b);
   ImageDifference d;
   double sum = 0.0;
   for (std::size_t i = 0; i < a.rgba.size(); ++i) {

@@ -29,5 +29,8 @@ struct ImageDifference {
   double max_abs = 0.0;  // largest channel difference
 };
 ImageDifference compare(const Image& a, const Image& b);
+// |a - b| per pixel times `scale`, clamped to 1, opaque: each colour channel shows the larger of
+// its own difference and the opacity difference (for looking at where two methods disagree).
+Image difference_image(const Image& a, const Image& b, double scale);
 
 }  // namespace cellproj

@@ -1,0 +1,135 @@
+#!/usr/bin/python3
+"""VTK's vtkProjectedTetrahedraMapper on one of our scenes, for bench/vtk_peer.sh.
+
+usage: xvfb-run -a /usr/bin/python3 bench/vtk_peer.py SCENE.json --size N --frames F --out PREFIX
+
+Renders the scene's mesh (tetrahedralized by vtkDataSetTriangleFilter if it has other cells) with
+the same camera and the same optical model as cellproj, F frames turning 1 degree about the up axis
+(as `cellproj render --frames`), and prints one JSON line: median/min/max seconds of frames 2..F
+(frame 1 carries VTK's set-up) and the picture as PREFIX.npy (float RGB composited on black, row 0
+at the top).
+
+The optical model: cellproj's extinction kappa(s) per unit length becomes VTK's scalar opacity
+alpha_u(s) = 1 - exp(-kappa(s) u) over the unit distance u = 1 / max(kappa) (so alpha_u stays well
+inside (0, 1)), sampled at 512 points of the field's range; VTK then gives a segment of length l
+the opacity 1 - (1 - alpha_u)^(l/u) = 1 - exp(-kappa l). Colour: the same control points.
+"""
+import argparse
+import json
+import math
+import os
+import statistics
+import sys
+import time
+
+import numpy as np
+import vtk
+from vtk.util.numpy_support import vtk_to_numpy
+
+
+def piecewise(points, s):
+    """A piecewise-linear function given by sorted (s, value) pairs, clamped outside."""
+    if s <= points[0][0]:
+        return points[0][1]
+    for (s0, v0), (s1, v1) in zip(points, points[1:]):
+        if s <= s1:
+            return v0 if s1 == s0 else v0 + (v1 - v0) * (s - s0) / (s1 - s0)
+    return points[-1][1]
+
+
+def main():
+    ap = argparse.ArgumentParser()
+    ap.add_argument("scene")
+    ap.add_argument("--size", type=int, default=512)
+    ap.add_argument("--frames", type=int, default=5)
+    ap.add_argument("--out", required=True)
+    a = ap.parse_args()
+    with open(a.scene) as f:
+        scene = json.load(f)
+    base = os.path.dirname(os.path.abspath(a.scene))
+    mesh = os.path.join(base, scene["mesh"])
+    if not mesh.endswith(".vtu"):
+        sys.exit(f"{mesh}: this peer script reads .vtu only")
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(mesh)
+    reader.Update()
+    grid = reader.GetOutput()
+    field = scene["field"]
+    grid.GetPointData().SetActiveScalars(field)
+    s_lo, s_hi = grid.GetPointData().GetArray(field).GetRange()
+    source = reader
+    if any(grid.GetCellType(c) != vtk.VTK_TETRA for c in range(grid.GetNumberOfCells())):
+        source = vtk.vtkDataSetTriangleFilter()
+        source.SetInputConnection(reader.GetOutputPort())
+
+    tf = scene["transfer_function"]
+    kappa = [(p[0], p[1]) for p in tf["extinction"]]
+    kmax = max(k for _, k in kappa)
+    unit = 1.0 / kmax if kmax > 0 else 1.0
+    opacity = vtk.vtkPiecewiseFunction()
+    for i in range(512):
+        s = s_lo + (s_hi - s_lo) * i / 511
+        opacity.AddPoint(s, 1.0 - math.exp(-piecewise(kappa, s) * unit))
+    color = vtk.vtkColorTransferFunction()
+    for s, r, g, b in tf["color"]:
+        color.AddRGBPoint(s, r, g, b)
+    prop = vtk.vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(unit)
+    prop.ShadeOff()
+    prop.SetInterpolationTypeToLinear()
+
+    mapper = vtk.vtkProjectedTetrahedraMapper()
+    mapper.SetInputConnection(source.GetOutputPort())
+    volume = vtk.vtkVolume()
+    volume.SetMapper(mapper)
+    volume.SetProperty(prop)
+    ren = vtk.vtkRenderer()
+    ren.SetBackground(0, 0, 0)
+    ren.AddVolume(volume)
+    win = vtk.vtkRenderWindow()
+    win.SetOffScreenRendering(1)
+    win.SetMultiSamples(0)
+    win.AddRenderer(ren)
+    win.SetSize(a.size, a.size)
+
+    cam = scene["camera"]
+    c = ren.GetActiveCamera()
+    c.SetPosition(*cam["eye"])
+    c.SetFocalPoint(*cam.get("target", [0, 0, 0]))
+    c.SetViewUp(*cam.get("up", [0, 1, 0]))
+    if cam.get("projection", "orthographic") == "perspective":
+        c.SetViewAngle(cam.get("fov_y", 30.0))
+    else:
+        c.ParallelProjectionOn()
+        c.SetParallelScale(cam.get("height", 2.0) / 2)
+    ren.ResetCameraClippingRange()
+
+    times = []
+    for f in range(a.frames):
+        if f > 0:
+            c.Azimuth(1.0)
+            ren.ResetCameraClippingRange()
+        t = time.perf_counter()
+        win.Render()
+        times.append(time.perf_counter() - t)
+        if f == 0:
+            grab = vtk.vtkWindowToImageFilter()
+            grab.SetInput(win)
+            grab.SetInputBufferTypeToRGB()
+            grab.ReadFrontBufferOff()
+            grab.Update()
+            img = grab.GetOutput()
+            w, h, _ = img.GetDimensions()
+            rgb = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, 3)[::-1].astype(np.float32) / 255
+            np.save(a.out + ".npy", rgb)
+    later = times[1:] or times
+    print(json.dumps({"mapper": "vtkProjectedTetrahedraMapper", "cells": grid.GetNumberOfCells(),
+                      "first_frame_seconds": times[0], "median_seconds": statistics.median(later),
+                      "min_seconds": min(later), "max_seconds": max(later),
+                      "renderer": win.ReportCapabilities().splitlines()[1:3]}))
+
+
+if __name__ == "__main__":
+    main()
