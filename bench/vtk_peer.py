@@ -128,7 +128,8 @@ def main():
     print(json.dumps({"mapper": "vtkProjectedTetrahedraMapper", "cells": grid.GetNumberOfCells(),
                       "first_frame_seconds": times[0], "median_seconds": statistics.median(later),
                       "min_seconds": min(later), "max_seconds": max(later),
-                      "renderer": win.ReportCapabilities().splitlines()[1:3]}))
+                      "opengl_renderer": next((l.split(":", 1)[1].strip() for l in win.ReportCapabilities().splitlines()
+                                               if l.startswith("OpenGL renderer string")), "?")}))
 
 
 if __name__ == "__main__":
