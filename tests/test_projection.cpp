@@ -247,3 +247,30 @@ TEST(Projection, SliversAndTinyCellsStayFinite) {
     for (std::size_t k = 3; k < img.rgba.size(); k += 4) ASSERT_LT(img.rgba[k], 1e-6);  // thickness <= 1e-12
   }
 }
+
+TEST(Projection, HugeCoordinateOffsetChangesNothing) {
+  // Cells of size 1e-3 at 1e6 from the origin render as they do at the origin (points recentred).
+  // Extinction per unit length scaled to the cells' size.
+  const TransferFunction tf(hard_tf().color_points(), {{-1, 200}, {-0.3, 3000}, {0.2, 500}, {0.6, 6000}, {1, 1000}});
+  auto cube = [](const glm::dvec3& shift) {
+    Mesh m = make_box(4, 4, 4, shift - glm::dvec3(2e-3), shift + glm::dvec3(2e-3), true);
+    set_field(m, "s", [&](const glm::dvec3& x) { return std::sin(1e3 * (x.x - shift.x)) + 500 * (x.z - shift.z); });
+    return m;
+  };
+  const glm::dvec3 far(1e6, -1e6, 1e6);
+  auto camera = [](const glm::dvec3& target) {
+    Camera c;
+    c.projection = Projection::Perspective;
+    c.eye = target + glm::dvec3(5e-3, -7e-3, 6e-3);
+    c.target = target;
+    c.up = {0, 0, 1};
+    c.fov_y = 45;
+    return c;
+  };
+  const Image near_img = project(cube(glm::dvec3(0)), tf, camera(glm::dvec3(0)), 64, ProjectionMethod::pt_breakpoints);
+  const Image far_img = project(cube(far), tf, camera(far), 64, ProjectionMethod::pt_breakpoints);
+  double total = 0;
+  for (std::size_t k = 3; k < near_img.rgba.size(); k += 4) total += near_img.rgba[k];
+  EXPECT_GT(total, 100.0);  // the picture is not empty
+  EXPECT_LT(compare(near_img, far_img).max_abs, 1e-4);
+}
