@@ -4,11 +4,14 @@
 #include <chrono>
 
 #include <tbb/concurrent_queue.h>
+#include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
 #include <tbb/task_arena.h>
 
 #include "grid/geometry.hpp"
 #include "grid/tetrahedralize.hpp"
+#include "grid/error.hpp"
+#include "projection/gl_compositor.hpp"
 #include "projection/screen.hpp"
 
 namespace cellproj {
@@ -90,9 +93,21 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   PointOptics optics;
   if (options.method == ProjectionMethod::pt_linear || options.method == ProjectionMethod::pt_table)
     optics = point_optics(tets_.scalar, tets_.n_points, tf);
+  if (options.backend != ProjectionBackend::software && options.method != ProjectionMethod::pt_linear &&
+      options.method != ProjectionMethod::pt_table)
+    throw InputError(std::string("the ") + name_of(options.backend) + " back end draws pt-linear and pt-table only, not " +
+                     name_of(options.method) + " (per-pixel integrals need the software back end)");
   const TetFragments project(screen, map, tets_.scalar, tf, options.method, table ? &*table : nullptr, &optics);
 
   t = std::chrono::steady_clock::now();
+  if (options.backend != ProjectionBackend::software) {
+    Image image = render_gl(project, sorted.order, table ? &*table : nullptr, width, height, options, st);
+    st.phase_seconds.emplace_back("project and composite", since(t));
+    st.sort = std::move(sorted.stats);
+    st.seconds = since(start);
+    if (stats) *stats = std::move(st);
+    return image;
+  }
   Image image(width, height);
   const std::vector<std::int64_t>& order = sorted.order;
   const std::size_t batch = static_cast<std::size_t>(std::max(1, options.batch_cells));
@@ -135,6 +150,38 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   st.seconds = since(start);
   if (stats) *stats = std::move(st);
   return image;
+}
+
+Image ProjectionRenderer::render_gl(const TetFragments& project, const std::vector<std::int64_t>& order,
+                                    const OpacityTable* table, int width, int height, const ProjectionOptions& options,
+                                    ProjectionStats& st) const {
+  const GLTarget target = options.backend == ProjectionBackend::opengl        ? GLTarget::float32
+                          : options.backend == ProjectionBackend::opengl_8bit ? GLTarget::rgba8
+                                                                              : GLTarget::rgba8_dithered;
+  GLCompositor gl(width, height, target);  // its calls stay on this thread; workers only make triangles
+  st.gl_renderer = gl.renderer();
+  gl.begin(table);
+  double kmax = 0.0;
+  for (const auto& p : project.transfer_function().extinction_points()) kmax = std::max(kmax, p.kappa);
+  const std::size_t batch = static_cast<std::size_t>(std::max(1, options.batch_cells));
+  const std::size_t window = 64;  // batches made at once, then drawn in order
+  std::vector<std::vector<GLCorner>> corners(window);
+  std::vector<ProjectionCounters> counters(window);
+  for (std::size_t first = 0; first < order.size(); first += window * batch) {
+    const std::size_t n = std::min(window, (order.size() - first + batch - 1) / batch);
+    tbb::parallel_for(std::size_t(0), n, [&](std::size_t b) {
+      corners[b].clear();
+      counters[b] = {};
+      const std::size_t end = std::min(order.size(), first + (b + 1) * batch);
+      for (std::size_t k = first + b * batch; k < end; ++k) {
+        const std::int64_t* id = tets_.cell(order[k]);
+        project.triangles(Tet{id[0], id[1], id[2], id[3]}, order[k], kmax > 0 ? kmax : 1.0, max_edge_ > 0 ? max_edge_ : 1.0,
+                          table ? table->size() : 2, corners[b], counters[b]);
+      }
+    });
+    for (std::size_t b = 0; b < n; ++b) gl.draw(corners[b]), st.counters.add(counters[b]);
+  }
+  return gl.finish();
 }
 
 }  // namespace cellproj

@@ -21,6 +21,7 @@ namespace cellproj {
 
 struct ProjectionOptions {
   ProjectionMethod method = ProjectionMethod::pt_analytic;
+  ProjectionBackend backend = ProjectionBackend::software;  // the OpenGL ones draw pt-linear and pt-table
   SortMethod sort = SortMethod::automatic;
   int table_size = 256;      // pt-table: nodes per axis of the opacity table
   int batch_cells = 2048;    // cells per pipeline token
@@ -32,6 +33,7 @@ struct ProjectionStats {
   std::int64_t tets = 0;               // tetrahedra projected per frame (after the canonical split)
   std::int64_t cells_split = 0;        // mesh cells that are not tetrahedra, split once per mesh
   std::vector<std::pair<std::string, double>> phase_seconds;  // project points, sort, project+composite
+  std::string gl_renderer;             // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;
 };
 
@@ -52,6 +54,10 @@ class ProjectionRenderer {
   bool convex_boundary() const;
 
  private:
+  // The OpenGL back ends: triangles made by parallel workers, drawn in visibility order.
+  Image render_gl(const TetFragments& project, const std::vector<std::int64_t>& order, const OpacityTable* table,
+                  int width, int height, const ProjectionOptions& options, ProjectionStats& st) const;
+
   std::optional<Mesh> split_;   // the canonical tetrahedra, when the mesh had other cells
   MeshView tets_;
   std::int64_t cells_split_ = 0;

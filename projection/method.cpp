@@ -13,25 +13,44 @@ constexpr std::pair<ProjectionMethod, const char*> kNames[] = {
     {ProjectionMethod::pt_analytic, "pt-analytic"},
     {ProjectionMethod::pt_breakpoints, "pt-breakpoints"},
 };
-}  // namespace
+constexpr std::pair<ProjectionBackend, const char*> kBackends[] = {
+    {ProjectionBackend::software, "software"},
+    {ProjectionBackend::opengl, "opengl"},
+    {ProjectionBackend::opengl_8bit, "opengl-8bit"},
+    {ProjectionBackend::opengl_8bit_dithered, "opengl-8bit-dither"},
+};
 
-ProjectionMethod projection_method_from_name(const std::string& name) {
-  for (const auto& [m, n] : kNames)
-    if (name == n) return m;
-  throw InputError("unknown projection method '" + name + "' (known: " + projection_method_names() + ")");
-}
-
-const char* name_of(ProjectionMethod method) {
-  for (const auto& [m, n] : kNames)
-    if (m == method) return n;
-  return "?";
-}
-
-std::string projection_method_names() {
+template <class E, std::size_t N>
+std::string names(const std::pair<E, const char*> (&table)[N]) {
   std::string out;
-  for (const auto& [m, n] : kNames) out += (out.empty() ? "" : ", ") + std::string(n);
+  for (const auto& [e, n] : table) out += (out.empty() ? "" : ", ") + std::string(n);
   return out;
 }
+template <class E, std::size_t N>
+E from_name(const std::pair<E, const char*> (&table)[N], const std::string& name, const char* what) {
+  for (const auto& [e, n] : table)
+    if (name == n) return e;
+  throw InputError("unknown " + std::string(what) + " '" + name + "' (known: " + names(table) + ")");
+}
+template <class E, std::size_t N>
+const char* name_in(const std::pair<E, const char*> (&table)[N], E e) {
+  for (const auto& [x, n] : table)
+    if (x == e) return n;
+  return "?";
+}
+}  // namespace
+
+ProjectionBackend projection_backend_from_name(const std::string& name) {
+  return from_name(kBackends, name, "back end");
+}
+const char* name_of(ProjectionBackend backend) { return name_in(kBackends, backend); }
+std::string projection_backend_names() { return names(kBackends); }
+
+ProjectionMethod projection_method_from_name(const std::string& name) {
+  return from_name(kNames, name, "projection method");
+}
+const char* name_of(ProjectionMethod method) { return name_in(kNames, method); }
+std::string projection_method_names() { return names(kNames); }
 
 OpacityTable::OpacityTable(int size, double kappa_max, double l_max) : size_(size) {
   if (size < 2 || size > 8192) throw InputError("opacity table size " + std::to_string(size) + " is outside [2, 8192]");

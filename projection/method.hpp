@@ -18,6 +18,17 @@ ProjectionMethod projection_method_from_name(const std::string& name);  // throw
 const char* name_of(ProjectionMethod method);
 std::string projection_method_names();
 
+// Where the projected triangles are rasterized and composited.
+enum class ProjectionBackend {
+  software,             // our rasterizer and a float framebuffer, every method (the default)
+  opengl,               // OpenGL through OSMesa into a float framebuffer (pt-linear, pt-table)
+  opengl_8bit,          // the same into 8-bit RGBA, as 1990s hardware
+  opengl_8bit_dithered, // 8-bit with alpha dithering (Williams, Frank and LaMar)
+};
+ProjectionBackend projection_backend_from_name(const std::string& name);  // throws InputError listing the names
+const char* name_of(ProjectionBackend backend);
+std::string projection_backend_names();
+
 // 1 - exp(-kappa l) tabulated on [0, kappa_max] x [0, l_max] at size x size nodes, read bilinearly:
 // the paper's 2D alpha texture. Arguments beyond the table are clamped to its edge.
 class OpacityTable {
@@ -31,6 +42,7 @@ class OpacityTable {
     return (1 - fv) * ((1 - fu) * row[0] + fu * row[1]) + fv * ((1 - fu) * row[size_] + fu * row[size_ + 1]);
   }
   int size() const { return size_; }
+  const float* data() const { return alpha_.data(); }  // size x size, kappa fastest
 
  private:
   int size_;

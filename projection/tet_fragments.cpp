@@ -23,12 +23,6 @@ struct LinearPiece {
   glm::dvec3 color(double s) const { return c0 + dc * ((s - s0) * ds); }
 };
 
-// Corner attributes of the Gouraud-shaded methods: (alpha or kappa_avg, l, colour).
-struct Shade {
-  double a = 0, l = 0;
-  glm::dvec3 c{0.0};
-};
-
 // A fragment that neither adds light nor hides anything (a ray grazing the cell) is not stored.
 inline void put(std::vector<Fragment>& out, int i, int j, int width, const glm::dvec3& rgb, double alpha) {
   if (alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0) return;
@@ -59,28 +53,81 @@ TetFragments::TetFragments(const ScreenPoints& screen, const ScreenMap& map, con
                            const PointOptics* optics)
     : screen_(screen), map_(map), scalar_(scalar), tf_(tf), method_(method), table_(table), optics_(optics) {}
 
-void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
+bool TetFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const {
   ++counters.tets;
-  ScreenVertex v[4];
   for (int k = 0; k < 4; ++k) {
     const std::int64_t p = tet[k];
     v[k] = {screen_.x[p], screen_.y[p], screen_.z[p], scalar_ ? scalar_[p] : 0.0};
     if (map_.perspective() && !(v[k].z > 0.0)) {
       ++counters.behind_eye;
-      return;
+      return false;
     }
   }
-  const ProjectedTet pt = project_tet(v, map_.perspective());
+  pt = project_tet(v, map_.perspective());
   if (pt.hull_size == 0) {
     ++counters.empty;
-    return;
+    return false;
   }
   ++(pt.hull_size == 3 ? counters.class1 : counters.class2);
+  return true;
+}
+
+void TetFragments::gouraud_corners(const Tet& tet, const ProjectedTet& pt, GouraudCorner& thick,
+                                   GouraudCorner hull[4]) const {
+  // Corner values from the transfer function, Gouraud-interpolated across each triangle (MWSC sec. 2).
+  const bool table = method_ == ProjectionMethod::pt_table;
+  auto shade = [&](double kavg, double l, const glm::dvec3& c) {
+    return GouraudCorner{table ? kavg : -std::expm1(-kavg * l), l, c};
+  };
+  const ThickVertex& T = pt.thick;
+  thick = shade(0.5 * (tf_.extinction(T.sf) + tf_.extinction(T.sb)), (T.zb - T.zf) * map_.length_per_depth(T.x, T.y),
+                0.5 * (tf_.color(T.sf) + tf_.color(T.sb)));
+  for (int k = 0; k < pt.hull_size; ++k) {
+    const std::int64_t p = tet[pt.hull_vertex[k]];
+    hull[k] = optics_ && !optics_->kappa.empty() ? shade(optics_->kappa[p], 0.0, optics_->color[p])
+                                                : shade(tf_.extinction(pt.hull[k].sf), 0.0, tf_.color(pt.hull[k].sf));
+  }
+}
+
+void TetFragments::triangles(const Tet& tet, std::int64_t cell, double kappa_max, double l_max, int table_size,
+                             std::vector<GLCorner>& out, ProjectionCounters& counters) const {
+  ScreenVertex v[4];
+  ProjectedTet pt;
+  if (!classify(tet, v, pt, counters)) return;
+  GouraudCorner st, sh[4];
+  gouraud_corners(tet, pt, st, sh);
+  const bool table = method_ == ProjectionMethod::pt_table;
+  // Texel centres: node i of n sits at (i + 0.5) / n, so GL_LINEAR reads the table as OpacityTable does.
+  const double su = (table_size - 1) / (kappa_max * table_size), sv = (table_size - 1) / (l_max * table_size);
+  const double half = 0.5 / table_size;
+  // A whole-pixel shift of the noise tile per cell (a 64-bit mix of its id).
+  std::uint64_t h = static_cast<std::uint64_t>(cell) * 0x9E3779B97F4A7C15ull;
+  h ^= h >> 29;
+  const float shift_u = static_cast<float>(h % kDitherTile), shift_v = static_cast<float>((h >> 16) % kDitherTile);
+  auto corner = [&](double x, double y, const GouraudCorner& g) {
+    const double u = table ? std::min(g.a * su, 1.0 - 2 * half) + half : 0.0;
+    const double w = table ? std::min(g.l * sv, 1.0 - 2 * half) + half : 0.0;
+    out.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(u), static_cast<float>(w),
+                   static_cast<float>(g.c.r), static_cast<float>(g.c.g), static_cast<float>(g.c.b),
+                   table ? 1.0f : static_cast<float>(g.a), (static_cast<float>(x) + shift_u) / kDitherTile,
+                   (static_cast<float>(y) + shift_v) / kDitherTile});
+  };
+  for (int a = 0; a < pt.hull_size; ++a) {
+    const int b = (a + 1) % pt.hull_size;
+    corner(pt.thick.x, pt.thick.y, st);
+    corner(pt.hull[a].x, pt.hull[a].y, sh[a]);
+    corner(pt.hull[b].x, pt.hull[b].y, sh[b]);
+  }
+}
+
+void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
+  ScreenVertex v[4];
+  ProjectedTet pt;
+  if (!classify(tet, v, pt, counters)) return;
   const std::size_t before = out.size();
   const int width = map_.width(), height = map_.height();
   const bool persp = map_.perspective();
   const ThickVertex& T = pt.thick;
-  const double thick_l = (T.zb - T.zf) * map_.length_per_depth(T.x, T.y);
 
   // The scalar range and whether a breakpoint of the transfer function lies inside it.
   const double smin = std::min({v[0].s, v[1].s, v[2].s, v[3].s}), smax = std::max({v[0].s, v[1].s, v[2].s, v[3].s});
@@ -101,17 +148,9 @@ void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, Projectio
   };
 
   if (method_ == ProjectionMethod::pt_linear || method_ == ProjectionMethod::pt_table) {
-    // Corner values from the transfer function, Gouraud-interpolated across each triangle (MWSC sec. 2).
     const bool table = method_ == ProjectionMethod::pt_table;
-    auto shade = [&](double kavg, double l, const glm::dvec3& c) { return Shade{table ? kavg : -std::expm1(-kavg * l), l, c}; };
-    const Shade st = shade(0.5 * (tf_.extinction(T.sf) + tf_.extinction(T.sb)), thick_l,
-                           0.5 * (tf_.color(T.sf) + tf_.color(T.sb)));
-    Shade sh[4];
-    for (int k = 0; k < pt.hull_size; ++k) {
-      const std::int64_t p = tet[pt.hull_vertex[k]];
-      sh[k] = optics_ && !optics_->kappa.empty() ? shade(optics_->kappa[p], 0.0, optics_->color[p])
-                                                : shade(tf_.extinction(pt.hull[k].sf), 0.0, tf_.color(pt.hull[k].sf));
-    }
+    GouraudCorner st, sh[4];
+    gouraud_corners(tet, pt, st, sh);
     each_triangle([&](int i, int j, int a, int b, double wt, double wa, double wb) {
       const glm::dvec3 c = wt * st.c + wa * sh[a].c + wb * sh[b].c;
       const double x = wt * st.a + wa * sh[a].a + wb * sh[b].a;

@@ -8,6 +8,7 @@
 #include "grid/tetrahedralize.hpp"
 #include "optics/transfer_function.hpp"
 #include "projection/method.hpp"
+#include "projection/projected_tet.hpp"
 #include "projection/screen.hpp"
 #include "view/image.hpp"
 
@@ -37,6 +38,21 @@ struct PointOptics {
 // Parallel over points (oneTBB, in the caller's task arena); empty without a scalar.
 PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf);
 
+// A corner of a Gouraud-shaded triangle (pt-linear, pt-table; MWSC section 2): opacity (pt-linear)
+// or kappa_avg (pt-table), thickness, colour.
+struct GouraudCorner {
+  double a = 0, l = 0;
+  glm::dvec3 c{0.0};
+};
+
+// A corner of a triangle for the OpenGL back end: pixel position, colour and opacity (pt-linear:
+// Gouraud; pt-table: opacity 1, to be modulated by the 2D alpha texture at u, v in [0, 1]), and
+// where it reads the dither noise (screen position in noise tiles, shifted per cell).
+struct GLCorner {
+  float x, y, u, v, r, g, b, a, nu, nv;
+};
+constexpr int kDitherTile = 64;  // pixels per side of the dither noise tile
+
 // The frame's fixed inputs; project() is const and may run on many threads at once.
 class TetFragments {
  public:
@@ -44,10 +60,21 @@ class TetFragments {
   // must outlive this.
   TetFragments(const ScreenPoints& screen, const ScreenMap& map, const double* scalar, const TransferFunction& tf,
                ProjectionMethod method, const OpacityTable* table, const PointOptics* optics);
+  const TransferFunction& transfer_function() const { return tf_; }
   // Appends tet's fragments to out.
   void project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
+  // Appends tet's triangles (3 corners each) for the OpenGL back end (pt-linear, pt-table), with
+  // texture coordinates for a table over [0, kappa_max] x [0, l_max] of `table_size` nodes.
+  // `cell` picks the cell's shift of the dither noise, so a pixel's layers get independent noise.
+  void triangles(const Tet& tet, std::int64_t cell, double kappa_max, double l_max, int table_size,
+                 std::vector<GLCorner>& out, ProjectionCounters& counters) const;
 
  private:
+  // The tetrahedron in the image; false (and counted) when there is nothing to draw.
+  bool classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const;
+  // The thick vertex's and the outline's corner values.
+  void gouraud_corners(const Tet& tet, const ProjectedTet& pt, GouraudCorner& thick, GouraudCorner hull[4]) const;
+
   const ScreenPoints& screen_;
   const ScreenMap& map_;
   const double* scalar_;

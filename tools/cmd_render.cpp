@@ -24,7 +24,8 @@ namespace cellproj {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, npy, method = "pt-analytic", size, field, interpolation = "isoparametric", sort = "auto";
+  std::string scene, png, npy, method = "pt-analytic", size, field, interpolation = "isoparametric", sort = "auto",
+              backend = "software";
   int threads = 0, frames = 1, table_size = 256;
   bool stats = false;
 };
@@ -33,7 +34,7 @@ nlohmann::json projection_stats_json(const ProjectionStats& p) {
   nlohmann::json phases = nlohmann::json::object();
   for (const auto& [name, sec] : p.phase_seconds) phases[name] = sec;
   const auto& c = p.counters;
-  return {{"sort", name_of(p.sort.method)},
+  nlohmann::json j = {{"sort", name_of(p.sort.method)},
           {"tets", p.tets},
           {"cells_split", p.cells_split},
           {"class1_tets", c.class1},
@@ -46,6 +47,8 @@ nlohmann::json projection_stats_json(const ProjectionStats& p) {
           {"gap_relations", p.sort.gap_relations},
           {"cycles", p.sort.cycles.size()},
           {"phase_seconds", phases}};
+  if (!p.gl_renderer.empty()) j["gl_renderer"] = p.gl_renderer;
+  return j;
 }
 
 int run_render(const RenderArgs& a) {
@@ -63,6 +66,7 @@ int run_render(const RenderArgs& a) {
     }
     projection.sort = sort_method_from_name(a.sort);
     projection.table_size = a.table_size;
+    projection.backend = projection_backend_from_name(a.backend);
   }
   const CellInterpolation interpolation = cell_interpolation_from_name(a.interpolation);
   const PreparedScene prepared = prepare_scene(scene);
@@ -113,6 +117,7 @@ int run_render(const RenderArgs& a) {
 
   if (a.stats) {
     nlohmann::json s = {{"method", a.method},
+                        {"backend", exact ? "" : a.backend},
                         {"mesh", scene.mesh},
                         {"field", prepared.field},
                         {"cells", prepared.loaded.mesh.n_cells()},
@@ -150,6 +155,9 @@ Action add_render(CLI::App& app) {
                   "Rendering method: pt-analytic (default), pt-breakpoints (exact for the transfer function), "
                   "pt-table, pt-linear (fastest), or exact (the reference ray integrator); see docs/methods.md");
   cmd->add_option("--sort", args->sort, "Visibility sort for the projection methods: " + sort_method_names());
+  cmd->add_option("--backend", args->backend,
+                  "Where the projection methods rasterize: software (default), or for pt-linear and pt-table "
+                  "opengl (OSMesa, float target), opengl-8bit, opengl-8bit-dither");
   cmd->add_option("--table-size", args->table_size, "pt-table: nodes per axis of the opacity table (default 256)")
       ->check(CLI::Range(2, 8192));
   cmd->add_option("--interpolation", args->interpolation,
