@@ -10,6 +10,19 @@
 
 namespace cellproj {
 
+namespace {
+// A square RGBA float texture on the active texture unit.
+void upload_texture(GLuint texture, int n, const float* rgba, GLint filter, GLint wrap) {
+  glBindTexture(GL_TEXTURE_2D, texture);
+  glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, n, n, 0, GL_RGBA, GL_FLOAT, rgba);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, filter);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, wrap);
+  glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, wrap);
+  glEnable(GL_TEXTURE_2D);
+}
+}  // namespace
+
 struct GLCompositor::Context {
   OSMesaContext ctx = nullptr;
   int width = 0, height = 0;
@@ -70,14 +83,8 @@ void GLCompositor::begin(const OpacityTable* table) {
     const int n = table->size();
     std::vector<float> rgba(static_cast<std::size_t>(n) * n * 4);
     for (std::size_t k = 0; k < rgba.size(); ++k) rgba[k] = table->data()[k / 4];
-    glBindTexture(GL_TEXTURE_2D, gl_->textures[0]);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, n, n, 0, GL_RGBA, GL_FLOAT, rgba.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    upload_texture(gl_->textures[0], n, rgba.data(), GL_LINEAR, GL_CLAMP_TO_EDGE);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_MODULATE);
-    glEnable(GL_TEXTURE_2D);
   } else {
     glDisable(GL_TEXTURE_2D);
   }
@@ -93,12 +100,7 @@ void GLCompositor::begin(const OpacityTable* table) {
     std::mt19937 rng(20261123);
     std::uniform_real_distribution<float> u(-0.5f / 255, 0.5f / 255);
     for (float& x : noise) x = 0.5f + u(rng);
-    glBindTexture(GL_TEXTURE_2D, gl_->textures[1]);
-    glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTile, kTile, 0, GL_RGBA, GL_FLOAT, noise.data());
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_REPEAT);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_REPEAT);
+    upload_texture(gl_->textures[1], kTile, noise.data(), GL_NEAREST, GL_REPEAT);
     glTexEnvi(GL_TEXTURE_ENV, GL_TEXTURE_ENV_MODE, GL_COMBINE);
     glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_RGB, GL_ADD_SIGNED);
     glTexEnvi(GL_TEXTURE_ENV, GL_COMBINE_ALPHA, GL_ADD_SIGNED);
@@ -106,7 +108,6 @@ void GLCompositor::begin(const OpacityTable* table) {
     glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_RGB, GL_TEXTURE);
     glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE0_ALPHA, GL_PREVIOUS);
     glTexEnvi(GL_TEXTURE_ENV, GL_SOURCE1_ALPHA, GL_TEXTURE);
-    glEnable(GL_TEXTURE_2D);
   } else {
     glDisable(GL_TEXTURE_2D);
   }
