@@ -52,6 +52,7 @@ expect 0 '"max_abs": [0-9.e-]+' -- compare "$tmp/ct.npy" "$tmp/pt-breakpoints.np
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['max_abs'] < 1e-5 else 1)" <("$exe" compare "$tmp/ct.npy" "$tmp/pt-breakpoints.npy") \
   || { echo "FAIL: pt-breakpoints differs from exact canonical-tets"; failed=$((failed+1)); }
 expect 1 "unknown sort 'zsort'" -- render "$tmp/ok.json" --sort zsort
+expect 1 "ok.json: rendering 16384x16384 of 64 cells needs about 9.1 GiB, more than the 2.0 GiB allowed by --max-memory" -- render "$tmp/ok.json" --size 16384x16384 --max-memory 2
 expect 1 "unknown back end 'vulkan'" -- render "$tmp/ok.json" --backend vulkan
 expect 1 "opengl back end draws pt-linear and pt-table only, not pt-analytic" -- render "$tmp/ok.json" --backend opengl
 expect 0 "wrote .*gl.png" -- render "$tmp/ok.json" --size 40x30 --method pt-table --backend opengl-8bit-dither -o "$tmp/gl.png" --stats

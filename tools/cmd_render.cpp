@@ -14,7 +14,9 @@
 #include "optics/transfer_function.hpp"
 #include "parallel/projection_renderer.hpp"
 #include "raycast/reference_renderer.hpp"
+#include "grid/tetrahedralize.hpp"
 #include "tools/commands.hpp"
+#include "tools/memory_budget.hpp"
 #include "tools/timing.hpp"
 #include "tools/progress.hpp"
 #include "tools/scene.hpp"
@@ -27,6 +29,7 @@ struct RenderArgs {
   std::string scene, png, npy, method = "pt-analytic", size, field, interpolation = "isoparametric", sort = "auto",
               backend = "software";
   int threads = 0, frames = 1, table_size = 256;
+  double max_memory_gib = 0.0;  // 0: the machine's available memory
   bool stats = false;
 };
 
@@ -72,6 +75,20 @@ int run_render(const RenderArgs& a) {
   const PreparedScene prepared = prepare_scene(scene);
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
   const double load_seconds = seconds_since(t_load);
+  {  // refuse what would not fit, before allocating it
+    const Mesh& m = prepared.loaded.mesh;
+    std::int64_t tets = 0;
+    for (std::int64_t c = 0; c < m.n_cells(); ++c) tets += m.types[c] == static_cast<std::uint8_t>(CellType::Tetra) ? 1 : kMaxTetsPerCell;
+    const std::uint64_t need = estimate_render_bytes({scene.width, scene.height, m.n_points(), m.n_cells(), tets, exact});
+    const std::uint64_t limit = a.max_memory_gib > 0 ? static_cast<std::uint64_t>(a.max_memory_gib * double(1ull << 30))
+                                                     : available_memory_bytes();
+    if (limit > 0 && need > limit)
+      throw InputError(where(a.scene, "rendering " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
+                                          " of " + std::to_string(m.n_cells()) + " cells needs about " + format_bytes(need) +
+                                          ", more than the " + format_bytes(limit) +
+                                          (a.max_memory_gib > 0 ? " allowed by --max-memory" : " this machine has available (raise it with --max-memory GiB)") +
+                                          "; use a smaller --size"));
+  }
 
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   tbb::task_arena arena(threads);
@@ -168,6 +185,9 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option("--frames", args->frames, "Render N frames, turning the camera 1 degree about its up axis each frame; "
                                             "report the median frame time")->check(CLI::Range(1, 100000));
+  cmd->add_option("--max-memory", args->max_memory_gib,
+                  "Refuse renders estimated to need more than this many GiB (default: the memory available now)")
+      ->check(CLI::PositiveNumber);
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
   return [args] { return run_render(*args); };
 }
