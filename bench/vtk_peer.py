@@ -1,7 +1,11 @@
 #!/usr/bin/python3
-"""VTK's vtkProjectedTetrahedraMapper on one of our scenes, for bench/vtk_peer.sh.
+"""A VTK unstructured-grid volume mapper on one of our scenes, for bench/vtk_peer.sh.
 
 usage: xvfb-run -a /usr/bin/python3 bench/vtk_peer.py SCENE.json --size N --frames F --out PREFIX
+                [--mapper pt|raycast|zsweep]
+
+pt: vtkProjectedTetrahedraMapper (OpenGL); raycast: vtkUnstructuredGridVolumeRayCastMapper and
+zsweep: vtkUnstructuredGridVolumeZSweepMapper (both on the CPU, the window only shows the image).
 
 Renders the scene's mesh (tetrahedralized by vtkDataSetTriangleFilter if it has other cells) with
 the same camera and the same optical model as cellproj, F frames turning 1 degree about the up axis
@@ -43,6 +47,7 @@ def main():
     ap.add_argument("--size", type=int, default=512)
     ap.add_argument("--frames", type=int, default=5)
     ap.add_argument("--out", required=True)
+    ap.add_argument("--mapper", choices=["pt", "raycast", "zsweep"], default="pt")
     a = ap.parse_args()
     with open(a.scene) as f:
         scene = json.load(f)
@@ -80,7 +85,8 @@ def main():
     prop.ShadeOff()
     prop.SetInterpolationTypeToLinear()
 
-    mapper = vtk.vtkProjectedTetrahedraMapper()
+    mapper = {"pt": vtk.vtkProjectedTetrahedraMapper, "raycast": vtk.vtkUnstructuredGridVolumeRayCastMapper,
+              "zsweep": vtk.vtkUnstructuredGridVolumeZSweepMapper}[a.mapper]()
     mapper.SetInputConnection(source.GetOutputPort())
     volume = vtk.vtkVolume()
     volume.SetMapper(mapper)
@@ -125,7 +131,7 @@ def main():
             rgb = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, 3)[::-1].astype(np.float32) / 255
             np.save(a.out + ".npy", rgb)
     later = times[1:] or times
-    print(json.dumps({"mapper": "vtkProjectedTetrahedraMapper", "cells": grid.GetNumberOfCells(),
+    print(json.dumps({"mapper": mapper.GetClassName(), "cells": grid.GetNumberOfCells(),
                       "first_frame_seconds": times[0], "median_seconds": statistics.median(later),
                       "min_seconds": min(later), "max_seconds": max(later),
                       "opengl_renderer": next((l.split(":", 1)[1].strip() for l in win.ReportCapabilities().splitlines()
