@@ -77,7 +77,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
 
   auto t = std::chrono::steady_clock::now();
   const ScreenMap map(camera, width, height, points_.centre);
-  const ScreenPoints screen = project_points(points_, map);
+  const ScreenPoints screen = project_points(points_, tets_.scalar, map);
   st.phase_seconds.emplace_back("project points", since(t));
 
   t = std::chrono::steady_clock::now();
@@ -97,7 +97,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
       options.method != ProjectionMethod::pt_table)
     throw InputError(std::string("the ") + name_of(options.backend) + " back end draws pt-linear and pt-table only, not " +
                      name_of(options.method) + " (per-pixel integrals need the software back end)");
-  const TetFragments project(screen, map, tets_.scalar, tf, options.method, table ? &*table : nullptr, &optics);
+  const TetFragments project(screen, map, tf, options.method, table ? &*table : nullptr, &optics);
 
   t = std::chrono::steady_clock::now();
   if (options.backend != ProjectionBackend::software) {

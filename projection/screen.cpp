@@ -18,16 +18,18 @@ ScreenMap::ScreenMap(const Camera& camera, int width, int height, const glm::dve
   half_w_ = half_h_ * double(width) / height;
 }
 
-ScreenPoints project_points(const RecentredPoints& points, const ScreenMap& map) {
+ScreenPoints project_points(const RecentredPoints& points, const double* scalar, const ScreenMap& map) {
   const std::int64_t n = static_cast<std::int64_t>(points.xyz.size() / 3);
   ScreenPoints s;
-  s.x.resize(n), s.y.resize(n), s.z.resize(n);
+  s.v.resize(static_cast<std::size_t>(n));
   std::atomic<std::int64_t> behind{0};
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, n, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
     std::int64_t local = 0;
     for (std::int64_t p = r.begin(); p < r.end(); ++p) {
-      map.project(points(p), s.x[p], s.y[p], s.z[p]);
-      local += map.perspective() && !(s.z[p] > 0.0);
+      ScreenVertex& v = s.v[static_cast<std::size_t>(p)];
+      map.project(points(p), v.x, v.y, v.z);
+      v.s = scalar ? scalar[p] : 0.0;
+      local += map.perspective() && !(v.z > 0.0);
     }
     behind += local;
   });

@@ -1,7 +1,7 @@
 #pragma once
 // The image-plane positions of a mesh's points for one view: pixel x, y (the coverage rule's
 // coordinates) and view depth z (distance along the view direction from the eye, or from the
-// eye's plane in orthographic projection), as flat arrays for the projection loops.
+// eye's plane in orthographic projection).
 #include <cmath>
 #include <cstdint>
 #include <vector>
@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "grid/geometry.hpp"
+#include "projection/projected_tet.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {
@@ -47,12 +48,13 @@ class ScreenMap {
   double half_w_, half_h_;
 };
 
-// Every point projected once per frame (structure of arrays).
+// Every point projected once per frame, with its scalar: one 32-byte record per point, since a
+// tetrahedron gathers all four values of each of its four vertices.
 struct ScreenPoints {
-  std::vector<double> x, y, z;
+  std::vector<ScreenVertex> v;
   std::int64_t behind_eye = 0;  // perspective: points with z <= 0 (their cells are not drawn)
 };
-// Parallel over points (oneTBB, in the caller's task arena).
-ScreenPoints project_points(const RecentredPoints& points, const ScreenMap& map);
+// Parallel over points (oneTBB, in the caller's task arena); `scalar` may be null (zeros).
+ScreenPoints project_points(const RecentredPoints& points, const double* scalar, const ScreenMap& map);
 
 }  // namespace cellproj

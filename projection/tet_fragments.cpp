@@ -48,16 +48,15 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
   return o;
 }
 
-TetFragments::TetFragments(const ScreenPoints& screen, const ScreenMap& map, const double* scalar,
-                           const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
-                           const PointOptics* optics)
-    : screen_(screen), map_(map), scalar_(scalar), tf_(tf), method_(method), table_(table), optics_(optics) {}
+TetFragments::TetFragments(const ScreenPoints& screen, const ScreenMap& map, const TransferFunction& tf,
+                           ProjectionMethod method, const OpacityTable* table, const PointOptics* optics)
+    : screen_(screen), map_(map), tf_(tf), method_(method), table_(table), optics_(optics) {}
 
 bool TetFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const {
   ++counters.tets;
   for (int k = 0; k < 4; ++k) {
     const std::int64_t p = tet[k];
-    v[k] = {screen_.x[p], screen_.y[p], screen_.z[p], scalar_ ? scalar_[p] : 0.0};
+    v[k] = screen_.v[static_cast<std::size_t>(p)];
     if (map_.perspective() && !(v[k].z > 0.0)) {
       ++counters.behind_eye;
       return false;

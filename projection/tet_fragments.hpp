@@ -58,8 +58,8 @@ class TetFragments {
  public:
   // `table` is needed by pt_table only, `optics` by pt_linear and pt_table. All referenced objects
   // must outlive this.
-  TetFragments(const ScreenPoints& screen, const ScreenMap& map, const double* scalar, const TransferFunction& tf,
-               ProjectionMethod method, const OpacityTable* table, const PointOptics* optics);
+  TetFragments(const ScreenPoints& screen, const ScreenMap& map, const TransferFunction& tf, ProjectionMethod method,
+               const OpacityTable* table, const PointOptics* optics);
   const TransferFunction& transfer_function() const { return tf_; }
   // Appends tet's fragments to out.
   void project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
@@ -77,7 +77,6 @@ class TetFragments {
 
   const ScreenPoints& screen_;
   const ScreenMap& map_;
-  const double* scalar_;
   const TransferFunction& tf_;
   ProjectionMethod method_;
   const OpacityTable* table_;
