@@ -26,8 +26,14 @@ struct LinearPiece {
 // A fragment that neither adds light nor hides anything (a ray grazing the cell) is not stored.
 inline void put(std::vector<Fragment>& out, int i, int j, int width, const glm::dvec3& rgb, double alpha) {
   if (alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0) return;
-  out.push_back({static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i),
-                 {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b), static_cast<float>(alpha)}});
+  // Written field by field into the vector: a fragment built on the stack and copied whole showed
+  // in perf as a store-forwarding stall.
+  Fragment& f = out.emplace_back();
+  f.pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i);
+  f.rgba[0] = static_cast<float>(rgb.r);
+  f.rgba[1] = static_cast<float>(rgb.g);
+  f.rgba[2] = static_cast<float>(rgb.b);
+  f.rgba[3] = static_cast<float>(alpha);
 }
 
 }  // namespace
