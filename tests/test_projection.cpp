@@ -274,3 +274,17 @@ TEST(Projection, HugeCoordinateOffsetChangesNothing) {
   EXPECT_GT(total, 100.0);  // the picture is not empty
   EXPECT_LT(compare(near_img, far_img).max_abs, 1e-4);
 }
+
+TEST(Projection, StepAndSteepTransferFunctionsStayExact) {
+  // Extinction jumping from 0 to 800 over 1e-6 of the scalar, and a colour step: pt-breakpoints
+  // still equals exact; the sliver of the field between the two control points is cut, not smeared.
+  const Mesh m = wavy_tets(5);
+  const TransferFunction tf({{-2, {0.1, 0.1, 1}}, {0.1, {0.1, 0.1, 1}}, {0.1, {1, 0.5, 0}}, {2, {1, 1, 0}}},
+                            {{-2, 0.0}, {0.3, 0.0}, {0.300001, 800.0}, {0.5, 800.0}, {0.5, 0.2}, {2, 0.2}});
+  for (Projection p : {Projection::Orthographic, Projection::Perspective}) {
+    const Camera c = view_from({1.2, -3.1, 2.4}, p);
+    const Image img = project(m, tf, c, 80, ProjectionMethod::pt_breakpoints);
+    for (float v : img.rgba) ASSERT_TRUE(std::isfinite(v));
+    EXPECT_LT(compare(img, exact(m, tf, c, 80)).max_abs, 2e-5);
+  }
+}

@@ -1,0 +1,245 @@
+"""The speed/accuracy benchmark (docs/accuracy.md). Run through bench/run, which installs what it
+needs and calls this with Debian's python3 (numpy, matplotlib and VTK's Python module live there).
+
+For every benchmark mesh and image size: `exact` (canonical-tets, the field the projection methods
+render; and isoparametric where the mesh has other cells), every projection method with the `auto`
+sort, `pt-breakpoints` with each other sort (so the error a sort causes shows in the picture), and
+VTK's three unstructured-grid mappers on the same scene; time per frame (median, min and max over
+repeated frames), cells per second, RMSE and largest error of the premultiplied float image against
+exact, and the sort's order violations counted by the ray-traced oracle (`sortbench --check`, four
+views spread over a sphere at the same image size). Writes DIR/results.csv, DIR/plots/ (error
+against time per mesh, log-log) and DIR/strips/ (pictures and difference images), and prints the
+rows as a Markdown table.
+"""
+import argparse
+import csv
+import json
+import math
+import os
+import subprocess
+import sys
+
+import numpy as np
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+METHODS = ["pt-linear", "pt-table", "pt-analytic", "pt-breakpoints"]
+OTHER_SORTS = ["centroid", "mpvo", "mpvo-abuffer"]
+PEERS = {"vtk-pt": "pt", "vtk-raycast": "raycast", "vtk-zsweep": "zsweep"}
+PEER_CPU_LIMIT = 30_000  # cells: the CPU mappers take tens of seconds per frame beyond this
+COLUMNS = ["mesh", "cells", "method", "sort", "width", "height", "median_seconds", "min_seconds", "max_seconds",
+           "cells_per_second", "rmse", "max_abs", "violations"]
+
+
+def run(cmd, **kw):
+    p = subprocess.run(cmd, capture_output=True, text=True, **kw)
+    if p.returncode != 0:
+        sys.exit(f"failed: {' '.join(cmd)}\n{p.stderr[-2000:]}")
+    return p
+
+
+class Bench:
+    def __init__(self, exe, out, frames):
+        self.exe, self.out, self.frames = exe, out, frames
+        self.rows = []
+
+    def info(self, mesh):
+        return json.loads(run([self.exe, "info", mesh, "--json"]).stdout)
+
+    def render(self, scene, tag, method, size, frames, extra=()):
+        npy = os.path.join(self.out, "images", f"{tag}.npy")
+        cmd = [self.exe, "render", scene, "--method", method, "--size", f"{size}x{size}", "--frames", str(frames),
+               "-o", npy[:-4] + ".png", "--npy", npy, "--stats", *extra]
+        return json.loads(run(cmd).stderr.strip().splitlines()[-1]), npy
+
+    def peer(self, scene, tag, mapper, size):
+        prefix = os.path.join(self.out, "images", tag)
+        cmd = ["xvfb-run", "-a", "-s", "-screen 0 2100x2100x24", sys.executable,
+               os.path.join(ROOT, "bench", "vtk_peer.py"), scene, "--size", str(size), "--frames",
+               str(self.frames + 1), "--mapper", mapper, "--out", prefix]
+        return json.loads(run(cmd).stdout.strip().splitlines()[-1]), prefix + ".npy"
+
+    def violations(self, mesh, size):
+        p = run([self.exe, "sortbench", mesh, "--sorts", "auto,centroid,mpvo,mpvo-abuffer", "--views", "4",
+                 "--size", f"{size}x{size}", "--check", "--json"])
+        out = {}
+        for line in p.stdout.splitlines():
+            j = json.loads(line)
+            out[j["sort"]] = j["violations"]
+        return out
+
+    def add(self, **row):
+        self.rows.append(row)
+        r = row
+        err = "reference | reference" if r["rmse"] == "" else f"{r['rmse']:.2e} | {r['max_abs']:.2e}"
+        print(f"| {r['mesh']} | {r['cells']} | {r['method']} | {r['sort']} | {r['width']}² | {r['median_seconds']:.3f} | "
+              f"{r['min_seconds']:.3f} | {r['max_seconds']:.3f} | {r['cells_per_second']:.3g} | {err} | {r['violations']} |",
+              flush=True)
+
+
+def error(a_npy, b_npy, rgb_only=False):
+    a, b = np.load(a_npy), np.load(b_npy)
+    if rgb_only:  # a peer's 8-bit RGB on black against our premultiplied RGB
+        a, b = np.clip(a[..., :3], 0, 1), np.clip(b[..., :3], 0, 1)
+    d = np.abs(a.astype(np.float64) - b.astype(np.float64))
+    return float(np.sqrt((d * d).mean())), float(d.max())
+
+
+def synthetic(bench, kind, n, name):
+    mesh = os.path.join(bench.out, "meshes", f"{name}.vtu")
+    if not os.path.exists(mesh):
+        run([bench.exe, "generate", kind, "-n", str(n), "-o", mesh])
+    info = bench.info(mesh)
+    field, (lo, hi) = next(iter(info["fields"].items()))
+    b = info["bounds"]
+    lo3, hi3 = np.array(b[0::2]), np.array(b[1::2])
+    centre, diag = (lo3 + hi3) / 2, float(np.linalg.norm(hi3 - lo3))
+    at = lambda t: lo + t * (hi - lo)
+    k = 6.0 / diag  # an optical depth of a few across the mesh where the field is high
+    eye = centre + 1.9 * diag * np.array([0.55, -0.7, 0.45]) / np.linalg.norm([0.55, -0.7, 0.45])
+    scene = {"mesh": os.path.basename(mesh), "field": field,
+             "transfer_function": {
+                 "color": [[at(0), 0.15, 0.25, 0.8], [at(0.45), 0.3, 0.75, 0.8], [at(0.7), 0.95, 0.85, 0.35],
+                           [at(1), 1.0, 0.3, 0.1]],
+                 "extinction": [[at(0), 0.1 * k], [at(0.5), 0.4 * k], [at(0.75), 2.0 * k], [at(1), 1.0 * k]]},
+             "camera": {"projection": "perspective", "eye": list(eye), "target": list(centre), "up": [0, 0, 1],
+                        "fov_y": 35}}
+    path = os.path.join(bench.out, "meshes", f"{name}.json")
+    with open(path, "w") as f:
+        json.dump(scene, f)
+    return name, path, mesh, info
+
+
+def measure(bench, name, scene, mesh, info, size, peers):
+    cells = info["cells"]
+    mixed = any(t != "tetra" and c > 0 for t, c in info["cells_by_type"].items())
+    tag = f"{name}_{size}"
+    ref_stats, ref = bench.render(scene, tag + "_exact", "exact", size, 1, ["--interpolation", "canonical-tets"])
+    base = dict(mesh=name, cells=cells, width=size, height=size)
+    t = ref_stats["frame_seconds"]
+    bench.add(**base, method="exact", sort="", median_seconds=t, min_seconds=t, max_seconds=t,
+              cells_per_second=cells / t, rmse="", max_abs="", violations="")
+    if mixed:
+        st, npy = bench.render(scene, tag + "_iso", "exact", size, 1)
+        e = error(npy, ref)
+        t = st["frame_seconds"]
+        bench.add(**base, method="exact-isoparametric", sort="", median_seconds=t, min_seconds=t, max_seconds=t,
+                  cells_per_second=cells / t, rmse=e[0], max_abs=e[1], violations="")
+    # sortbench sorts the cells as given; the projection sorts the canonical tetrahedra, so the
+    # oracle's count describes the rendered order only on tetrahedral meshes.
+    viol = {} if mixed else bench.violations(mesh, size)
+    runs = [(m, "auto") for m in METHODS] + [("pt-breakpoints", s) for s in OTHER_SORTS]
+    for method, sort in runs:
+        st, npy = bench.render(scene, f"{tag}_{method}_{sort}", method, size, bench.frames, ["--sort", sort])
+        e = error(npy, ref)
+        bench.add(**base, method=method, sort=st["sort"] if sort == "auto" else sort,
+                  median_seconds=st["frame_seconds"], min_seconds=st["min_frame_seconds"],
+                  max_seconds=st["max_frame_seconds"], cells_per_second=cells / st["frame_seconds"],
+                  rmse=e[0], max_abs=e[1], violations=viol.get(sort, ""))
+    if not peers or not mesh.endswith(".vtu"):
+        return
+    for method, mapper in PEERS.items():
+        if mapper != "pt" and cells > PEER_CPU_LIMIT:
+            continue
+        st, npy = bench.peer(scene, f"{tag}_{method}", mapper, size)
+        e = error(npy, ref, rgb_only=True)
+        bench.add(**base, method=method, sort="", median_seconds=st["median_seconds"], min_seconds=st["min_seconds"],
+                  max_seconds=st["max_seconds"], cells_per_second=cells / st["median_seconds"], rmse=e[0],
+                  max_abs=e[1], violations="")
+
+
+def plots(bench):
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    os.makedirs(os.path.join(bench.out, "plots"), exist_ok=True)
+    for mesh in sorted({r["mesh"] for r in bench.rows}):
+        fig, ax = plt.subplots(figsize=(6.4, 4.4))
+        for r in bench.rows:
+            if r["mesh"] != mesh or r["rmse"] == "" or (r["method"] == "pt-breakpoints" and r["sort"] in OTHER_SORTS):
+                continue
+            label = f"{r['method']} {r['width']}²"
+            ax.scatter(r["median_seconds"], max(r["rmse"], 1e-9), marker="s" if r["method"].startswith("vtk") else "o")
+            ax.annotate(label, (r["median_seconds"], max(r["rmse"], 1e-9)), fontsize=7, xytext=(3, 3),
+                        textcoords="offset points")
+        ax.set_xscale("log")
+        ax.set_yscale("log")
+        ax.set_xlabel("seconds per frame (2 cores)")
+        ax.set_ylabel("RMSE against exact")
+        ax.set_title(f"{mesh}: error against time")
+        ax.grid(True, which="both", alpha=0.3)
+        fig.tight_layout()
+        fig.savefig(os.path.join(bench.out, "plots", f"{mesh}.png"), dpi=110)
+        plt.close(fig)
+
+
+def strips(bench, size):
+    """Per mesh: exact and each method's picture on black, with |difference| x 20 below."""
+    import matplotlib
+    matplotlib.use("Agg")
+    import matplotlib.pyplot as plt
+    os.makedirs(os.path.join(bench.out, "strips"), exist_ok=True)
+    img = lambda tag: os.path.join(bench.out, "images", tag + ".npy")
+    for mesh in sorted({r["mesh"] for r in bench.rows}):
+        tag = f"{mesh}_{size}"
+        if not os.path.exists(img(tag + "_exact")):
+            continue
+        ref = np.clip(np.load(img(tag + "_exact"))[..., :3], 0, 1)
+        cols = [("exact", ref, None)]
+        for m in METHODS:
+            a = np.clip(np.load(img(f"{tag}_{m}_auto"))[..., :3], 0, 1)
+            cols.append((m, a, np.clip(20 * np.abs(a - ref), 0, 1)))
+        if os.path.exists(img(f"{tag}_vtk-pt")):
+            a = np.load(img(f"{tag}_vtk-pt"))
+            cols.append(("vtk-pt", a, np.clip(20 * np.abs(a - ref), 0, 1)))
+        fig, axes = plt.subplots(2, len(cols), figsize=(2.2 * len(cols), 4.6))
+        for k, (name, a, d) in enumerate(cols):
+            axes[0][k].imshow(a)
+            axes[0][k].set_title(name, fontsize=8)
+            axes[1][k].imshow(d if d is not None else np.zeros_like(a))
+            for ax in (axes[0][k], axes[1][k]):
+                ax.axis("off")
+        axes[1][0].set_title("|difference| x 20", fontsize=8)
+        fig.tight_layout()
+        fig.savefig(os.path.join(bench.out, "strips", f"{mesh}.png"), dpi=100)
+        plt.close(fig)
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--quick", action="store_true", help="512² only, meshes up to ~100k cells, 2 frames: ~10 min")
+    ap.add_argument("--out", default="bench-out")
+    ap.add_argument("--build", default=os.path.join(ROOT, "build"))
+    ap.add_argument("--no-peers", action="store_true", help="skip VTK's mappers")
+    a = ap.parse_args()
+    for sub in ("meshes", "images"):
+        os.makedirs(os.path.join(a.out, sub), exist_ok=True)
+    bench = Bench(os.path.join(a.build, "bin", "cellproj"), a.out, 2 if a.quick else 3)
+    meshes = [synthetic(bench, "box-tets", 12, "tets-10k"), synthetic(bench, "box-tets", 26, "tets-100k"),
+              synthetic(bench, "mixed", 8, "mixed"), synthetic(bench, "swirl", 16, "curvilinear")]
+    if not a.quick:
+        meshes.append(synthetic(bench, "box-tets", 56, "tets-1m"))
+    shared = os.path.join(ROOT, "..", "shared", "data")
+    if os.path.isdir(shared):
+        names = ["post_tets", "static_mixer", "bluntfin"] + ([] if a.quick else ["combustion_chamber", "disk_out_ref"])
+        for n in names:
+            scene = os.path.join(ROOT, "bench", "scenes", n + ".json")
+            with open(scene) as f:
+                mesh = os.path.normpath(os.path.join(os.path.dirname(scene), json.load(f)["mesh"]))
+            meshes.append((n, scene, mesh, bench.info(mesh)))
+    sizes = [512] if a.quick else [512, 1024]
+    print("| mesh | cells | method | sort | size | median s | min s | max s | cells/s | RMSE | max error | violations |")
+    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    for name, scene, mesh, info in meshes:
+        for size in sizes:
+            measure(bench, name, scene, mesh, info, size, not a.no_peers)
+    with open(os.path.join(a.out, "results.csv"), "w", newline="") as f:
+        w = csv.DictWriter(f, fieldnames=COLUMNS)
+        w.writeheader()
+        w.writerows(bench.rows)
+    plots(bench)
+    strips(bench, 512)
+    print(f"\nwrote {a.out}/results.csv, {a.out}/plots/, {a.out}/strips/")
+
+
+if __name__ == "__main__":
+    main()
