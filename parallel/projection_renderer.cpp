@@ -35,6 +35,14 @@ Mesh split_cells(const MeshView& mesh) {
   return out;
 }
 
+// Cells per pipeline token: the option, or enough tokens to keep every thread busy on small meshes
+// (a few large cells cover most pixels there) without per-token overhead on large ones.
+std::size_t batch_size(int option, std::size_t cells) {
+  if (option > 0) return static_cast<std::size_t>(option);
+  const std::size_t per = cells / (16 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()));
+  return std::clamp<std::size_t>(per, 64, 2048);
+}
+
 struct Batch {
   std::size_t begin = 0, end = 0;
   std::vector<Fragment> fragments;
@@ -110,7 +118,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   }
   Image image(width, height);
   const std::vector<std::int64_t>& order = sorted.order;
-  const std::size_t batch = static_cast<std::size_t>(std::max(1, options.batch_cells));
+  const std::size_t batch = batch_size(options.batch_cells, order.size());
   const int tokens = 2 * tbb::this_task_arena::max_concurrency();
   std::vector<Batch> batches(static_cast<std::size_t>(tokens));
   tbb::concurrent_bounded_queue<Batch*> free;  // batches are reused, keeping their fragment buffers
@@ -163,7 +171,7 @@ Image ProjectionRenderer::render_gl(const TetFragments& project, const std::vect
   gl.begin(table);
   double kmax = 0.0;
   for (const auto& p : project.transfer_function().extinction_points()) kmax = std::max(kmax, p.kappa);
-  const std::size_t batch = static_cast<std::size_t>(std::max(1, options.batch_cells));
+  const std::size_t batch = batch_size(options.batch_cells, order.size());
   const std::size_t window = 64;  // batches made at once, then drawn in order
   std::vector<std::vector<GLCorner>> corners(window);
   std::vector<ProjectionCounters> counters(window);

@@ -24,7 +24,7 @@ struct ProjectionOptions {
   ProjectionBackend backend = ProjectionBackend::software;  // the OpenGL ones draw pt-linear and pt-table
   SortMethod sort = SortMethod::automatic;
   int table_size = 256;      // pt-table: nodes per axis of the opacity table
-  int batch_cells = 2048;    // cells per pipeline token
+  int batch_cells = 0;       // cells per pipeline token; 0: about 16 tokens per thread, 64 to 2048
 };
 
 struct ProjectionStats {
