@@ -13,14 +13,14 @@ the same camera and the same optical model as cellproj, F frames turning 1 degre
 (frame 1 carries VTK's set-up) and the picture as PREFIX.npy (float RGB composited on black, row 0
 at the top).
 
-The optical model: cellproj's extinction kappa(s) per unit length becomes VTK's scalar opacity
-alpha_u(s) = 1 - exp(-kappa(s) u) over the unit distance u = 1 / max(kappa) (so alpha_u stays well
-inside (0, 1)), sampled at 512 points of the field's range; VTK then gives a segment of length l
-the opacity 1 - (1 - alpha_u)^(l/u) = 1 - exp(-kappa l). Colour: the same control points.
+The optical model: VTK's unstructured-grid mappers read the scalar opacity value o(s) as an
+attenuation o/u per unit length, u the ScalarOpacityUnitDistance (a segment of length l gets
+1 - exp(-o l / u); vtkglProjectedTetrahedraFS.glsl, and checked here on a constant slab). So our
+extinction kappa(s) becomes o(s) = kappa(s) u with u = 1 / max(kappa), which keeps o in [0, 1]:
+the same control points, since the map is linear. Colour: the same control points.
 """
 import argparse
 import json
-import math
 import os
 import statistics
 import sys
@@ -29,16 +29,6 @@ import time
 import numpy as np
 import vtk
 from vtk.util.numpy_support import vtk_to_numpy
-
-
-def piecewise(points, s):
-    """A piecewise-linear function given by sorted (s, value) pairs, clamped outside."""
-    if s <= points[0][0]:
-        return points[0][1]
-    for (s0, v0), (s1, v1) in zip(points, points[1:]):
-        if s <= s1:
-            return v0 if s1 == s0 else v0 + (v1 - v0) * (s - s0) / (s1 - s0)
-    return points[-1][1]
 
 
 def main():
@@ -61,7 +51,6 @@ def main():
     grid = reader.GetOutput()
     field = scene["field"]
     grid.GetPointData().SetActiveScalars(field)
-    s_lo, s_hi = grid.GetPointData().GetArray(field).GetRange()
     source = reader
     if any(grid.GetCellType(c) != vtk.VTK_TETRA for c in range(grid.GetNumberOfCells())):
         source = vtk.vtkDataSetTriangleFilter()
@@ -72,9 +61,8 @@ def main():
     kmax = max(k for _, k in kappa)
     unit = 1.0 / kmax if kmax > 0 else 1.0
     opacity = vtk.vtkPiecewiseFunction()
-    for i in range(512):
-        s = s_lo + (s_hi - s_lo) * i / 511
-        opacity.AddPoint(s, 1.0 - math.exp(-piecewise(kappa, s) * unit))
+    for s, k in kappa:
+        opacity.AddPoint(s, k * unit)
     color = vtk.vtkColorTransferFunction()
     for s, r, g, b in tf["color"]:
         color.AddRGBPoint(s, r, g, b)
