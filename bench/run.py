@@ -26,6 +26,8 @@ METHODS = ["pt-linear", "pt-table", "pt-analytic", "pt-breakpoints"]
 OTHER_SORTS = ["centroid", "mpvo", "mpvo-abuffer"]
 PEERS = {"vtk-pt": "pt", "vtk-raycast": "raycast", "vtk-zsweep": "zsweep"}
 PEER_CPU_LIMIT = 30_000  # cells: the CPU mappers take tens of seconds per frame beyond this
+HEADER = ("| mesh | cells | method | sort | size | median s | min s | max s | cells/s | RMSE | max error | violations |\n"
+          "|---|---|---|---|---|---|---|---|---|---|---|---|")
 COLUMNS = ["mesh", "cells", "method", "sort", "width", "height", "median_seconds", "min_seconds", "max_seconds",
            "cells_per_second", "rmse", "max_abs", "violations"]
 
@@ -69,7 +71,10 @@ class Bench:
 
     def add(self, **row):
         self.rows.append(row)
-        r = row
+        self.print_row(row)
+
+    @staticmethod
+    def print_row(r):
         err = "reference | reference" if r["rmse"] == "" else f"{r['rmse']:.2e} | {r['max_abs']:.2e}"
         print(f"| {r['mesh']} | {r['cells']} | {r['method']} | {r['sort']} | {r['width']}² | {r['median_seconds']:.3f} | "
               f"{r['min_seconds']:.3f} | {r['max_seconds']:.3f} | {r['cells_per_second']:.3g} | {err} | {r['violations']} |",
@@ -147,6 +152,38 @@ def measure(bench, name, scene, mesh, info, size, peers):
                   max_abs=e[1], violations="")
 
 
+def report(path):
+    """The tables of an earlier run, from its results.csv."""
+    bench = Bench("", os.path.dirname(path), 0)
+    with open(path) as f:
+        for r in csv.DictReader(f):
+            for k in ("cells", "width", "height"):
+                r[k] = int(r[k])
+            for k in ("median_seconds", "min_seconds", "max_seconds", "cells_per_second", "rmse", "max_abs"):
+                r[k] = float(r[k]) if r[k] != "" else ""
+            bench.rows.append(r)
+    print(HEADER)
+    for r in list(bench.rows):
+        bench.print_row(r)
+    peer_ratios(bench)
+
+
+def peer_ratios(bench):
+    """Each VTK mapper's time over ours (above 1: ours is faster), per mesh and size."""
+    ours = ["pt-linear", "pt-table", "pt-breakpoints"]
+    print("\n| mesh | size | peer | peer s | peer RMSE | " + " | ".join(f"peer / {m}" for m in ours) + " |")
+    print("|---|---|---|---|---|" + "---|" * len(ours))
+    for r in bench.rows:
+        if not r["method"].startswith("vtk-"):
+            continue
+        mine = {}  # the first row of each method is its `auto` sort
+        for x in bench.rows:
+            if x["mesh"] == r["mesh"] and x["width"] == r["width"]:
+                mine.setdefault(x["method"], x["median_seconds"])
+        ratios = " | ".join(f"{r['median_seconds'] / mine[m]:.2f}" if m in mine else "" for m in ours)
+        print(f"| {r['mesh']} | {r['width']}² | {r['method']} | {r['median_seconds']:.3f} | {r['rmse']:.1e} | {ratios} |")
+
+
 def plots(bench):
     import matplotlib
     matplotlib.use("Agg")
@@ -210,7 +247,11 @@ def main():
     ap.add_argument("--out", default="bench-out")
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--no-peers", action="store_true", help="skip VTK's mappers")
+    ap.add_argument("--report", metavar="CSV", help="print the tables of an earlier run's results.csv and stop")
     a = ap.parse_args()
+    if a.report:
+        report(a.report)
+        return
     for sub in ("meshes", "images"):
         os.makedirs(os.path.join(a.out, sub), exist_ok=True)
     bench = Bench(os.path.join(a.build, "bin", "cellproj"), a.out, 2 if a.quick else 3)
@@ -227,8 +268,7 @@ def main():
                 mesh = os.path.normpath(os.path.join(os.path.dirname(scene), json.load(f)["mesh"]))
             meshes.append((n, scene, mesh, bench.info(mesh)))
     sizes = [512] if a.quick else [512, 1024]
-    print("| mesh | cells | method | sort | size | median s | min s | max s | cells/s | RMSE | max error | violations |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    print(HEADER)
     for name, scene, mesh, info in meshes:
         for size in sizes:
             measure(bench, name, scene, mesh, info, size, not a.no_peers)
@@ -236,6 +276,7 @@ def main():
         w = csv.DictWriter(f, fieldnames=COLUMNS)
         w.writeheader()
         w.writerows(bench.rows)
+    peer_ratios(bench)
     plots(bench)
     strips(bench, 512)
     print(f"\nwrote {a.out}/results.csv, {a.out}/plots/, {a.out}/strips/")

@@ -48,7 +48,7 @@ int main(int argc, char** argv) {
     camera.projection = cellproj::Projection::Perspective;
     camera.eye = {1.6, 1.2, 2.0};
     camera.up = {0, 1, 0};
-    // Cell projection (pt-analytic by default); cellproj::ExactRenderer is the reference to check it against.
+    // Cell projection (pt-breakpoints by default); cellproj::ExactRenderer is the reference to check it against.
     const cellproj::ProjectionRenderer renderer(mesh);
     const cellproj::Image image = renderer.render(tf, camera, 256, 256);
     cellproj::write_png(image, {0, 0, 0}, out);

@@ -20,7 +20,7 @@
 namespace cellproj {
 
 struct ProjectionOptions {
-  ProjectionMethod method = ProjectionMethod::pt_analytic;
+  ProjectionMethod method = ProjectionMethod::pt_breakpoints;
   ProjectionBackend backend = ProjectionBackend::software;  // the OpenGL ones draw pt-linear and pt-table
   SortMethod sort = SortMethod::automatic;
   int table_size = 256;      // pt-table: nodes per axis of the opacity table

@@ -54,7 +54,7 @@ python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['ma
 expect 1 "unknown sort 'zsort'" -- render "$tmp/ok.json" --sort zsort
 expect 1 "ok.json: rendering 16384x16384 of 64 cells needs about 9.1 GiB, more than the 2.0 GiB allowed by --max-memory" -- render "$tmp/ok.json" --size 16384x16384 --max-memory 2
 expect 1 "unknown back end 'vulkan'" -- render "$tmp/ok.json" --backend vulkan
-expect 1 "opengl back end draws pt-linear and pt-table only, not pt-analytic" -- render "$tmp/ok.json" --backend opengl
+expect 1 "opengl back end draws pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
 expect 0 "wrote .*gl.png" -- render "$tmp/ok.json" --size 40x30 --method pt-table --backend opengl-8bit-dither -o "$tmp/gl.png" --stats
 grep -q '"gl_renderer":' "$tmp/err" || { echo "FAIL: --stats lacks gl_renderer"; failed=$((failed+1)); }
 expect 2 "table-size" -- render "$tmp/ok.json" --method pt-table --table-size 1

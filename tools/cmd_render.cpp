@@ -26,7 +26,7 @@ namespace cellproj {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, npy, method = "pt-analytic", size, field, interpolation = "isoparametric", sort = "auto",
+  std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto",
               backend = "software";
   int threads = 0, frames = 1, table_size = 256;
   double max_memory_gib = 0.0;  // 0: the machine's available memory
@@ -169,7 +169,7 @@ Action add_render(CLI::App& app) {
   cmd->add_option("-o,--output", args->png, "PNG to write (default: SCENE's name with .png, in the current folder)");
   cmd->add_option("--npy", args->npy, "Also write the premultiplied float RGBA image as .npy (H, W, 4)");
   cmd->add_option("--method", args->method,
-                  "Rendering method: pt-analytic (default), pt-breakpoints (exact for the transfer function), "
+                  "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
                   "pt-table, pt-linear (fastest), or exact (the reference ray integrator); see docs/methods.md");
   cmd->add_option("--sort", args->sort, "Visibility sort for the projection methods: " + sort_method_names());
   cmd->add_option("--backend", args->backend,
