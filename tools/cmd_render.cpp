@@ -72,22 +72,23 @@ int run_render(const RenderArgs& a) {
     projection.backend = projection_backend_from_name(a.backend);
   }
   const CellInterpolation interpolation = cell_interpolation_from_name(a.interpolation);
+  // Refuse what would not fit, before allocating it: from the file's header before reading it,
+  // and again from the mesh as read.
+  const auto size_text = std::to_string(scene.width) + "x" + std::to_string(scene.height);
+  if (const HeaderCounts h = vtk_xml_header_counts(scene.mesh); h.cells > 0)
+    refuse_beyond_memory(
+        estimate_mesh_bytes(h) + estimate_render_bytes({scene.width, scene.height, h.points, h.cells, h.cells, exact}),
+        a.max_memory_gib, "reading " + scene.mesh + " (" + std::to_string(h.cells) + " cells) and rendering " + size_text,
+        a.scene);
   const PreparedScene prepared = prepare_scene(scene);
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
   const double load_seconds = seconds_since(t_load);
-  {  // refuse what would not fit, before allocating it
+  {
     const Mesh& m = prepared.loaded.mesh;
     std::int64_t tets = 0;
     for (std::int64_t c = 0; c < m.n_cells(); ++c) tets += m.types[c] == static_cast<std::uint8_t>(CellType::Tetra) ? 1 : kMaxTetsPerCell;
-    const std::uint64_t need = estimate_render_bytes({scene.width, scene.height, m.n_points(), m.n_cells(), tets, exact});
-    const std::uint64_t limit = a.max_memory_gib > 0 ? static_cast<std::uint64_t>(a.max_memory_gib * double(1ull << 30))
-                                                     : available_memory_bytes();
-    if (limit > 0 && need > limit)
-      throw InputError(where(a.scene, "rendering " + std::to_string(scene.width) + "x" + std::to_string(scene.height) +
-                                          " of " + std::to_string(m.n_cells()) + " cells needs about " + format_bytes(need) +
-                                          ", more than the " + format_bytes(limit) +
-                                          (a.max_memory_gib > 0 ? " allowed by --max-memory" : " this machine has available (raise it with --max-memory GiB)") +
-                                          "; use a smaller --size"));
+    refuse_beyond_memory(estimate_render_bytes({scene.width, scene.height, m.n_points(), m.n_cells(), tets, exact}),
+                         a.max_memory_gib, "rendering " + size_text + " of " + std::to_string(m.n_cells()) + " cells", a.scene);
   }
 
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
