@@ -57,6 +57,8 @@ expect 1 "ok.json: reading .*box.vtu \(64 cells\) and rendering 16384x16384 need
 printf '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0">\n<UnstructuredGrid>\n<Piece NumberOfPoints="900000000" NumberOfCells="4000000000">\n' > "$tmp/huge.vtu"
 sed 's/box.vtu/huge.vtu/' "$tmp/ok.json" > "$tmp/huge.json"
 expect 1 "huge.json: reading .*huge.vtu \(4000000000 cells\) and rendering 512x512 needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- render "$tmp/huge.json" --max-memory 4
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "camera": {"projection": "perspective", "eye": [0, 0, 0.1], "target": [0, 0, -1], "up": [0, 1, 0]}}' > "$tmp/inside.json"
+expect 0 "warning: [0-9]+ tetrahedra reach behind the eye and were not drawn" -- render "$tmp/inside.json" --size 32x32 -o "$tmp/inside.png"
 expect 1 "unknown back end 'vulkan'" -- render "$tmp/ok.json" --backend vulkan
 expect 1 "opengl back end draws pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
 expect 0 "wrote .*gl.png" -- render "$tmp/ok.json" --size 40x30 --method pt-table --backend opengl-8bit-dither -o "$tmp/gl.png" --stats
