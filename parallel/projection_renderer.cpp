@@ -105,7 +105,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
       options.method != ProjectionMethod::pt_table)
     throw InputError(std::string("the ") + name_of(options.backend) + " back end draws pt-linear and pt-table only, not " +
                      name_of(options.method) + " (per-pixel integrals need the software back end)");
-  const TetFragments project(screen, map, tf, options.method, table ? &*table : nullptr, &optics);
+  const TetFragments project(screen, map, points_, tf, options.method, table ? &*table : nullptr, &optics);
 
   t = std::chrono::steady_clock::now();
   if (options.backend != ProjectionBackend::software) {

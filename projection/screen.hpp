@@ -37,6 +37,13 @@ class ScreenMap {
     const double u = (2.0 * x / width_ - 1.0) * half_w_, v = (1.0 - 2.0 * y / height_) * half_h_;
     return std::sqrt(1.0 + u * u + v * v);
   }
+  // The unit direction of the ray through pixel position (x, y), and the eye (perspective), in the
+  // recentred frame.
+  glm::dvec3 ray_direction(double x, double y) const {
+    const double u = (2.0 * x / width_ - 1.0) * half_w_, v = (1.0 - 2.0 * y / height_) * half_h_;
+    return glm::normalize(forward_ + u * right_ + v * up_);
+  }
+  const glm::dvec3& eye() const { return eye_; }
   bool perspective() const { return perspective_; }
   int width() const { return width_; }
   int height() const { return height_; }

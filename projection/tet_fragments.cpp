@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/vec2.hpp>
 #include <tbb/blocked_range.h>
@@ -54,9 +55,50 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
   return o;
 }
 
-TetFragments::TetFragments(const ScreenPoints& screen, const ScreenMap& map, const TransferFunction& tf,
-                           ProjectionMethod method, const OpacityTable* table, const PointOptics* optics)
-    : screen_(screen), map_(map), tf_(tf), method_(method), table_(table), optics_(optics) {}
+TetFragments::TetFragments(const ScreenPoints& screen, const ScreenMap& map, const RecentredPoints& points,
+                           const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
+                           const PointOptics* optics)
+    : screen_(screen), map_(map), points_(points), tf_(tf), method_(method), table_(table), optics_(optics) {}
+
+void TetFragments::ray_cast(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
+  glm::dvec3 p[4];
+  double s[4];
+  for (int k = 0; k < 4; ++k) p[k] = points_(tet[k]), s[k] = screen_.v[static_cast<std::size_t>(tet[k])].s;
+  // The linear field s(x) = s0 + g . (x - p0): g from the three edges out of p0.
+  const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
+  const double det = glm::dot(e1, glm::cross(e2, e3));
+  if (!(std::abs(det) > 0.0)) return;  // zero volume: nothing to see
+  const glm::dvec3 g = (glm::cross(e2, e3) * (s[1] - s[0]) + glm::cross(e3, e1) * (s[2] - s[0]) +
+                        glm::cross(e1, e2) * (s[3] - s[0])) / det;
+  // Face planes n . x <= c inside, n outward (away from the opposite vertex).
+  glm::dvec3 n[4];
+  double c[4];
+  static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+  for (int f = 0; f < 4; ++f) {
+    const glm::dvec3& a = p[kFace[f][0]];
+    n[f] = glm::cross(p[kFace[f][1]] - a, p[kFace[f][2]] - a);
+    if (glm::dot(n[f], p[f] - a) > 0) n[f] = -n[f];
+    c[f] = glm::dot(n[f], a);
+  }
+  const glm::dvec3& eye = map_.eye();
+  const std::size_t before = out.size();
+  for (int j = 0; j < map_.height(); ++j)
+    for (int i = 0; i < map_.width(); ++i) {
+      const glm::dvec3 d = map_.ray_direction(i + 0.5, j + 0.5);
+      double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();  // from the eye on
+      for (int f = 0; f < 4 && t0 < t1; ++f) {
+        const double den = glm::dot(n[f], d), num = c[f] - glm::dot(n[f], eye);
+        if (den > 0) t1 = std::min(t1, num / den);
+        else if (den < 0) t0 = std::max(t0, num / den);
+        else if (num < 0) t1 = -1.0;  // parallel and outside
+      }
+      if (!(t1 > t0)) continue;
+      const double sf = s[0] + glm::dot(g, eye + t0 * d - p[0]), sb = s[0] + glm::dot(g, eye + t1 * d - p[0]);
+      const SegmentLight light = integrate_segment_closed_form(tf_, t1 - t0, sf, sb);
+      put(out, i, j, map_.width(), light.rgb, light.opacity());
+    }
+  counters.fragments += static_cast<std::int64_t>(out.size() - before);
+}
 
 bool TetFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const {
   ++counters.tets;
@@ -65,7 +107,7 @@ bool TetFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt,
     v[k] = screen_.v[static_cast<std::size_t>(p)];
     if (map_.perspective() && !(v[k].z > 0.0)) {
       ++counters.behind_eye;
-      return false;
+      return false;  // project() ray casts it; the OpenGL back ends leave it out
     }
   }
   pt = project_tet(v, map_.perspective());
@@ -128,7 +170,11 @@ void TetFragments::triangles(const Tet& tet, std::int64_t cell, double kappa_max
 void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
   ScreenVertex v[4];
   ProjectedTet pt;
-  if (!classify(tet, v, pt, counters)) return;
+  const std::int64_t behind = counters.behind_eye;
+  if (!classify(tet, v, pt, counters)) {
+    if (counters.behind_eye > behind) ray_cast(tet, out, counters);
+    return;
+  }
   const std::size_t before = out.size();
   const int width = map_.width(), height = map_.height();
   const bool persp = map_.perspective();

@@ -24,7 +24,7 @@ struct ProjectionCounters {
   std::int64_t tets = 0;              // projected
   std::int64_t class1 = 0, class2 = 0;
   std::int64_t empty = 0;             // zero projected area (slivers seen edge-on, zero-volume cells)
-  std::int64_t behind_eye = 0;        // perspective: a vertex at or behind the eye, not drawn
+  std::int64_t behind_eye = 0;        // perspective: a vertex at or behind the eye: ray cast per pixel (GL: not drawn)
   std::int64_t fragments = 0;
   std::int64_t breakpoint_cells = 0;  // cells whose scalar range holds a breakpoint (cut by pt-breakpoints)
   void add(const ProjectionCounters& o);
@@ -58,8 +58,10 @@ class TetFragments {
  public:
   // `table` is needed by pt_table only, `optics` by pt_linear and pt_table. All referenced objects
   // must outlive this.
-  TetFragments(const ScreenPoints& screen, const ScreenMap& map, const TransferFunction& tf, ProjectionMethod method,
-               const OpacityTable* table, const PointOptics* optics);
+  // `points` (the recentred points the screen positions came from) serves the cells that reach
+  // behind the eye in perspective, which are ray cast instead of projected.
+  TetFragments(const ScreenPoints& screen, const ScreenMap& map, const RecentredPoints& points, const TransferFunction& tf,
+               ProjectionMethod method, const OpacityTable* table, const PointOptics* optics);
   const TransferFunction& transfer_function() const { return tf_; }
   // Appends tet's fragments to out.
   void project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
@@ -72,11 +74,15 @@ class TetFragments {
  private:
   // The tetrahedron in the image; false (and counted) when there is nothing to draw.
   bool classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const;
+  // A cell reaching behind the eye: every pixel's ray from the eye clipped against its four face
+  // planes, the segment integrated exactly (pt-breakpoints' integral, whatever the method).
+  void ray_cast(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
   // The thick vertex's and the outline's corner values.
   void gouraud_corners(const Tet& tet, const ProjectedTet& pt, GouraudCorner& thick, GouraudCorner hull[4]) const;
 
   const ScreenPoints& screen_;
   const ScreenMap& map_;
+  const RecentredPoints& points_;
   const TransferFunction& tf_;
   ProjectionMethod method_;
   const OpacityTable* table_;

@@ -288,3 +288,20 @@ TEST(Projection, StepAndSteepTransferFunctionsStayExact) {
     EXPECT_LT(compare(img, exact(m, tf, c, 80)).max_abs, 2e-5);
   }
 }
+
+TEST(Projection, CameraInsideTheMeshRayCastsTheCellsAroundTheEye) {
+  // The eye inside the mesh: the cells reaching behind it are ray cast from the eye, the rest
+  // projected; together they equal the exact renderer.
+  const Mesh m = wavy_tets(6);
+  const TransferFunction tf = hard_tf();
+  Camera c;
+  c.projection = Projection::Perspective;
+  c.eye = {0.13, -0.41, 0.07};
+  c.target = {1.0, 0.3, -0.2};
+  c.up = {0, 0, 1};
+  c.fov_y = 70;
+  ProjectionStats st;
+  const Image img = project(m, tf, c, 72, ProjectionMethod::pt_breakpoints, &st);
+  EXPECT_GT(st.counters.behind_eye, 0);
+  EXPECT_LT(compare(img, exact(m, tf, c, 72)).max_abs, 2e-5);
+}

@@ -119,11 +119,12 @@ int run_render(const RenderArgs& a) {
     }
   });
   if (!exact) frame_stats = projection_stats_json(pst);
-  if (!exact && pst.counters.behind_eye > 0)  // never a silently incomplete picture
+  // The software back end ray casts the cells reaching behind the eye; OpenGL cannot draw them.
+  if (!exact && projection.backend != ProjectionBackend::software && pst.counters.behind_eye > 0)
     std::fprintf(stderr,
-                 "cellproj: warning: %lld tetrahedra reach behind the eye and were not drawn (the camera is inside or "
-                 "too close to the mesh); move the camera back, or use --method exact, which clips them\n",
-                 static_cast<long long>(pst.counters.behind_eye));
+                 "cellproj: warning: %lld tetrahedra reach behind the eye and were not drawn by the %s back end (the "
+                 "camera is inside or too close to the mesh); use --backend software, which ray casts them\n",
+                 static_cast<long long>(pst.counters.behind_eye), name_of(projection.backend));
 
   std::string png = a.png;
   if (png.empty() && a.npy.empty()) png = std::filesystem::path(a.scene).stem().string() + ".png";
