@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 
+#include <tbb/blocked_range.h>
 #include <tbb/concurrent_queue.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_pipeline.h>
@@ -43,9 +44,41 @@ std::size_t batch_size(int option, std::size_t cells) {
   return std::clamp<std::size_t>(per, 64, 2048);
 }
 
+// A token also closes once its cells' image bounding boxes add up to this many pixels, so that
+// its fragments (20 bytes each, at most one per covered pixel and cell) stay near 100 MB.
+constexpr double kBatchPixels = 5e6;
+// A cell whose bounding box covers more than this is not buffered: the compositor draws it itself,
+// in order, straight onto the image (a few huge cells in a large image would otherwise buffer
+// gigabytes of fragments).
+constexpr double kDirectPixels = 1e6;
+
+// Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind the
+// eye in perspective covers the whole image.
+std::vector<float> cell_footprints(const MeshView& tets, const ScreenPoints& screen, const ScreenMap& map) {
+  std::vector<float> area(static_cast<std::size_t>(tets.n_cells));
+  const double w = map.width(), h = map.height();
+  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, tets.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
+    for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+      const std::int64_t* id = tets.cell(c);
+      double x0 = w, x1 = 0, y0 = h, y1 = 0;
+      bool behind = false;
+      for (int k = 0; k < 4; ++k) {
+        const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
+        behind = behind || (map.perspective() && !(v.z > 0.0));
+        x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+      }
+      const double dx = std::clamp(x1, 0.0, w) - std::clamp(x0, 0.0, w), dy = std::clamp(y1, 0.0, h) - std::clamp(y0, 0.0, h);
+      area[static_cast<std::size_t>(c)] = behind ? static_cast<float>(w * h) : static_cast<float>((dx + 1) * (dy + 1));
+    }
+  });
+  return area;
+}
+
 struct Batch {
   std::size_t begin = 0, end = 0;
   std::vector<Fragment> fragments;
+  // The cells left to the compositor: (position in the order, fragments emitted before it).
+  std::vector<std::pair<std::size_t, std::size_t>> direct;
   ProjectionCounters counters;
 };
 
@@ -118,6 +151,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   }
   Image image(width, height);
   const std::vector<std::int64_t>& order = sorted.order;
+  const std::vector<float> footprint = cell_footprints(tets_, screen, map);
   const std::size_t batch = batch_size(options.batch_cells, order.size());
   const int tokens = 2 * tbb::this_task_arena::max_concurrency();
   std::vector<Batch> batches(static_cast<std::size_t>(tokens));
@@ -134,22 +168,40 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
                                        }
                                        Batch* b = nullptr;
                                        free.pop(b);
-                                       b->begin = next, b->end = std::min(order.size(), next + batch);
-                                       next = b->end;
+                                       b->begin = next;
+                                       double pixels = 0;
+                                       for (const std::size_t last = std::min(order.size(), next + batch);
+                                            next < last && pixels < kBatchPixels; ++next) {
+                                         const double a = footprint[static_cast<std::size_t>(order[next])];
+                                         if (a <= kDirectPixels) pixels += a;
+                                       }
+                                       b->end = next;
                                        return b;
                                      }) &
           tbb::make_filter<Batch*, Batch*>(tbb::filter_mode::parallel,
                                            [&](Batch* b) {
                                              b->fragments.clear();
+                                             b->direct.clear();
                                              b->counters = {};
                                              for (std::size_t k = b->begin; k < b->end; ++k) {
+                                               if (footprint[static_cast<std::size_t>(order[k])] > kDirectPixels) {
+                                                 b->direct.emplace_back(k, b->fragments.size());
+                                                 continue;
+                                               }
                                                const std::int64_t* id = tets_.cell(order[k]);
                                                project.project(Tet{id[0], id[1], id[2], id[3]}, b->fragments, b->counters);
                                              }
                                              return b;
                                            }) &
           tbb::make_filter<Batch*, void>(tbb::filter_mode::serial_in_order, [&](Batch* b) {
-            composite_over(image, b->fragments.data(), b->fragments.size());
+            std::size_t done = 0;  // fragments composited; the direct cells go in between, in order
+            for (const auto& [k, at] : b->direct) {
+              composite_over(image, b->fragments.data() + done, at - done);
+              done = at;
+              const std::int64_t* id = tets_.cell(order[k]);
+              project.project(Tet{id[0], id[1], id[2], id[3]}, image, b->counters);
+            }
+            composite_over(image, b->fragments.data() + done, b->fragments.size() - done);
             st.counters.add(b->counters);
             free.push(b);
           }));

@@ -24,18 +24,42 @@ struct LinearPiece {
   glm::dvec3 color(double s) const { return c0 + dc * ((s - s0) * ds); }
 };
 
-// A fragment that neither adds light nor hides anything (a ray grazing the cell) is not stored.
-inline void put(std::vector<Fragment>& out, int i, int j, int width, const glm::dvec3& rgb, double alpha) {
-  if (alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0) return;
-  // Written field by field into the vector: a fragment built on the stack and copied whole showed
-  // in perf as a store-forwarding stall.
-  Fragment& f = out.emplace_back();
-  f.pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i);
-  f.rgba[0] = static_cast<float>(rgb.r);
-  f.rgba[1] = static_cast<float>(rgb.g);
-  f.rgba[2] = static_cast<float>(rgb.b);
-  f.rgba[3] = static_cast<float>(alpha);
+// A fragment that neither adds light nor hides anything (a ray grazing the cell) is not emitted.
+inline bool adds_nothing(const glm::dvec3& rgb, double alpha) {
+  return alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0;
 }
+
+// Appends fragments to a batch's buffer.
+struct AppendFragments {
+  std::vector<Fragment>& out;
+  int width;
+  bool operator()(int i, int j, const glm::dvec3& rgb, double alpha) const {
+    if (adds_nothing(rgb, alpha)) return false;
+    // Written field by field into the vector: a fragment built on the stack and copied whole showed
+    // in perf as a store-forwarding stall.
+    Fragment& f = out.emplace_back();
+    f.pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i);
+    f.rgba[0] = static_cast<float>(rgb.r);
+    f.rgba[1] = static_cast<float>(rgb.g);
+    f.rgba[2] = static_cast<float>(rgb.b);
+    f.rgba[3] = static_cast<float>(alpha);
+    return true;
+  }
+};
+
+// Composites fragments onto the image at once (a cell drawn in order by the compositor itself).
+struct CompositeFragments {
+  Image& image;
+  bool operator()(int i, int j, const glm::dvec3& rgb, double alpha) const {
+    if (adds_nothing(rgb, alpha)) return false;
+    const Fragment f{0, {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
+                         static_cast<float>(alpha)}};
+    float* d = image.pixel(i, j);
+    const float t = 1.0f - f.rgba[3];
+    for (int c = 0; c < 4; ++c) d[c] = f.rgba[c] + t * d[c];  // as composite_over
+    return true;
+  }
+};
 
 }  // namespace
 
@@ -60,7 +84,8 @@ TetFragments::TetFragments(const ScreenPoints& screen, const ScreenMap& map, con
                            const PointOptics* optics)
     : screen_(screen), map_(map), points_(points), tf_(tf), method_(method), table_(table), optics_(optics) {}
 
-void TetFragments::ray_cast(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
+template <class Emit>
+void TetFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const {
   glm::dvec3 p[4];
   double s[4];
   for (int k = 0; k < 4; ++k) p[k] = points_(tet[k]), s[k] = screen_.v[static_cast<std::size_t>(tet[k])].s;
@@ -81,7 +106,7 @@ void TetFragments::ray_cast(const Tet& tet, std::vector<Fragment>& out, Projecti
     c[f] = glm::dot(n[f], a);
   }
   const glm::dvec3& eye = map_.eye();
-  const std::size_t before = out.size();
+  std::int64_t emitted = 0;
   for (int j = 0; j < map_.height(); ++j)
     for (int i = 0; i < map_.width(); ++i) {
       const glm::dvec3 d = map_.ray_direction(i + 0.5, j + 0.5);
@@ -95,9 +120,9 @@ void TetFragments::ray_cast(const Tet& tet, std::vector<Fragment>& out, Projecti
       if (!(t1 > t0)) continue;
       const double sf = s[0] + glm::dot(g, eye + t0 * d - p[0]), sb = s[0] + glm::dot(g, eye + t1 * d - p[0]);
       const SegmentLight light = integrate_segment_closed_form(tf_, t1 - t0, sf, sb);
-      put(out, i, j, map_.width(), light.rgb, light.opacity());
+      emitted += emit(i, j, light.rgb, light.opacity());
     }
-  counters.fragments += static_cast<std::int64_t>(out.size() - before);
+  counters.fragments += emitted;
 }
 
 bool TetFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const {
@@ -168,14 +193,25 @@ void TetFragments::triangles(const Tet& tet, std::int64_t cell, double kappa_max
 }
 
 void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
+  AppendFragments emit{out, map_.width()};
+  project_with(tet, emit, counters);
+}
+
+void TetFragments::project(const Tet& tet, Image& image, ProjectionCounters& counters) const {
+  CompositeFragments emit{image};
+  project_with(tet, emit, counters);
+}
+
+template <class Emit>
+void TetFragments::project_with(const Tet& tet, Emit& emit, ProjectionCounters& counters) const {
   ScreenVertex v[4];
   ProjectedTet pt;
   const std::int64_t behind = counters.behind_eye;
   if (!classify(tet, v, pt, counters)) {
-    if (counters.behind_eye > behind) ray_cast(tet, out, counters);
+    if (counters.behind_eye > behind) ray_cast(tet, emit, counters);
     return;
   }
-  const std::size_t before = out.size();
+  std::int64_t emitted = 0;
   const int width = map_.width(), height = map_.height();
   const bool persp = map_.perspective();
   const ThickVertex& T = pt.thick;
@@ -206,9 +242,9 @@ void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, Projectio
       const glm::dvec3 c = wt * st.c + wa * sh[a].c + wb * sh[b].c;
       const double x = wt * st.a + wa * sh[a].a + wb * sh[b].a;
       const double alpha = table ? (*table_)(x, wt * st.l + wa * sh[a].l + wb * sh[b].l) : x;
-      put(out, i, j, width, c * alpha, alpha);
+      emitted += emit(i, j, c * alpha, alpha);
     });
-    counters.fragments += static_cast<std::int64_t>(out.size() - before);
+    counters.fragments += emitted;
     return;
   }
 
@@ -241,9 +277,9 @@ void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, Projectio
     else if (has_breakpoint)  // pt-analytic across a breakpoint: kappa and C linear between the ends' values
       light = integrate_linear_closed_form(l, tf_.extinction(sf), tf_.extinction(sb), tf_.color(sf), tf_.color(sb));
     else light = integrate_linear_closed_form(l, piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb));
-    put(out, i, j, width, light.rgb, light.opacity());
+    emitted += emit(i, j, light.rgb, light.opacity());
   });
-  counters.fragments += static_cast<std::int64_t>(out.size() - before);
+  counters.fragments += emitted;
 }
 
 }  // namespace cellproj

@@ -65,6 +65,9 @@ class TetFragments {
   const TransferFunction& transfer_function() const { return tf_; }
   // Appends tet's fragments to out.
   void project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
+  // Composites tet's fragments onto image at once ("over"); for cells covering so many pixels that
+  // their fragments are not worth storing. In visibility order, from one thread.
+  void project(const Tet& tet, Image& image, ProjectionCounters& counters) const;
   // Appends tet's triangles (3 corners each) for the OpenGL back end (pt-linear, pt-table), with
   // texture coordinates for a table over [0, kappa_max] x [0, l_max] of `table_size` nodes.
   // `cell` picks the cell's shift of the dither noise, so a pixel's layers get independent noise.
@@ -76,7 +79,11 @@ class TetFragments {
   bool classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const;
   // A cell reaching behind the eye: every pixel's ray from the eye clipped against its four face
   // planes, the segment integrated exactly (pt-breakpoints' integral, whatever the method).
-  void ray_cast(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
+  template <class Emit>
+  void ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const;
+  // project()'s body; emit(i, j, rgb, alpha) stores or composites a fragment, true if it did.
+  template <class Emit>
+  void project_with(const Tet& tet, Emit& emit, ProjectionCounters& counters) const;
   // The thick vertex's and the outline's corner values.
   void gouraud_corners(const Tet& tet, const ProjectedTet& pt, GouraudCorner& thick, GouraudCorner hull[4]) const;
 

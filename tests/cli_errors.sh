@@ -52,7 +52,7 @@ expect 0 '"max_abs": [0-9.e-]+' -- compare "$tmp/ct.npy" "$tmp/pt-breakpoints.np
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['max_abs'] < 1e-5 else 1)" <("$exe" compare "$tmp/ct.npy" "$tmp/pt-breakpoints.npy") \
   || { echo "FAIL: pt-breakpoints differs from exact canonical-tets"; failed=$((failed+1)); }
 expect 1 "unknown sort 'zsort'" -- render "$tmp/ok.json" --sort zsort
-expect 1 "ok.json: reading .*box.vtu \(64 cells\) and rendering 16384x16384 needs about 9.1 GiB, more than the 2.0 GiB allowed by --max-memory" -- render "$tmp/ok.json" --size 16384x16384 --max-memory 2
+expect 1 "ok.json: reading .*box.vtu \(64 cells\) and rendering 16384x16384 needs about 9.6 GiB, more than the 2.0 GiB allowed by --max-memory" -- render "$tmp/ok.json" --size 16384x16384 --max-memory 2
 # A mesh too large for memory is refused from its header, before anything is read.
 printf '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0">\n<UnstructuredGrid>\n<Piece NumberOfPoints="900000000" NumberOfCells="4000000000">\n' > "$tmp/huge.vtu"
 sed 's/box.vtu/huge.vtu/' "$tmp/ok.json" > "$tmp/huge.json"

@@ -19,7 +19,9 @@ std::uint64_t estimate_render_bytes(const RenderFootprint& f) {
   // Per tetrahedron: connectivity, faces and neighbours, sorter planes and centroids (projection),
   // or the tracer's planes and tile bins (exact).
   bytes += static_cast<std::uint64_t>(f.tets) * (f.exact ? 400 : 320);
-  return bytes + (64ull << 20);  // fragment and triangle buffers, thread stacks
+  // Fragment buffers: up to two tokens per thread of ~6M fragments of 20 bytes (parallel/), on
+  // 2 cores; triangle buffers and thread stacks.
+  return bytes + (576ull << 20);
 }
 
 namespace {
