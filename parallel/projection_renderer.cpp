@@ -200,6 +200,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
               done = at;
               const std::int64_t* id = tets_.cell(order[k]);
               project.project(Tet{id[0], id[1], id[2], id[3]}, image, b->counters);
+              ++b->counters.direct_cells;
             }
             composite_over(image, b->fragments.data() + done, b->fragments.size() - done);
             st.counters.add(b->counters);

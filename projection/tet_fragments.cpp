@@ -65,7 +65,7 @@ struct CompositeFragments {
 
 void ProjectionCounters::add(const ProjectionCounters& o) {
   tets += o.tets, class1 += o.class1, class2 += o.class2, empty += o.empty, behind_eye += o.behind_eye;
-  fragments += o.fragments, breakpoint_cells += o.breakpoint_cells;
+  fragments += o.fragments, breakpoint_cells += o.breakpoint_cells, direct_cells += o.direct_cells;
 }
 
 PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf) {

@@ -27,6 +27,7 @@ struct ProjectionCounters {
   std::int64_t behind_eye = 0;        // perspective: a vertex at or behind the eye: ray cast per pixel (GL: not drawn)
   std::int64_t fragments = 0;
   std::int64_t breakpoint_cells = 0;  // cells whose scalar range holds a breakpoint (cut by pt-breakpoints)
+  std::int64_t direct_cells = 0;      // cells too large to buffer, drawn by the compositor itself
   void add(const ProjectionCounters& o);
 };
 

@@ -305,3 +305,24 @@ TEST(Projection, CameraInsideTheMeshRayCastsTheCellsAroundTheEye) {
   EXPECT_GT(st.counters.behind_eye, 0);
   EXPECT_LT(compare(img, exact(m, tf, c, 72)).max_abs, 2e-5);
 }
+
+TEST(Projection, HugeCellsAreCompositedDirectlyInOrder) {
+  // At 1200^2 each of these 48 tetrahedra covers more than 1M pixels of bounding box, so the
+  // compositor draws them itself instead of buffering their fragments: still exact, still the same
+  // bits from any number of threads.
+  Mesh m = make_box(2, 2, 2, glm::dvec3(-1), glm::dvec3(1), true);
+  set_field(m, "s", [](const glm::dvec3& x) { return 0.5 * x.x + 0.3 * x.y * x.y - 0.2 * x.z; });
+  const TransferFunction tf = hard_tf();
+  const Camera c = view_from({0.9, -1.7, 1.2}, Projection::Perspective);  // close: the box fills the image
+  ProjectionOptions o;
+  o.method = ProjectionMethod::pt_breakpoints;
+  const ProjectionRenderer r(m.view("s"));
+  Image one, many;
+  ProjectionStats st;
+  tbb::task_arena(1).execute([&] { one = r.render(tf, c, 1200, 1200, o, &st); });
+  tbb::task_arena(3).execute([&] { many = r.render(tf, c, 1200, 1200, o); });
+  EXPECT_GT(st.counters.direct_cells, 0);
+  EXPECT_LT(st.counters.direct_cells, st.tets);  // and the others buffered, interleaved in order
+  EXPECT_EQ(one.rgba, many.rgba);
+  EXPECT_LT(compare(one, exact(m, tf, c, 1200)).max_abs, 2e-5);
+}

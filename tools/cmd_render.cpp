@@ -46,6 +46,7 @@ nlohmann::json projection_stats_json(const ProjectionStats& p) {
           {"behind_eye_tets", c.behind_eye},
           {"fragments", c.fragments},
           {"breakpoint_cells", c.breakpoint_cells},
+          {"direct_cells", c.direct_cells},
           {"face_relations", p.sort.face_relations},
           {"gap_relations", p.sort.gap_relations},
           {"cycles", p.sort.cycles.size()},
