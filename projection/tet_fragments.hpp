@@ -100,7 +100,9 @@ class TetFragments {
 // Back-to-front "over" of fragments onto a premultiplied image.
 inline void composite_over(Image& image, const Fragment* f, std::size_t n) {
   float* px = image.rgba.data();
+  constexpr std::size_t kAhead = 16;  // the framebuffer is far larger than the caches: fetch ahead
   for (std::size_t k = 0; k < n; ++k) {
+    if (k + kAhead < n) __builtin_prefetch(px + std::size_t(f[k + kAhead].pixel) * 4, 1);
     float* d = px + std::size_t(f[k].pixel) * 4;
     const float t = 1.0f - f[k].rgba[3];
     for (int c = 0; c < 4; ++c) d[c] = f[k].rgba[c] + t * d[c];
