@@ -68,10 +68,13 @@ int run_render(const RenderArgs& a) {
     } catch (const InputError&) {
       throw InputError("--method: unknown method '" + a.method + "' (known: exact, " + projection_method_names() + ")");
     }
-    projection.sort = sort_method_from_name(a.sort);
-    projection.table_size = a.table_size;
-    projection.backend = projection_backend_from_name(a.backend);
   }
+  // Every option is checked, also those the chosen method does not use: a typo never passes silently.
+  projection.sort = sort_method_from_name(a.sort);
+  projection.table_size = a.table_size;
+  projection.backend = projection_backend_from_name(a.backend);
+  if (exact && projection.backend != ProjectionBackend::software)
+    throw InputError("--backend " + a.backend + " draws the projection methods; --method exact is a ray integrator on the CPU");
   const CellInterpolation interpolation = cell_interpolation_from_name(a.interpolation);
   // Refuse what would not fit, before allocating it: from the file's header before reading it,
   // and again from the mesh as read.
