@@ -54,9 +54,9 @@ constexpr double kDirectPixels = 1e6;
 
 // Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind the
 // eye in perspective covers the whole image.
-std::vector<float> cell_footprints(const MeshView& tets, const ScreenPoints& screen, const ScreenMap& map) {
+std::vector<float> cell_footprints(const MeshView& tets, const ScreenPoints& screen, const PixelRays& rays) {
   std::vector<float> area(static_cast<std::size_t>(tets.n_cells));
-  const double w = map.width(), h = map.height();
+  const double w = rays.width(), h = rays.height();
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, tets.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
     for (std::int64_t c = r.begin(); c < r.end(); ++c) {
       const std::int64_t* id = tets.cell(c);
@@ -64,7 +64,7 @@ std::vector<float> cell_footprints(const MeshView& tets, const ScreenPoints& scr
       bool behind = false;
       for (int k = 0; k < 4; ++k) {
         const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
-        behind = behind || (map.perspective() && !(v.z > 0.0));
+        behind = behind || (rays.perspective() && !(v.z > 0.0));
         x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
       }
       const double dx = std::clamp(x1, 0.0, w) - std::clamp(x0, 0.0, w), dy = std::clamp(y1, 0.0, h) - std::clamp(y0, 0.0, h);
@@ -117,8 +117,8 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   st.cells_split = cells_split_;
 
   auto t = std::chrono::steady_clock::now();
-  const ScreenMap map(camera, width, height, points_.centre);
-  const ScreenPoints screen = project_points(points_, tets_.scalar, map);
+  const PixelRays rays(recentred(camera, points_.centre), width, height);  // as the A-buffer's
+  const ScreenPoints screen = project_points(points_, tets_.scalar, rays);
   st.phase_seconds.emplace_back("project points", since(t));
 
   t = std::chrono::steady_clock::now();
@@ -138,7 +138,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
       options.method != ProjectionMethod::pt_table)
     throw InputError(std::string("the ") + name_of(options.backend) + " back end draws pt-linear and pt-table only, not " +
                      name_of(options.method) + " (per-pixel integrals need the software back end)");
-  const TetFragments project(screen, map, points_, tf, options.method, table ? &*table : nullptr, &optics);
+  const TetFragments project(screen, rays, points_, tf, options.method, table ? &*table : nullptr, &optics);
 
   t = std::chrono::steady_clock::now();
   if (options.backend != ProjectionBackend::software) {
@@ -151,7 +151,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   }
   Image image(width, height);
   const std::vector<std::int64_t>& order = sorted.order;
-  const std::vector<float> footprint = cell_footprints(tets_, screen, map);
+  const std::vector<float> footprint = cell_footprints(tets_, screen, rays);
   const std::size_t batch = batch_size(options.batch_cells, order.size());
   const int tokens = 2 * tbb::this_task_arena::max_concurrency();
   std::vector<Batch> batches(static_cast<std::size_t>(tokens));
@@ -222,8 +222,6 @@ Image ProjectionRenderer::render_gl(const TetFragments& project, const std::vect
   GLCompositor gl(width, height, target);  // its calls stay on this thread; workers only make triangles
   st.gl_renderer = gl.renderer();
   gl.begin(table);
-  double kmax = 0.0;
-  for (const auto& p : project.transfer_function().extinction_points()) kmax = std::max(kmax, p.kappa);
   const std::size_t batch = batch_size(options.batch_cells, order.size());
   const std::size_t window = 64;  // batches made at once, then drawn in order
   std::vector<std::vector<GLCorner>> corners(window);
@@ -236,8 +234,7 @@ Image ProjectionRenderer::render_gl(const TetFragments& project, const std::vect
       const std::size_t end = std::min(order.size(), first + (b + 1) * batch);
       for (std::size_t k = first + b * batch; k < end; ++k) {
         const std::int64_t* id = tets_.cell(order[k]);
-        project.triangles(Tet{id[0], id[1], id[2], id[3]}, order[k], kmax > 0 ? kmax : 1.0, max_edge_ > 0 ? max_edge_ : 1.0,
-                          table ? table->size() : 2, corners[b], counters[b]);
+        project.triangles(Tet{id[0], id[1], id[2], id[3]}, order[k], corners[b], counters[b]);
       }
     });
     for (std::size_t b = 0; b < n; ++b) gl.draw(corners[b]), st.counters.add(counters[b]);

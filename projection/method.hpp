@@ -34,8 +34,11 @@ std::string projection_backend_names();
 class OpacityTable {
  public:
   OpacityTable(int size, double kappa_max, double l_max);
+  // Where kappa and l fall between the nodes (fractional node index, clamped to the table).
+  double kappa_index(double kappa) const { return std::min(kappa * kscale_, max_index_); }
+  double length_index(double l) const { return std::min(l * lscale_, max_index_); }
   double operator()(double kappa, double l) const {
-    const double u = std::min(kappa * kscale_, max_index_), v = std::min(l * lscale_, max_index_);
+    const double u = kappa_index(kappa), v = length_index(l);
     const int i = std::min(static_cast<int>(u), size_ - 2), j = std::min(static_cast<int>(v), size_ - 2);
     const double fu = u - i, fv = v - j;
     const float* row = alpha_.data() + static_cast<std::size_t>(j) * size_ + i;

@@ -52,11 +52,9 @@ struct CompositeFragments {
   Image& image;
   bool operator()(int i, int j, const glm::dvec3& rgb, double alpha) const {
     if (adds_nothing(rgb, alpha)) return false;
-    const Fragment f{0, {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
-                         static_cast<float>(alpha)}};
-    float* d = image.pixel(i, j);
-    const float t = 1.0f - f.rgba[3];
-    for (int c = 0; c < 4; ++c) d[c] = f.rgba[c] + t * d[c];  // as composite_over
+    const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
+                          static_cast<float>(alpha)};
+    over(image.pixel(i, j), src);
     return true;
   }
 };
@@ -79,10 +77,10 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
   return o;
 }
 
-TetFragments::TetFragments(const ScreenPoints& screen, const ScreenMap& map, const RecentredPoints& points,
+TetFragments::TetFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                            const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
                            const PointOptics* optics)
-    : screen_(screen), map_(map), points_(points), tf_(tf), method_(method), table_(table), optics_(optics) {}
+    : screen_(screen), rays_(rays), points_(points), tf_(tf), method_(method), table_(table), optics_(optics) {}
 
 template <class Emit>
 void TetFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const {
@@ -105,11 +103,11 @@ void TetFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& coun
     if (glm::dot(n[f], p[f] - a) > 0) n[f] = -n[f];
     c[f] = glm::dot(n[f], a);
   }
-  const glm::dvec3& eye = map_.eye();
+  const glm::dvec3& eye = rays_.camera().eye;  // recentred
   std::int64_t emitted = 0;
-  for (int j = 0; j < map_.height(); ++j)
-    for (int i = 0; i < map_.width(); ++i) {
-      const glm::dvec3 d = map_.ray_direction(i + 0.5, j + 0.5);
+  for (int j = 0; j < rays_.height(); ++j)
+    for (int i = 0; i < rays_.width(); ++i) {
+      const glm::dvec3 d = rays_.ray(i + 0.5, j + 0.5).dir;  // from the eye
       double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();  // from the eye on
       for (int f = 0; f < 4 && t0 < t1; ++f) {
         const double den = glm::dot(n[f], d), num = c[f] - glm::dot(n[f], eye);
@@ -125,23 +123,23 @@ void TetFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& coun
   counters.fragments += emitted;
 }
 
-bool TetFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const {
+TetFragments::Seen TetFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt,
+                                          ProjectionCounters& counters) const {
   ++counters.tets;
   for (int k = 0; k < 4; ++k) {
-    const std::int64_t p = tet[k];
-    v[k] = screen_.v[static_cast<std::size_t>(p)];
-    if (map_.perspective() && !(v[k].z > 0.0)) {
+    v[k] = screen_.v[static_cast<std::size_t>(tet[k])];
+    if (rays_.perspective() && !(v[k].z > 0.0)) {
       ++counters.behind_eye;
-      return false;  // project() ray casts it; the OpenGL back ends leave it out
+      return Seen::behind_eye;  // project() ray casts it; the OpenGL back ends leave it out
     }
   }
-  pt = project_tet(v, map_.perspective());
+  pt = project_tet(v, rays_.perspective());
   if (pt.hull_size == 0) {
     ++counters.empty;
-    return false;
+    return Seen::empty;
   }
   ++(pt.hull_size == 3 ? counters.class1 : counters.class2);
-  return true;
+  return Seen::projected;
 }
 
 void TetFragments::gouraud_corners(const Tet& tet, const ProjectedTet& pt, GouraudCorner& thick,
@@ -152,7 +150,7 @@ void TetFragments::gouraud_corners(const Tet& tet, const ProjectedTet& pt, Goura
     return GouraudCorner{table ? kavg : -std::expm1(-kavg * l), l, c};
   };
   const ThickVertex& T = pt.thick;
-  thick = shade(0.5 * (tf_.extinction(T.sf) + tf_.extinction(T.sb)), (T.zb - T.zf) * map_.length_per_depth(T.x, T.y),
+  thick = shade(0.5 * (tf_.extinction(T.sf) + tf_.extinction(T.sb)), (T.zb - T.zf) * rays_.length_per_depth(T.x, T.y),
                 0.5 * (tf_.color(T.sf) + tf_.color(T.sb)));
   for (int k = 0; k < pt.hull_size; ++k) {
     const std::int64_t p = tet[pt.hull_vertex[k]];
@@ -161,24 +159,23 @@ void TetFragments::gouraud_corners(const Tet& tet, const ProjectedTet& pt, Goura
   }
 }
 
-void TetFragments::triangles(const Tet& tet, std::int64_t cell, double kappa_max, double l_max, int table_size,
-                             std::vector<GLCorner>& out, ProjectionCounters& counters) const {
+void TetFragments::triangles(const Tet& tet, std::int64_t cell, std::vector<GLCorner>& out,
+                             ProjectionCounters& counters) const {
   ScreenVertex v[4];
   ProjectedTet pt;
-  if (!classify(tet, v, pt, counters)) return;
+  if (classify(tet, v, pt, counters) != Seen::projected) return;
   GouraudCorner st, sh[4];
   gouraud_corners(tet, pt, st, sh);
   const bool table = method_ == ProjectionMethod::pt_table;
   // Texel centres: node i of n sits at (i + 0.5) / n, so GL_LINEAR reads the table as OpacityTable does.
-  const double su = (table_size - 1) / (kappa_max * table_size), sv = (table_size - 1) / (l_max * table_size);
-  const double half = 0.5 / table_size;
+  const double n = table ? table_->size() : 1.0;
   // A whole-pixel shift of the noise tile per cell (a 64-bit mix of its id).
   std::uint64_t h = static_cast<std::uint64_t>(cell) * 0x9E3779B97F4A7C15ull;
   h ^= h >> 29;
   const float shift_u = static_cast<float>(h % kDitherTile), shift_v = static_cast<float>((h >> 16) % kDitherTile);
   auto corner = [&](double x, double y, const GouraudCorner& g) {
-    const double u = table ? std::min(g.a * su, 1.0 - 2 * half) + half : 0.0;
-    const double w = table ? std::min(g.l * sv, 1.0 - 2 * half) + half : 0.0;
+    const double u = table ? (table_->kappa_index(g.a) + 0.5) / n : 0.0;
+    const double w = table ? (table_->length_index(g.l) + 0.5) / n : 0.0;
     out.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(u), static_cast<float>(w),
                    static_cast<float>(g.c.r), static_cast<float>(g.c.g), static_cast<float>(g.c.b),
                    table ? 1.0f : static_cast<float>(g.a), (static_cast<float>(x) + shift_u) / kDitherTile,
@@ -193,7 +190,7 @@ void TetFragments::triangles(const Tet& tet, std::int64_t cell, double kappa_max
 }
 
 void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
-  AppendFragments emit{out, map_.width()};
+  AppendFragments emit{out, rays_.width()};
   project_with(tet, emit, counters);
 }
 
@@ -206,14 +203,12 @@ template <class Emit>
 void TetFragments::project_with(const Tet& tet, Emit& emit, ProjectionCounters& counters) const {
   ScreenVertex v[4];
   ProjectedTet pt;
-  const std::int64_t behind = counters.behind_eye;
-  if (!classify(tet, v, pt, counters)) {
-    if (counters.behind_eye > behind) ray_cast(tet, emit, counters);
-    return;
-  }
+  const Seen seen = classify(tet, v, pt, counters);
+  if (seen == Seen::behind_eye) ray_cast(tet, emit, counters);
+  if (seen != Seen::projected) return;
   std::int64_t emitted = 0;
-  const int width = map_.width(), height = map_.height();
-  const bool persp = map_.perspective();
+  const int width = rays_.width(), height = rays_.height();
+  const bool persp = rays_.perspective();
   const ThickVertex& T = pt.thick;
 
   // The scalar range and whether a breakpoint of the transfer function lies inside it.
@@ -271,7 +266,7 @@ void TetFragments::project_with(const Tet& tet, Emit& emit, ProjectionCounters& 
       sf = (qf * T.sf + qa * A.sf + qb * B.sf) * inv_f, sb = (qr * T.sb + qa * A.sb + qb * B.sb) * inv_b;
     }
     sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
-    const double l = std::max(0.0, zb - zf) * map_.length_per_depth(i + 0.5, j + 0.5);
+    const double l = std::max(0.0, zb - zf) * rays_.length_per_depth(i + 0.5, j + 0.5);
     SegmentLight light;
     if (cut) light = integrate_segment_closed_form(tf_, l, sf, sb);
     else if (has_breakpoint)  // pt-analytic across a breakpoint: kappa and C linear between the ends' values

@@ -61,23 +61,24 @@ class TetFragments {
   // must outlive this.
   // `points` (the recentred points the screen positions came from) serves the cells that reach
   // behind the eye in perspective, which are ray cast instead of projected.
-  TetFragments(const ScreenPoints& screen, const ScreenMap& map, const RecentredPoints& points, const TransferFunction& tf,
+  // `rays` is the frame's PixelRays on the recentred camera, the one `screen` was made with.
+  TetFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points, const TransferFunction& tf,
                ProjectionMethod method, const OpacityTable* table, const PointOptics* optics);
-  const TransferFunction& transfer_function() const { return tf_; }
   // Appends tet's fragments to out.
   void project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
   // Composites tet's fragments onto image at once ("over"); for cells covering so many pixels that
   // their fragments are not worth storing. In visibility order, from one thread.
   void project(const Tet& tet, Image& image, ProjectionCounters& counters) const;
   // Appends tet's triangles (3 corners each) for the OpenGL back end (pt-linear, pt-table), with
-  // texture coordinates for a table over [0, kappa_max] x [0, l_max] of `table_size` nodes.
-  // `cell` picks the cell's shift of the dither noise, so a pixel's layers get independent noise.
-  void triangles(const Tet& tet, std::int64_t cell, double kappa_max, double l_max, int table_size,
-                 std::vector<GLCorner>& out, ProjectionCounters& counters) const;
+  // texture coordinates on the opacity table's texel centres. `cell` picks the cell's shift of the
+  // dither noise, so a pixel's layers get independent noise.
+  void triangles(const Tet& tet, std::int64_t cell, std::vector<GLCorner>& out, ProjectionCounters& counters) const;
 
  private:
-  // The tetrahedron in the image; false (and counted) when there is nothing to draw.
-  bool classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const;
+  // The tetrahedron in the image (counted): projected into pt, reaching behind the eye, or of zero
+  // projected area.
+  enum class Seen { projected, behind_eye, empty };
+  Seen classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const;
   // A cell reaching behind the eye: every pixel's ray from the eye clipped against its four face
   // planes, the segment integrated exactly (pt-breakpoints' integral, whatever the method).
   template <class Emit>
@@ -89,7 +90,7 @@ class TetFragments {
   void gouraud_corners(const Tet& tet, const ProjectedTet& pt, GouraudCorner& thick, GouraudCorner hull[4]) const;
 
   const ScreenPoints& screen_;
-  const ScreenMap& map_;
+  const PixelRays& rays_;
   const RecentredPoints& points_;
   const TransferFunction& tf_;
   ProjectionMethod method_;
@@ -97,15 +98,19 @@ class TetFragments {
   const PointOptics* optics_;
 };
 
+// Back-to-front "over" of one premultiplied RGBA value onto a pixel.
+inline void over(float* dst, const float src[4]) {
+  const float t = 1.0f - src[3];
+  for (int c = 0; c < 4; ++c) dst[c] = src[c] + t * dst[c];
+}
+
 // Back-to-front "over" of fragments onto a premultiplied image.
 inline void composite_over(Image& image, const Fragment* f, std::size_t n) {
   float* px = image.rgba.data();
   constexpr std::size_t kAhead = 16;  // the framebuffer is far larger than the caches: fetch ahead
   for (std::size_t k = 0; k < n; ++k) {
     if (k + kAhead < n) __builtin_prefetch(px + std::size_t(f[k + kAhead].pixel) * 4, 1);
-    float* d = px + std::size_t(f[k].pixel) * 4;
-    const float t = 1.0f - f[k].rgba[3];
-    for (int c = 0; c < 4; ++c) d[c] = f[k].rgba[c] + t * d[c];
+    over(px + std::size_t(f[k].pixel) * 4, f[k].rgba);
   }
 }
 

@@ -117,10 +117,7 @@ CellRayTracer::CellRayTracer(const MeshView& mesh) : points_(recentre(mesh)) {
 
 void CellRayTracer::trace(const Camera& camera, int width, int height, const Visitor& visit,
                           const std::function<void(double)>& progress) const {
-  Camera local = camera;  // in the recentred frame
-  local.eye -= points_.centre;
-  local.target -= points_.centre;
-  const PixelRays rays(local, width, height);
+  const PixelRays rays(recentred(camera, points_.centre), width, height);
   const RecentredPoints& P = points_;
 
   // Pixel boxes of the tetrahedra: the pixel centres their projection may cover, one pixel wider.

@@ -121,18 +121,19 @@ Ray PixelRays::ray(double x, double y) const {
   return {camera_.eye, glm::normalize(forward_ + u * right_ + v * up_)};
 }
 
-bool PixelRays::project(const glm::dvec3& p, double& x, double& y) const {
+void PixelRays::project(const glm::dvec3& p, double& x, double& y, double& z) const {
   const glm::dvec3 d = p - camera_.eye;
   double u = glm::dot(d, right_), v = glm::dot(d, up_);
-  if (camera_.projection == Projection::Perspective) {
-    const double z = glm::dot(d, forward_);
-    if (!(z > 0.0)) return false;
-    u /= z;
-    v /= z;
-  }
+  z = glm::dot(d, forward_);
+  if (perspective()) u /= z, v /= z;
   x = (u / half_w_ + 1.0) * 0.5 * width_;
   y = (1.0 - v / half_h_) * 0.5 * height_;
-  return true;
+}
+
+bool PixelRays::project(const glm::dvec3& p, double& x, double& y) const {
+  double z;
+  project(p, x, y, z);
+  return !perspective() || z > 0.0;
 }
 
 }  // namespace cellproj

@@ -1,6 +1,7 @@
 #pragma once
 // The camera and the rays through pixel centres. Pixel (i, j) is column i from the left and row j
 // from the top; its ray passes through (i + 0.5, j + 0.5).
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -24,6 +25,13 @@ void check_camera(const Camera& camera, const std::string& source);
 
 // The camera turned by `degrees` about the up axis through the target (for --frames).
 Camera orbit(const Camera& camera, double degrees);
+
+// The same camera in a frame whose origin is `centre` (the frame of RecentredPoints).
+inline Camera recentred(Camera camera, const glm::dvec3& centre) {
+  camera.eye -= centre;
+  camera.target -= centre;
+  return camera;
+}
 
 // A camera looking at the box [lo, hi] from direction `from` (towards the eye), framing it whole.
 Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, Projection projection, const glm::dvec3& from,
@@ -49,6 +57,17 @@ class PixelRays {
   Ray ray(double x, double y) const;  // (x, y) in pixel units: the centre of pixel (i, j) is (i + .5, j + .5)
   // Image position (x, y) of world point p; false when p is not in front of the eye (perspective).
   bool project(const glm::dvec3& p, double& x, double& y) const;
+  // Image position and view depth z of p (distance along the view direction from the eye, or from
+  // the eye's plane in orthographic projection); in perspective x, y mean something only for z > 0.
+  void project(const glm::dvec3& p, double& x, double& y, double& z) const;
+  // Ray length per unit of view depth through image position (x, y): 1 / cos of the ray's angle
+  // with the view direction (1 in orthographic projection).
+  double length_per_depth(double x, double y) const {
+    if (!perspective()) return 1.0;
+    const double u = (2.0 * x / width_ - 1.0) * half_w_, v = (1.0 - 2.0 * y / height_) * half_h_;
+    return std::sqrt(1.0 + u * u + v * v);
+  }
+  bool perspective() const { return camera_.projection == Projection::Perspective; }
   int width() const { return width_; }
   int height() const { return height_; }
   const Camera& camera() const { return camera_; }

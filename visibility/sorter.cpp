@@ -136,9 +136,7 @@ bool VisibilitySorter::convex_boundary() const { return p_->convex; }
 
 ViewFrame view_frame(const VisibilitySorter::Prepared& p, const SortView& view) {
   ViewFrame v;
-  v.camera = view.camera;
-  v.camera.eye -= p.pts.centre;
-  v.camera.target -= p.pts.centre;
+  v.camera = recentred(view.camera, p.pts.centre);
   v.perspective = view.camera.projection == Projection::Perspective;
   v.eye = v.camera.eye;
   v.dir = glm::normalize(v.camera.target - v.camera.eye);
