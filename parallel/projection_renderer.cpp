@@ -188,8 +188,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
                                                  b->direct.emplace_back(k, b->fragments.size());
                                                  continue;
                                                }
-                                               const std::int64_t* id = tets_.cell(order[k]);
-                                               project.project(Tet{id[0], id[1], id[2], id[3]}, b->fragments, b->counters);
+                                               project.project(tet(order[k]), b->fragments, b->counters);
                                              }
                                              return b;
                                            }) &
@@ -198,8 +197,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
             for (const auto& [k, at] : b->direct) {
               composite_over(image, b->fragments.data() + done, at - done);
               done = at;
-              const std::int64_t* id = tets_.cell(order[k]);
-              project.project(Tet{id[0], id[1], id[2], id[3]}, image, b->counters);
+              project.project(tet(order[k]), image, b->counters);
               ++b->counters.direct_cells;
             }
             composite_over(image, b->fragments.data() + done, b->fragments.size() - done);
@@ -233,8 +231,7 @@ Image ProjectionRenderer::render_gl(const TetFragments& project, const std::vect
       counters[b] = {};
       const std::size_t end = std::min(order.size(), first + (b + 1) * batch);
       for (std::size_t k = first + b * batch; k < end; ++k) {
-        const std::int64_t* id = tets_.cell(order[k]);
-        project.triangles(Tet{id[0], id[1], id[2], id[3]}, order[k], corners[b], counters[b]);
+        project.triangles(tet(order[k]), order[k], corners[b], counters[b]);
       }
     });
     for (std::size_t b = 0; b < n; ++b) gl.draw(corners[b]), st.counters.add(counters[b]);

@@ -58,6 +58,11 @@ class ProjectionRenderer {
   Image render_gl(const TetFragments& project, const std::vector<std::int64_t>& order, const OpacityTable* table,
                   int width, int height, const ProjectionOptions& options, ProjectionStats& st) const;
 
+  Tet tet(std::int64_t c) const {
+    const std::int64_t* id = tets_.cell(c);
+    return {id[0], id[1], id[2], id[3]};
+  }
+
   std::optional<Mesh> split_;   // the canonical tetrahedra, when the mesh had other cells
   MeshView tets_;
   std::int64_t cells_split_ = 0;

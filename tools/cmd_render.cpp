@@ -102,7 +102,6 @@ int run_render(const RenderArgs& a) {
   double prepare_seconds = 0.0, trace_seconds = 0.0;
   ExactStats st;
   ProjectionStats pst;
-  nlohmann::json frame_stats;
   arena.execute([&] {
     const auto t_prep = std::chrono::steady_clock::now();
     const MeshView view = prepared.loaded.mesh.view(prepared.field);
@@ -122,7 +121,6 @@ int run_render(const RenderArgs& a) {
       if (f == 0) first = std::move(img);
     }
   });
-  if (!exact) frame_stats = projection_stats_json(pst);
   // The software back end ray casts the cells reaching behind the eye; OpenGL cannot draw them.
   if (!exact && projection.backend != ProjectionBackend::software && pst.counters.behind_eye > 0)
     std::fprintf(stderr,
@@ -164,7 +162,7 @@ int run_render(const RenderArgs& a) {
       s["interpolation"] = name_of(interpolation);
       s["newton_failures"] = st.newton_failures;
     } else {
-      s.update(frame_stats);  // the last frame's
+      s.update(projection_stats_json(pst));  // the last frame's
     }
     std::fprintf(stderr, "%s\n", s.dump().c_str());
   }
