@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
-# The foundation's targets on a 1M-tetrahedron mesh (a 56^3 box, 6 tetrahedra per cube):
-# topology (`info`) in ~2 s and the exact renderer at 512^2 in ~2 min on 2 cores.
+# Targets on a 1M-tetrahedron mesh (a 56^3 box, 6 tetrahedra per cube): topology (`info`) in ~2 s
+# and the exact renderer at 512^2 in ~2 min (foundation issue); cell projection at 1024^2 with 2
+# threads in at most 1 s per frame, sort included (issue 4): pt-linear and pt-table, 5 frames.
 # usage: bench/exact_1m.sh [BUILD_DIR]   (prints the timings as JSON lines)
 set -euo pipefail
 build=${1:-build}
@@ -17,4 +18,9 @@ cat > "$work/scene.json" <<JSON
   "camera": { "projection": "perspective", "eye": [3.5, 2.5, 4.5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y": 35 },
   "image": { "width": 512, "height": 512 } }
 JSON
-"$exe" render "$work/scene.json" -o "$work/box.png" --stats 2>&1 >/dev/null | tail -1
+"$exe" render "$work/scene.json" --method exact -o "$work/box.png" --stats 2>&1 >/dev/null | tail -1
+for m in pt-linear pt-table; do
+  "$exe" render "$work/scene.json" --method "$m" --size 1024x1024 --threads 2 --frames 5 -o "$work/$m.png" --stats 2>&1 >/dev/null |
+    tail -1 | python3 -c 'import json, sys; j = json.load(sys.stdin)
+print(json.dumps({k: j[k] for k in ("method", "cells", "width", "height", "threads", "frame_seconds", "min_frame_seconds", "max_frame_seconds")}))'
+done

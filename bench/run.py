@@ -1,4 +1,4 @@
-"""The speed/accuracy benchmark (docs/accuracy.md). Run through bench/run, which installs what it
+"""The speed/accuracy benchmark (docs/accuracy.md and the measured parts of docs/methods.md). Run through bench/run, which installs what it
 needs and calls this with Debian's python3 (numpy, matplotlib and VTK's Python module live there).
 
 For every benchmark mesh and image size: `exact` (canonical-tets, the field the projection methods
@@ -9,7 +9,7 @@ repeated frames), cells per second, RMSE and largest error of the premultiplied 
 exact, and the sort's order violations counted by the ray-traced oracle (`sortbench --check`, four
 views spread over a sphere at the same image size). Writes DIR/results.csv, DIR/plots/ (error
 against time per mesh, log-log) and DIR/strips/ (pictures and difference images), and prints the
-rows as a Markdown table.
+rows as a Markdown table; then the opacity table's error by size and the thread speed-up.
 """
 import argparse
 import csv
@@ -168,6 +168,27 @@ def report(path):
     peer_ratios(bench)
 
 
+def model_check(bench):
+    """The optical model handed to VTK, checked where the answer is known: a slab of constant
+    extinction 1 and thickness 2 seen straight down, 1 - e^-2 = 0.8647 at its centre."""
+    mesh = os.path.join(bench.out, "meshes", "slab.vtu")
+    run([bench.exe, "generate", "box-tets", "-n", "4", "-o", mesh])
+    scene = os.path.join(bench.out, "meshes", "slab.json")
+    with open(scene, "w") as f:
+        json.dump({"mesh": "slab.vtu", "field": "scalar",
+                   "transfer_function": {"color": [[0, 1, 1, 1], [1, 1, 1, 1]], "extinction": [[0, 1.0], [1, 1.0]]},
+                   "camera": {"projection": "orthographic", "eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0],
+                              "height": 3}}, f)
+    print("\nThe optical model given to VTK, on a constant slab (centre pixel, exact 1 - e^-2 = 0.8647):\n")
+    print("| renderer | centre value |")
+    print("|---|---|")
+    _, npy = bench.render(scene, "slab_exact", "exact", 64, 1)
+    print(f"| cellproj exact | {np.load(npy)[32, 32, 0]:.4f} |")
+    for method, mapper in PEERS.items():
+        _, npy = bench.peer(scene, f"slab_{method}", mapper, 64)
+        print(f"| {method} | {np.load(npy)[32, 32, 0]:.4f} |", flush=True)
+
+
 def peer_ratios(bench):
     """Each VTK mapper's time over ours (above 1: ours is faster), per mesh and size."""
     ours = ["pt-linear", "pt-table", "pt-breakpoints"]
@@ -182,6 +203,30 @@ def peer_ratios(bench):
                 mine.setdefault(x["method"], x["median_seconds"])
         ratios = " | ".join(f"{r['median_seconds'] / mine[m]:.2f}" if m in mine else "" for m in ours)
         print(f"| {r['mesh']} | {r['width']}² | {r['method']} | {r['median_seconds']:.3f} | {r['rmse']:.1e} | {ratios} |")
+
+
+def sweeps(bench, default_scene, big):
+    """The opacity table's own error by size, and the thread speed-up with bit-identity."""
+    base = "default_512"
+    bench.render(default_scene, f"{base}_table8192", "pt-table", 512, 1, ["--table-size", "8192"])
+    ref8192 = os.path.join(bench.out, "images", f"{base}_table8192.npy")
+    print("\nOpacity table size (pt-table, default scene, 512²): its own error against an 8192² table\n")
+    print("| table size | RMSE | max error |")
+    print("|---|---|---|")
+    for n in [8, 32, 128, 256, 512, 2048]:
+        _, npy = bench.render(default_scene, f"{base}_table{n}", "pt-table", 512, 1, ["--table-size", str(n)])
+        e = error(npy, ref8192)
+        print(f"| {n} | {e[0]:.1e} | {e[1]:.1e} |", flush=True)
+    print("\nThreads (pt-breakpoints, 1024², median of 3 frames):\n")
+    print("| mesh | 1 thread s | 2 threads s | speed-up | same bits |")
+    print("|---|---|---|---|---|")
+    for name, scene in big:
+        t = {}
+        for n in (1, 2):
+            t[n] = bench.render(scene, f"{name}_threads{n}", "pt-breakpoints", 1024, 3, ["--threads", str(n)])
+        same = error(t[1][1], t[2][1])[1] == 0
+        print(f"| {name} | {t[1][0]['frame_seconds']:.3f} | {t[2][0]['frame_seconds']:.3f} | "
+              f"{t[1][0]['frame_seconds'] / t[2][0]['frame_seconds']:.2f}× | {'yes' if same else 'NO'} |", flush=True)
 
 
 def plots(bench):
@@ -248,6 +293,7 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--no-peers", action="store_true", help="skip VTK's mappers")
     ap.add_argument("--report", metavar="CSV", help="print the tables of an earlier run's results.csv and stop")
+    ap.add_argument("--sweeps-only", action="store_true", help="only the table-size and thread sweeps (~3 min)")
     a = ap.parse_args()
     if a.report:
         report(a.report)
@@ -255,6 +301,10 @@ def main():
     for sub in ("meshes", "images"):
         os.makedirs(os.path.join(a.out, sub), exist_ok=True)
     bench = Bench(os.path.join(a.build, "bin", "cellproj"), a.out, 2 if a.quick else 3)
+    default_scene = os.path.join(ROOT, "scenes", "default.json")
+    if a.sweeps_only:
+        sweeps(bench, default_scene, [("default", default_scene), synthetic(bench, "box-tets", 26, "tets-100k")[:2]])
+        return
     meshes = [synthetic(bench, "box-tets", 12, "tets-10k"), synthetic(bench, "box-tets", 26, "tets-100k"),
               synthetic(bench, "mixed", 8, "mixed"), synthetic(bench, "swirl", 16, "curvilinear")]
     if not a.quick:
@@ -277,6 +327,10 @@ def main():
         w.writeheader()
         w.writerows(bench.rows)
     peer_ratios(bench)
+    if not a.no_peers:
+        model_check(bench)
+    big = [("default", default_scene)] + [m[:2] for m in meshes if m[0] in ("tets-100k", "tets-1m")]
+    sweeps(bench, default_scene, big)
     plots(bench)
     strips(bench, 512)
     print(f"\nwrote {a.out}/results.csv, {a.out}/plots/, {a.out}/strips/")

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""A VTK unstructured-grid volume mapper on one of our scenes, for bench/vtk_peer.sh.
+"""A VTK unstructured-grid volume mapper on one of our scenes, for bench/run (run.py).
 
 usage: xvfb-run -a /usr/bin/python3 bench/vtk_peer.py SCENE.json --size N --frames F --out PREFIX
                 [--mapper pt|raycast|zsweep]

@@ -64,6 +64,7 @@ expect 0 "warning: [0-9]+ tetrahedra reach behind the eye and were not drawn by 
 expect 1 "unknown back end 'vulkan'" -- render "$tmp/ok.json" --backend vulkan
 expect 1 "unknown sort 'zsort'" -- render "$tmp/ok.json" --method exact --sort zsort
 expect 1 "--method exact is a ray integrator" -- render "$tmp/ok.json" --method exact --backend opengl
+expect 1 "--interpolation chooses the field inside cells for --method exact" -- render "$tmp/ok.json" --interpolation canonical-tets
 expect 1 "opengl back end draws pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
 expect 0 "wrote .*gl.png" -- render "$tmp/ok.json" --size 40x30 --method pt-table --backend opengl-8bit-dither -o "$tmp/gl.png" --stats
 grep -q '"gl_renderer":' "$tmp/err" || { echo "FAIL: --stats lacks gl_renderer"; failed=$((failed+1)); }

@@ -29,6 +29,7 @@ struct RenderArgs {
   std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto",
               backend = "software";
   int threads = 0, frames = 1, table_size = 256;
+  bool interpolation_given = false;  // --interpolation on the command line (it applies to exact only)
   double max_memory_gib = 0.0;  // 0: the machine's available memory
   bool stats = false;
 };
@@ -73,6 +74,9 @@ int run_render(const RenderArgs& a) {
   projection.sort = sort_method_from_name(a.sort);
   projection.table_size = a.table_size;
   projection.backend = projection_backend_from_name(a.backend);
+  if (!exact && a.interpolation_given)
+    throw InputError("--interpolation chooses the field inside cells for --method exact; the projection methods "
+                     "render the canonical tetrahedra");
   if (exact && projection.backend != ProjectionBackend::software)
     throw InputError("--backend " + a.backend + " draws the projection methods; --method exact is a ray integrator on the CPU");
   const CellInterpolation interpolation = cell_interpolation_from_name(a.interpolation);
@@ -186,7 +190,7 @@ Action add_render(CLI::App& app) {
                   "opengl (OSMesa, float target), opengl-8bit, opengl-8bit-dither");
   cmd->add_option("--table-size", args->table_size, "pt-table: nodes per axis of the opacity table (default 256)")
       ->check(CLI::Range(2, 8192));
-  cmd->add_option("--interpolation", args->interpolation,
+  CLI::Option* interpolation = cmd->add_option("--interpolation", args->interpolation,
                   "Field inside hexahedra, wedges and pyramids for exact: isoparametric (default) or canonical-tets")
       ->check(CLI::IsMember({"isoparametric", "canonical-tets"}));
   cmd->add_option("--size", args->size, "Image size WxH, overriding the scene");
@@ -198,7 +202,10 @@ Action add_render(CLI::App& app) {
                   "Refuse renders estimated to need more than this many GiB (default: the memory available now)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
-  return [args] { return run_render(*args); };
+  return [args, interpolation] {
+    args->interpolation_given = interpolation->count() > 0;
+    return run_render(*args);
+  };
 }
 
 }  // namespace cellproj
