@@ -68,11 +68,13 @@ void ProjectionCounters::add(const ProjectionCounters& o) {
 
 PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf) {
   PointOptics o;
-  if (!scalar) return o;
   o.kappa.resize(static_cast<std::size_t>(n_points));
   o.color.resize(static_cast<std::size_t>(n_points));
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, n_points, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-    for (std::int64_t p = r.begin(); p < r.end(); ++p) o.kappa[p] = tf.extinction(scalar[p]), o.color[p] = tf.color(scalar[p]);
+    for (std::int64_t p = r.begin(); p < r.end(); ++p) {
+      const double s = scalar ? scalar[p] : 0.0;  // as ScreenPoints
+      o.kappa[p] = tf.extinction(s), o.color[p] = tf.color(s);
+    }
   });
   return o;
 }
@@ -154,8 +156,7 @@ void TetFragments::gouraud_corners(const Tet& tet, const ProjectedTet& pt, Goura
                 0.5 * (tf_.color(T.sf) + tf_.color(T.sb)));
   for (int k = 0; k < pt.hull_size; ++k) {
     const std::int64_t p = tet[pt.hull_vertex[k]];
-    hull[k] = optics_ && !optics_->kappa.empty() ? shade(optics_->kappa[p], 0.0, optics_->color[p])
-                                                : shade(tf_.extinction(pt.hull[k].sf), 0.0, tf_.color(pt.hull[k].sf));
+    hull[k] = shade(optics_->kappa[p], 0.0, optics_->color[p]);
   }
 }
 

@@ -36,7 +36,7 @@ struct PointOptics {
   std::vector<double> kappa;
   std::vector<glm::dvec3> color;
 };
-// Parallel over points (oneTBB, in the caller's task arena); empty without a scalar.
+// Parallel over points (oneTBB, in the caller's task arena); a null scalar reads as 0 everywhere.
 PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf);
 
 // A corner of a Gouraud-shaded triangle (pt-linear, pt-table; MWSC section 2): opacity (pt-linear)
