@@ -12,6 +12,7 @@
 #include <tbb/parallel_for.h>
 
 #include "grid/geometry.hpp"
+#include "grid/tetrahedralize.hpp"
 
 namespace cellproj {
 namespace {
@@ -37,6 +38,42 @@ int face_points(const MeshView& m, std::int64_t cell, int local, glm::dvec3 p[4]
   const FaceDef& face = cell_def(m.type(cell)).face[local];
   for (int i = 0; i < face.size; ++i) p[i] = m.point(m.cell(cell)[face.v[i]]);
   return face.size;
+}
+
+// Unmatched quads against unmatched triangles: a quad whose two canonical triangles are faces of
+// other cells (a neighbour split into tetrahedra, grid/face_split) is shared with both.
+void match_split_quads(const MeshView& m, const std::vector<FaceKey>& keys, const std::vector<std::int64_t>& owner,
+                       FaceTopology& t) {
+  constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
+  std::vector<std::pair<FaceKey, std::int64_t>> open_tris;
+  std::vector<std::int64_t> open_quads;
+  for (std::size_t f = 0; f < keys.size(); ++f) {
+    if (t.neighbor[f] != kBoundary) continue;
+    if (keys[f][3] == kNone) open_tris.emplace_back(keys[f], static_cast<std::int64_t>(f));
+    else open_quads.push_back(static_cast<std::int64_t>(f));
+  }
+  if (open_tris.empty() || open_quads.empty()) return;
+  std::sort(open_tris.begin(), open_tris.end());
+  auto find = [&](const std::int64_t tri[3]) -> std::int64_t {
+    std::int64_t id[3] = {tri[0], tri[1], tri[2]};
+    sort_triangle_ids(id);
+    const FaceKey k{id[0], id[1], id[2], kNone};
+    const auto it = std::lower_bound(open_tris.begin(), open_tris.end(), std::make_pair(k, std::int64_t(-1)));
+    return it != open_tris.end() && it->first == k ? it->second : -1;
+  };
+  for (const std::int64_t q : open_quads) {
+    const std::int64_t c = owner[q];
+    const FaceDef& face = cell_def(m.type(c)).face[q - t.face_offsets[c]];
+    const std::int64_t ids[4] = {m.cell(c)[face.v[0]], m.cell(c)[face.v[1]], m.cell(c)[face.v[2]], m.cell(c)[face.v[3]]};
+    std::int64_t tri[2][3];
+    split_quad(ids, tri);
+    const std::int64_t f0 = find(tri[0]), f1 = find(tri[1]);
+    if (f0 < 0 || f1 < 0 || t.neighbor[f0] != kBoundary || t.neighbor[f1] != kBoundary) continue;
+    t.neighbor[q] = kSplitFace;
+    t.neighbor[f0] = c, t.neighbor[f1] = c;
+    t.split_faces.push_back({q, f0, f1});
+    ++t.shared_faces;
+  }
 }
 
 }  // namespace
@@ -101,6 +138,7 @@ FaceTopology build_topology(const MeshView& m) {
     }
     i = j;
   }
+  match_split_quads(m, keys, owner, t);
   for (std::int64_t f = 0; f < n_faces; ++f)
     if (t.neighbor[f] == kBoundary) t.boundary.push_back(f);
   return t;

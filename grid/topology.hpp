@@ -1,6 +1,7 @@
 #pragma once
 // Face topology: which cells share a face (a quad matched by its four vertices, a triangle by its
 // three), the boundary faces, non-planar quadrilaterals, and whether the boundary is convex.
+#include <array>
 #include <cstdint>
 #include <vector>
 
@@ -10,6 +11,9 @@ namespace cellproj {
 
 constexpr std::int64_t kBoundary = -1;     // no cell across this face
 constexpr std::int64_t kNonManifold = -2;  // more than two cells share this face
+// A quadrilateral face across which a neighbour was split into tetrahedra: its two canonical
+// triangles (grid/tetrahedralize) are faces of two cells, listed in FaceTopology::split_faces.
+constexpr std::int64_t kSplitFace = -3;
 
 struct FaceTopology {
   // Cell c's faces are the "cell faces" [face_offsets[c], face_offsets[c+1]), in the order of its
@@ -17,6 +21,9 @@ struct FaceTopology {
   std::vector<std::int64_t> face_offsets;
   std::vector<std::int64_t> neighbor;
   std::vector<std::int64_t> boundary;   // the cell faces with no cell across them
+  // Quads matched to the two triangles of their canonical split: (quad's cell face, the triangles'
+  // cell faces). The triangles' neighbor is the quad's cell; the quad's is kSplitFace.
+  std::vector<std::array<std::int64_t, 3>> split_faces;
   std::int64_t shared_faces = 0;        // faces (counted once) between exactly two cells
   std::int64_t nonmanifold_faces = 0;   // faces (counted once) used by three or more cells
   std::int64_t first_nonmanifold_cell = -1;

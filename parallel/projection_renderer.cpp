@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/concurrent_queue.h>
@@ -10,7 +11,6 @@
 #include <tbb/task_arena.h>
 
 #include "grid/geometry.hpp"
-#include "grid/tetrahedralize.hpp"
 #include "grid/error.hpp"
 #include "projection/gl_compositor.hpp"
 #include "projection/screen.hpp"
@@ -20,20 +20,6 @@ namespace {
 
 double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
-
-// The canonical tetrahedra of every cell (MWSC section 4), sharing the mesh's points and field.
-Mesh split_cells(const MeshView& mesh) {
-  Mesh out;
-  out.source = mesh.source;
-  out.points.assign(mesh.points, mesh.points + 3 * mesh.n_points);
-  Tet tets[kMaxTetsPerCell];
-  for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
-    const int n = canonical_tetrahedra(mesh, c, tets);
-    for (int k = 0; k < n; ++k) out.add_cell(CellType::Tetra, tets[k].data());
-  }
-  if (mesh.scalar) out.add_field(mesh.field.empty() ? "scalar" : mesh.field, "point data").values.assign(mesh.scalar, mesh.scalar + mesh.n_points);
-  return out;
 }
 
 // Cells per pipeline token: the option, or enough tokens to keep every thread busy on small meshes
@@ -54,15 +40,15 @@ constexpr double kDirectPixels = 1e6;
 
 // Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind the
 // eye in perspective covers the whole image.
-std::vector<float> cell_footprints(const MeshView& tets, const ScreenPoints& screen, const PixelRays& rays) {
-  std::vector<float> area(static_cast<std::size_t>(tets.n_cells));
+std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
+  std::vector<float> area(static_cast<std::size_t>(cells.n_cells));
   const double w = rays.width(), h = rays.height();
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, tets.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
+  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
     for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-      const std::int64_t* id = tets.cell(c);
+      const std::int64_t* id = cells.cell(c);
       double x0 = w, x1 = 0, y0 = h, y1 = 0;
       bool behind = false;
-      for (int k = 0; k < 4; ++k) {
+      for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
         const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
         behind = behind || (rays.perspective() && !(v.z > 0.0));
         x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
@@ -80,69 +66,66 @@ struct Batch {
   // The cells left to the compositor: (position in the order, fragments emitted before it).
   std::vector<std::pair<std::size_t, std::size_t>> direct;
   ProjectionCounters counters;
+  CellScratch scratch;
 };
 
 }  // namespace
 
-ProjectionRenderer::ProjectionRenderer(const MeshView& mesh) {
-  const auto is_tet = [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); };
-  cells_split_ = mesh.n_cells - std::count_if(mesh.types, mesh.types + mesh.n_cells, is_tet);
-  if (cells_split_ > 0) {
-    split_ = split_cells(mesh);
-    tets_ = split_->view(split_->fields.empty() ? std::string() : split_->fields.front().name);
-    if (split_->fields.empty()) tets_.scalar = nullptr;
-  } else {
-    tets_ = mesh;
-  }
-  topology_ = build_topology(tets_);
-  hull_ = boundary_convexity(tets_, topology_);
-  sorter_ = std::make_unique<VisibilitySorter>(tets_, topology_, hull_);
-  points_ = recentre(tets_);
-  for (std::int64_t c = 0; c < tets_.n_cells; ++c) {
-    const std::int64_t* id = tets_.cell(c);
-    for (int a = 0; a < 4; ++a)
-      for (int b = a + 1; b < 4; ++b) max_edge_ = std::max(max_edge_, glm::distance(points_(id[a]), points_(id[b])));
+ProjectionRenderer::ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode) : mesh_(mesh), sorter_(mesh, mode) {
+  const RecentredPoints& pts = sorter_.points();
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
+    const std::int64_t* id = mesh.cell(c);
+    const int n = mesh.cell_size(c);
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b) max_diameter_ = std::max(max_diameter_, glm::distance(pts(id[a]), pts(id[b])));
   }
 }
 
 ProjectionRenderer::~ProjectionRenderer() = default;
 
-bool ProjectionRenderer::convex_boundary() const { return hull_.convex; }
+bool ProjectionRenderer::convex_boundary() const { return sorter_.base().hull.convex; }
 
 Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camera, int width, int height,
                                  const ProjectionOptions& options, ProjectionStats* stats) const {
   const auto start = std::chrono::steady_clock::now();
   ProjectionStats st;
-  st.tets = tets_.n_cells;
-  st.cells_split = cells_split_;
+  const RecentredPoints& points = sorter_.points();
 
   auto t = std::chrono::steady_clock::now();
-  const PixelRays rays(recentred(camera, points_.centre), width, height);  // as the A-buffer's
-  const ScreenPoints screen = project_points(points_, tets_.scalar, rays);
+  const PixelRays rays(recentred(camera, points.centre), width, height);  // as the A-buffer's
+  const ScreenPoints screen = project_points(points, mesh_.scalar, rays);
   st.phase_seconds.emplace_back("project points", since(t));
 
   t = std::chrono::steady_clock::now();
-  SortResult sorted = sorter_->sort(options.sort, SortView{camera, width, height});
+  ViewOrder view = sorter_.sort(options.sort, SortView{camera, width, height});
+  SortResult& sorted = view.sorted;
+  const MeshView& cells = view.mesh->cells;
+  st.tetrahedralize = sorter_.mode();
+  st.cells = cells.n_cells;
+  st.tets = std::count(cells.types, cells.types + cells.n_cells, static_cast<std::uint8_t>(CellType::Tetra));
+  st.problem_cells = view.problem_cells;
+  st.cells_split = view.mesh->split.cells_split;
+  st.cycle_splits = view.cycle_splits;
   st.phase_seconds.emplace_back("sort", since(t));
 
   std::optional<OpacityTable> table;
   if (options.method == ProjectionMethod::pt_table) {
     double kmax = 0.0;
     for (const auto& p : tf.extinction_points()) kmax = std::max(kmax, p.kappa);
-    table.emplace(options.table_size, kmax, max_edge_);
+    table.emplace(options.table_size, kmax, max_diameter_);
   }
   PointOptics optics;
   if (options.method == ProjectionMethod::pt_linear || options.method == ProjectionMethod::pt_table)
-    optics = point_optics(tets_.scalar, tets_.n_points, tf);
+    optics = point_optics(mesh_.scalar, mesh_.n_points, tf);
   if (options.backend != ProjectionBackend::software && options.method != ProjectionMethod::pt_linear &&
       options.method != ProjectionMethod::pt_table)
     throw InputError(std::string("the ") + name_of(options.backend) + " back end draws pt-linear and pt-table only, not " +
                      name_of(options.method) + " (per-pixel integrals need the software back end)");
-  const TetFragments project(screen, rays, points_, tf, options.method, table ? &*table : nullptr, &optics);
+  const CellFragments project(screen, rays, points, tf, options.method, table ? &*table : nullptr, &optics);
 
   t = std::chrono::steady_clock::now();
   if (options.backend != ProjectionBackend::software) {
-    Image image = render_gl(project, sorted.order, table ? &*table : nullptr, width, height, options, st);
+    Image image = render_gl(project, cells, sorted.order, table ? &*table : nullptr, width, height, options, st);
     st.phase_seconds.emplace_back("project and composite", since(t));
     st.sort = std::move(sorted.stats);
     st.seconds = since(start);
@@ -151,7 +134,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   }
   Image image(width, height);
   const std::vector<std::int64_t>& order = sorted.order;
-  const std::vector<float> footprint = cell_footprints(tets_, screen, rays);
+  const std::vector<float> footprint = cell_footprints(cells, screen, rays);
   const std::size_t batch = batch_size(options.batch_cells, order.size());
   const int tokens = 2 * tbb::this_task_arena::max_concurrency();
   std::vector<Batch> batches(static_cast<std::size_t>(tokens));
@@ -188,7 +171,9 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
                                                  b->direct.emplace_back(k, b->fragments.size());
                                                  continue;
                                                }
-                                               project.project(tet(order[k]), b->fragments, b->counters);
+                                               const std::int64_t c = order[k];
+                                               project.project(cells.cell(c), cells.type(c), b->fragments, b->scratch,
+                                                               b->counters);
                                              }
                                              return b;
                                            }) &
@@ -197,7 +182,7 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
             for (const auto& [k, at] : b->direct) {
               composite_over(image, b->fragments.data() + done, at - done);
               done = at;
-              project.project(tet(order[k]), image, b->counters);
+              project.project(cells.cell(order[k]), cells.type(order[k]), image, b->scratch, b->counters);
               ++b->counters.direct_cells;
             }
             composite_over(image, b->fragments.data() + done, b->fragments.size() - done);
@@ -211,8 +196,8 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   return image;
 }
 
-Image ProjectionRenderer::render_gl(const TetFragments& project, const std::vector<std::int64_t>& order,
-                                    const OpacityTable* table, int width, int height, const ProjectionOptions& options,
+Image ProjectionRenderer::render_gl(const CellFragments& project, const MeshView& cells,
+                                    const std::vector<std::int64_t>& order, const OpacityTable* table, int width, int height, const ProjectionOptions& options,
                                     ProjectionStats& st) const {
   const GLTarget target = options.backend == ProjectionBackend::opengl        ? GLTarget::float32
                           : options.backend == ProjectionBackend::opengl_8bit ? GLTarget::rgba8
@@ -224,6 +209,7 @@ Image ProjectionRenderer::render_gl(const TetFragments& project, const std::vect
   const std::size_t window = 64;  // batches made at once, then drawn in order
   std::vector<std::vector<GLCorner>> corners(window);
   std::vector<ProjectionCounters> counters(window);
+  std::vector<CellScratch> scratch(window);
   for (std::size_t first = 0; first < order.size(); first += window * batch) {
     const std::size_t n = std::min(window, (order.size() - first + batch - 1) / batch);
     tbb::parallel_for(std::size_t(0), n, [&](std::size_t b) {
@@ -231,7 +217,8 @@ Image ProjectionRenderer::render_gl(const TetFragments& project, const std::vect
       counters[b] = {};
       const std::size_t end = std::min(order.size(), first + (b + 1) * batch);
       for (std::size_t k = first + b * batch; k < end; ++k) {
-        project.triangles(tet(order[k]), order[k], corners[b], counters[b]);
+        const std::int64_t c = order[k];
+        project.triangles(cells.cell(c), cells.type(c), c, corners[b], scratch[b], counters[b]);
       }
     });
     for (std::size_t b = 0; b < n; ++b) gl.draw(corners[b]), st.counters.add(counters[b]);

@@ -4,7 +4,6 @@
 // order, so 1 and N threads give the same image bit for bit.
 #include <cstdint>
 #include <memory>
-#include <optional>
 #include <utility>
 #include <vector>
 
@@ -12,10 +11,11 @@
 #include "grid/topology.hpp"
 #include "optics/transfer_function.hpp"
 #include "projection/method.hpp"
-#include "projection/tet_fragments.hpp"
+#include "projection/cell_fragments.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
 #include "visibility/sort.hpp"
+#include "visibility/split_sorter.hpp"
 
 namespace cellproj {
 
@@ -30,8 +30,12 @@ struct ProjectionOptions {
 struct ProjectionStats {
   ProjectionCounters counters;
   SortStats sort;
-  std::int64_t tets = 0;               // tetrahedra projected per frame (after the canonical split)
-  std::int64_t cells_split = 0;        // mesh cells that are not tetrahedra, split once per mesh
+  Tetrahedralize tetrahedralize = Tetrahedralize::problem;  // the mode that ran (none for a mesh of tetrahedra)
+  std::int64_t cells = 0;              // cells sorted and projected this frame (after splitting)
+  std::int64_t tets = 0;               // of which tetrahedra
+  std::int64_t problem_cells = 0;      // mesh cells with a face folded in this view (problem and none modes)
+  std::int64_t cells_split = 0;        // mesh cells split into tetrahedra for this frame
+  std::int64_t cycle_splits = 0;       // of which split because they were in a visibility cycle
   std::vector<std::pair<std::string, double>> phase_seconds;  // project points, sort, project+composite
   std::string gl_renderer;             // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;
@@ -39,38 +43,28 @@ struct ProjectionStats {
 
 class ProjectionRenderer {
  public:
-  // Prepared once per mesh and field (the mesh's arrays must outlive the renderer): cells other
-  // than tetrahedra are split canonically (grid/tetrahedralize), then face topology, convexity of
-  // the boundary and the visibility sorter of the tetrahedra.
-  explicit ProjectionRenderer(const MeshView& mesh);
+  // Prepared once per mesh and field (the mesh's arrays must outlive the renderer). Cells other
+  // than tetrahedra are projected whole, except those `mode` splits into their canonical
+  // tetrahedra (grid/face_split): per view the ones with a folded face (problem), all of them once
+  // (all), or none.
+  explicit ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode = Tetrahedralize::problem);
   ~ProjectionRenderer();
 
   // Threads: those of the task arena it is called from.
   Image render(const TransferFunction& tf, const Camera& camera, int width, int height,
                const ProjectionOptions& options = {}, ProjectionStats* stats = nullptr) const;
 
-  std::int64_t tets() const { return tets_.n_cells; }
-  std::int64_t cells_split() const { return cells_split_; }
   bool convex_boundary() const;
 
  private:
   // The OpenGL back ends: triangles made by parallel workers, drawn in visibility order.
-  Image render_gl(const TetFragments& project, const std::vector<std::int64_t>& order, const OpacityTable* table,
-                  int width, int height, const ProjectionOptions& options, ProjectionStats& st) const;
+  Image render_gl(const CellFragments& project, const MeshView& cells, const std::vector<std::int64_t>& order,
+                  const OpacityTable* table, int width, int height, const ProjectionOptions& options,
+                  ProjectionStats& st) const;
 
-  Tet tet(std::int64_t c) const {
-    const std::int64_t* id = tets_.cell(c);
-    return {id[0], id[1], id[2], id[3]};
-  }
-
-  std::optional<Mesh> split_;   // the canonical tetrahedra, when the mesh had other cells
-  MeshView tets_;
-  std::int64_t cells_split_ = 0;
-  FaceTopology topology_;
-  HullReport hull_;
-  std::unique_ptr<VisibilitySorter> sorter_;
-  RecentredPoints points_;
-  double max_edge_ = 0.0;       // longest tetrahedron edge: no ray segment in a cell is longer
+  MeshView mesh_;
+  SplittingSorter sorter_;
+  double max_diameter_ = 0.0;  // the longest distance between two vertices of a cell: no ray segment in a cell is longer
 };
 
 }  // namespace cellproj

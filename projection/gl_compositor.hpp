@@ -9,7 +9,7 @@
 #include <vector>
 
 #include "projection/method.hpp"
-#include "projection/tet_fragments.hpp"
+#include "projection/cell_fragments.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {

@@ -6,22 +6,14 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 namespace cellproj {
-namespace {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 int exact_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
   return static_cast<int>(CGAL::orientation(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y)));
 }
-double area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
-}
 
-ThickVertex corner(const ScreenVertex& v) { return {v.x, v.y, v.z, v.z, v.s, v.s}; }
-
-// Depth and scalar at the image point with barycentric weights w over vertices `ids` of v, on the
-// plane (or line) through them: linear in orthographic projection, through 1/z in perspective.
-void interpolate(const ScreenVertex v[4], const int* ids, const double* w, int n, bool perspective, double& z, double& s) {
+void interpolate(const ScreenVertex* v, const int* ids, const double* w, int n, bool perspective, double& z, double& s) {
   double sz = 0, ss = 0;
   if (!perspective) {
     for (int k = 0; k < n; ++k) sz += w[k] * v[ids[k]].z, ss += w[k] * v[ids[k]].s;
@@ -34,6 +26,8 @@ void interpolate(const ScreenVertex v[4], const int* ids, const double* w, int n
   }
   z = 1.0 / sz, s = ss / sz;
 }
+
+namespace {
 
 void set_ends(ThickVertex& t, double za, double sa, double zb, double sb) {
   if (za <= zb) t.zf = za, t.sf = sa, t.zb = zb, t.sb = sb;

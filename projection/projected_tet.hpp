@@ -28,6 +28,17 @@ struct ScreenVertex {
   double x, y, z, s;
 };
 
+// A screen vertex as a corner of zero thickness.
+inline ThickVertex corner(const ScreenVertex& v) { return {v.x, v.y, v.z, v.z, v.s, v.s}; }
+inline double area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+  return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
+}
+// Which way (a, b, c) turns in the image: CGAL's exact 2D orientation (+1, -1, or 0 when collinear).
+int exact_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c);
+// Depth and scalar at the image point with weights w over vertices `ids` of v, on the plane (or
+// line) through them: linear in orthographic projection, through 1/z in perspective.
+void interpolate(const ScreenVertex* v, const int* ids, const double* w, int n, bool perspective, double& z, double& s);
+
 // Classifies by the signs of the four projected face areas (CGAL's exact 2D orientation, so two
 // tetrahedra sharing a face always agree and near-degenerate projections never flip). Vertices that
 // project onto an edge or onto each other give zero-area triangles, which cover no pixel.

@@ -58,13 +58,15 @@ printf '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0">\n
 sed 's/box.vtu/huge.vtu/' "$tmp/ok.json" > "$tmp/huge.json"
 expect 1 "huge.json: reading .*huge.vtu \(4000000000 cells\) and rendering 512x512 needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- render "$tmp/huge.json" --max-memory 4
 echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "camera": {"projection": "perspective", "eye": [0, 0, 0.1], "target": [0, 0, -1], "up": [0, 1, 0]}}' > "$tmp/inside.json"
-expect 0 "warning: [0-9]+ tetrahedra reach behind the eye and were not drawn by the opengl back end" -- render "$tmp/inside.json" --size 32x32 -o "$tmp/inside.png" --method pt-table --backend opengl
+expect 0 "warning: [0-9]+ cells reach behind the eye and were not drawn" -- render "$tmp/inside.json" --size 32x32 -o "$tmp/inside.png" --method pt-table --backend opengl
 "$exe" render "$tmp/inside.json" --size 32x32 -o "$tmp/inside.png" 2>"$tmp/err" >/dev/null
 ! grep -q "behind the eye" "$tmp/err" || { echo "FAIL: the software back end draws cells behind the eye, no warning"; failed=$((failed+1)); }
 expect 1 "unknown back end 'vulkan'" -- render "$tmp/ok.json" --backend vulkan
 expect 1 "unknown sort 'zsort'" -- render "$tmp/ok.json" --method exact --sort zsort
 expect 1 "--method exact is a ray integrator" -- render "$tmp/ok.json" --method exact --backend opengl
 expect 1 "--interpolation chooses the field inside cells for --method exact" -- render "$tmp/ok.json" --interpolation canonical-tets
+expect 1 "unknown --tetrahedralize 'some' \(known: problem, all, none\)" -- render "$tmp/ok.json" --tetrahedralize some
+expect 1 "--tetrahedralize chooses the cells the projection methods split" -- render "$tmp/ok.json" --method exact --tetrahedralize all
 expect 1 "opengl back end draws pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
 expect 0 "wrote .*gl.png" -- render "$tmp/ok.json" --size 40x30 --method pt-table --backend opengl-8bit-dither -o "$tmp/gl.png" --stats
 grep -q '"gl_renderer":' "$tmp/err" || { echo "FAIL: --stats lacks gl_renderer"; failed=$((failed+1)); }

@@ -170,8 +170,8 @@ TEST(Projection, OneAndManyThreadsGiveTheSameBits) {
 }
 
 TEST(Projection, HexahedraAreSplitCanonically) {
-  // A curvilinear hexahedral grid: projected through its canonical tetrahedra, it matches the
-  // exact renderer in canonical-tets mode.
+  // A curvilinear hexahedral grid: projected through its canonical tetrahedra (--tetrahedralize
+  // all), it matches the exact renderer in canonical-tets mode.
   Mesh m = make_curvilinear(4, 4, 4, [](const glm::dvec3& u) {
     return glm::dvec3(2 * u.x - 1 + 0.15 * std::sin(3 * u.y), 2 * u.y - 1, 2 * u.z - 1 + 0.2 * u.x * u.y);
   }, false);
@@ -179,7 +179,7 @@ TEST(Projection, HexahedraAreSplitCanonically) {
   const TransferFunction tf = hard_tf();
   const Camera c = view_from({2.5, -2, 1.8}, Projection::Perspective);
   ProjectionStats st;
-  const Image img = project(m, tf, c, 80, ProjectionMethod::pt_breakpoints, &st);
+  const Image img = ProjectionRenderer(m.view("s"), Tetrahedralize::all).render(tf, c, 80, 80, {}, &st);
   EXPECT_EQ(st.cells_split, 64);
   EXPECT_EQ(st.tets, 64 * 6);
   EXPECT_LT(compare(img, exact(m, tf, c, 80)).max_abs, 2e-5);

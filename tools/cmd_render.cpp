@@ -27,9 +27,10 @@ namespace {
 
 struct RenderArgs {
   std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto",
-              backend = "software";
+              backend = "software", tetrahedralize = "problem";
   int threads = 0, frames = 1, table_size = 256;
   bool interpolation_given = false;  // --interpolation on the command line (it applies to exact only)
+  bool tetrahedralize_given = false;  // --tetrahedralize (the projection methods only)
   double max_memory_gib = 0.0;  // 0: the machine's available memory
   bool stats = false;
 };
@@ -39,8 +40,14 @@ nlohmann::json projection_stats_json(const ProjectionStats& p) {
   for (const auto& [name, sec] : p.phase_seconds) phases[name] = sec;
   const auto& c = p.counters;
   nlohmann::json j = {{"sort", name_of(p.sort.method)},
+          {"tetrahedralize", name_of(p.tetrahedralize)},
+          {"cells_projected", p.cells},
           {"tets", p.tets},
+          {"problem_cells", p.problem_cells},
           {"cells_split", p.cells_split},
+          {"cycle_splits", p.cycle_splits},
+          {"polyhedra", c.polyhedra},
+          {"polygons", c.polygons},
           {"class1_tets", c.class1},
           {"class2_tets", c.class2},
           {"empty_tets", c.empty},
@@ -74,9 +81,13 @@ int run_render(const RenderArgs& a) {
   projection.sort = sort_method_from_name(a.sort);
   projection.table_size = a.table_size;
   projection.backend = projection_backend_from_name(a.backend);
+  const Tetrahedralize tetrahedralize = tetrahedralize_from_name(a.tetrahedralize);
   if (!exact && a.interpolation_given)
     throw InputError("--interpolation chooses the field inside cells for --method exact; the projection methods "
-                     "render the canonical tetrahedra");
+                     "interpolate linearly along each ray segment through a cell");
+  if (exact && a.tetrahedralize_given)
+    throw InputError("--tetrahedralize chooses the cells the projection methods split; --method exact traces every "
+                     "cell whole (--interpolation chooses its field)");
   if (exact && projection.backend != ProjectionBackend::software)
     throw InputError("--backend " + a.backend + " draws the projection methods; --method exact is a ray integrator on the CPU");
   const CellInterpolation interpolation = cell_interpolation_from_name(a.interpolation);
@@ -112,7 +123,7 @@ int run_render(const RenderArgs& a) {
     std::unique_ptr<ExactRenderer> exact_renderer;
     std::unique_ptr<ProjectionRenderer> projector;
     if (exact) exact_renderer = std::make_unique<ExactRenderer>(view, interpolation);
-    else projector = std::make_unique<ProjectionRenderer>(view);
+    else projector = std::make_unique<ProjectionRenderer>(view, tetrahedralize);
     prepare_seconds = seconds_since(t_prep);
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
@@ -125,12 +136,19 @@ int run_render(const RenderArgs& a) {
       if (f == 0) first = std::move(img);
     }
   });
-  // The software back end ray casts the cells reaching behind the eye; OpenGL cannot draw them.
-  if (!exact && projection.backend != ProjectionBackend::software && pst.counters.behind_eye > 0)
+  // The software back end ray casts the tetrahedra reaching behind the eye; OpenGL cannot draw them,
+  // nor can whole cells be projected there.
+  if (!exact && pst.counters.behind_eye > 0 &&
+      (projection.backend != ProjectionBackend::software || tetrahedralize == Tetrahedralize::none))
     std::fprintf(stderr,
-                 "cellproj: warning: %lld tetrahedra reach behind the eye and were not drawn by the %s back end (the "
-                 "camera is inside or too close to the mesh); use --backend software, which ray casts them\n",
-                 static_cast<long long>(pst.counters.behind_eye), name_of(projection.backend));
+                 "cellproj: warning: %lld cells reach behind the eye and were not drawn (the camera is inside or too "
+                 "close to the mesh); use --backend software with --tetrahedralize problem or all, which ray casts them\n",
+                 static_cast<long long>(pst.counters.behind_eye));
+  if (!exact && tetrahedralize == Tetrahedralize::none && pst.problem_cells > 0)
+    std::fprintf(stderr,
+                 "cellproj: warning: %lld cells have a face folded in this view and were projected whole "
+                 "(--tetrahedralize none): the order and the picture may be wrong there\n",
+                 static_cast<long long>(pst.problem_cells));
 
   std::string png = a.png;
   if (png.empty() && a.npy.empty()) png = std::filesystem::path(a.scene).stem().string() + ".png";
@@ -188,6 +206,9 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--backend", args->backend,
                   "Where the projection methods rasterize: software (default), or for pt-linear and pt-table "
                   "opengl (OSMesa, float target), opengl-8bit, opengl-8bit-dither");
+  CLI::Option* tetrahedralize = cmd->add_option("--tetrahedralize", args->tetrahedralize,
+                  "Which cells other than tetrahedra the projection methods split into tetrahedra: problem (default; "
+                  "per view, those with a folded non-planar face), all, or none (every cell whole)");
   cmd->add_option("--table-size", args->table_size, "pt-table: nodes per axis of the opacity table (default 256)")
       ->check(CLI::Range(2, 8192));
   CLI::Option* interpolation = cmd->add_option("--interpolation", args->interpolation,
@@ -202,8 +223,9 @@ Action add_render(CLI::App& app) {
                   "Refuse renders estimated to need more than this many GiB (default: the memory available now)")
       ->check(CLI::PositiveNumber);
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
-  return [args, interpolation] {
+  return [args, interpolation, tetrahedralize] {
     args->interpolation_given = interpolation->count() > 0;
+    args->tetrahedralize_given = tetrahedralize->count() > 0;
     return run_render(*args);
   };
 }

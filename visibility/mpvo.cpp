@@ -36,17 +36,21 @@ FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v
   FaceOrder out;
   out.ahead.assign(n, 0);
   out.in.assign(n, 0);
+  std::vector<std::pair<std::int64_t, std::int64_t>> split;
   for (std::size_t f = 0; f < p.face_a.size(); ++f) {
     const int side = viewpoint_side(p, v, f);
     if (side > 0) {  // the viewpoint is beyond face_a's face: face_a is behind, face_b comes after it
       out.ahead[p.face_a[f]] |= static_cast<std::uint8_t>(1u << p.local_a[f]);
       ++out.in[p.face_b[f]];
+    } else if (side < 0 && p.local_b[f] == kNoLocalFace) {
+      split.emplace_back(p.face_b[f], p.face_a[f]);  // counted in topological_order, as every list
     } else if (side < 0) {
       out.ahead[p.face_b[f]] |= static_cast<std::uint8_t>(1u << p.local_b[f]);
       ++out.in[p.face_a[f]];
     }
     out.relations += side != 0;
   }
+  if (!split.empty()) out.split.build(static_cast<std::int64_t>(n), split);
   return out;
 }
 
@@ -109,6 +113,7 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
   const std::int64_t n = p.mesh.n_cells;
   const auto& fo = p.topo->face_offsets;
   std::vector<const Relations*> lists;
+  if (!faces.split.start.empty()) lists.push_back(&faces.split);
   for (const Relations* r : extra)
     if (!r->start.empty()) lists.push_back(r);
   // successors(c, visit): every cell that must be composited after c.

@@ -13,6 +13,8 @@
 
 namespace cellproj {
 
+constexpr std::uint8_t kNoLocalFace = 255;
+
 struct VisibilitySorter::Prepared {
   MeshView mesh;
   const FaceTopology* topo = nullptr;
@@ -26,6 +28,7 @@ struct VisibilitySorter::Prepared {
   std::vector<double> offset;
   std::vector<std::array<std::int64_t, 3>> face_tri;  // a triangle face's ids turning with the normal; [0] = -1 for quads
   std::vector<std::uint8_t> local_a, local_b;  // per shared face: its index among face_a's / face_b's faces
+                                               // (local_b kNoLocalFace: face_b's side is a split quad)
   std::vector<std::int32_t> across;   // per cell face (topology order): the cell across a shared face, or -1
   bool all_tetrahedra = false;        // then cell c's faces start at 4 c
   // Boundary faces off the convex hull as triangles (quads split by the diagonal from their lowest
@@ -64,6 +67,7 @@ struct Relations {
 struct FaceOrder {
   std::vector<std::uint8_t> ahead;
   std::vector<std::int32_t> in;
+  Relations split;  // from a cell with a split quad to the tetrahedra across it (no bit on that side)
   std::int64_t relations = 0;
 };
 FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v);

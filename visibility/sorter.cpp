@@ -25,7 +25,7 @@ constexpr MethodName kNames[] = {{SortMethod::automatic, "auto"},
 
 // A face's normal (outward for the cell listing it in this order) and centroid. Triangles take
 // their normal from the vertices in increasing id, so both cells of a face get the same plane;
-// quads take Newell's normal, since they may be warped.
+// quads take Newell's normal through their lowest-id vertex, since they may be warped.
 void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, int n, glm::dvec3& normal,
                 glm::dvec3& point, std::array<std::int64_t, 3>& tri) {
   glm::dvec3 x[4];
@@ -33,7 +33,11 @@ void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, in
   for (int k = 0; k < n; ++k) x[k] = p.point(ids[k]), point += x[k] / double(n);
   tri = {-1, -1, -1};
   if (n != 3) {
+    // Newell's normal of a quad is the sum of its two triangles' (either split), and the lowest id
+    // lies on both triangles of the canonical split: where both triangles put the viewpoint on one
+    // side, this plane does too.
     normal = newell_normal(x, n);
+    point = x[std::min_element(ids, ids + n) - ids];
     return;
   }
   std::int64_t s[3] = {ids[0], ids[1], ids[2]};
@@ -90,20 +94,21 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
   for (std::int64_t c = 0; c < mesh.n_cells; ++c)
     for (std::int64_t cf = fo[c]; cf < fo[c + 1]; ++cf) {
       const std::int64_t m = topo.neighbor[cf];
-      if (m < 0 || m < c) continue;  // boundary, non-manifold, or made from the other side
+      if (m < 0) continue;  // boundary, non-manifold, or a quad whose triangles make the relations
       std::int64_t back = -1;  // m's face towards c
       for (std::int64_t g = fo[m]; g < fo[m + 1]; ++g)
         if (topo.neighbor[g] == c) back = g;
-      if (back < 0) continue;
+      if (back >= 0 && m < c) continue;  // made from the other side
+      // back < 0: c's triangle is half of m's quad (kSplitFace), made from the triangle's side only
       glm::dvec3 normal, point;
       std::array<std::int64_t, 3> tri;
       face_plane(p, ids, face_ids(c, cf), normal, point, tri);
       p.across[cf] = static_cast<std::int32_t>(m);
-      p.across[back] = static_cast<std::int32_t>(c);
+      if (back >= 0) p.across[back] = static_cast<std::int32_t>(c);
       p.face_a.push_back(static_cast<std::int32_t>(c));
       p.face_b.push_back(static_cast<std::int32_t>(m));
       p.local_a.push_back(static_cast<std::uint8_t>(cf - fo[c]));
-      p.local_b.push_back(static_cast<std::uint8_t>(back - fo[m]));
+      p.local_b.push_back(back >= 0 ? static_cast<std::uint8_t>(back - fo[m]) : kNoLocalFace);
       const double len = glm::length(normal);
       if (len > 0) normal /= len;
       p.normal.push_back(normal);

@@ -1,13 +1,15 @@
 #pragma once
-// One tetrahedron to the pixel fragments it contributes: projection (projected_tet), rasterization
-// of its triangles with the shared coverage rule (view/raster.hpp), and per pixel the light of the
-// ray segment through it by the chosen method. Fragments are composited in visibility order.
+// One cell to the pixel fragments it contributes: projection (projected_tet for tetrahedra,
+// projected_cell's image-plane subdivision for the others), rasterization of its triangles with the
+// shared coverage rule (view/raster.hpp), and per pixel the light of the ray segment through it by
+// the chosen method. Fragments are composited in visibility order.
 #include <cstdint>
 #include <vector>
 
 #include "grid/tetrahedralize.hpp"
 #include "optics/transfer_function.hpp"
 #include "projection/method.hpp"
+#include "projection/projected_cell.hpp"
 #include "projection/projected_tet.hpp"
 #include "projection/screen.hpp"
 #include "view/image.hpp"
@@ -21,10 +23,13 @@ struct Fragment {
 };
 
 struct ProjectionCounters {
-  std::int64_t tets = 0;              // projected
+  std::int64_t tets = 0;              // tetrahedra projected
+  std::int64_t polyhedra = 0;         // other cells projected whole (image-plane subdivision)
+  std::int64_t polygons = 0;          // their front ∩ back polygons
   std::int64_t class1 = 0, class2 = 0;
   std::int64_t empty = 0;             // zero projected area (slivers seen edge-on, zero-volume cells)
-  std::int64_t behind_eye = 0;        // perspective: a vertex at or behind the eye: ray cast per pixel (GL: not drawn)
+  std::int64_t behind_eye = 0;        // perspective: a vertex at or behind the eye: ray cast per pixel (GL, and whole
+                                      // cells other than tetrahedra: not drawn)
   std::int64_t fragments = 0;
   std::int64_t breakpoint_cells = 0;  // cells whose scalar range holds a breakpoint (cut by pt-breakpoints)
   std::int64_t direct_cells = 0;      // cells too large to buffer, drawn by the compositor itself
@@ -54,25 +59,36 @@ struct GLCorner {
 };
 constexpr int kDitherTile = 64;  // pixels per side of the dither noise tile
 
+// A cell's image as triangles with their thick-vertex values, and (pt-linear, pt-table) their
+// Gouraud corners: one per worker, so the hot loop allocates nothing once warm.
+struct CellScratch {
+  std::vector<ProjectedTriangle> tri;
+  std::vector<GouraudCorner> corner;  // 3 per triangle
+  double smin = 0, smax = 0;          // the cell's scalar range
+};
+
 // The frame's fixed inputs; project() is const and may run on many threads at once.
-class TetFragments {
+class CellFragments {
  public:
   // `table` is needed by pt_table only, `optics` by pt_linear and pt_table. All referenced objects
   // must outlive this.
   // `points` (the recentred points the screen positions came from) serves the cells that reach
   // behind the eye in perspective, which are ray cast instead of projected.
   // `rays` is the frame's PixelRays on the recentred camera, the one `screen` was made with.
-  TetFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points, const TransferFunction& tf,
+  CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points, const TransferFunction& tf,
                ProjectionMethod method, const OpacityTable* table, const PointOptics* optics);
-  // Appends tet's fragments to out.
-  void project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const;
-  // Composites tet's fragments onto image at once ("over"); for cells covering so many pixels that
-  // their fragments are not worth storing. In visibility order, from one thread.
-  void project(const Tet& tet, Image& image, ProjectionCounters& counters) const;
-  // Appends tet's triangles (3 corners each) for the OpenGL back end (pt-linear, pt-table), with
-  // texture coordinates on the opacity table's texel centres. `cell` picks the cell's shift of the
-  // dither noise, so a pixel's layers get independent noise.
-  void triangles(const Tet& tet, std::int64_t cell, std::vector<GLCorner>& out, ProjectionCounters& counters) const;
+  // Appends the fragments of the cell (point ids `ids`, of `type`) to out.
+  void project(const std::int64_t* ids, CellType type, std::vector<Fragment>& out, CellScratch& scratch,
+               ProjectionCounters& counters) const;
+  // Composites the cell's fragments onto image at once ("over"); for cells covering so many pixels
+  // that their fragments are not worth storing. In visibility order, from one thread.
+  void project(const std::int64_t* ids, CellType type, Image& image, CellScratch& scratch,
+               ProjectionCounters& counters) const;
+  // Appends the cell's triangles (3 corners each) for the OpenGL back end (pt-linear, pt-table),
+  // with texture coordinates on the opacity table's texel centres. `cell` picks the cell's shift of
+  // the dither noise, so a pixel's layers get independent noise.
+  void triangles(const std::int64_t* ids, CellType type, std::int64_t cell, std::vector<GLCorner>& out,
+                 CellScratch& scratch, ProjectionCounters& counters) const;
 
  private:
   // The tetrahedron in the image (counted): projected into pt, reaching behind the eye, or of zero
@@ -85,9 +101,14 @@ class TetFragments {
   void ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const;
   // project()'s body; emit(i, j, rgb, alpha) stores or composites a fragment, true if it did.
   template <class Emit>
-  void project_with(const Tet& tet, Emit& emit, ProjectionCounters& counters) const;
-  // The thick vertex's and the outline's corner values.
-  void gouraud_corners(const Tet& tet, const ProjectedTet& pt, GouraudCorner& thick, GouraudCorner hull[4]) const;
+  void project_with(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p, ProjectionCounters& counters) const;
+  // The tetrahedron's or cell's triangles into p (counted); the tetrahedra and cells not projected
+  // say why.
+  Seen triangles_of(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters) const;
+  Seen tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters) const;
+  Seen cell_triangles(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters) const;
+  // The corner of a Gouraud-shaded method from a thick vertex's segment (MWSC section 2).
+  GouraudCorner shade(const ThickVertex& t) const;
 
   const ScreenPoints& screen_;
   const PixelRays& rays_;
@@ -96,6 +117,7 @@ class TetFragments {
   ProjectionMethod method_;
   const OpacityTable* table_;
   const PointOptics* optics_;
+  int front_sign_;  // exact_sign of a face turned towards the eye
 };
 
 // Back-to-front "over" of one premultiplied RGBA value onto a pixel.

@@ -1,9 +1,10 @@
-#include "projection/tet_fragments.hpp"
+#include "projection/cell_fragments.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
+#include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -62,7 +63,7 @@ struct CompositeFragments {
 }  // namespace
 
 void ProjectionCounters::add(const ProjectionCounters& o) {
-  tets += o.tets, class1 += o.class1, class2 += o.class2, empty += o.empty, behind_eye += o.behind_eye;
+  tets += o.tets, polyhedra += o.polyhedra, polygons += o.polygons, class1 += o.class1, class2 += o.class2, empty += o.empty, behind_eye += o.behind_eye;
   fragments += o.fragments, breakpoint_cells += o.breakpoint_cells, direct_cells += o.direct_cells;
 }
 
@@ -79,13 +80,26 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
   return o;
 }
 
-TetFragments::TetFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
+CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                            const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
                            const PointOptics* optics)
-    : screen_(screen), rays_(rays), points_(points), tf_(tf), method_(method), table_(table), optics_(optics) {}
+    : screen_(screen), rays_(rays), points_(points), tf_(tf), method_(method), table_(table), optics_(optics) {
+  // Which way a triangle facing the eye turns in this image: (c, c + r, c + u) with r x u towards
+  // the eye, ahead of it on the view axis.
+  const Camera& cam = rays.camera();
+  const glm::dvec3 f = rays.forward();
+  const glm::dvec3 r = glm::normalize(glm::cross(f, cam.up)), u = glm::cross(r, f);  // r x u = -f
+  const double d = glm::length(cam.target - cam.eye);
+  const glm::dvec3 c = cam.eye + d * f;
+  ScreenVertex s[3];
+  const glm::dvec3 q[3] = {c, c + 0.1 * d * r, c + 0.1 * d * u};
+  for (int k = 0; k < 3; ++k) rays.project(q[k], s[k].x, s[k].y, s[k].z);
+  front_sign_ = exact_sign(s[0], s[1], s[2]);
+  if (front_sign_ == 0) front_sign_ = 1;
+}
 
 template <class Emit>
-void TetFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const {
+void CellFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const {
   glm::dvec3 p[4];
   double s[4];
   for (int k = 0; k < 4; ++k) p[k] = points_(tet[k]), s[k] = screen_.v[static_cast<std::size_t>(tet[k])].s;
@@ -125,8 +139,8 @@ void TetFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& coun
   counters.fragments += emitted;
 }
 
-TetFragments::Seen TetFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt,
-                                          ProjectionCounters& counters) const {
+CellFragments::Seen CellFragments::classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt,
+                                            ProjectionCounters& counters) const {
   ++counters.tets;
   for (int k = 0; k < 4; ++k) {
     v[k] = screen_.v[static_cast<std::size_t>(tet[k])];
@@ -144,29 +158,74 @@ TetFragments::Seen TetFragments::classify(const Tet& tet, ScreenVertex v[4], Pro
   return Seen::projected;
 }
 
-void TetFragments::gouraud_corners(const Tet& tet, const ProjectedTet& pt, GouraudCorner& thick,
-                                   GouraudCorner hull[4]) const {
+GouraudCorner CellFragments::shade(const ThickVertex& t) const {
   // Corner values from the transfer function, Gouraud-interpolated across each triangle (MWSC sec. 2).
-  const bool table = method_ == ProjectionMethod::pt_table;
-  auto shade = [&](double kavg, double l, const glm::dvec3& c) {
-    return GouraudCorner{table ? kavg : -std::expm1(-kavg * l), l, c};
-  };
-  const ThickVertex& T = pt.thick;
-  thick = shade(0.5 * (tf_.extinction(T.sf) + tf_.extinction(T.sb)), (T.zb - T.zf) * rays_.length_per_depth(T.x, T.y),
-                0.5 * (tf_.color(T.sf) + tf_.color(T.sb)));
-  for (int k = 0; k < pt.hull_size; ++k) {
-    const std::int64_t p = tet[pt.hull_vertex[k]];
-    hull[k] = shade(optics_->kappa[p], 0.0, optics_->color[p]);
-  }
+  const double kavg = 0.5 * (tf_.extinction(t.sf) + tf_.extinction(t.sb));
+  const double l = (t.zb - t.zf) * rays_.length_per_depth(t.x, t.y);
+  return {method_ == ProjectionMethod::pt_table ? kavg : -std::expm1(-kavg * l), l, 0.5 * (tf_.color(t.sf) + tf_.color(t.sb))};
 }
 
-void TetFragments::triangles(const Tet& tet, std::int64_t cell, std::vector<GLCorner>& out,
-                             ProjectionCounters& counters) const {
+CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters) const {
   ScreenVertex v[4];
   ProjectedTet pt;
-  if (classify(tet, v, pt, counters) != Seen::projected) return;
-  GouraudCorner st, sh[4];
-  gouraud_corners(tet, pt, st, sh);
+  const Seen seen = classify(tet, v, pt, counters);
+  if (seen != Seen::projected) return seen;
+  p.smin = std::min({v[0].s, v[1].s, v[2].s, v[3].s}), p.smax = std::max({v[0].s, v[1].s, v[2].s, v[3].s});
+  p.tri.resize(static_cast<std::size_t>(pt.hull_size));
+  for (int a = 0; a < pt.hull_size; ++a) p.tri[a] = {{pt.thick, pt.hull[a], pt.hull[(a + 1) % pt.hull_size]}};
+  if (method_ != ProjectionMethod::pt_linear && method_ != ProjectionMethod::pt_table) return seen;
+  // The outline's corners are zero thick: their values per point, computed once per frame.
+  const bool table = method_ == ProjectionMethod::pt_table;
+  const GouraudCorner thick = shade(pt.thick);
+  GouraudCorner hull[4];
+  for (int k = 0; k < pt.hull_size; ++k) {
+    const std::int64_t q = tet[pt.hull_vertex[k]];
+    hull[k] = {table ? optics_->kappa[q] : 0.0, 0.0, optics_->color[q]};
+  }
+  p.corner.resize(3 * p.tri.size());
+  for (int a = 0; a < pt.hull_size; ++a)
+    p.corner[3 * a] = thick, p.corner[3 * a + 1] = hull[a], p.corner[3 * a + 2] = hull[(a + 1) % pt.hull_size];
+  return seen;
+}
+
+CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellType type, CellScratch& p,
+                                                  ProjectionCounters& counters) const {
+  ++counters.polyhedra;
+  const int n = cell_def(type).vertices;
+  ScreenVertex v[8];
+  p.smin = std::numeric_limits<double>::infinity(), p.smax = -p.smin;
+  for (int k = 0; k < n; ++k) {
+    v[k] = screen_.v[static_cast<std::size_t>(ids[k])];
+    p.smin = std::min(p.smin, v[k].s), p.smax = std::max(p.smax, v[k].s);
+    if (rays_.perspective() && !(v[k].z > 0.0)) {
+      ++counters.behind_eye;  // split into tetrahedra for the view (--tetrahedralize problem), or not drawn
+      return Seen::behind_eye;
+    }
+  }
+  p.tri.clear();
+  const CellProjection cp = project_cell(v, ids, type, rays_.perspective(), front_sign_, p.tri);
+  counters.polygons += cp.polygons;
+  if (p.tri.empty()) {
+    ++counters.empty;
+    return Seen::empty;
+  }
+  if (method_ == ProjectionMethod::pt_linear || method_ == ProjectionMethod::pt_table) {
+    p.corner.resize(3 * p.tri.size());
+    for (std::size_t t = 0; t < p.tri.size(); ++t)
+      for (int k = 0; k < 3; ++k) p.corner[3 * t + k] = shade(p.tri[t].v[k]);
+  }
+  return Seen::projected;
+}
+
+CellFragments::Seen CellFragments::triangles_of(const std::int64_t* ids, CellType type, CellScratch& p,
+                                                ProjectionCounters& counters) const {
+  if (type == CellType::Tetra) return tet_triangles({ids[0], ids[1], ids[2], ids[3]}, p, counters);
+  return cell_triangles(ids, type, p, counters);
+}
+
+void CellFragments::triangles(const std::int64_t* ids, CellType type, std::int64_t cell, std::vector<GLCorner>& out,
+                              CellScratch& p, ProjectionCounters& counters) const {
+  if (triangles_of(ids, type, p, counters) != Seen::projected) return;
   const bool table = method_ == ProjectionMethod::pt_table;
   // Texel centres: node i of n sits at (i + 0.5) / n, so GL_LINEAR reads the table as OpacityTable does.
   const double n = table ? table_->size() : 1.0;
@@ -174,70 +233,64 @@ void TetFragments::triangles(const Tet& tet, std::int64_t cell, std::vector<GLCo
   std::uint64_t h = static_cast<std::uint64_t>(cell) * 0x9E3779B97F4A7C15ull;
   h ^= h >> 29;
   const float shift_u = static_cast<float>(h % kDitherTile), shift_v = static_cast<float>((h >> 16) % kDitherTile);
-  auto corner = [&](double x, double y, const GouraudCorner& g) {
-    const double u = table ? (table_->kappa_index(g.a) + 0.5) / n : 0.0;
-    const double w = table ? (table_->length_index(g.l) + 0.5) / n : 0.0;
-    out.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(u), static_cast<float>(w),
-                   static_cast<float>(g.c.r), static_cast<float>(g.c.g), static_cast<float>(g.c.b),
-                   table ? 1.0f : static_cast<float>(g.a), (static_cast<float>(x) + shift_u) / kDitherTile,
-                   (static_cast<float>(y) + shift_v) / kDitherTile});
-  };
-  for (int a = 0; a < pt.hull_size; ++a) {
-    const int b = (a + 1) % pt.hull_size;
-    corner(pt.thick.x, pt.thick.y, st);
-    corner(pt.hull[a].x, pt.hull[a].y, sh[a]);
-    corner(pt.hull[b].x, pt.hull[b].y, sh[b]);
-  }
+  for (std::size_t t = 0; t < p.tri.size(); ++t)
+    for (int k = 0; k < 3; ++k) {
+      const double x = p.tri[t].v[k].x, y = p.tri[t].v[k].y;
+      const GouraudCorner& g = p.corner[3 * t + k];
+      const double u = table ? (table_->kappa_index(g.a) + 0.5) / n : 0.0;
+      const double w = table ? (table_->length_index(g.l) + 0.5) / n : 0.0;
+      out.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(u), static_cast<float>(w),
+                     static_cast<float>(g.c.r), static_cast<float>(g.c.g), static_cast<float>(g.c.b),
+                     table ? 1.0f : static_cast<float>(g.a), (static_cast<float>(x) + shift_u) / kDitherTile,
+                     (static_cast<float>(y) + shift_v) / kDitherTile});
+    }
 }
 
-void TetFragments::project(const Tet& tet, std::vector<Fragment>& out, ProjectionCounters& counters) const {
+void CellFragments::project(const std::int64_t* ids, CellType type, std::vector<Fragment>& out, CellScratch& scratch,
+                            ProjectionCounters& counters) const {
   AppendFragments emit{out, rays_.width()};
-  project_with(tet, emit, counters);
+  project_with(ids, type, emit, scratch, counters);
 }
 
-void TetFragments::project(const Tet& tet, Image& image, ProjectionCounters& counters) const {
+void CellFragments::project(const std::int64_t* ids, CellType type, Image& image, CellScratch& scratch,
+                            ProjectionCounters& counters) const {
   CompositeFragments emit{image};
-  project_with(tet, emit, counters);
+  project_with(ids, type, emit, scratch, counters);
 }
 
 template <class Emit>
-void TetFragments::project_with(const Tet& tet, Emit& emit, ProjectionCounters& counters) const {
-  ScreenVertex v[4];
-  ProjectedTet pt;
-  const Seen seen = classify(tet, v, pt, counters);
-  if (seen == Seen::behind_eye) ray_cast(tet, emit, counters);
+void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
+                                 ProjectionCounters& counters) const {
+  const Seen seen = triangles_of(ids, type, p, counters);
+  if (seen == Seen::behind_eye && type == CellType::Tetra) ray_cast({ids[0], ids[1], ids[2], ids[3]}, emit, counters);
   if (seen != Seen::projected) return;
   std::int64_t emitted = 0;
   const int width = rays_.width(), height = rays_.height();
   const bool persp = rays_.perspective();
-  const ThickVertex& T = pt.thick;
+  const double smin = p.smin, smax = p.smax;
 
-  // The scalar range and whether a breakpoint of the transfer function lies inside it.
-  const double smin = std::min({v[0].s, v[1].s, v[2].s, v[3].s}), smax = std::max({v[0].s, v[1].s, v[2].s, v[3].s});
+  // Whether a breakpoint of the transfer function lies inside the cell's scalar range.
   const auto& bp = tf_.breakpoints();
   const auto it = std::upper_bound(bp.begin(), bp.end(), smin);
   const bool has_breakpoint = it != bp.end() && *it < smax;
   counters.breakpoint_cells += has_breakpoint;
 
-  // shade_pixel(i, j, a, b, wt, wa, wb) for the pixels of triangle (thick, hull[a], hull[b]).
+  // shade_pixel(i, j, t, w0, w1, w2) for the pixels of triangle t.
   auto each_triangle = [&](auto&& shade_pixel) {
-    for (int a = 0; a < pt.hull_size; ++a) {
-      const int b = (a + 1) % pt.hull_size;
-      const ThickVertex& A = pt.hull[a];
-      const ThickVertex& B = pt.hull[b];
-      rasterize_triangle_weights(glm::dvec2(T.x, T.y), glm::dvec2(A.x, A.y), glm::dvec2(B.x, B.y), width, height,
-                                 [&](int i, int j, double wt, double wa, double wb) { shade_pixel(i, j, a, b, wt, wa, wb); });
+    for (std::size_t t = 0; t < p.tri.size(); ++t) {
+      const ThickVertex* V = p.tri[t].v;
+      rasterize_triangle_weights(glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width,
+                                 height, [&](int i, int j, double w0, double w1, double w2) { shade_pixel(i, j, t, w0, w1, w2); });
     }
   };
 
   if (method_ == ProjectionMethod::pt_linear || method_ == ProjectionMethod::pt_table) {
     const bool table = method_ == ProjectionMethod::pt_table;
-    GouraudCorner st, sh[4];
-    gouraud_corners(tet, pt, st, sh);
-    each_triangle([&](int i, int j, int a, int b, double wt, double wa, double wb) {
-      const glm::dvec3 c = wt * st.c + wa * sh[a].c + wb * sh[b].c;
-      const double x = wt * st.a + wa * sh[a].a + wb * sh[b].a;
-      const double alpha = table ? (*table_)(x, wt * st.l + wa * sh[a].l + wb * sh[b].l) : x;
+    each_triangle([&](int i, int j, std::size_t t, double w0, double w1, double w2) {
+      const GouraudCorner* g = &p.corner[3 * t];
+      const glm::dvec3 c = w0 * g[0].c + w1 * g[1].c + w2 * g[2].c;
+      const double x = w0 * g[0].a + w1 * g[1].a + w2 * g[2].a;
+      const double alpha = table ? (*table_)(x, w0 * g[0].l + w1 * g[1].l + w2 * g[2].l) : x;
       emitted += emit(i, j, c * alpha, alpha);
     });
     counters.fragments += emitted;
@@ -253,18 +306,18 @@ void TetFragments::project_with(const Tet& tet, Emit& emit, ProjectionCounters& 
     piece.k0 = e.ka, piece.dk = e.kb - e.ka, piece.c0 = e.ca, piece.dc = e.cb - e.ca;
   }
   const bool cut = has_breakpoint && method_ == ProjectionMethod::pt_breakpoints;
-  each_triangle([&](int i, int j, int a, int b, double wt, double wa, double wb) {
-    const ThickVertex& A = pt.hull[a];
-    const ThickVertex& B = pt.hull[b];
+  each_triangle([&](int i, int j, std::size_t t, double w0, double w1, double w2) {
+    const ThickVertex* V = p.tri[t].v;
     double zf, zb, sf, sb;
     if (!persp) {
-      zf = wt * T.zf + wa * A.zf + wb * B.zf, zb = wt * T.zb + wa * A.zb + wb * B.zb;
-      sf = wt * T.sf + wa * A.sf + wb * B.sf, sb = wt * T.sb + wa * A.sb + wb * B.sb;
+      zf = w0 * V[0].zf + w1 * V[1].zf + w2 * V[2].zf, zb = w0 * V[0].zb + w1 * V[1].zb + w2 * V[2].zb;
+      sf = w0 * V[0].sf + w1 * V[1].sf + w2 * V[2].sf, sb = w0 * V[0].sb + w1 * V[1].sb + w2 * V[2].sb;
     } else {  // perspective-correct: weights over z, separately for the entry and exit surfaces
-      const double qa = wa / A.zf, qb = wb / B.zf, qf = wt / T.zf, qr = wt / T.zb;
-      const double inv_f = 1.0 / (qf + qa + qb), inv_b = 1.0 / (qr + qa + qb);
+      const double f0 = w0 / V[0].zf, f1 = w1 / V[1].zf, f2 = w2 / V[2].zf;
+      const double b0 = w0 / V[0].zb, b1 = w1 / V[1].zb, b2 = w2 / V[2].zb;
+      const double inv_f = 1.0 / (f0 + f1 + f2), inv_b = 1.0 / (b0 + b1 + b2);
       zf = inv_f, zb = inv_b;
-      sf = (qf * T.sf + qa * A.sf + qb * B.sf) * inv_f, sb = (qr * T.sb + qa * A.sb + qb * B.sb) * inv_b;
+      sf = (f0 * V[0].sf + f1 * V[1].sf + f2 * V[2].sf) * inv_f, sb = (b0 * V[0].sb + b1 * V[1].sb + b2 * V[2].sb) * inv_b;
     }
     sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
     const double l = std::max(0.0, zb - zf) * rays_.length_per_depth(i + 0.5, j + 0.5);

@@ -1,0 +1,46 @@
+#pragma once
+// View-dependent splitting of non-planar faces (MWSC section 4, figure 3). A quadrilateral face is
+// split by the diagonal from its lowest-index vertex (grid/tetrahedralize). Seen from a viewpoint,
+// the two triangles of a warped face may turn opposite ways: the face is folded in this view, and
+// on the side where the diagonal folds inward a ray can leave the cell through one triangle and
+// enter it again through the other, so that whole cell has no one place in a visibility order.
+// Those are the problem cells (also cells bent inward at one of their own edges, seen along it);
+// only they are split into their canonical tetrahedra, for this view.
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "grid/geometry.hpp"
+#include "grid/mesh.hpp"
+
+namespace cellproj {
+
+// Where a view is from, in the frame of a RecentredPoints: the eye (perspective) or the direction
+// the view looks along (orthographic).
+struct Viewpoint {
+  bool perspective = false;
+  glm::dvec3 eye{0.0};
+  glm::dvec3 dir{0.0, 0.0, -1.0};  // unit
+};
+
+// Per cell: 1 when the cell is not a tetrahedron and, seen from `view`, a ray may cross its surface
+// more than twice (an inward-folding edge on its contour), or (perspective) one of its vertices is
+// not in front of the eye (such a cell is ray cast through its tetrahedra). Exact orientation tests
+// (CGAL); parallel over cells (oneTBB).
+std::vector<char> problem_cells(const MeshView& mesh, const RecentredPoints& points, const Viewpoint& view,
+                                std::int64_t* count = nullptr);
+
+// A mesh whose chosen cells are replaced by their canonical tetrahedra, over the original mesh's
+// points and field (which must outlive it). Conforming, since both cells of a face split it alike.
+struct SplitMesh {
+  std::vector<std::int64_t> connectivity, offsets{0};
+  std::vector<std::uint8_t> types;
+  std::vector<std::int64_t> parent;  // per cell: the cell of the original mesh it is (part of)
+  std::int64_t cells_split = 0;      // original cells replaced
+  MeshView view;                     // over these arrays
+};
+// `which` (per cell, 1: split) may be empty: then every cell that is not a tetrahedron is split.
+SplitMesh split_cells(const MeshView& mesh, const std::vector<char>& which);
+
+}  // namespace cellproj

@@ -1,0 +1,125 @@
+#include "visibility/split_sorter.hpp"
+
+#include <algorithm>
+
+#include <glm/geometric.hpp>
+
+#include "grid/error.hpp"
+
+namespace cellproj {
+namespace {
+
+struct ModeName {
+  Tetrahedralize mode;
+  const char* name;
+};
+constexpr ModeName kModes[] = {{Tetrahedralize::problem, "problem"}, {Tetrahedralize::all, "all"}, {Tetrahedralize::none, "none"}};
+
+Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre) {
+  const Camera c = recentred(camera, centre);
+  Viewpoint v;
+  v.perspective = c.projection == Projection::Perspective;
+  v.eye = c.eye;
+  v.dir = glm::normalize(c.target - c.eye);
+  return v;
+}
+
+}  // namespace
+
+Tetrahedralize tetrahedralize_from_name(const std::string& name) {
+  for (const auto& m : kModes)
+    if (name == m.name) return m.mode;
+  throw InputError("unknown --tetrahedralize '" + name + "' (known: " + tetrahedralize_names() + ")");
+}
+
+const char* name_of(Tetrahedralize mode) {
+  for (const auto& m : kModes)
+    if (mode == m.mode) return m.name;
+  return "?";
+}
+
+std::string tetrahedralize_names() {
+  std::string s;
+  for (const auto& m : kModes) s += (s.empty() ? "" : ", ") + std::string(m.name);
+  return s;
+}
+
+std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which) {
+  auto s = std::make_shared<SortableMesh>();
+  if (which) {
+    s->split = split_cells(mesh, *which);
+    s->cells = s->split.view;
+  } else {
+    s->cells = mesh;
+  }
+  s->topology = build_topology(s->cells);
+  s->hull = boundary_convexity(s->cells, s->topology);
+  s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull);
+  return s;
+}
+
+SplittingSorter::SplittingSorter(const MeshView& mesh, Tetrahedralize mode)
+    : mesh_(mesh), mode_(mode), points_(recentre(mesh)) {
+  const bool mixed = std::any_of(mesh.types, mesh.types + mesh.n_cells,
+                                 [](std::uint8_t t) { return t != static_cast<std::uint8_t>(CellType::Tetra); });
+  if (!mixed) mode_ = Tetrahedralize::none;  // nothing to split
+}
+
+const SortableMesh& SplittingSorter::base() const { return *base_mesh(); }
+
+std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
+  std::lock_guard<std::mutex> lock(mutex_);
+  if (!base_) {  // made when first needed: in problem mode most views of a warped grid never need it
+    const std::vector<char> all;  // empty: every cell that is not a tetrahedron
+    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr);
+  }
+  return base_;
+}
+
+SplittingSorter::~SplittingSorter() = default;
+
+std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector<char>& problem) const {
+  {
+    std::lock_guard<std::mutex> lock(mutex_);
+    if (last_ && last_->problem == problem) return last_;
+  }
+  auto s = sortable_mesh(mesh_, &problem);
+  s->problem = problem;
+  std::lock_guard<std::mutex> lock(mutex_);
+  last_ = s;
+  return s;
+}
+
+ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view) const {
+  ViewOrder out;
+  if (mode_ == Tetrahedralize::all) {
+    out.mesh = base_mesh();
+    out.sorted = out.mesh->sorter->sort(method, view);
+    return out;
+  }
+  check_camera(view.camera, "sort view");
+  std::vector<char> problem = problem_cells(mesh_, points_, viewpoint(view.camera, points_.centre), &out.problem_cells);
+  if (mode_ == Tetrahedralize::none || out.problem_cells == 0) {
+    out.mesh = base_mesh();
+    out.sorted = out.mesh->sorter->sort(method, view);
+  } else {
+    out.mesh = split_for(problem);
+    out.sorted = out.mesh->sorter->sort(method, view);
+  }
+  if (mode_ == Tetrahedralize::none) return out;
+  // Whole cells left in a visibility cycle (warped faces can make one without folding): split them
+  // too and sort again, once.
+  std::int64_t more = 0;
+  for (const VisibilityCycle& cycle : out.sorted.stats.cycles)
+    for (const std::int64_t c : cycle.cells)
+      if (out.mesh->cells.type(c) != CellType::Tetra && !problem[out.mesh->parent(c)]) problem[out.mesh->parent(c)] = 1, ++more;
+  if (more == 0) return out;
+  const double first_seconds = out.sorted.stats.seconds;
+  out.cycle_splits = more;
+  out.mesh = split_for(problem);
+  out.sorted = out.mesh->sorter->sort(method, view);
+  out.sorted.stats.seconds += first_seconds;
+  return out;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,72 @@
+#pragma once
+// Sorting a mixed mesh whose quadrilateral faces may be warped (MWSC sections 3 and 4): per view
+// the problem cells (grid/face_split) are split into their canonical tetrahedra and the resulting
+// mesh is sorted, so that cycles made by folded faces do not arise. Visibility cycles that still
+// involve whole cells split those cells too, and the view is sorted once more.
+#include <cstdint>
+#include <memory>
+#include <mutex>
+#include <string>
+#include <vector>
+
+#include "grid/face_split.hpp"
+#include "grid/topology.hpp"
+#include "visibility/sort.hpp"
+
+namespace cellproj {
+
+enum class Tetrahedralize {
+  problem,  // per view, only the cells with a folded face (the default)
+  all,      // every cell that is not a tetrahedron, once per mesh
+  none,     // never: whole cells even where a face is folded (order and picture may be wrong there)
+};
+Tetrahedralize tetrahedralize_from_name(const std::string& name);  // throws InputError listing the names
+const char* name_of(Tetrahedralize mode);
+std::string tetrahedralize_names();
+
+// A mesh ready to sort: its cells (possibly some of them split), face topology, boundary convexity.
+struct SortableMesh {
+  SplitMesh split;  // the cells when some were split; empty otherwise
+  MeshView cells;
+  FaceTopology topology;
+  HullReport hull;
+  std::unique_ptr<VisibilitySorter> sorter;
+  std::vector<char> problem;  // per original cell, what was split (problem mode)
+  std::int64_t parent(std::int64_t c) const { return split.parent.empty() ? c : split.parent[c]; }
+};
+
+struct ViewOrder {
+  std::shared_ptr<const SortableMesh> mesh;  // whose cells `sorted.order` lists
+  SortResult sorted;
+  std::int64_t problem_cells = 0;  // cells with a folded face in this view (problem and none modes)
+  std::int64_t cycle_splits = 0;   // whole cells split further because they were in a visibility cycle
+};
+
+class SplittingSorter {
+ public:
+  // The mesh's arrays must outlive the sorter.
+  SplittingSorter(const MeshView& mesh, Tetrahedralize mode);
+  ~SplittingSorter();
+  // Thread-safe; the last view's split mesh is kept and reused while the problem cells stay the same.
+  ViewOrder sort(SortMethod method, const SortView& view) const;
+  Tetrahedralize mode() const { return mode_; }
+  const RecentredPoints& points() const { return points_; }
+  // The mesh sorted when no cell needs splitting (the input mesh, or all its cells split).
+  const SortableMesh& base() const;
+
+ private:
+  std::shared_ptr<const SortableMesh> split_for(const std::vector<char>& problem) const;
+  std::shared_ptr<const SortableMesh> base_mesh() const;
+
+  MeshView mesh_;
+  Tetrahedralize mode_;
+  RecentredPoints points_;
+  mutable std::mutex mutex_;
+  mutable std::shared_ptr<const SortableMesh> base_;
+  mutable std::shared_ptr<const SortableMesh> last_;  // the last view's split mesh
+};
+
+// Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given).
+std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which);
+
+}  // namespace cellproj
