@@ -14,6 +14,25 @@ struct FaceTriangle {
   double x0, x1, y0, y1;  // image bounding box
 };
 
+// The exact orientation of every triple of the cell's projected vertices (C(8,3) = 56 for a
+// hexahedron), computed once: every decision of the subdivision is a lookup, and all of them agree.
+class Orientations {
+ public:
+  Orientations(const ScreenVertex* v, int n) {
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b)
+        for (int c = b + 1; c < n; ++c) {
+          const std::int8_t o = static_cast<std::int8_t>(exact_sign(v[a], v[b], v[c]));
+          s_[a][b][c] = s_[b][c][a] = s_[c][a][b] = o;
+          s_[b][a][c] = s_[a][c][b] = s_[c][b][a] = static_cast<std::int8_t>(-o);
+        }
+  }
+  int operator()(int a, int b, int c) const { return s_[a][b][c]; }
+
+ private:
+  std::int8_t s_[8][8][8] = {};  // 0 where an index repeats
+};
+
 // A corner of a front ∩ back polygon, with the ends of the ray segment through it.
 struct Corner {
   double x, y, zf, sf, zb, sb;
@@ -41,23 +60,31 @@ void on_triangle(const ScreenVertex* v, const FaceTriangle& t, double x, double 
   interpolate(v, t.v, w, 3, persp, z, s);
 }
 
+// A number increasing with the angle of (dx, dy) over [0, 4): ordering without atan2.
+inline double pseudo_angle(double dx, double dy) {
+  const double a = std::abs(dx) + std::abs(dy);
+  if (!(a > 0)) return 0.0;
+  const double p = dy / a;  // in [-1, 1]
+  return dx >= 0 ? (p >= 0 ? p : 4 + p) : 2 - p;
+}
+
 bool has_vertex(const FaceTriangle& t, int k) { return t.v[0] == k || t.v[1] == k || t.v[2] == k; }
 
 // Point k inside or on triangle t (turning with sign `turn`), by exact orientations.
-bool inside(const ScreenVertex* v, const FaceTriangle& t, int turn, int k) {
+bool inside(const Orientations& orient, const FaceTriangle& t, int turn, int k) {
   for (int e = 0; e < 3; ++e)
-    if (exact_sign(v[t.v[e]], v[t.v[(e + 1) % 3]], v[k]) == -turn) return false;
+    if (orient(t.v[e], t.v[(e + 1) % 3], k) == -turn) return false;
   return true;
 }
 
 // The polygon front ∩ back: the vertices of each inside the other and the proper crossings of
 // their edges. Returns the number of corners (fewer than 3: empty).
-int overlay(const ScreenVertex* v, const FaceTriangle& F, int fturn, const FaceTriangle& B, int bturn, bool persp,
-            Corner out[12]) {
+int overlay(const ScreenVertex* v, const Orientations& orient, const FaceTriangle& F, int fturn, const FaceTriangle& B,
+            int bturn, bool persp, Corner out[12]) {
   int n = 0;
   for (int k = 0; k < 3; ++k) {  // front vertices inside the back triangle
     const int p = F.v[k];
-    if (!has_vertex(B, p) && !inside(v, B, bturn, p)) continue;
+    if (!has_vertex(B, p) && !inside(orient, B, bturn, p)) continue;
     Corner& c = out[n++];
     c.x = v[p].x, c.y = v[p].y, c.zf = v[p].z, c.sf = v[p].s;
     if (has_vertex(B, p)) c.zb = v[p].z, c.sb = v[p].s;
@@ -65,7 +92,7 @@ int overlay(const ScreenVertex* v, const FaceTriangle& F, int fturn, const FaceT
   }
   for (int k = 0; k < 3; ++k) {  // back vertices inside the front triangle (shared ones are in)
     const int p = B.v[k];
-    if (has_vertex(F, p) || !inside(v, F, fturn, p)) continue;
+    if (has_vertex(F, p) || !inside(orient, F, fturn, p)) continue;
     Corner& c = out[n++];
     c.x = v[p].x, c.y = v[p].y, c.zb = v[p].z, c.sb = v[p].s;
     on_triangle(v, F, c.x, c.y, persp, c.zf, c.sf);
@@ -74,9 +101,9 @@ int overlay(const ScreenVertex* v, const FaceTriangle& F, int fturn, const FaceT
     for (int j = 0; j < 3; ++j) {
       int p = F.v[i], q = F.v[(i + 1) % 3], r = B.v[j], t = B.v[(j + 1) % 3];
       if (p == r || p == t || q == r || q == t) continue;
-      const int o1 = exact_sign(v[r], v[t], v[p]), o2 = exact_sign(v[r], v[t], v[q]);
+      const int o1 = orient(r, t, p), o2 = orient(r, t, q);
       if (o1 == 0 || o2 == 0 || o1 == o2) continue;
-      const int o3 = exact_sign(v[p], v[q], v[r]), o4 = exact_sign(v[p], v[q], v[t]);
+      const int o3 = orient(p, q, r), o4 = orient(p, q, t);
       if (o3 == 0 || o4 == 0 || o3 == o4) continue;
       // The same two edges cross at the same bits in every polygon they bound: endpoints in a
       // canonical order before the arithmetic.
@@ -100,10 +127,11 @@ int overlay(const ScreenVertex* v, const FaceTriangle& F, int fturn, const FaceT
 CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, CellType type, bool perspective,
                             int front_sign, std::vector<ProjectedTriangle>& out) {
   const CellDef& def = cell_def(type);
+  const Orientations orient(v, def.vertices);
   FaceTriangle front[kMaxTriangles], back[kMaxTriangles];
   CellProjection r;
   auto add = [&](int a, int b, int c) {
-    const int turn = exact_sign(v[a], v[b], v[c]);
+    const int turn = orient(a, b, c);
     if (turn == 0) return;  // edge-on: covers no pixel
     FaceTriangle t{{a, b, c}, std::min({v[a].x, v[b].x, v[c].x}), std::max({v[a].x, v[b].x, v[c].x}),
                    std::min({v[a].y, v[b].y, v[c].y}), std::max({v[a].y, v[b].y, v[c].y})};
@@ -129,14 +157,14 @@ CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, Cell
       const FaceTriangle& F = front[i];
       const FaceTriangle& B = back[j];
       if (F.x1 < B.x0 || B.x1 < F.x0 || F.y1 < B.y0 || B.y1 < F.y0) continue;
-      const int n = overlay(v, F, front_sign, B, -front_sign, perspective, poly);
+      const int n = overlay(v, orient, F, front_sign, B, -front_sign, perspective, poly);
       if (n < 3) continue;
       // A convex polygon: its corners in angular order about their mean.
       double cx = 0, cy = 0;
       for (int k = 0; k < n; ++k) cx += poly[k].x / n, cy += poly[k].y / n;
       double angle[12];
       int order[12];
-      for (int k = 0; k < n; ++k) angle[k] = std::atan2(poly[k].y - cy, poly[k].x - cx), order[k] = k;
+      for (int k = 0; k < n; ++k) angle[k] = pseudo_angle(poly[k].x - cx, poly[k].y - cy), order[k] = k;
       std::sort(order, order + n, [&](int a, int b) { return angle[a] < angle[b]; });
       ++r.polygons;
       auto thick = [&](const Corner& c) {

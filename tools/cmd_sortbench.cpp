@@ -11,20 +11,21 @@
 
 #include "grid/error.hpp"
 #include "grid/read_mesh.hpp"
-#include "grid/topology.hpp"
 #include "raycast/order_oracle.hpp"
 #include "tools/commands.hpp"
 #include "tools/timing.hpp"
 #include "tools/scene.hpp"
 #include "tools/scene_setup.hpp"
 #include "visibility/sort.hpp"
+#include "visibility/split_sorter.hpp"
 
 namespace cellproj {
 namespace {
 
 struct SortbenchArgs {
   std::vector<std::string> meshes;
-  std::string sorts = "centroid,mpvo,mpvo-abuffer,pairwise", size = "512x512", projection = "ortho", csv;
+  std::string sorts = "centroid,mpvo,mpvo-abuffer,pairwise", size = "512x512", projection = "ortho", csv,
+              tetrahedralize = "problem";
   int views = 8;
   bool check = false, json = false;
   std::int64_t pairwise_limit = 50000;
@@ -47,23 +48,31 @@ std::vector<Camera> sphere_views(const Mesh& mesh, Projection projection, int n,
 }
 
 // One (mesh, sort, projection) row over the given views.
-nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const VisibilitySorter& sorter,
+nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const SplittingSorter& sorter,
                          const CellRayTracer* tracer, SortMethod method, const std::vector<Camera>& cameras, int w, int h) {
   const int views = static_cast<int>(cameras.size());
   const Projection projection = cameras.front().projection;
   std::vector<double> times;
   std::map<std::string, std::vector<double>> phases;
-  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0;
+  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0, problem = 0, split = 0;
+  std::vector<double> split_times;
   std::string ran;
   for (const Camera& camera : cameras) {
-    const SortResult r = sorter.sort(method, {camera, w, h});
+    const auto t0 = std::chrono::steady_clock::now();
+    const ViewOrder v = sorter.sort(method, {camera, w, h});
+    const SortResult& r = v.sorted;
+    split_times.push_back(std::max(0.0, seconds_since(t0) - r.stats.seconds));  // finding and splitting problem cells
+    problem += v.problem_cells, split += v.mesh->split.cells_split;
     ran = name_of(r.stats.method);
     times.push_back(r.stats.seconds);
     for (const auto& [phase, s] : r.stats.phase_seconds) phases[phase].push_back(s);
     face += r.stats.face_relations, gap += r.stats.gap_relations, pair += r.stats.pair_relations;
     cycles += static_cast<std::int64_t>(r.stats.cycles.size());
     if (tracer) {
-      const OrderCheck k = check_order(*tracer, mesh.n_cells(), r.order, camera, w, h);
+      // The oracle traces the cells the order lists: the mesh, or its cells split for this view.
+      std::unique_ptr<CellRayTracer> split_tracer;
+      if (v.mesh->cells.connectivity != mesh.view().connectivity) split_tracer = std::make_unique<CellRayTracer>(v.mesh->cells);
+      const OrderCheck k = check_order(split_tracer ? *split_tracer : *tracer, v.mesh->cells.n_cells, r.order, camera, w, h);
       if (k.missing_cells || k.repeated_cells)
         throw std::logic_error(std::string(name_of(method)) + " dropped or repeated cells");  // a bug, exit 3
       violations += k.violations, violating_pixels += k.violating_pixels;
@@ -89,6 +98,10 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const V
           {"gap_relations", gap / views},
           {"pair_relations", pair / views},
           {"cycles", cycles},
+          {"tetrahedralize", name_of(sorter.mode())},
+          {"problem_cells", problem / views},
+          {"cells_split", split / views},
+          {"split_seconds", median(split_times)},
           {"violations", tracer ? nlohmann::json(violations) : nlohmann::json(nullptr)},
           {"violating_pixels", tracer ? nlohmann::json(violating_pixels) : nlohmann::json(nullptr)}};
 }
@@ -107,18 +120,21 @@ int run_sortbench(const SortbenchArgs& a) {
   std::vector<SortMethod> methods;
   for (const auto& s : split(a.sorts)) methods.push_back(sort_method_from_name(s));
   if (methods.empty()) throw InputError("--sorts: no sort named; known: " + sort_method_names());
+  const Tetrahedralize tetrahedralize = tetrahedralize_from_name(a.tetrahedralize);
   std::vector<Projection> projections;
   if (a.projection == "ortho" || a.projection == "both") projections.push_back(Projection::Orthographic);
   if (a.projection == "persp" || a.projection == "both") projections.push_back(Projection::Perspective);
 
   static const char* kColumns[] = {"mesh", "sort", "projection", "views", "cells", "median_seconds", "min_seconds",
                                    "max_seconds", "cells_per_second", "face_relations", "gap_relations",
-                                   "pair_relations", "cycles", "violations", "violating_pixels"};
+                                   "pair_relations", "cycles", "tetrahedralize", "problem_cells", "cells_split",
+                                   "violations", "violating_pixels"};
+  const char* const last = kColumns[std::size(kColumns) - 1];
   std::ofstream csv;
   if (!a.csv.empty()) {
     csv.open(a.csv);
     if (!csv) throw InputError(where(a.csv, "cannot write the CSV file"));
-    for (const char* c : kColumns) csv << c << (c == kColumns[14] ? "\n" : ",");
+    for (const char* c : kColumns) csv << c << (c == last ? "\n" : ",");
   }
   for (const std::string& path : a.meshes) {
     const auto t0 = std::chrono::steady_clock::now();
@@ -126,10 +142,8 @@ int run_sortbench(const SortbenchArgs& a) {
     const Mesh& mesh = loaded.mesh;
     const double load_seconds = seconds_since(t0);
     const auto t1 = std::chrono::steady_clock::now();
-    const FaceTopology topo = build_topology(mesh.view());
-    const HullReport hull = boundary_convexity(mesh.view(), topo);
-    const bool convex = hull.convex;
-    const VisibilitySorter sorter(mesh.view(), topo, hull);
+    const SplittingSorter sorter(mesh.view(), tetrahedralize);
+    const bool convex = sorter.base().hull.convex;
     const double prepare_seconds = seconds_since(t1);
     std::unique_ptr<CellRayTracer> tracer;
     if (a.check) tracer = std::make_unique<CellRayTracer>(mesh.view());
@@ -156,13 +170,16 @@ int run_sortbench(const SortbenchArgs& a) {
                       row["cells_per_second"].get<double>(), row["face_relations"].get<long long>(),
                       row["gap_relations"].get<long long>(), row["pair_relations"].get<long long>(),
                       row["cycles"].get<long long>());
+          if (row["problem_cells"].get<long long>() > 0)
+            std::printf("  problem cells %lld (split %lld, %.5f s)", row["problem_cells"].get<long long>(),
+                        row["cells_split"].get<long long>(), row["split_seconds"].get<double>());
           if (a.check) std::printf("  violations %s (%s pixels)", cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str());
           std::printf("\n    phases:");
           for (const auto& [phase, s] : row["phase_seconds"].items()) std::printf(" %s %.5f s", phase.c_str(), s.get<double>());
           std::printf("\n");
         }
         if (csv.is_open())
-          for (const char* c : kColumns) csv << cell(row[c]) << (c == kColumns[14] ? "\n" : ",");
+          for (const char* c : kColumns) csv << cell(row[c]) << (c == last ? "\n" : ",");
         std::fflush(stdout);
       }
     }
@@ -182,6 +199,9 @@ Action add_sortbench(CLI::App& app) {
   cmd->add_option("--size", args->size, "Image size WxH (the A-buffer samples its pixel centres)")->capture_default_str();
   cmd->add_option("--projection", args->projection, "ortho, persp or both")
       ->check(CLI::IsMember({"ortho", "persp", "both"}))->capture_default_str();
+  cmd->add_option("--tetrahedralize", args->tetrahedralize,
+                  "Cells other than tetrahedra split into tetrahedra: problem (per view, those a ray may cross more "
+                  "than twice), all, or none")->capture_default_str();
   cmd->add_flag("--check", args->check, "Count order violations with the ray-traced oracle (slow)");
   cmd->add_option("--csv", args->csv, "Also write the rows to this CSV file");
   cmd->add_flag("--json", args->json, "One JSON object per line per (mesh, sort, projection) instead of the table");
