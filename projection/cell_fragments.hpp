@@ -26,6 +26,7 @@ struct ProjectionCounters {
   std::int64_t tets = 0;              // tetrahedra projected
   std::int64_t polyhedra = 0;         // other cells projected whole (image-plane subdivision)
   std::int64_t polygons = 0;          // their front ∩ back polygons
+  std::int64_t subdivisions_looked_up = 0;  // cells whose projection topology was known (the fast path)
   std::int64_t class1 = 0, class2 = 0;
   std::int64_t empty = 0;             // zero projected area (slivers seen edge-on, zero-volume cells)
   std::int64_t behind_eye = 0;        // perspective: a vertex at or behind the eye: ray cast per pixel (GL, and whole
@@ -65,6 +66,7 @@ struct CellScratch {
   std::vector<ProjectedTriangle> tri;
   std::vector<GouraudCorner> corner;  // 3 per triangle
   double smin = 0, smax = 0;          // the cell's scalar range
+  SubdivisionCache subdivisions;      // projection topologies met by this worker
 };
 
 // The frame's fixed inputs; project() is const and may run on many threads at once.

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 
 namespace cellproj {
 namespace {
@@ -49,15 +50,15 @@ void on_edge(const ScreenVertex& a, const ScreenVertex& b, double t, bool persp,
 }
 
 // Depth and scalar at image point (x, y) on the plane of triangle t (barycentric weights).
-void on_triangle(const ScreenVertex* v, const FaceTriangle& t, double x, double y, bool persp, double& z, double& s) {
-  const ScreenVertex& a = v[t.v[0]];
-  const ScreenVertex& b = v[t.v[1]];
-  const ScreenVertex& c = v[t.v[2]];
+void on_triangle(const ScreenVertex* v, const int t[3], double x, double y, bool persp, double& z, double& s) {
+  const ScreenVertex& a = v[t[0]];
+  const ScreenVertex& b = v[t[1]];
+  const ScreenVertex& c = v[t[2]];
   const double area = area2(a, b, c);
   const ScreenVertex p{x, y, 0, 0};
   double w[3] = {area2(p, b, c) / area, area2(a, p, c) / area, 0};
   w[2] = 1.0 - w[0] - w[1];
-  interpolate(v, t.v, w, 3, persp, z, s);
+  interpolate(v, t, w, 3, persp, z, s);
 }
 
 // A number increasing with the angle of (dx, dy) over [0, 4): ordering without atan2.
@@ -77,25 +78,23 @@ bool inside(const Orientations& orient, const FaceTriangle& t, int turn, int k) 
   return true;
 }
 
-// The polygon front ∩ back: the vertices of each inside the other and the proper crossings of
-// their edges. Returns the number of corners (fewer than 3: empty).
-int overlay(const ScreenVertex* v, const Orientations& orient, const FaceTriangle& F, int fturn, const FaceTriangle& B,
-            int bturn, bool persp, Corner out[12]) {
+// The corners of front ∩ back as recipes: the vertices of each inside the other and the proper
+// crossings of their edges, by exact orientations only. Returns how many (fewer than 3: empty).
+int overlay(const Orientations& orient, const FaceTriangle& F, int fturn, const FaceTriangle& B, int bturn,
+            CornerRecipe out[12]) {
   int n = 0;
-  for (int k = 0; k < 3; ++k) {  // front vertices inside the back triangle
+  auto set = [](CornerRecipe& c, std::uint8_t kind, int a, int b, int x, int y, int z) {
+    c.kind = kind, c.v[0] = static_cast<std::uint8_t>(a), c.v[1] = static_cast<std::uint8_t>(b);
+    c.v[2] = static_cast<std::uint8_t>(x), c.v[3] = static_cast<std::uint8_t>(y), c.v[4] = static_cast<std::uint8_t>(z);
+  };
+  for (int k = 0; k < 3; ++k) {  // front vertices inside the back triangle (or shared with it)
     const int p = F.v[k];
-    if (!has_vertex(B, p) && !inside(orient, B, bturn, p)) continue;
-    Corner& c = out[n++];
-    c.x = v[p].x, c.y = v[p].y, c.zf = v[p].z, c.sf = v[p].s;
-    if (has_vertex(B, p)) c.zb = v[p].z, c.sb = v[p].s;
-    else on_triangle(v, B, c.x, c.y, persp, c.zb, c.sb);
+    if (has_vertex(B, p)) set(out[n++], CornerRecipe::shared, p, 0, 0, 0, 0);
+    else if (inside(orient, B, bturn, p)) set(out[n++], CornerRecipe::front_vertex, p, 0, B.v[0], B.v[1], B.v[2]);
   }
-  for (int k = 0; k < 3; ++k) {  // back vertices inside the front triangle (shared ones are in)
+  for (int k = 0; k < 3; ++k) {  // back vertices inside the front triangle
     const int p = B.v[k];
-    if (has_vertex(F, p) || !inside(orient, F, fturn, p)) continue;
-    Corner& c = out[n++];
-    c.x = v[p].x, c.y = v[p].y, c.zb = v[p].z, c.sb = v[p].s;
-    on_triangle(v, F, c.x, c.y, persp, c.zf, c.sf);
+    if (!has_vertex(F, p) && inside(orient, F, fturn, p)) set(out[n++], CornerRecipe::back_vertex, p, 0, F.v[0], F.v[1], F.v[2]);
   }
   for (int i = 0; i < 3; ++i)  // proper crossings of a front edge with a back edge
     for (int j = 0; j < 3; ++j) {
@@ -105,38 +104,99 @@ int overlay(const ScreenVertex* v, const Orientations& orient, const FaceTriangl
       if (o1 == 0 || o2 == 0 || o1 == o2) continue;
       const int o3 = orient(p, q, r), o4 = orient(p, q, t);
       if (o3 == 0 || o4 == 0 || o3 == o4) continue;
-      // The same two edges cross at the same bits in every polygon they bound: endpoints in a
-      // canonical order before the arithmetic.
-      const bool fswap = p > q, bswap = r > t;
-      if (fswap) std::swap(p, q);
-      if (bswap) std::swap(r, t);
-      const double dp = area2(v[r], v[t], v[p]), dq = area2(v[r], v[t], v[q]);
-      const double u = dp / (dp - dq);  // along p -> q
-      const double dr = area2(v[p], v[q], v[r]), dt = area2(v[p], v[q], v[t]);
-      const double w = dr / (dr - dt);  // along r -> t
-      Corner& c = out[n++];
-      c.x = v[p].x + u * (v[q].x - v[p].x), c.y = v[p].y + u * (v[q].y - v[p].y);
-      on_edge(v[p], v[q], u, persp, c.zf, c.sf);
-      on_edge(v[r], v[t], w, persp, c.zb, c.sb);
+      // Endpoints in a canonical order, so the same two edges cross at the same bits in every
+      // polygon (and every cell) they bound.
+      set(out[n++], CornerRecipe::crossing, std::min(p, q), std::max(p, q), std::min(r, t), std::max(r, t), 0);
     }
   return n;
 }
 
-}  // namespace
+Corner make_corner(const ScreenVertex* v, const CornerRecipe& r, bool persp) {
+  Corner c;
+  const int a = r.v[0];
+  const int tri[3] = {r.v[2], r.v[3], r.v[4]};
+  switch (r.kind) {
+    case CornerRecipe::shared:
+      c = {v[a].x, v[a].y, v[a].z, v[a].s, v[a].z, v[a].s};
+      break;
+    case CornerRecipe::front_vertex:
+      c.x = v[a].x, c.y = v[a].y, c.zf = v[a].z, c.sf = v[a].s;
+      on_triangle(v, tri, c.x, c.y, persp, c.zb, c.sb);
+      break;
+    case CornerRecipe::back_vertex:
+      c.x = v[a].x, c.y = v[a].y, c.zb = v[a].z, c.sb = v[a].s;
+      on_triangle(v, tri, c.x, c.y, persp, c.zf, c.sf);
+      break;
+    default: {  // crossing of front edge (p, q) and back edge (r, t)
+      const int p = a, q = r.v[1], s = r.v[2], t = r.v[3];
+      const double dp = area2(v[s], v[t], v[p]), dq = area2(v[s], v[t], v[q]);
+      const double u = dp / (dp - dq);  // along p -> q
+      const double dr = area2(v[p], v[q], v[s]), dt = area2(v[p], v[q], v[t]);
+      const double w = dr / (dr - dt);  // along s -> t
+      c.x = v[p].x + u * (v[q].x - v[p].x), c.y = v[p].y + u * (v[q].y - v[p].y);
+      on_edge(v[p], v[q], u, persp, c.zf, c.sf);
+      on_edge(v[s], v[t], w, persp, c.zb, c.sb);
+    }
+  }
+  return c;
+}
 
-CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, CellType type, bool perspective,
-                            int front_sign, std::vector<ProjectedTriangle>& out) {
-  const CellDef& def = cell_def(type);
-  const Orientations orient(v, def.vertices);
+// Whether corners c[0..n) turn strictly counter-clockwise with a margin far above rounding: then
+// their order is the polygon's combinatorial order, the same for every cell of this topology.
+// Slivers (nearly collinear or coincident corners) fail, and always take the general path.
+bool convex_with_margin(const Corner* c, int n) {
+  double scale = 0;
+  for (int k = 1; k < n; ++k) scale = std::max(scale, std::abs(c[k].x - c[0].x) + std::abs(c[k].y - c[0].y));
+  const double margin = 1e-9 * scale * scale;
+  for (int k = 0; k < n; ++k) {
+    const Corner& a = c[k];
+    const Corner& b = c[(k + 1) % n];
+    const Corner& d = c[(k + 2) % n];
+    if (!((b.x - a.x) * (d.y - b.y) - (b.y - a.y) * (d.x - b.x) > margin)) return false;
+  }
+  return true;
+}
+
+// Puts a convex polygon's corners in counter-clockwise angular order, starting from the corner
+// whose recipe compares lowest, so that every cell with this subdivision fans it alike. Returns
+// whether that order can be trusted for other cells (convex_with_margin).
+bool order_corners(const ScreenVertex* v, bool persp, CornerRecipe* r, int n) {
+  Corner c[12];
+  double cx = 0, cy = 0;
+  for (int k = 0; k < n; ++k) c[k] = make_corner(v, r[k], persp), cx += c[k].x / n, cy += c[k].y / n;
+  double angle[12];
+  int order[12];
+  for (int k = 0; k < n; ++k) angle[k] = pseudo_angle(c[k].x - cx, c[k].y - cy), order[k] = k;
+  std::sort(order, order + n, [&](int a, int b) { return angle[a] < angle[b]; });
+  int first = 0;
+  for (int k = 1; k < n; ++k)
+    if (std::memcmp(&r[order[k]], &r[order[first]], sizeof(CornerRecipe)) < 0) first = k;
+  CornerRecipe sorted[12];
+  Corner at[12];
+  for (int k = 0; k < n; ++k) sorted[k] = r[order[(first + k) % n]], at[k] = c[order[(first + k) % n]];
+  std::copy(sorted, sorted + n, r);
+  return convex_with_margin(at, n);
+}
+
+// The cell's triangles, their facing, and the key of its subdivision: the cell type, which
+// diagonal each quad takes, and the exact orientation of every triple of projected vertices.
+struct CellFaces {
   FaceTriangle front[kMaxTriangles], back[kMaxTriangles];
-  CellProjection r;
+  int n_front = 0, n_back = 0;
+  SubdivisionKey key{};
+};
+
+CellFaces cell_faces(const ScreenVertex* v, const std::int64_t* ids, const CellDef& def, CellType type,
+                     const Orientations& orient, int front_sign) {
+  CellFaces cf;
+  std::uint64_t diagonals = 0;
   auto add = [&](int a, int b, int c) {
     const int turn = orient(a, b, c);
     if (turn == 0) return;  // edge-on: covers no pixel
     FaceTriangle t{{a, b, c}, std::min({v[a].x, v[b].x, v[c].x}), std::max({v[a].x, v[b].x, v[c].x}),
                    std::min({v[a].y, v[b].y, v[c].y}), std::max({v[a].y, v[b].y, v[c].y})};
-    if (turn == front_sign) front[r.front++] = t;
-    else back[r.back++] = t;
+    if (turn == front_sign) cf.front[cf.n_front++] = t;
+    else cf.back[cf.n_back++] = t;
   };
   for (int f = 0; f < def.faces; ++f) {
     const FaceDef& face = def.face[f];
@@ -147,34 +207,102 @@ CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, Cell
     int k = 0;  // the diagonal from the lowest id (grid/tetrahedralize's split_quad)
     for (int m = 1; m < 4; ++m)
       if (ids[face.v[m]] < ids[face.v[k]]) k = m;
+    diagonals |= static_cast<std::uint64_t>(k) << (2 * f);
     const int a = face.v[k], b = face.v[(k + 1) % 4], c = face.v[(k + 2) % 4], d = face.v[(k + 3) % 4];
     add(a, b, c);
     add(a, c, d);
   }
-  Corner poly[12];
-  for (int i = 0; i < r.front; ++i)
-    for (int j = 0; j < r.back; ++j) {
-      const FaceTriangle& F = front[i];
-      const FaceTriangle& B = back[j];
+  cf.key[0] = static_cast<std::uint64_t>(type) | static_cast<std::uint64_t>(front_sign > 0) << 8 | diagonals << 16;
+  int bit = 0;
+  for (int a = 0; a < def.vertices; ++a)
+    for (int b = a + 1; b < def.vertices; ++b)
+      for (int c = b + 1; c < def.vertices; ++c, bit += 2)
+        cf.key[1 + bit / 64] |= static_cast<std::uint64_t>(orient(a, b, c) & 3) << (bit % 64);
+  return cf;
+}
+
+// The general path: every (front, back) pair through the exact overlay.
+// Returns whether every polygon's order is robust (convex_with_margin): only then is it learnt.
+bool build_subdivision(const ScreenVertex* v, const CellFaces& cf, int front_sign, bool persp, SubdivisionRecipe& out,
+                       const Orientations& orient) {
+  out.polygons.clear();
+  bool cacheable = true;
+  PolygonRecipe poly;
+  for (int i = 0; i < cf.n_front; ++i)
+    for (int j = 0; j < cf.n_back; ++j) {
+      const FaceTriangle& F = cf.front[i];
+      const FaceTriangle& B = cf.back[j];
       if (F.x1 < B.x0 || B.x1 < F.x0 || F.y1 < B.y0 || B.y1 < F.y0) continue;
-      const int n = overlay(v, orient, F, front_sign, B, -front_sign, perspective, poly);
+      const int n = overlay(orient, F, front_sign, B, -front_sign, poly.corner);
       if (n < 3) continue;
-      // A convex polygon: its corners in angular order about their mean.
-      double cx = 0, cy = 0;
-      for (int k = 0; k < n; ++k) cx += poly[k].x / n, cy += poly[k].y / n;
-      double angle[12];
-      int order[12];
-      for (int k = 0; k < n; ++k) angle[k] = pseudo_angle(poly[k].x - cx, poly[k].y - cy), order[k] = k;
-      std::sort(order, order + n, [&](int a, int b) { return angle[a] < angle[b]; });
-      ++r.polygons;
-      auto thick = [&](const Corner& c) {
-        ThickVertex t{c.x, c.y, c.zf, c.zb, c.sf, c.sb};
-        if (t.zb < t.zf) t.zb = t.zf;  // rounding at a silhouette corner
-        return t;
-      };
-      for (int k = 1; k + 1 < n; ++k)
-        out.push_back({{thick(poly[order[0]]), thick(poly[order[k]]), thick(poly[order[k + 1]])}});
+      poly.n = static_cast<std::uint8_t>(n);
+      cacheable = order_corners(v, persp, poly.corner, n) && cacheable;
+      out.polygons.push_back(poly);
     }
+  return cacheable;
+}
+
+// The polygon's triangles, fanned from its first corner.
+void fan(const Corner* c, int n, std::vector<ProjectedTriangle>& out) {
+  auto thick = [](const Corner& k) {
+    ThickVertex t{k.x, k.y, k.zf, k.zb, k.sf, k.sb};
+    if (t.zb < t.zf) t.zb = t.zf;  // rounding at a silhouette corner
+    return t;
+  };
+  for (int k = 1; k + 1 < n; ++k) out.push_back({{thick(c[0]), thick(c[k]), thick(c[k + 1])}});
+}
+
+}  // namespace
+
+std::size_t SubdivisionKeyHash::operator()(const SubdivisionKey& k) const {
+  std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
+  for (int i = 1; i < 3; ++i) h = (h ^ (h >> 31) ^ k[i]) * 0x9E3779B97F4A7C15ull;
+  return static_cast<std::size_t>(h ^ (h >> 29));
+}
+
+CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, CellType type, bool perspective,
+                            int front_sign, std::vector<ProjectedTriangle>& out, SubdivisionCache* cache) {
+  const CellDef& def = cell_def(type);
+  const Orientations orient(v, def.vertices);
+  const CellFaces cf = cell_faces(v, ids, def, type, orient, front_sign);
+  CellProjection r;
+  r.front = cf.n_front, r.back = cf.n_back;
+  // The fast path: a known topology, taken when its corners here are as robustly convex as where
+  // it was learnt (else this cell goes the general way, so the bits never depend on the cache).
+  const std::size_t start = out.size();
+  if (cache) {
+    if (const auto it = cache->recipes.find(cf.key); it != cache->recipes.end()) {
+      bool ok = true;
+      for (const PolygonRecipe& p : it->second.polygons) {
+        Corner c[12];
+        for (int k = 0; k < p.n; ++k) c[k] = make_corner(v, p.corner[k], perspective);
+        if (!(ok = convex_with_margin(c, p.n))) break;
+        fan(c, p.n, out);
+        ++r.polygons;
+      }
+      if (ok) {
+        ++cache->hits;
+        return r;
+      }
+      out.resize(start);
+      r.polygons = 0;
+    }
+  }
+  SubdivisionRecipe recipe;
+  const bool robust = build_subdivision(v, cf, front_sign, perspective, recipe, orient);
+  for (const PolygonRecipe& p : recipe.polygons) {
+    Corner c[12];
+    for (int k = 0; k < p.n; ++k) c[k] = make_corner(v, p.corner[k], perspective);
+    fan(c, p.n, out);
+    ++r.polygons;
+  }
+  if (cache) {
+    ++cache->misses;
+    if (robust) {
+      if (cache->recipes.size() >= SubdivisionCache::kMaxRecipes) cache->recipes.clear();
+      cache->recipes.emplace(cf.key, std::move(recipe));
+    }
+  }
   return r;
 }
 

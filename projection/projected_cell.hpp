@@ -8,7 +8,9 @@
 // Every topological decision (facing, a vertex inside a triangle, two edges crossing) is CGAL's
 // exact 2D orientation on the projected vertices, so cells sharing a face agree on it and no
 // rounding makes a polygon overlap or miss its neighbour.
+#include <array>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 #include "grid/cell_type.hpp"
@@ -22,6 +24,38 @@ struct ProjectedTriangle {
   ThickVertex v[3];
 };
 
+// How one corner of a front ∩ back polygon is made from the cell's (local) vertices.
+struct CornerRecipe {
+  enum Kind : std::uint8_t { shared, front_vertex, back_vertex, crossing };
+  std::uint8_t kind;
+  // shared: v[0]; front_vertex: v[0] over the back triangle v[2..4]; back_vertex: v[0] under the
+  // front triangle v[2..4]; crossing: front edge (v[0], v[1]) and back edge (v[2], v[3]).
+  std::uint8_t v[5];
+};
+struct PolygonRecipe {
+  std::uint8_t n = 0;
+  CornerRecipe corner[12];  // in order around the polygon
+};
+// A cell's whole subdivision, as recipes: valid for every cell with the same key.
+struct SubdivisionRecipe {
+  std::vector<PolygonRecipe> polygons;
+};
+// The projection topology of a cell: its type, the diagonal each quad takes and the exact
+// orientation of every triple of its projected vertices. Two cells with the same key have the
+// same subdivision (which pairs overlap, which corners, in which order): only the coordinates and
+// values of the corners differ.
+using SubdivisionKey = std::array<std::uint64_t, 3>;
+struct SubdivisionKeyHash {
+  std::size_t operator()(const SubdivisionKey& k) const;
+};
+// The fast path (MWSC section 2: look up the standard subdivisions of the common projection
+// topologies): recipes by key, learnt from the general path as cells are met. One per worker.
+struct SubdivisionCache {
+  static constexpr std::size_t kMaxRecipes = 1 << 14;  // then cleared
+  std::unordered_map<SubdivisionKey, SubdivisionRecipe, SubdivisionKeyHash> recipes;
+  std::int64_t hits = 0, misses = 0;
+};
+
 // What the subdivision met (per cell).
 struct CellProjection {
   int front = 0, back = 0;  // face triangles turned towards the eye / away (edge-on ones count in neither)
@@ -32,7 +66,9 @@ struct CellProjection {
 // `v` holds the cell's vertices in its local order, `ids` its point ids (the quad diagonals go from
 // the lowest id: the split the neighbours and the tetrahedralization use). `front_sign` is the
 // exact_sign of a triangle turned towards the eye (+1 or -1: it depends on the image's handedness).
+// With a cache, a cell whose key is known takes the looked-up subdivision (same bits as the general
+// path: the corners are made by the same arithmetic, fanned from the same corner).
 CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, CellType type, bool perspective,
-                            int front_sign, std::vector<ProjectedTriangle>& out);
+                            int front_sign, std::vector<ProjectedTriangle>& out, SubdivisionCache* cache = nullptr);
 
 }  // namespace cellproj

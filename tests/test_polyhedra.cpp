@@ -3,7 +3,9 @@
 // For a field affine in space every interpolation agrees (canonical tetrahedra, isoparametric,
 // linear along each ray segment), so there the projection must equal `exact` to float precision:
 // any wrong polygon, thick vertex, missed or doubled pixel, or wrong order shows.
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <filesystem>
 
 #include <gtest/gtest.h>
@@ -11,6 +13,8 @@
 
 #include "grid/read_mesh.hpp"
 #include "parallel/projection_renderer.hpp"
+#include "projection/projected_cell.hpp"
+#include "projection/screen.hpp"
 #include "raycast/order_oracle.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "test_util.hpp"
@@ -189,4 +193,35 @@ TEST(Polyhedra, ExodusHexahedraMatchExact) {
   const double tets = compare(ProjectionRenderer(v, Tetrahedralize::all).render(temp, c, 96, 96, o), iso).rmse;
   EXPECT_LE(whole, 1.05 * tets);
   EXPECT_LT(whole, 0.02);
+}
+
+TEST(Polyhedra, LookedUpSubdivisionsGiveTheGeneralPathsBits) {
+  // The fast path reuses the subdivision of an earlier cell with the same projection topology:
+  // triangle for triangle, bit for bit what the general path makes. On a structured grid most
+  // cells are looked up.
+  for (int kind = 0; kind < 2; ++kind) {
+    Mesh m = kind == 0 ? warped_hexahedra(6) : generate("swirl", 6);
+    affine_field(m);
+    const MeshView mesh = m.view("s");
+    const RecentredPoints pts = recentre(mesh);
+    for (const Camera& c : views(2)) {
+      const PixelRays rays(recentred(c, pts.centre), 200, 200);
+      const ScreenPoints screen = project_points(pts, mesh.scalar, rays);
+      SubdivisionCache cache;
+      std::int64_t cells = 0;
+      for (std::int64_t cell = 0; cell < mesh.n_cells; ++cell) {
+        ScreenVertex v[8];
+        for (int k = 0; k < 8; ++k) v[k] = screen.v[static_cast<std::size_t>(mesh.cell(cell)[k])];
+        if (rays.perspective() && std::any_of(v, v + 8, [](const ScreenVertex& x) { return !(x.z > 0); })) continue;
+        std::vector<ProjectedTriangle> general, fast;
+        project_cell(v, mesh.cell(cell), mesh.type(cell), rays.perspective(), 1, general);
+        project_cell(v, mesh.cell(cell), mesh.type(cell), rays.perspective(), 1, fast, &cache);
+        ASSERT_EQ(general.size(), fast.size()) << "cell " << cell;
+        EXPECT_EQ(std::memcmp(general.data(), fast.data(), general.size() * sizeof(ProjectedTriangle)), 0) << "cell " << cell;
+        ++cells;
+      }
+      EXPECT_EQ(cache.hits + cache.misses, cells);
+      if (kind == 1) EXPECT_GT(cache.hits, cells / 2) << "a structured grid repeats its projection topologies";
+    }
+  }
 }

@@ -48,6 +48,7 @@ nlohmann::json projection_stats_json(const ProjectionStats& p) {
           {"cycle_splits", p.cycle_splits},
           {"polyhedra", c.polyhedra},
           {"polygons", c.polygons},
+          {"subdivisions_looked_up", c.subdivisions_looked_up},
           {"class1_tets", c.class1},
           {"class2_tets", c.class2},
           {"empty_tets", c.empty},
