@@ -124,17 +124,26 @@ def measure(bench, name, scene, mesh, info, size, peers):
     bench.add(**base, method="exact", sort="", median_seconds=t, min_seconds=t, max_seconds=t,
               cells_per_second=cells / t, rmse="", max_abs="", violations="")
     if mixed:
-        st, npy = bench.render(scene, tag + "_iso", "exact", size, 1)
-        e = error(npy, ref)
+        st, iso = bench.render(scene, tag + "_iso", "exact", size, 1)
+        e = error(iso, ref)
         t = st["frame_seconds"]
         bench.add(**base, method="exact-isoparametric", sort="", median_seconds=t, min_seconds=t, max_seconds=t,
                   cells_per_second=cells / t, rmse=e[0], max_abs=e[1], violations="")
+        # Whole cells (the default --tetrahedralize problem), against the isoparametric picture:
+        # the ladder below splits every cell (--tetrahedralize all) to compare with its reference.
+        st, npy = bench.render(scene, tag + "_whole", "pt-breakpoints", size, bench.frames)
+        e = error(npy, iso)
+        bench.add(**base, method="pt-breakpoints-whole-vs-iso", sort=st["sort"],
+                  median_seconds=st["frame_seconds"], min_seconds=st["min_frame_seconds"],
+                  max_seconds=st["max_frame_seconds"], cells_per_second=cells / st["frame_seconds"],
+                  rmse=e[0], max_abs=e[1], violations="")
     # sortbench sorts the cells as given; the projection sorts the canonical tetrahedra, so the
     # oracle's count describes the rendered order only on tetrahedral meshes.
     viol = {} if mixed else bench.violations(mesh, size)
     runs = [(m, "auto") for m in METHODS] + [("pt-breakpoints", s) for s in OTHER_SORTS]
     for method, sort in runs:
-        st, npy = bench.render(scene, f"{tag}_{method}_{sort}", method, size, bench.frames, ["--sort", sort])
+        st, npy = bench.render(scene, f"{tag}_{method}_{sort}", method, size, bench.frames,
+                               ["--sort", sort, "--tetrahedralize", "all"])
         e = error(npy, ref)
         bench.add(**base, method=method, sort=st["sort"] if sort == "auto" else sort,
                   median_seconds=st["frame_seconds"], min_seconds=st["min_frame_seconds"],
