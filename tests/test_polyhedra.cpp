@@ -225,3 +225,23 @@ TEST(Polyhedra, LookedUpSubdivisionsGiveTheGeneralPathsBits) {
     }
   }
 }
+
+TEST(Polyhedra, CameraInsideAWarpedGridRayCastsTheSplitCellsAroundTheEye) {
+  // Cells reaching behind the eye are problem cells: split, and their tetrahedra ray cast.
+  Mesh m = warped_hexahedra(5);
+  affine_field(m);
+  Camera c;
+  c.projection = Projection::Perspective;
+  c.eye = {0.05, -0.1, 0.02};
+  c.target = {0.6, 0.9, 0.3};
+  c.up = {0, 0, 1};
+  c.fov_y = 70;
+  ProjectionStats st;
+  const Image img = project(m.view("s"), c, 64, Tetrahedralize::problem, &st);
+  EXPECT_GT(st.counters.behind_eye, 0);
+  EXPECT_GT(st.cells_split, 0);
+  const Image ref = ExactRenderer(m.view("s"), CellInterpolation::canonical_tets).render(tf(), c, 64, 64);
+  const ImageDifference d = compare(img, ref);
+  EXPECT_LT(d.rmse, 2e-5);
+  EXPECT_LT(d.max_abs, 1e-3);
+}
