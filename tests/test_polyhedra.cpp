@@ -75,6 +75,16 @@ std::vector<Camera> views(int n) {
   return out;
 }
 
+Camera perspective(const glm::dvec3& eye, const glm::dvec3& target, double fov_y) {
+  Camera c;
+  c.projection = Projection::Perspective;
+  c.eye = eye;
+  c.target = target;
+  c.up = {0, 0, 1};
+  c.fov_y = fov_y;
+  return c;
+}
+
 Image project(const MeshView& mesh, const Camera& c, int size, Tetrahedralize mode, ProjectionStats* st = nullptr) {
   ProjectionOptions o;
   o.method = ProjectionMethod::pt_breakpoints;
@@ -174,12 +184,7 @@ TEST(Polyhedra, ExodusHexahedraMatchExact) {
   const std::string path = test::shared_data("exodus_disk_out_ref/disk_out_ref.ex2");
   if (!std::filesystem::exists(path)) GTEST_SKIP() << "no " << path;
   Mesh m = read_mesh(path);
-  Camera c;
-  c.projection = Projection::Perspective;
-  c.eye = {24, -30, 14};
-  c.target = {0, 0, 0};
-  c.up = {0, 0, 1};
-  c.fov_y = 40;
+  const Camera c = perspective({24, -30, 14}, {0, 0, 0}, 40);
   set_field(m, "affine", [](const glm::dvec3& x) { return 0.03 * x.x - 0.02 * x.y + 0.04 * x.z + 0.4; });
   const Image img = project(m.view("affine"), c, 96, Tetrahedralize::problem);
   EXPECT_LT(compare(img, ExactRenderer(m.view("affine"), CellInterpolation::canonical_tets).render(tf(), c, 96, 96)).max_abs,
@@ -230,12 +235,7 @@ TEST(Polyhedra, CameraInsideAWarpedGridRayCastsTheSplitCellsAroundTheEye) {
   // Cells reaching behind the eye are problem cells: split, and their tetrahedra ray cast.
   Mesh m = warped_hexahedra(5);
   affine_field(m);
-  Camera c;
-  c.projection = Projection::Perspective;
-  c.eye = {0.05, -0.1, 0.02};
-  c.target = {0.6, 0.9, 0.3};
-  c.up = {0, 0, 1};
-  c.fov_y = 70;
+  const Camera c = perspective({0.05, -0.1, 0.02}, {0.6, 0.9, 0.3}, 70);
   ProjectionStats st;
   const Image img = project(m.view("s"), c, 64, Tetrahedralize::problem, &st);
   EXPECT_GT(st.counters.behind_eye, 0);
