@@ -103,8 +103,10 @@ Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v,
       for (std::size_t m = k; m > 0 && !in_front(list[m - 1], list[m]); --m) std::swap(list[m - 1], list[m]);
     }
     for (std::size_t k = 0; k + 1 < list.size(); ++k)
-      if (!list[k].entering() && list[k + 1].entering() && list[k].cell() != list[k + 1].cell())
-        pairs.emplace_back(list[k + 1].cell(), list[k].cell());
+      if (!list[k].entering() && list[k + 1].entering() && list[k].cell() != list[k + 1].cell()) {
+        const std::pair<std::int64_t, std::int64_t> gap(list[k + 1].cell(), list[k].cell());
+        if (pairs.empty() || pairs.back() != gap) pairs.push_back(gap);  // neighbouring pixels mostly repeat it
+      }
     at = end;
   }
   Relations rel;
