@@ -85,6 +85,11 @@ grep -q '"sort":"mpvo".*"violations":0' "$tmp/out" || { echo "FAIL: mpvo on a bo
 [ "$(wc -l < "$tmp/sorts.csv")" -eq 3 ] || { echo "FAIL: sortbench --csv rows"; failed=$((failed+1)); }
 [ "$(stat -c %s "$tmp/ok.npy")" -eq $((128 + 32 * 24 * 16)) ] || { echo "FAIL: npy size"; failed=$((failed+1)); }
 
+# A twisted mixed mesh: its problem cells are split per view and mpvo-abuffer's order has no violation.
+"$exe" generate mixed -n 6 -o "$tmp/mixed.vtu" >/dev/null || { echo "FAIL: generate mixed"; failed=$((failed+1)); }
+expect 0 '"problem_cells":[0-9]+.*"violations":0,' -- sortbench "$tmp/mixed.vtu" --views 3 --size 48x48 --sorts mpvo-abuffer --projection persp --check --json
+expect 1 "unknown --tetrahedralize 'half'" -- sortbench "$tmp/mixed.vtu" --tetrahedralize half
+
 # info --json: the documented keys with this mesh's values.
 "$exe" info "$tmp/box.vtu" --json > "$tmp/info.json" || { echo "FAIL: info --json"; failed=$((failed+1)); }
 python3 - "$tmp/info.json" <<'PY' || failed=$((failed+1))
