@@ -6,6 +6,9 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include "grid/error.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "visibility/prepared.hpp"
@@ -76,52 +79,76 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
   p.pts = recentre(mesh);
 
   p.centroid.resize(static_cast<std::size_t>(mesh.n_cells));
-  for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
-    glm::dvec3 s(0.0);
-    for (int k = 0; k < mesh.cell_size(c); ++k) s += p.point(mesh.cell(c)[k]);
-    p.centroid[c] = s / double(mesh.cell_size(c));
-  }
+  const auto cells = tbb::blocked_range<std::int64_t>(0, mesh.n_cells, 4096);
+  tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
+    for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+      glm::dvec3 s(0.0);
+      for (int k = 0; k < mesh.cell_size(c); ++k) s += p.point(mesh.cell(c)[k]);
+      p.centroid[c] = s / double(mesh.cell_size(c));
+    }
+  });
 
   if (mesh.n_cells > INT32_MAX) throw InputError(where(mesh.source, "more than 2^31 cells: too many for one sorter"));
   const auto& fo = topo.face_offsets;
   p.across.assign(topo.neighbor.size(), -1);
-  std::int64_t ids[4];
-  auto face_ids = [&](std::int64_t c, std::int64_t cf) {
+  auto face_ids = [&](std::int64_t c, std::int64_t cf, std::int64_t ids[4]) {
     const FaceDef& f = cell_def(mesh.type(c)).face[cf - fo[c]];
     for (int k = 0; k < f.size; ++k) ids[k] = mesh.cell(c)[f.v[k]];
     return static_cast<int>(f.size);
   };
-  for (std::int64_t c = 0; c < mesh.n_cells; ++c)
-    for (std::int64_t cf = fo[c]; cf < fo[c + 1]; ++cf) {
-      const std::int64_t m = topo.neighbor[cf];
-      if (m < 0) continue;  // boundary, non-manifold, or a quad whose triangles make the relations
-      std::int64_t back = -1;  // m's face towards c
-      for (std::int64_t g = fo[m]; g < fo[m + 1]; ++g)
-        if (topo.neighbor[g] == c) back = g;
-      if (back >= 0 && m < c) continue;  // made from the other side
-      // back < 0: c's triangle is half of m's quad (kSplitFace), made from the triangle's side only
-      glm::dvec3 normal, point;
-      std::array<std::int64_t, 3> tri;
-      face_plane(p, ids, face_ids(c, cf), normal, point, tri);
-      p.across[cf] = static_cast<std::int32_t>(m);
-      if (back >= 0) p.across[back] = static_cast<std::int32_t>(c);
-      p.face_a.push_back(static_cast<std::int32_t>(c));
-      p.face_b.push_back(static_cast<std::int32_t>(m));
-      p.local_a.push_back(static_cast<std::uint8_t>(cf - fo[c]));
-      p.local_b.push_back(back >= 0 ? static_cast<std::uint8_t>(back - fo[m]) : kNoLocalFace);
-      const double len = glm::length(normal);
-      if (len > 0) normal /= len;
-      p.normal.push_back(normal);
-      p.offset.push_back(glm::dot(normal, point));
-      p.face_tri.push_back(tri);
+  // Whether cell c makes the shared face cf (each is made once: by the lower id, or from the
+  // triangle's side of a split quad), and m's face back towards c (-1 for a split quad).
+  auto makes = [&](std::int64_t c, std::int64_t cf, std::int64_t& back) {
+    const std::int64_t m = topo.neighbor[cf];
+    if (m < 0) return false;  // boundary, non-manifold, or a quad whose triangles make the relations
+    back = -1;
+    for (std::int64_t g = fo[m]; g < fo[m + 1]; ++g)
+      if (topo.neighbor[g] == c) back = g;
+    return !(back >= 0 && m < c);
+  };
+  // Counted per cell, then filled in parallel at each cell's offset (the same order as serially).
+  std::vector<std::int64_t> first(static_cast<std::size_t>(mesh.n_cells) + 1, 0);
+  tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
+    for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+      std::int64_t back;
+      for (std::int64_t cf = fo[c]; cf < fo[c + 1]; ++cf) first[c + 1] += makes(c, cf, back);
     }
+  });
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c) first[c + 1] += first[c];
+  const std::size_t n_shared = static_cast<std::size_t>(first.back());
+  p.face_a.resize(n_shared), p.face_b.resize(n_shared), p.local_a.resize(n_shared), p.local_b.resize(n_shared);
+  p.normal.resize(n_shared), p.offset.resize(n_shared), p.face_tri.resize(n_shared);
+  tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
+    for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+      std::int64_t at = first[c], back, ids[4];
+      for (std::int64_t cf = fo[c]; cf < fo[c + 1]; ++cf) {
+        if (!makes(c, cf, back)) continue;
+        const std::int64_t m = topo.neighbor[cf];
+        // back < 0: c's triangle is half of m's quad (kSplitFace), made from the triangle's side only
+        glm::dvec3 normal, point;
+        face_plane(p, ids, face_ids(c, cf, ids), normal, point, p.face_tri[at]);
+        p.across[cf] = static_cast<std::int32_t>(m);
+        if (back >= 0) p.across[back] = static_cast<std::int32_t>(c);  // written by this face's maker only
+        p.face_a[at] = static_cast<std::int32_t>(c);
+        p.face_b[at] = static_cast<std::int32_t>(m);
+        p.local_a[at] = static_cast<std::uint8_t>(cf - fo[c]);
+        p.local_b[at] = back >= 0 ? static_cast<std::uint8_t>(back - fo[m]) : kNoLocalFace;
+        const double len = glm::length(normal);
+        if (len > 0) normal /= len;
+        p.normal[at] = normal;
+        p.offset[at] = glm::dot(normal, point);
+        ++at;
+      }
+    }
+  });
   // Boundary faces off the convex hull: only they can bound a gap (a ray leaving through a hull
   // face never comes back), so only they go into the A-buffer.
   const bool know_hull = hull.off_hull.size() == topo.boundary.size();
   for (std::size_t b = 0; b < topo.boundary.size(); ++b) {
     if (know_hull && !hull.off_hull[b]) continue;
     const std::int64_t cf = topo.boundary[b], c = topo.cell_of(cf);
-    const int n = face_ids(c, cf);
+    std::int64_t ids[4];
+    const int n = face_ids(c, cf, ids);
     std::int64_t tri[2][3];
     if (n == 3) std::copy(ids, ids + 3, tri[0]);
     else split_quad(ids, tri);
