@@ -1,7 +1,7 @@
 #pragma once
 // Sorting a mixed mesh whose quadrilateral faces may be warped (MWSC sections 3 and 4): per view
 // the problem cells (grid/face_split) are split into their canonical tetrahedra and the resulting
-// mesh is sorted, so that cycles made by folded faces do not arise. Visibility cycles that still
+// mesh is sorted, so that the cycles and wrong orders made by folded faces do not arise. Visibility cycles that still
 // involve whole cells split those cells too, and the view is sorted once more.
 #include <cstdint>
 #include <memory>
@@ -16,9 +16,9 @@
 namespace cellproj {
 
 enum class Tetrahedralize {
-  problem,  // per view, only the cells with a folded face (the default)
+  problem,  // per view, only the cells a ray may cross more than twice (grid/face_split; the default)
   all,      // every cell that is not a tetrahedron, once per mesh
-  none,     // never: whole cells even where a face is folded (order and picture may be wrong there)
+  none,     // never: whole cells even where a ray crosses one twice (order and picture may be wrong there)
 };
 Tetrahedralize tetrahedralize_from_name(const std::string& name);  // throws InputError listing the names
 const char* name_of(Tetrahedralize mode);
@@ -38,7 +38,7 @@ struct SortableMesh {
 struct ViewOrder {
   std::shared_ptr<const SortableMesh> mesh;  // whose cells `sorted.order` lists
   SortResult sorted;
-  std::int64_t problem_cells = 0;  // cells with a folded face in this view (problem and none modes)
+  std::int64_t problem_cells = 0;  // cells a ray may cross more than twice in this view (problem and none modes)
   std::int64_t cycle_splits = 0;   // whole cells split further because they were in a visibility cycle
 };
 
