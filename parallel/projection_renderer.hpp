@@ -45,7 +45,7 @@ class ProjectionRenderer {
  public:
   // Prepared once per mesh and field (the mesh's arrays must outlive the renderer). Cells other
   // than tetrahedra are projected whole, except those `mode` splits into their canonical
-  // tetrahedra (grid/face_split): per view the ones with a folded face (problem), all of them once
+  // tetrahedra (grid/face_split): per view the ones a ray may cross more than twice (problem), all of them once
   // (all), or none.
   explicit ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode = Tetrahedralize::problem);
   ~ProjectionRenderer();

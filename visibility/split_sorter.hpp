@@ -1,8 +1,9 @@
 #pragma once
 // Sorting a mixed mesh whose quadrilateral faces may be warped (MWSC sections 3 and 4): per view
 // the problem cells (grid/face_split) are split into their canonical tetrahedra and the resulting
-// mesh is sorted, so that the cycles and wrong orders made by folded faces do not arise. Visibility cycles that still
-// involve whole cells split those cells too, and the view is sorted once more.
+// mesh is sorted, so that the cycles and wrong orders made by folded faces do not arise.
+// Visibility cycles that still involve whole cells split those cells too, and the view is sorted
+// once more.
 #include <cstdint>
 #include <memory>
 #include <mutex>
