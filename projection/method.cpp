@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "grid/error.hpp"
+#include "grid/name_table.hpp"
 
 namespace cellproj {
 
@@ -20,24 +21,6 @@ constexpr std::pair<ProjectionBackend, const char*> kBackends[] = {
     {ProjectionBackend::opengl_8bit_dithered, "opengl-8bit-dither"},
 };
 
-template <class E, std::size_t N>
-std::string names(const std::pair<E, const char*> (&table)[N]) {
-  std::string out;
-  for (const auto& [e, n] : table) out += (out.empty() ? "" : ", ") + std::string(n);
-  return out;
-}
-template <class E, std::size_t N>
-E from_name(const std::pair<E, const char*> (&table)[N], const std::string& name, const char* what) {
-  for (const auto& [e, n] : table)
-    if (name == n) return e;
-  throw InputError("unknown " + std::string(what) + " '" + name + "' (known: " + names(table) + ")");
-}
-template <class E, std::size_t N>
-const char* name_in(const std::pair<E, const char*> (&table)[N], E e) {
-  for (const auto& [x, n] : table)
-    if (x == e) return n;
-  return "?";
-}
 }  // namespace
 
 ProjectionBackend projection_backend_from_name(const std::string& name) {

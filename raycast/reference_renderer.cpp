@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "grid/error.hpp"
+#include "grid/name_table.hpp"
 #include "optics/polynomial_segment.hpp"
 
 namespace cellproj {
@@ -52,17 +53,15 @@ void integrate_run(const TransferFunction& tf, IsoparametricRun& run, double ta,
   integrate_run(tf, run, mid, tb, tol, depth + 1, acc);
 }
 
+constexpr std::pair<CellInterpolation, const char*> kInterpolations[] = {
+    {CellInterpolation::isoparametric, "isoparametric"}, {CellInterpolation::canonical_tets, "canonical-tets"}};
+
 }  // namespace
 
 CellInterpolation cell_interpolation_from_name(const std::string& name) {
-  if (name == "isoparametric") return CellInterpolation::isoparametric;
-  if (name == "canonical-tets") return CellInterpolation::canonical_tets;
-  throw InputError("unknown cell interpolation '" + name + "' (known: isoparametric, canonical-tets)");
+  return from_name(kInterpolations, name, "cell interpolation");
 }
-
-const char* name_of(CellInterpolation interpolation) {
-  return interpolation == CellInterpolation::isoparametric ? "isoparametric" : "canonical-tets";
-}
+const char* name_of(CellInterpolation interpolation) { return name_in(kInterpolations, interpolation); }
 
 ExactRenderer::ExactRenderer(const MeshView& mesh, CellInterpolation interpolation) : tracer_(mesh) {
   const bool all_tets = std::all_of(mesh.types, mesh.types + mesh.n_cells,

@@ -10,17 +10,14 @@
 #include <tbb/parallel_for.h>
 
 #include "grid/error.hpp"
+#include "grid/name_table.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "visibility/prepared.hpp"
 
 namespace cellproj {
 namespace {
 
-struct MethodName {
-  SortMethod method;
-  const char* name;
-};
-constexpr MethodName kNames[] = {{SortMethod::automatic, "auto"},
+constexpr std::pair<SortMethod, const char*> kNames[] = {{SortMethod::automatic, "auto"},
                                  {SortMethod::centroid, "centroid"},
                                  {SortMethod::mpvo, "mpvo"},
                                  {SortMethod::mpvo_abuffer, "mpvo-abuffer"},
@@ -52,23 +49,9 @@ void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, in
 
 }  // namespace
 
-SortMethod sort_method_from_name(const std::string& name) {
-  for (const auto& n : kNames)
-    if (name == n.name) return n.method;
-  throw InputError("unknown sort '" + name + "' (known: " + sort_method_names() + ")");
-}
-
-const char* name_of(SortMethod method) {
-  for (const auto& n : kNames)
-    if (method == n.method) return n.name;
-  return "?";
-}
-
-std::string sort_method_names() {
-  std::string s;
-  for (const auto& n : kNames) s += (s.empty() ? "" : ", ") + std::string(n.name);
-  return s;
-}
+SortMethod sort_method_from_name(const std::string& name) { return from_name(kNames, name, "sort"); }
+const char* name_of(SortMethod method) { return name_in(kNames, method); }
+std::string sort_method_names() { return names(kNames); }
 
 VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& topo, const HullReport& hull)
     : p_(std::make_unique<Prepared>()) {

@@ -4,16 +4,13 @@
 
 #include <glm/geometric.hpp>
 
-#include "grid/error.hpp"
+#include "grid/name_table.hpp"
 
 namespace cellproj {
 namespace {
 
-struct ModeName {
-  Tetrahedralize mode;
-  const char* name;
-};
-constexpr ModeName kModes[] = {{Tetrahedralize::problem, "problem"}, {Tetrahedralize::all, "all"}, {Tetrahedralize::none, "none"}};
+constexpr std::pair<Tetrahedralize, const char*> kModes[] = {
+    {Tetrahedralize::problem, "problem"}, {Tetrahedralize::all, "all"}, {Tetrahedralize::none, "none"}};
 
 Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre) {
   const Camera c = recentred(camera, centre);
@@ -26,23 +23,9 @@ Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre) {
 
 }  // namespace
 
-Tetrahedralize tetrahedralize_from_name(const std::string& name) {
-  for (const auto& m : kModes)
-    if (name == m.name) return m.mode;
-  throw InputError("unknown --tetrahedralize '" + name + "' (known: " + tetrahedralize_names() + ")");
-}
-
-const char* name_of(Tetrahedralize mode) {
-  for (const auto& m : kModes)
-    if (mode == m.mode) return m.name;
-  return "?";
-}
-
-std::string tetrahedralize_names() {
-  std::string s;
-  for (const auto& m : kModes) s += (s.empty() ? "" : ", ") + std::string(m.name);
-  return s;
-}
+Tetrahedralize tetrahedralize_from_name(const std::string& name) { return from_name(kModes, name, "--tetrahedralize"); }
+const char* name_of(Tetrahedralize mode) { return name_in(kModes, mode); }
+std::string tetrahedralize_names() { return names(kModes); }
 
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which) {
   auto s = std::make_shared<SortableMesh>();
