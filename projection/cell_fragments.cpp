@@ -63,7 +63,8 @@ struct CompositeFragments {
 }  // namespace
 
 void ProjectionCounters::add(const ProjectionCounters& o) {
-  tets += o.tets, polyhedra += o.polyhedra, polygons += o.polygons, subdivisions_looked_up += o.subdivisions_looked_up, class1 += o.class1, class2 += o.class2, empty += o.empty, behind_eye += o.behind_eye;
+  tets += o.tets, class1 += o.class1, class2 += o.class2, empty += o.empty, behind_eye += o.behind_eye;
+  polyhedra += o.polyhedra, polygons += o.polygons, subdivisions_looked_up += o.subdivisions_looked_up;
   fragments += o.fragments, breakpoint_cells += o.breakpoint_cells, direct_cells += o.direct_cells;
 }
 
@@ -203,10 +204,9 @@ CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellT
     }
   }
   p.tri.clear();
-  const std::int64_t known = p.subdivisions.hits;
   const CellProjection cp = project_cell(v, ids, type, rays_.perspective(), front_sign_, p.tri, &p.subdivisions);
   counters.polygons += cp.polygons;
-  counters.subdivisions_looked_up += p.subdivisions.hits - known;
+  counters.subdivisions_looked_up += cp.looked_up;
   if (p.tri.empty()) {
     ++counters.empty;
     return Seen::empty;

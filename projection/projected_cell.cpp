@@ -242,14 +242,26 @@ bool build_subdivision(const ScreenVertex* v, const CellFaces& cf, int front_sig
   return cacheable;
 }
 
-// The polygon's triangles, fanned from its first corner.
-void fan(const Corner* c, int n, std::vector<ProjectedTriangle>& out) {
+// Appends the recipe's polygons, each fanned from its first corner, and returns how many. With
+// `check`, a polygon that is not robustly convex here undoes the whole cell and returns -1.
+int fan_recipe(const ScreenVertex* v, const SubdivisionRecipe& recipe, bool persp, bool check,
+               std::vector<ProjectedTriangle>& out) {
   auto thick = [](const Corner& k) {
     ThickVertex t{k.x, k.y, k.zf, k.zb, k.sf, k.sb};
     if (t.zb < t.zf) t.zb = t.zf;  // rounding at a silhouette corner
     return t;
   };
-  for (int k = 1; k + 1 < n; ++k) out.push_back({{thick(c[0]), thick(c[k]), thick(c[k + 1])}});
+  const std::size_t start = out.size();
+  for (const PolygonRecipe& p : recipe.polygons) {
+    Corner c[12];
+    for (int k = 0; k < p.n; ++k) c[k] = make_corner(v, p.corner[k], persp);
+    if (check && !convex_with_margin(c, p.n)) {
+      out.resize(start);
+      return -1;
+    }
+    for (int k = 1; k + 1 < p.n; ++k) out.push_back({{thick(c[0]), thick(c[k]), thick(c[k + 1])}});
+  }
+  return static_cast<int>(recipe.polygons.size());
 }
 
 }  // namespace
@@ -266,36 +278,19 @@ CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, Cell
   const Orientations orient(v, def.vertices);
   const CellFaces cf = cell_faces(v, ids, def, type, orient, front_sign);
   CellProjection r;
-  r.front = cf.n_front, r.back = cf.n_back;
   // The fast path: a known topology, taken when its corners here are as robustly convex as where
   // it was learnt (else this cell goes the general way, so the bits never depend on the cache).
-  const std::size_t start = out.size();
   if (cache) {
-    if (const auto it = cache->recipes.find(cf.key); it != cache->recipes.end()) {
-      bool ok = true;
-      for (const PolygonRecipe& p : it->second.polygons) {
-        Corner c[12];
-        for (int k = 0; k < p.n; ++k) c[k] = make_corner(v, p.corner[k], perspective);
-        if (!(ok = convex_with_margin(c, p.n))) break;
-        fan(c, p.n, out);
-        ++r.polygons;
-      }
-      if (ok) {
-        ++cache->hits;
-        return r;
-      }
-      out.resize(start);
-      r.polygons = 0;
+    const auto it = cache->recipes.find(cf.key);
+    if (it != cache->recipes.end() && (r.polygons = fan_recipe(v, it->second, perspective, true, out)) >= 0) {
+      ++cache->hits;
+      r.looked_up = true;
+      return r;
     }
   }
   SubdivisionRecipe recipe;
   const bool robust = build_subdivision(v, cf, front_sign, perspective, recipe, orient);
-  for (const PolygonRecipe& p : recipe.polygons) {
-    Corner c[12];
-    for (int k = 0; k < p.n; ++k) c[k] = make_corner(v, p.corner[k], perspective);
-    fan(c, p.n, out);
-    ++r.polygons;
-  }
+  r.polygons = fan_recipe(v, recipe, perspective, false, out);
   if (cache) {
     ++cache->misses;
     if (robust) {

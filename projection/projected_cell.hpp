@@ -56,10 +56,10 @@ struct SubdivisionCache {
   std::int64_t hits = 0, misses = 0;
 };
 
-// What the subdivision met (per cell).
+// What the subdivision made (per cell).
 struct CellProjection {
-  int front = 0, back = 0;  // face triangles turned towards the eye / away (edge-on ones count in neither)
-  int polygons = 0;         // non-empty front ∩ back polygons
+  int polygons = 0;        // non-empty front ∩ back polygons
+  bool looked_up = false;  // taken from the cache (the fast path)
 };
 
 // Appends the triangles of the cell's image (polygons fanned from their first corner) to out.

@@ -23,14 +23,14 @@ constexpr std::pair<SortMethod, const char*> kNames[] = {{SortMethod::automatic,
                                  {SortMethod::mpvo_abuffer, "mpvo-abuffer"},
                                  {SortMethod::pairwise, "pairwise"}};
 
-// A face's normal (outward for the cell listing it in this order) and centroid. Triangles take
-// their normal from the vertices in increasing id, so both cells of a face get the same plane;
-// quads take Newell's normal through their lowest-id vertex, since they may be warped.
+// A face's normal (outward for the cell listing it in this order) and a point of its plane.
+// Triangles take their normal from the vertices in increasing id and their centroid, so both cells
+// of a face get the same plane; quads take Newell's normal through their lowest-id vertex, since
+// they may be warped.
 void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, int n, glm::dvec3& normal,
                 glm::dvec3& point, std::array<std::int64_t, 3>& tri) {
   glm::dvec3 x[4];
-  point = glm::dvec3(0.0);
-  for (int k = 0; k < n; ++k) x[k] = p.point(ids[k]), point += x[k] / double(n);
+  for (int k = 0; k < n; ++k) x[k] = p.point(ids[k]);
   tri = {-1, -1, -1};
   if (n != 3) {
     // Newell's normal of a quad is the sum of its two triangles' (either split), and the lowest id
@@ -40,6 +40,8 @@ void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, in
     point = x[std::min_element(ids, ids + n) - ids];
     return;
   }
+  point = glm::dvec3(0.0);
+  for (int k = 0; k < 3; ++k) point += x[k] / 3.0;
   std::int64_t s[3] = {ids[0], ids[1], ids[2]};
   const bool flip = sort_triangle_ids(s);
   normal = glm::cross(p.point(s[1]) - p.point(s[0]), p.point(s[2]) - p.point(s[0]));
