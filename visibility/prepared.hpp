@@ -4,6 +4,7 @@
 #include <array>
 #include <chrono>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -19,7 +20,7 @@ struct VisibilitySorter::Prepared {
   MeshView mesh;
   const FaceTopology* topo = nullptr;
   bool convex = false;
-  RecentredPoints pts;                // coordinates below are relative to pts.centre
+  std::shared_ptr<const RecentredPoints> points;  // coordinates below are relative to points->centre
   std::vector<glm::dvec3> centroid;   // per cell
   // Shared faces, each once: cells a and b, the face's unit normal outward from a, and its plane
   // offset (normal . x on the face; a quad's at its centroid).
@@ -36,7 +37,7 @@ struct VisibilitySorter::Prepared {
   std::vector<std::int64_t> boundary_cell;
   std::vector<std::array<std::int64_t, 3>> boundary_tri;
 
-  glm::dvec3 point(std::int64_t p) const { return pts(p); }
+  glm::dvec3 point(std::int64_t p) const { return (*points)(p); }
 };
 
 // The view in the recentred frame: the eye, the view direction, and how far each cell is.

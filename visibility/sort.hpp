@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "grid/geometry.hpp"
 #include "grid/mesh.hpp"
 #include "grid/topology.hpp"
 #include "view/camera.hpp"
@@ -63,7 +64,9 @@ class VisibilitySorter {
  public:
   // The mesh's arrays and the topology must outlive the sorter. The hull report
   // (boundary_convexity) decides what `automatic` runs, and which boundary faces can bound a gap.
-  VisibilitySorter(const MeshView& mesh, const FaceTopology& topology, const HullReport& hull);
+  // `points` (recentre(mesh)) may be shared with other users of the same points; made when null.
+  VisibilitySorter(const MeshView& mesh, const FaceTopology& topology, const HullReport& hull,
+                   std::shared_ptr<const RecentredPoints> points = nullptr);
   ~VisibilitySorter();
   VisibilitySorter(VisibilitySorter&&) noexcept;
 

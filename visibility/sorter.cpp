@@ -55,13 +55,14 @@ SortMethod sort_method_from_name(const std::string& name) { return from_name(kNa
 const char* name_of(SortMethod method) { return name_in(kNames, method); }
 std::string sort_method_names() { return names(kNames); }
 
-VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& topo, const HullReport& hull)
+VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& topo, const HullReport& hull,
+                                   std::shared_ptr<const RecentredPoints> points)
     : p_(std::make_unique<Prepared>()) {
   Prepared& p = *p_;
   p.mesh = mesh;
   p.topo = &topo;
   p.convex = hull.convex;
-  p.pts = recentre(mesh);
+  p.points = points ? std::move(points) : std::make_shared<const RecentredPoints>(recentre(mesh));
 
   p.centroid.resize(static_cast<std::size_t>(mesh.n_cells));
   const auto cells = tbb::blocked_range<std::int64_t>(0, mesh.n_cells, 4096);
@@ -153,11 +154,11 @@ bool VisibilitySorter::convex_boundary() const { return p_->convex; }
 
 ViewFrame view_frame(const VisibilitySorter::Prepared& p, const SortView& view) {
   ViewFrame v;
-  v.camera = recentred(view.camera, p.pts.centre);
+  v.camera = recentred(view.camera, p.points->centre);
   v.perspective = view.camera.projection == Projection::Perspective;
   v.eye = v.camera.eye;
   v.dir = glm::normalize(v.camera.target - v.camera.eye);
-  v.eye_scale = glm::length(v.eye) + p.pts.half_diagonal;
+  v.eye_scale = glm::length(v.eye) + p.points->half_diagonal;
   return v;
 }
 

@@ -27,7 +27,8 @@ Tetrahedralize tetrahedralize_from_name(const std::string& name) { return from_n
 const char* name_of(Tetrahedralize mode) { return name_in(kModes, mode); }
 std::string tetrahedralize_names() { return names(kModes); }
 
-std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which) {
+std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
+                                            std::shared_ptr<const RecentredPoints> points) {
   auto s = std::make_shared<SortableMesh>();
   if (which) {
     s->split = split_cells(mesh, *which);
@@ -37,12 +38,12 @@ std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vec
   }
   s->topology = build_topology(s->cells);
   s->hull = boundary_convexity(s->cells, s->topology);
-  s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull);
+  s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull, std::move(points));
   return s;
 }
 
 SplittingSorter::SplittingSorter(const MeshView& mesh, Tetrahedralize mode)
-    : mesh_(mesh), mode_(mode), points_(recentre(mesh)) {
+    : mesh_(mesh), mode_(mode), points_(std::make_shared<const RecentredPoints>(recentre(mesh))) {
   const bool mixed = std::any_of(mesh.types, mesh.types + mesh.n_cells,
                                  [](std::uint8_t t) { return t != static_cast<std::uint8_t>(CellType::Tetra); });
   if (!mixed) mode_ = Tetrahedralize::none;  // nothing to split
@@ -54,7 +55,7 @@ std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!base_) {  // made when first needed: in problem mode most views of a warped grid never need it
     const std::vector<char> all;  // empty: every cell that is not a tetrahedron
-    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr);
+    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr, points_);
   }
   return base_;
 }
@@ -66,7 +67,7 @@ std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector
     std::lock_guard<std::mutex> lock(mutex_);
     if (last_ && last_->problem == problem) return last_;
   }
-  auto s = sortable_mesh(mesh_, &problem);
+  auto s = sortable_mesh(mesh_, &problem, points_);
   s->problem = problem;
   std::lock_guard<std::mutex> lock(mutex_);
   last_ = s;
@@ -81,7 +82,7 @@ ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view) const {
     return out;
   }
   check_camera(view.camera, "sort view");
-  std::vector<char> problem = problem_cells(mesh_, points_, viewpoint(view.camera, points_.centre), &out.problem_cells);
+  std::vector<char> problem = problem_cells(mesh_, *points_, viewpoint(view.camera, points_->centre), &out.problem_cells);
   if (mode_ == Tetrahedralize::none || out.problem_cells == 0) {
     out.mesh = base_mesh();
     out.sorted = out.mesh->sorter->sort(method, view);

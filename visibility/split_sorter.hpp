@@ -51,7 +51,7 @@ class SplittingSorter {
   // Thread-safe; the last view's split mesh is kept and reused while the problem cells stay the same.
   ViewOrder sort(SortMethod method, const SortView& view) const;
   Tetrahedralize mode() const { return mode_; }
-  const RecentredPoints& points() const { return points_; }
+  const RecentredPoints& points() const { return *points_; }
   // The mesh sorted when no cell needs splitting (the input mesh, or all its cells split).
   const SortableMesh& base() const;
 
@@ -61,13 +61,15 @@ class SplittingSorter {
 
   MeshView mesh_;
   Tetrahedralize mode_;
-  RecentredPoints points_;
+  std::shared_ptr<const RecentredPoints> points_;  // shared with every sorter it prepares
   mutable std::mutex mutex_;
   mutable std::shared_ptr<const SortableMesh> base_;
   mutable std::shared_ptr<const SortableMesh> last_;  // the last view's split mesh
 };
 
-// Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given).
-std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which);
+// Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given);
+// `points` are the mesh's recentred points when the caller has them (the split shares them).
+std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
+                                            std::shared_ptr<const RecentredPoints> points = nullptr);
 
 }  // namespace cellproj
