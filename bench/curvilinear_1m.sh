@@ -3,7 +3,8 @@
 # hexahedra with warped faces) at 1024^2 with 2 threads: whole-cell projection (--tetrahedralize
 # problem, the default) against the same grid fully tetrahedralized (--tetrahedralize all) and
 # rendered with pt-analytic; time per frame (3 frames, sort included) and the error of each against
-# the exact renderer's isoparametric mode (and its canonical-tets mode) at 512^2.
+# the exact renderer's isoparametric mode (and its canonical-tets mode) at 512^2; then one frame
+# from a side view where faces fold (problem cells split).
 # usage: bench/curvilinear_1m.sh [BUILD_DIR] [N]   (N=70: 1.03M cells; prints JSON lines)
 set -euo pipefail
 build=${1:-build}
@@ -19,7 +20,7 @@ cat > scene.json <<JSON
   "camera": { "projection": "perspective", "eye": [2.2, -2.8, 2.0], "target": [0, 0, 0], "up": [0, 0, 1], "fov_y": 38 },
   "image": { "width": 512, "height": 512 } }
 JSON
-keys='("method", "tetrahedralize", "cells", "cells_projected", "problem_cells", "polyhedra", "polygons", "frame_seconds", "min_frame_seconds", "max_frame_seconds", "prepare_seconds")'
+keys='("method", "tetrahedralize", "cells", "cells_projected", "problem_cells", "polyhedra", "polygons", "subdivisions_looked_up", "frame_seconds", "min_frame_seconds", "max_frame_seconds", "prepare_seconds")'
 run() {  # name, then render options
   local name=$1; shift
   "$exe" render scene.json --size 1024x1024 --threads 2 --frames 3 -o "$name.png" --stats "$@" 2>&1 >/dev/null | tail -1 |
@@ -35,4 +36,9 @@ run tets-breakpoints --method pt-breakpoints --tetrahedralize all
 for r in whole-breakpoints whole-analytic tets-analytic tets-breakpoints; do
   echo "{\"run\": \"$r\", \"vs_isoparametric\": $("$exe" compare "$r.npy" iso.npy), \"vs_canonical_tets\": $("$exe" compare "$r.npy" ct.npy)}"
 done
+# A view along the ring's axis of symmetry folds faces: the sort phase of one frame there includes
+# finding the problem cells and preparing the split mesh's topology and sorter.
+sed 's/"eye": \[2.2, -2.8, 2.0\]/"eye": [3.5, 0.2, 0.3]/' scene.json > side.json
+"$exe" render side.json --threads 2 -o side.png --stats 2>&1 >/dev/null | tail -1 |
+  python3 -c "import json, sys; j = json.load(sys.stdin); print(json.dumps({'run': 'side-view', 'problem_cells': j['problem_cells'], 'sort_seconds': j['phase_seconds']['sort'], 'frame_seconds': j['frame_seconds']}))"
 if [ -n "${KEEP:-}" ]; then cp ./*.png "$KEEP"/; fi
