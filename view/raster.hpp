@@ -32,55 +32,127 @@ struct EdgeFunction {
     const glm::dvec2& lo = flip ? b : a;
     const glm::dvec2& hi = flip ? a : b;
     ax = lo.x, ay = lo.y, dx = hi.x - lo.x, dy = hi.y - lo.y, sign = flip ? -1.0 : 1.0;
+    slope = dx / dy, right_bound = sign * dy > 0;
   }
   double row(double y) const { return dx * (y - ay); }
   double at(double row_value, double x) const { return sign * (row_value - dy * (x - ax)); }
   bool inside(double e) const { return e > 0 || (e == 0 && own); }
-  // Narrows [lo, hi] (pixel indices) to where this edge can be non-negative on the row, plus a
-  // pixel of margin for rounding.
-  void clip(double row_value, double& lo, double& hi) const {
-    const double c = sign * dy;  // e = sign * row_value - c (x - ax)
-    if (c == 0) return;
-    const double x = ax + sign * row_value / c - 0.5;  // pixel index whose centre is the crossing
-    if (c > 0) hi = std::min(hi, std::floor(x) + 1);
-    else lo = std::max(lo, std::ceil(x) - 1);
+  // Narrows the pixels begin <= i < end of row y (row_value = row(y)) to those inside this edge,
+  // exactly. Along the row the edge's test holds on one side of the crossing (the edge function is
+  // monotone in x: each rounding step is); the crossing's estimate only says where to start, and
+  // the test itself finds the side's last pixel, however far the estimate is off (huge coordinates).
+  void bound(double row_value, double y, int& begin, int& end) const {
+    if (begin >= end) return;
+    auto in = [&](int i) { return inside(at(row_value, i + 0.5)); };
+    if (dy == 0) {  // the same value along the row
+      if (!in(begin)) end = begin;
+      return;
+    }
+    const double x = ax + slope * (y - ay) - 0.5;  // the pixel whose centre is the crossing
+    int i = !(x > begin) ? begin : !(x < end - 1) ? end - 1 : static_cast<int>(x);  // (NaN: begin)
+    if (right_bound) {  // inside up to the crossing
+      if (in(i)) {
+        while (i + 1 < end && in(i + 1)) ++i;
+        end = i + 1;
+      } else {
+        while (i > begin && !in(i - 1)) --i;
+        end = i;
+      }
+    } else {  // inside from the crossing on
+      if (in(i)) {
+        while (i > begin && in(i - 1)) --i;
+        begin = i;
+      } else {
+        while (i + 1 < end && !in(i + 1)) ++i;
+        begin = i + 1;
+      }
+    }
   }
+  double slope;      // dx / dy: the crossing's x per unit of y
+  bool right_bound;  // the inside is left of the crossing
 };
 }  // namespace raster_detail
+
+// A triangle in pixel coordinates (x right, y down), turned positive, with its edge functions:
+// which pixel centres of each row it covers. Along a row every edge function is monotone (each
+// rounding step is), so the centres a triangle covers on one row are one run of pixels.
+class TriangleCoverage {
+ public:
+  TriangleCoverage(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height)
+      : TriangleCoverage(p0, p1, p2, raster_detail::edge(p0, p1, p2.x, p2.y), width, height) {}
+  // Rows first_row() <= j <= last_row() may hold covered centres (none when last < first).
+  int first_row() const { return j0_; }
+  int last_row() const { return j1_; }
+
+  struct Row {
+    double y, r0, r1, r2;  // y = j + 0.5 and the edge functions' row terms there
+  };
+  Row row(int j) const {
+    const double y = j + 0.5;
+    return {y, f0_.row(y), f1_.row(y), f2_.row(y)};
+  }
+  // The covered pixels begin <= i < end of a row, exactly (begin == end when none): the pixels
+  // inside all three edges, each of which holds on one side of the row (a half-line of pixels, or
+  // all or none of them for a horizontal edge).
+  void run(const Row& r, int& begin, int& end) const {
+    begin = i0_, end = i1_ + 1;
+    f0_.bound(r.r0, r.y, begin, end), f1_.bound(r.r1, r.y, begin, end), f2_.bound(r.r2, r.y, begin, end);
+    end = std::max(begin, end);
+  }
+  // The barycentric weights of p0, p1 and p2 (in the caller's order) at the centre of pixel i.
+  void weights(const Row& r, int i, double w[3]) const {
+    const double x = i + 0.5;
+    const double e0 = f0_.at(r.r0, x), e1 = f1_.at(r.r1, x), e2 = f2_.at(r.r2, x);
+    // e1 is opposite p0, e2 opposite p1, e0 opposite p2 (in the possibly swapped order).
+    w[0] = e1 * inv_, w[1] = (swapped_ ? e0 : e2) * inv_, w[2] = (swapped_ ? e2 : e0) * inv_;
+  }
+
+ private:
+  // The edges of (p0, p1, p2), or of (p0, p2, p1) when that turns negative.
+  TriangleCoverage(const glm::dvec2& p0, const glm::dvec2& p1, const glm::dvec2& p2, double area, int width, int height)
+      : swapped_(area < 0),
+        f0_(p0, swapped_ ? p2 : p1),
+        f1_(swapped_ ? p2 : p1, swapped_ ? p1 : p2),
+        f2_(swapped_ ? p1 : p2, p0),
+        inv_(1.0 / std::abs(area)) {
+    if (!(area != 0.0) || !std::isfinite(area)) return;  // degenerate: covers nothing
+    const double xmin = std::min({p0.x, p1.x, p2.x}), xmax = std::max({p0.x, p1.x, p2.x});
+    const double ymin = std::min({p0.y, p1.y, p2.y}), ymax = std::max({p0.y, p1.y, p2.y});
+    i0_ = static_cast<int>(std::max(0.0, std::ceil(xmin - 0.5)));
+    i1_ = static_cast<int>(std::min(double(width - 1), std::floor(xmax - 0.5)));
+    j0_ = static_cast<int>(std::max(0.0, std::ceil(ymin - 0.5)));
+    j1_ = static_cast<int>(std::min(double(height - 1), std::floor(ymax - 0.5)));
+  }
+  bool swapped_;
+  raster_detail::EdgeFunction f0_, f1_, f2_;
+  double inv_;
+  int i0_ = 0, i1_ = -1, j0_ = 0, j1_ = -1;
+};
+
+// Calls run(j, begin, end) for every row j of a width x height image on which the triangle covers
+// the centres of pixels begin <= i < end (and at least one).
+template <class Run>
+void rasterize_triangle_runs(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Run&& run) {
+  const TriangleCoverage t(p0, p1, p2, width, height);
+  for (int j = t.first_row(); j <= t.last_row(); ++j) {
+    int b, e;
+    t.run(t.row(j), b, e);
+    if (b < e) run(j, b, e);
+  }
+}
 
 // Calls covered(i, j, w0, w1, w2) for every pixel of a width x height image whose centre the
 // triangle (p0, p1, p2) in pixel coordinates (x right, y down) covers, with the barycentric weights
 // of p0, p1 and p2 at that centre. Degenerate triangles cover nothing.
 template <class Covered>
 void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Covered&& covered) {
-  using namespace raster_detail;
-  double area = edge(p0, p1, p2.x, p2.y);
-  if (!(area != 0.0) || !std::isfinite(area)) return;
-  const bool swapped = area < 0;
-  if (swapped) std::swap(p1, p2), area = -area;
-  const double xmin = std::min({p0.x, p1.x, p2.x}), xmax = std::max({p0.x, p1.x, p2.x});
-  const double ymin = std::min({p0.y, p1.y, p2.y}), ymax = std::max({p0.y, p1.y, p2.y});
-  const int i0 = static_cast<int>(std::max(0.0, std::ceil(xmin - 0.5)));
-  const int i1 = static_cast<int>(std::min(double(width - 1), std::floor(xmax - 0.5)));
-  const int j0 = static_cast<int>(std::max(0.0, std::ceil(ymin - 0.5)));
-  const int j1 = static_cast<int>(std::min(double(height - 1), std::floor(ymax - 0.5)));
-  const EdgeFunction f0(p0, p1), f1(p1, p2), f2(p2, p0);
-  const double inv = 1.0 / area;
-  for (int j = j0; j <= j1; ++j) {
-    const double y = j + 0.5;
-    const double r0 = f0.row(y), r1 = f1.row(y), r2 = f2.row(y);
-    // A conservative span of this row (a pixel wider each side); the exact tests decide inside it.
-    double lo = i0, hi = i1;
-    f0.clip(r0, lo, hi), f1.clip(r1, lo, hi), f2.clip(r2, lo, hi);
-    for (int i = static_cast<int>(std::max<double>(i0, lo)), last = static_cast<int>(std::min<double>(i1, hi)); i <= last; ++i) {
-      const double x = i + 0.5;
-      const double e0 = f0.at(r0, x), e1 = f1.at(r1, x), e2 = f2.at(r2, x);
-      if (f0.inside(e0) && f1.inside(e1) && f2.inside(e2)) {
-        // e1 is opposite p0, e2 opposite p1, e0 opposite p2 (in the possibly swapped order).
-        if (swapped) covered(i, j, e1 * inv, e0 * inv, e2 * inv);
-        else covered(i, j, e1 * inv, e2 * inv, e0 * inv);
-      }
-    }
+  const TriangleCoverage t(p0, p1, p2, width, height);
+  for (int j = t.first_row(); j <= t.last_row(); ++j) {
+    const TriangleCoverage::Row r = t.row(j);
+    int b, e;
+    t.run(r, b, e);
+    double w[3];
+    for (int i = b; i < e; ++i) t.weights(r, i, w), covered(i, j, w[0], w[1], w[2]);
   }
 }
 
