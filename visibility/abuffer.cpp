@@ -1,10 +1,17 @@
 // The software A-buffer of Cook et al. (MWSC section 3.2): the boundary faces of a non-convex mesh
 // that are off its convex hull are sampled at the image's own pixel centres with the rasterizer's
 // coverage rule; along each pixel's list, a face where the ray leaves the mesh followed by one where
-// it enters again is a gap, and the cell entered is composited before the cell left. The lists are
-// kept sparse (fragments sorted by pixel), so no per-pixel memory is touched outside the faces.
+// it enters again is a gap, and the cell entered is composited before the cell left.
+//
+// The lists are not built pixel by pixel. Each face covers one run of pixels per row
+// (view/raster.hpp), and a row is swept from left to right: between two places where a run starts
+// or ends, the same faces cover every pixel, and since each face's depth key is affine along the
+// row, a list that is front to back at both ends of such a stretch is front to back at every pixel
+// centre of it. Only a stretch whose order differs at its two ends (faces crossing in depth) is
+// sampled pixel by pixel. The cost is O(b + r + n), r the runs, not the sampled pixels.
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 #include <glm/geometric.hpp>
 
@@ -14,55 +21,103 @@
 namespace cellproj {
 namespace {
 
-struct Fragment {
-  double key;           // grows with distance along the pixel's ray (depth, or -1/depth in perspective)
-  std::uint32_t pixel;  // j * width + i
-  std::uint32_t tagged; // 2 cell + 1 when the face is front-facing (the ray enters the mesh there)
-  std::int32_t cell() const { return static_cast<std::int32_t>(tagged >> 1); }
+// A boundary face in the image: its depth key as a plane over the image, its cell and its side.
+struct ImageFace {
+  double k0, kx, ky;     // key(x, y) = k0 + kx x + ky y grows with distance along the pixel's ray
+  std::uint32_t tagged;  // 2 cell + 1 when the face is front-facing (the ray enters the mesh there)
+  std::int64_t cell() const { return tagged >> 1; }
   bool entering() const { return tagged & 1u; }
+};
+
+// The pixels begin <= p < end (row-major) of one row that a face covers.
+struct Run {
+  std::uint32_t begin, end, face;
+};
+
+// A face on the sweep's list, with its key at the pixel centre the list was last ordered at.
+struct Listed {
+  std::uint32_t face, end;
+  double key;
+  bool entering;
 };
 
 // Front to back; at (nearly) equal distance a leaving face comes first, so a seam of coincident
 // faces (duplicated points) still reads as "leave one cell, enter the next".
-bool in_front(const Fragment& a, const Fragment& b) {
+bool in_front(const Listed& a, const Listed& b) {
   const double tol = 1e-9 * std::max(std::abs(a.key), std::abs(b.key));
   if (a.key < b.key - tol) return true;
   if (a.key > b.key + tol) return false;
-  return !a.entering() && b.entering();
+  return !a.entering && b.entering;
 }
 
-// Stable LSD radix sort of the fragments by pixel, 11 bits a pass.
-void sort_by_pixel(std::vector<Fragment>& frags, std::uint32_t pixels) {
-  std::vector<Fragment> tmp(frags.size());
+// Stable LSD radix sort of the runs by their first pixel, 11 bits a pass.
+void sort_by_pixel(std::vector<Run>& runs, std::uint32_t pixels) {
+  std::vector<Run> tmp(runs.size());
   for (int shift = 0; shift < 32 && (pixels - 1) >> shift; shift += 11) {
     std::vector<std::size_t> count(2049, 0);
-    for (const Fragment& f : frags) ++count[((f.pixel >> shift) & 2047u) + 1];
+    for (const Run& r : runs) ++count[((r.begin >> shift) & 2047u) + 1];
     for (int b = 0; b < 2048; ++b) count[b + 1] += count[b];
-    for (const Fragment& f : frags) tmp[count[(f.pixel >> shift) & 2047u]++] = f;
-    frags.swap(tmp);
+    for (const Run& r : runs) tmp[count[(r.begin >> shift) & 2047u]++] = r;
+    runs.swap(tmp);
   }
 }
 
-}  // namespace
+// A boundary face off the hull as the image sees it: its triangle, its depth key as a plane, the
+// range of that key over the image, and the pixels of its bounding box.
+struct ProjectedFace {
+  glm::dvec2 s[3];
+  ImageFace face;
+  double kmin, kmax;
+  int i0, i1, j0, j1;
+};
 
-Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, SortStats& stats) {
+// Slack for comparing keys a and b: in_front's tolerance, twice over.
+double key_slack(double a, double b) { return 2e-9 * (std::abs(a) + std::abs(b)); }
+
+// Only a face that has the other kind of face behind it (a leaving face) or in front of it (an
+// entering face) somewhere can be one side of a gap; dropping the others changes no pixel's
+// "leave, then enter" pairs (a face between such a pair would itself be one of its sides). The
+// test is conservative, on 16 x 16 tiles: a leaving face is kept where a tile it touches has an
+// entering face that reaches as deep, an entering face where a tile has a leaving face as near.
+void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int height) {
+  constexpr int kTile = 16;
+  const int tw = (width + kTile - 1) / kTile, th = (height + kTile - 1) / kTile;
+  const double inf = std::numeric_limits<double>::infinity();
+  std::vector<double> nearest_leaving(static_cast<std::size_t>(tw) * th, inf), deepest_entering(nearest_leaving.size(), -inf);
+  auto each_tile = [&](const ProjectedFace& f, auto&& visit) {
+    for (int ty = f.j0 / kTile; ty <= f.j1 / kTile; ++ty)
+      for (int tx = f.i0 / kTile; tx <= f.i1 / kTile; ++tx)
+        if (visit(static_cast<std::size_t>(ty) * tw + tx)) return true;
+    return false;
+  };
+  for (const ProjectedFace& f : faces)
+    each_tile(f, [&](std::size_t t) {
+      if (f.face.entering()) deepest_entering[t] = std::max(deepest_entering[t], f.kmax);
+      else nearest_leaving[t] = std::min(nearest_leaving[t], f.kmin);
+      return false;
+    });
+  faces.erase(std::remove_if(faces.begin(), faces.end(), [&](const ProjectedFace& f) {
+                return !each_tile(f, [&](std::size_t t) {
+                  return f.face.entering() ? nearest_leaving[t] <= f.kmax + key_slack(nearest_leaving[t], f.kmax)
+                                           : deepest_entering[t] + key_slack(deepest_entering[t], f.kmin) >= f.kmin;
+                });
+              }),
+              faces.end());
+}
+
+// The boundary faces off the hull projected into the image (those that can bound a gap, unless
+// every face is asked for), and their runs sorted by pixel.
+void project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, bool cull,
+                   std::vector<ImageFace>& faces, std::vector<Run>& runs) {
   const PixelRays rays(v.camera, view.width, view.height);
   const std::size_t nb = p.boundary_tri.size();
-  // Far faces first, so that each pixel's fragments come out of the sort by pixel far to near and,
-  // read backwards, almost always already front to back.
-  std::vector<std::pair<double, std::uint32_t>> by_depth(nb);
+  std::vector<ProjectedFace> projected;
+  projected.reserve(nb);
   for (std::size_t b = 0; b < nb; ++b) {
-    const auto& t = p.boundary_tri[b];
-    by_depth[b] = {-v.far_key((p.point(t[0]) + p.point(t[1]) + p.point(t[2])) / 3.0), static_cast<std::uint32_t>(b)};
-  }
-  std::sort(by_depth.begin(), by_depth.end());
-
-  std::vector<Fragment> frags;
-  frags.reserve(4 * nb);
-  for (const auto& [order_key, b] : by_depth) {
     const auto& tri = p.boundary_tri[b];
     const glm::dvec3 x[3] = {p.point(tri[0]), p.point(tri[1]), p.point(tri[2])};
-    glm::dvec2 s[3];
+    ProjectedFace f;
+    glm::dvec2* s = f.s;
     double key[3];
     bool visible = true;
     for (int k = 0; k < 3; ++k) {
@@ -75,40 +130,147 @@ Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v,
     const bool entering = v.perspective ? glm::dot(n, v.eye - x[0]) > 0 : glm::dot(n, v.dir) < 0;
     const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y);
     if (area == 0.0) continue;  // edge-on: no pixel centre is covered
+    // The pixels whose centres lie in the bounding box; none: the face covers no centre.
+    f.i0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].x, s[1].x, s[2].x}) - 0.5)));
+    f.i1 = static_cast<int>(std::min(view.width - 1.0, std::floor(std::max({s[0].x, s[1].x, s[2].x}) - 0.5)));
+    f.j0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].y, s[1].y, s[2].y}) - 0.5)));
+    f.j1 = static_cast<int>(std::min(view.height - 1.0, std::floor(std::max({s[0].y, s[1].y, s[2].y}) - 0.5)));
+    if (f.i0 > f.i1 || f.j0 > f.j1) continue;
     // key(x, y) = k0 + kx x + ky y through the three projected vertices.
-    const double kx = ((key[1] - key[0]) * (s[2].y - s[0].y) - (key[2] - key[0]) * (s[1].y - s[0].y)) / area;
-    const double ky = ((key[2] - key[0]) * (s[1].x - s[0].x) - (key[1] - key[0]) * (s[2].x - s[0].x)) / area;
-    const double k0 = key[0] - kx * s[0].x - ky * s[0].y;
-    const std::uint32_t tagged = 2u * static_cast<std::uint32_t>(p.boundary_cell[b]) + (entering ? 1u : 0u);
-    rasterize_triangle(s[0], s[1], s[2], view.width, view.height, [&](int i, int j) {
-      frags.push_back({k0 + kx * (i + 0.5) + ky * (j + 0.5),
-                       static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(view.width) + i, tagged});
+    ImageFace& g = f.face;
+    g.kx = ((key[1] - key[0]) * (s[2].y - s[0].y) - (key[2] - key[0]) * (s[1].y - s[0].y)) / area;
+    g.ky = ((key[2] - key[0]) * (s[1].x - s[0].x) - (key[1] - key[0]) * (s[2].x - s[0].x)) / area;
+    g.k0 = key[0] - g.kx * s[0].x - g.ky * s[0].y;
+    g.tagged = 2u * static_cast<std::uint32_t>(p.boundary_cell[b]) + (entering ? 1u : 0u);
+    // The key's range at the pixel centres it covers, widened by the plane's rounding there.
+    const double rounding = 1e-12 * (std::abs(g.k0) + std::abs(g.kx) * view.width + std::abs(g.ky) * view.height);
+    f.kmin = std::min({key[0], key[1], key[2]}) - rounding;
+    f.kmax = std::max({key[0], key[1], key[2]}) + rounding;
+    projected.push_back(f);
+  }
+  if (cull) cull_faces_without_gaps(projected, view.width, view.height);
+
+  faces.resize(projected.size());
+  runs.reserve(8 * projected.size());
+  const auto width = static_cast<std::uint32_t>(view.width);
+  for (std::size_t k = 0; k < projected.size(); ++k) {
+    const ProjectedFace& f = projected[k];
+    faces[k] = f.face;
+    rasterize_triangle_runs(f.s[0], f.s[1], f.s[2], view.width, view.height, [&](int j, int i0, int i1) {
+      const std::uint32_t row = static_cast<std::uint32_t>(j) * width;
+      runs.push_back({row + static_cast<std::uint32_t>(i0), row + static_cast<std::uint32_t>(i1), static_cast<std::uint32_t>(k)});
     });
   }
-  stats.abuffer_fragments = static_cast<std::int64_t>(frags.size());
-  sort_by_pixel(frags, static_cast<std::uint32_t>(view.width) * static_cast<std::uint32_t>(view.height));
+  sort_by_pixel(runs, static_cast<std::uint32_t>(view.width) * static_cast<std::uint32_t>(view.height));
+}
 
-  // Each pixel's list front to back (insertion sort: nearly always nothing to move), then a
-  // relation for every "leave, then enter" pair.
-  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
-  std::vector<Fragment> list;
-  for (std::size_t at = 0; at < frags.size();) {
-    std::size_t end = at;
-    while (end < frags.size() && frags[end].pixel == frags[at].pixel) ++end;
-    list.assign(frags.rbegin() + static_cast<std::ptrdiff_t>(frags.size() - end),
-                frags.rbegin() + static_cast<std::ptrdiff_t>(frags.size() - at));
-    for (std::size_t k = 1; k < list.size(); ++k) {
-      if (in_front(list[k - 1], list[k])) continue;
-      ++stats.abuffer_out_of_order;
-      for (std::size_t m = k; m > 0 && !in_front(list[m - 1], list[m]); --m) std::swap(list[m - 1], list[m]);
+// Sweeps the image row by row and hands each pixel's list of faces, front to back, to `gaps`
+// once per stretch of pixels over which it is the same.
+class GapSweep {
+ public:
+  GapSweep(const std::vector<ImageFace>& faces, const SortView& view, bool every_pixel, SortStats& stats)
+      : faces_(faces), width_(static_cast<std::uint32_t>(view.width)), every_pixel_(every_pixel), stats_(stats),
+        recent_(std::size_t(1) << kRecentBits, ~0ull) {}
+
+  // The "leave, then enter" pairs of every list, as (cell entered, cell left): the cell entered is
+  // composited first.
+  std::vector<std::pair<std::int64_t, std::int64_t>> run(const std::vector<Run>& runs) {
+    for (std::size_t at = 0; at < runs.size();) {
+      const std::uint32_t row = runs[at].begin / width_;
+      std::size_t end = at;
+      while (end < runs.size() && runs[end].begin < (row + 1) * width_) ++end;
+      sweep_row(runs, at, end, row);
+      at = end;
     }
-    for (std::size_t k = 0; k + 1 < list.size(); ++k)
-      if (!list[k].entering() && list[k + 1].entering() && list[k].cell() != list[k + 1].cell()) {
-        const std::pair<std::int64_t, std::int64_t> gap(list[k + 1].cell(), list[k].cell());
-        if (pairs.empty() || pairs.back() != gap) pairs.push_back(gap);  // neighbouring pixels mostly repeat it
-      }
-    at = end;
+    return std::move(pairs_);
   }
+
+ private:
+  static constexpr int kRecentBits = 12;
+
+  void sweep_row(const std::vector<Run>& runs, std::size_t k, std::size_t end, std::uint32_t row) {
+    const double y = row + 0.5;
+    const std::uint32_t first = row * width_;
+    list_.clear();
+    for (std::uint32_t x = runs[k].begin;;) {
+      list_.erase(std::remove_if(list_.begin(), list_.end(), [x](const Listed& l) { return l.end == x; }), list_.end());
+      for (; k < end && runs[k].begin == x; ++k) list_.push_back({runs[k].face, runs[k].end, 0.0, faces_[runs[k].face].entering()});
+      if (list_.empty()) {
+        if (k == end) return;
+        x = runs[k].begin;
+        continue;
+      }
+      std::uint32_t next = k < end ? runs[k].begin : first + width_;
+      for (const Listed& l : list_) next = std::min(next, l.end);
+      // The pixels x <= p < next are covered by the same faces.
+      if (list_.size() > 1) {
+        order_at(x - first + 0.5, y);
+        emit_gaps();
+        if (next - x > 1 && (every_pixel_ || !ordered_at(next - 1 - first + 0.5, y))) {
+          stats_.abuffer_crossings += !every_pixel_;
+          for (std::uint32_t q = x + 1; q < next; ++q) order_at(q - first + 0.5, y), emit_gaps();
+        }
+      }
+      x = next;
+    }
+  }
+
+  double key(const Listed& l, double x, double y) const {
+    const ImageFace& f = faces_[l.face];
+    return f.k0 + f.kx * x + f.ky * y;
+  }
+  // The list front to back at pixel centre (x, y) (insertion sort: it mostly is already).
+  void order_at(double x, double y) {
+    for (Listed& l : list_) l.key = key(l, x, y);
+    for (std::size_t k = 1; k < list_.size(); ++k)
+      for (std::size_t m = k; m > 0 && !in_front(list_[m - 1], list_[m]); --m) std::swap(list_[m - 1], list_[m]);
+  }
+  // Whether the list, front to back where it was last ordered, is so at (x, y) too.
+  bool ordered_at(double x, double y) const {
+    Listed prev = list_[0];
+    prev.key = key(prev, x, y);
+    for (std::size_t k = 1; k < list_.size(); ++k) {
+      Listed here = list_[k];
+      here.key = key(here, x, y);
+      if (!in_front(prev, here)) return false;
+      prev = here;
+    }
+    return true;
+  }
+  void emit_gaps() {
+    for (std::size_t k = 0; k + 1 < list_.size(); ++k) {
+      const Listed &leave = list_[k], &enter = list_[k + 1];
+      if (leave.entering || !enter.entering) continue;
+      const std::int64_t left = faces_[leave.face].cell(), entered = faces_[enter.face].cell();
+      if (left == entered) continue;
+      // The next stretches and rows mostly pair the same two cells again: a small table of the
+      // pairs met lately keeps the relation list near its distinct size.
+      const std::uint64_t pair = static_cast<std::uint64_t>(entered) << 32 | static_cast<std::uint64_t>(left);
+      std::uint64_t& slot = recent_[(pair * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits)];
+      if (slot == pair) continue;
+      slot = pair;
+      pairs_.emplace_back(entered, left);
+    }
+  }
+
+  const std::vector<ImageFace>& faces_;
+  const std::uint32_t width_;
+  const bool every_pixel_;
+  SortStats& stats_;
+  std::vector<std::uint64_t> recent_;  // (cell entered, cell left) pairs met lately, by hash
+  std::vector<Listed> list_;
+  std::vector<std::pair<std::int64_t, std::int64_t>> pairs_;
+};
+
+}  // namespace
+
+Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, SortStats& stats) {
+  std::vector<ImageFace> faces;
+  std::vector<Run> runs;
+  project_faces(p, v, view, !view.abuffer_every_pixel, faces, runs);
+  stats.abuffer_runs = static_cast<std::int64_t>(runs.size());
+  for (const Run& r : runs) stats.abuffer_fragments += r.end - r.begin;
+  std::vector<std::pair<std::int64_t, std::int64_t>> pairs = GapSweep(faces, view, view.abuffer_every_pixel, stats).run(runs);
   Relations rel;
   stats.gap_relations = rel.build(p.mesh.n_cells, pairs);
   return rel;

@@ -41,8 +41,9 @@ struct SortStats {
   std::int64_t face_relations = 0;  // relations across shared faces
   std::int64_t gap_relations = 0;   // relations across gaps between boundary faces (A-buffer), distinct
   std::int64_t pair_relations = 0;  // relations from pairwise occlusion tests
-  std::int64_t abuffer_fragments = 0;  // boundary-face samples in the A-buffer
-  std::int64_t abuffer_out_of_order = 0;  // fragments not inserted at the head of their pixel's list
+  std::int64_t abuffer_fragments = 0;  // pixel centres covered by boundary faces in the A-buffer
+  std::int64_t abuffer_runs = 0;       // runs of them, one per face and row: the A-buffer's work
+  std::int64_t abuffer_crossings = 0;  // stretches of a row where faces cross in depth, sampled per pixel
   std::vector<VisibilityCycle> cycles;
   std::vector<std::pair<std::string, double>> phase_seconds;  // in the order they ran
   double seconds = 0.0;  // the whole sort
@@ -58,6 +59,9 @@ struct SortResult {
 struct SortView {
   Camera camera;
   int width = 512, height = 512;
+  // Orders the A-buffer's lists at every pixel centre instead of once per stretch of a row covered
+  // by the same faces: the same relations, slower; the reference the sweep is tested against.
+  bool abuffer_every_pixel = false;
 };
 
 class VisibilitySorter {
