@@ -12,6 +12,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <memory>
 
 #include <glm/geometric.hpp>
 
@@ -52,14 +53,17 @@ bool in_front(const Listed& a, const Listed& b) {
 
 // Stable LSD radix sort of the runs by their first pixel, 11 bits a pass.
 void sort_by_pixel(std::vector<Run>& runs, std::uint32_t pixels) {
-  std::vector<Run> tmp(runs.size());
+  std::unique_ptr<Run[]> tmp(new Run[runs.size()]);  // every element is written before it is read
+  Run* from = runs.data();
+  Run* to = tmp.get();
   for (int shift = 0; shift < 32 && (pixels - 1) >> shift; shift += 11) {
-    std::vector<std::size_t> count(2049, 0);
-    for (const Run& r : runs) ++count[((r.begin >> shift) & 2047u) + 1];
+    std::uint32_t count[2049] = {};
+    for (std::size_t k = 0; k < runs.size(); ++k) ++count[((from[k].begin >> shift) & 2047u) + 1];
     for (int b = 0; b < 2048; ++b) count[b + 1] += count[b];
-    for (const Run& r : runs) tmp[count[(r.begin >> shift) & 2047u]++] = r;
-    runs.swap(tmp);
+    for (std::size_t k = 0; k < runs.size(); ++k) to[count[(from[k].begin >> shift) & 2047u]++] = from[k];
+    std::swap(from, to);
   }
+  if (from != runs.data()) std::copy(from, from + runs.size(), runs.data());
 }
 
 // A boundary face off the hull as the image sees it: its triangle, its depth key as a plane, the
@@ -201,9 +205,10 @@ class GapSweep {
         continue;
       }
       std::uint32_t next = k < end ? runs[k].begin : first + width_;
-      for (const Listed& l : list_) next = std::min(next, l.end);
-      // The pixels x <= p < next are covered by the same faces.
-      if (list_.size() > 1) {
+      std::size_t entering = 0;
+      for (const Listed& l : list_) next = std::min(next, l.end), entering += l.entering;
+      // The pixels x <= p < next are covered by the same faces; a gap needs a face of each kind.
+      if (entering > 0 && entering < list_.size()) {
         order_at(x - first + 0.5, y);
         emit_gaps();
         if (next - x > 1 && (every_pixel_ || !ordered_at(next - 1 - first + 0.5, y))) {

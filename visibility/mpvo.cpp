@@ -2,10 +2,13 @@
 // viewpoint is on, then Kahn's topological sort; visibility cycles found and broken.
 #include <algorithm>
 #include <cmath>
+#include <limits>
+#include <stdexcept>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <glm/geometric.hpp>
 
+#include "visibility/cycles.hpp"
 #include "visibility/prepared.hpp"
 
 namespace cellproj {
@@ -54,60 +57,6 @@ FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v
   return out;
 }
 
-namespace {
-
-// Iterative Tarjan over the cells not yet emitted; returns the component of each (-1 elsewhere).
-template <class Successors>
-std::vector<std::int64_t> components(std::int64_t n, const std::vector<char>& emitted, Successors&& successors) {
-  std::vector<std::int64_t> comp(static_cast<std::size_t>(n), -1), index(static_cast<std::size_t>(n), -1), low(index);
-  std::vector<char> on_stack(static_cast<std::size_t>(n), 0);
-  std::vector<std::int64_t> stack, succ;
-  std::vector<std::pair<std::int64_t, std::size_t>> call;  // (cell, next successor)
-  std::vector<std::vector<std::int64_t>> succ_of;          // successors of the cells on the call stack
-  std::int64_t counter = 0, n_comp = 0;
-  for (std::int64_t root = 0; root < n; ++root) {
-    if (emitted[root] || index[root] >= 0) continue;
-    auto open = [&](std::int64_t c) {
-      index[c] = low[c] = counter++;
-      stack.push_back(c);
-      on_stack[c] = 1;
-      succ.clear();
-      successors(c, [&](std::int64_t m) {
-        if (!emitted[m]) succ.push_back(m);
-      });
-      call.push_back({c, 0});
-      succ_of.push_back(succ);
-    };
-    open(root);
-    while (!call.empty()) {
-      auto& [c, next] = call.back();
-      if (next < succ_of.back().size()) {
-        const std::int64_t m = succ_of.back()[next++];
-        if (index[m] < 0) open(m);
-        else if (on_stack[m]) low[c] = std::min(low[c], index[m]);
-        continue;
-      }
-      const std::int64_t done = c;
-      if (low[done] == index[done]) {
-        std::int64_t m;
-        do {
-          m = stack.back();
-          stack.pop_back();
-          on_stack[m] = 0;
-          comp[m] = n_comp;
-        } while (m != done);
-        ++n_comp;
-      }
-      call.pop_back();
-      succ_of.pop_back();
-      if (!call.empty()) low[call.back().first] = std::min(low[call.back().first], low[done]);
-    }
-  }
-  return comp;
-}
-
-}  // namespace
-
 std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p, const ViewFrame& v, FaceOrder& faces,
                                             const std::vector<const Relations*>& extra, SortStats& stats) {
   const std::int64_t n = p.mesh.n_cells;
@@ -134,8 +83,8 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
   for (std::int64_t c = 0; c < n; ++c)
     if (in[c] == 0) order.push_back(c);
   std::size_t head = 0;
-  std::vector<char> emitted;
-  while (static_cast<std::int64_t>(order.size()) < n || head < order.size()) {
+  // Kahn's loop; `release(c, m)` for each relation c -> m it consumes.
+  auto drain = [&](auto&& release) {
     while (head < order.size()) {
       // The queue is known a few cells ahead: fetch their face bits and neighbours early (the
       // sort is bound by these scattered reads).
@@ -145,37 +94,48 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
         __builtin_prefetch(&faces.ahead[c]);
         __builtin_prefetch(&p.across[p.all_tetrahedra ? 4 * c : fo[c]]);
       }
-      successors(order[head++], [&](std::int64_t m) {
+      const std::int64_t c = order[head++];
+      successors(c, [&](std::int64_t m) {
+        release(c, m);
         if (--in[m] == 0) order.push_back(m);
       });
     }
-    if (static_cast<std::int64_t>(order.size()) == n) break;
-    // Stalled: every cell left waits on another one left. Find the cycles and break one.
-    emitted.assign(static_cast<std::size_t>(n), 0);
-    for (std::int64_t c : order) emitted[c] = 1;
-    const auto comp = components(n, emitted, successors);
-    std::int64_t n_comp = 0;
-    for (std::int64_t c = 0; c < n; ++c) n_comp = std::max(n_comp, comp[c] + 1);
-    std::vector<char> has_in(static_cast<std::size_t>(n_comp), 0);
-    for (std::int64_t c = 0; c < n; ++c)
-      if (!emitted[c])
-        successors(c, [&](std::int64_t m) {
-          if (!emitted[m] && comp[m] != comp[c]) has_in[comp[m]] = 1;
-        });
-    std::int64_t source = 0;
-    while (source < n_comp && has_in[source]) ++source;
+  };
+  drain([](std::int64_t, std::int64_t) {});
+  if (static_cast<std::int64_t>(order.size()) == n) return order;
+
+  // Stalled: every cell left waits on another one left. The strongly connected components of
+  // what is left, once; then each stall breaks a cycle at its farthest cell and goes on.
+  std::vector<char> emitted(static_cast<std::size_t>(n), 0);
+  for (std::int64_t c : order) emitted[c] = 1;
+  std::vector<std::int64_t> start(static_cast<std::size_t>(n + 1), 0), to;
+  for (std::int64_t c = 0; c < n; ++c) {
+    if (!emitted[c])
+      successors(c, [&](std::int64_t m) {
+        if (!emitted[m]) to.push_back(m);
+      });
+    start[c + 1] = static_cast<std::int64_t>(to.size());
+  }
+  CycleBreaker breaker(std::move(start), std::move(to), emitted);
+  while (static_cast<std::int64_t>(order.size()) < n) {
+    const std::vector<std::int64_t> cells = breaker.next_cycle(emitted);
+    if (cells.empty()) throw std::logic_error("topological sort stalled without a visibility cycle");
     VisibilityCycle cycle;
+    cycle.size = static_cast<std::int64_t>(cells.size());
     double farthest = -std::numeric_limits<double>::infinity();
-    for (std::int64_t c = 0; c < n; ++c) {
-      if (comp[c] != source) continue;
-      ++cycle.size;
+    for (std::int64_t c : cells) {
       if (cycle.cells.size() < VisibilityCycle::kMaxCycleCells) cycle.cells.push_back(c);
       if (const double k = v.far_key(p.centroid[c]); k > farthest) farthest = k, cycle.broken_at = c;
     }
     cycle.relations_dropped = in[cycle.broken_at];
     in[cycle.broken_at] = 0;
     order.push_back(cycle.broken_at);
+    emitted[cycle.broken_at] = 1;
     stats.cycles.push_back(std::move(cycle));
+    drain([&](std::int64_t c, std::int64_t m) {
+      if (!emitted[m]) breaker.consumed(c, m);
+    });
+    for (std::size_t k = order.size(); k-- > 0 && !emitted[order[k]];) emitted[order[k]] = 1;
   }
   return order;
 }
