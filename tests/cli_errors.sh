@@ -78,7 +78,7 @@ expect 2 "projection" -- sortbench "$tmp/box.vtu" --projection sideways
 expect 1 "missing.vtu: no such file" -- sortbench "$tmp/missing.vtu"
 expect 0 '"sort":"mpvo"' -- sortbench "$tmp/box.vtu" --views 2 --size 32x32 --sorts centroid,mpvo --check --json --csv "$tmp/sorts.csv"
 for key in mesh sort projection views median_seconds min_seconds max_seconds cells cells_per_second face_relations \
-           gap_relations cycles violations violating_pixels; do
+           gap_relations cycles abuffer_runs abuffer_fragments abuffer_crossings violations violating_pixels; do
   grep -q "\"$key\":" "$tmp/out" || { echo "FAIL: sortbench --json lacks $key"; failed=$((failed+1)); }
 done
 grep -q '"sort":"mpvo".*"violations":0' "$tmp/out" || { echo "FAIL: mpvo on a box must have no violations"; failed=$((failed+1)); }
@@ -89,6 +89,16 @@ grep -q '"sort":"mpvo".*"violations":0' "$tmp/out" || { echo "FAIL: mpvo on a bo
 "$exe" generate mixed -n 6 -o "$tmp/mixed.vtu" >/dev/null || { echo "FAIL: generate mixed"; failed=$((failed+1)); }
 expect 0 '"problem_cells":[0-9]+.*"violations":0,' -- sortbench "$tmp/mixed.vtu" --views 3 --size 48x48 --sorts mpvo-abuffer --projection persp --check --json
 expect 1 "unknown --tetrahedralize 'half'" -- sortbench "$tmp/mixed.vtu" --tetrahedralize half
+# The A-buffer's sweep and its reference (every pixel ordered) find the same gap relations.
+"$exe" sortbench "$tmp/mixed.vtu" --views 3 --size 96x96 --sorts mpvo-abuffer --json > "$tmp/sweep.json" &&
+  "$exe" sortbench "$tmp/mixed.vtu" --views 3 --size 96x96 --sorts mpvo-abuffer --abuffer-every-pixel --json > "$tmp/every.json" &&
+  python3 - "$tmp/sweep.json" "$tmp/every.json" <<'PY' || { echo "FAIL: --abuffer-every-pixel"; failed=$((failed+1)); }
+import json, sys
+sweep, every = (json.loads(open(f).readline()) for f in sys.argv[1:3])
+assert not sweep["abuffer_every_pixel"] and every["abuffer_every_pixel"]
+assert sweep["gap_relations"] > 0 and sweep["gap_relations"] == every["gap_relations"], (sweep["gap_relations"], every["gap_relations"])
+assert 0 < sweep["abuffer_runs"] < sweep["abuffer_fragments"] <= every["abuffer_fragments"]
+PY
 
 # info --json: the documented keys with this mesh's values.
 "$exe" info "$tmp/box.vtu" --json > "$tmp/info.json" || { echo "FAIL: info --json"; failed=$((failed+1)); }

@@ -27,7 +27,7 @@ struct SortbenchArgs {
   std::string sorts = "centroid,mpvo,mpvo-abuffer,pairwise", size = "512x512", projection = "ortho", csv,
               tetrahedralize = "problem";
   int views = 8;
-  bool check = false, json = false;
+  bool check = false, json = false, abuffer_every_pixel = false;
   std::int64_t pairwise_limit = 50000;
 };
 
@@ -49,17 +49,21 @@ std::vector<Camera> sphere_views(const Mesh& mesh, Projection projection, int n,
 
 // One (mesh, sort, projection) row over the given views.
 nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const SplittingSorter& sorter,
-                         const CellRayTracer* tracer, SortMethod method, const std::vector<Camera>& cameras, int w, int h) {
+                         const CellRayTracer* tracer, SortMethod method, const std::vector<Camera>& cameras, int w, int h,
+                         bool abuffer_every_pixel) {
   const int views = static_cast<int>(cameras.size());
   const Projection projection = cameras.front().projection;
   std::vector<double> times;
   std::map<std::string, std::vector<double>> phases;
   std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0, problem = 0, split = 0;
+  std::int64_t fragments = 0, runs = 0, crossings = 0;
   std::vector<double> split_times;
   std::string ran;
   for (const Camera& camera : cameras) {
     const auto t0 = std::chrono::steady_clock::now();
-    const ViewOrder v = sorter.sort(method, {camera, w, h});
+    SortView view{camera, w, h};
+    view.abuffer_every_pixel = abuffer_every_pixel;
+    const ViewOrder v = sorter.sort(method, view);
     const SortResult& r = v.sorted;
     split_times.push_back(std::max(0.0, seconds_since(t0) - r.stats.seconds));  // finding and splitting problem cells
     problem += v.problem_cells, split += v.mesh->split.cells_split;
@@ -68,6 +72,7 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
     for (const auto& [phase, s] : r.stats.phase_seconds) phases[phase].push_back(s);
     face += r.stats.face_relations, gap += r.stats.gap_relations, pair += r.stats.pair_relations;
     cycles += static_cast<std::int64_t>(r.stats.cycles.size());
+    fragments += r.stats.abuffer_fragments, runs += r.stats.abuffer_runs, crossings += r.stats.abuffer_crossings;
     if (tracer) {
       // The oracle traces the cells the order lists: the mesh, or its cells split for this view.
       std::unique_ptr<CellRayTracer> split_tracer;
@@ -97,6 +102,10 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
           {"face_relations", face / views},
           {"gap_relations", gap / views},
           {"pair_relations", pair / views},
+          {"abuffer_every_pixel", abuffer_every_pixel},
+          {"abuffer_fragments", fragments / views},
+          {"abuffer_runs", runs / views},
+          {"abuffer_crossings", crossings},
           {"cycles", cycles},
           {"tetrahedralize", name_of(sorter.mode())},
           {"problem_cells", problem / views},
@@ -128,6 +137,7 @@ int run_sortbench(const SortbenchArgs& a) {
   static const char* kColumns[] = {"mesh", "sort", "projection", "views", "cells", "median_seconds", "min_seconds",
                                    "max_seconds", "cells_per_second", "face_relations", "gap_relations",
                                    "pair_relations", "cycles", "tetrahedralize", "problem_cells", "cells_split",
+                                   "abuffer_every_pixel", "abuffer_fragments", "abuffer_runs", "abuffer_crossings",
                                    "violations", "violating_pixels"};
   const char* const last = kColumns[std::size(kColumns) - 1];
   std::ofstream csv;
@@ -161,7 +171,7 @@ int run_sortbench(const SortbenchArgs& a) {
         continue;
       }
       for (const auto& cameras : views) {
-        const nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, cameras, w, h);
+        const nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, cameras, w, h, a.abuffer_every_pixel);
         if (a.json) std::printf("%s\n", row.dump().c_str());
         else {
           std::printf("  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  cycles %lld",
@@ -173,6 +183,9 @@ int run_sortbench(const SortbenchArgs& a) {
           if (row["problem_cells"].get<long long>() > 0)
             std::printf("  problem cells %lld (split %lld, %.5f s)", row["problem_cells"].get<long long>(),
                         row["cells_split"].get<long long>(), row["split_seconds"].get<double>());
+          if (row["abuffer_runs"].get<long long>() > 0)
+            std::printf("  A-buffer: %lld runs, %lld pixels%s", row["abuffer_runs"].get<long long>(),
+                        row["abuffer_fragments"].get<long long>(), a.abuffer_every_pixel ? " (every pixel ordered)" : "");
           if (a.check) std::printf("  violations %s (%s pixels)", cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str());
           std::printf("\n    phases:");
           for (const auto& [phase, s] : row["phase_seconds"].items()) std::printf(" %s %.5f s", phase.c_str(), s.get<double>());
@@ -203,6 +216,9 @@ Action add_sortbench(CLI::App& app) {
                   "Cells other than tetrahedra split into tetrahedra: problem (per view, those a ray may cross more "
                   "than twice), all, or none")->capture_default_str();
   cmd->add_flag("--check", args->check, "Count order violations with the ray-traced oracle (slow)");
+  cmd->add_flag("--abuffer-every-pixel", args->abuffer_every_pixel,
+                "mpvo-abuffer samples every boundary face off the hull and orders each pixel's list (the reference "
+                "the sweep is measured against: the same relations, slower)");
   cmd->add_option("--csv", args->csv, "Also write the rows to this CSV file");
   cmd->add_flag("--json", args->json, "One JSON object per line per (mesh, sort, projection) instead of the table");
   cmd->add_option("--pairwise-limit", args->pairwise_limit, "Skip pairwise on meshes with more cells than this")

@@ -1,0 +1,42 @@
+#!/usr/bin/env bash
+# Issue 3's A-buffer target: mpvo-abuffer against mpvo on every non-convex dataset of ../shared/data
+# at 1024^2, 8 views, orthographic and perspective, every order checked by the oracle; and the
+# A-buffer's sweep against ordering every pixel's list (--abuffer-every-pixel), in the same run.
+# usage: bash bench/abuffer.sh [BUILD_DIR] [OUT_DIR]     (about 3 minutes on 2 cores)
+set -euo pipefail
+build=${1:-build}; out=${2:-bench/results}
+here=$(cd "$(dirname "$0")/.." && pwd)
+data=$here/../shared/data
+exe=$build/bin/cellproj
+mkdir -p "$out"
+meshes=()
+for f in vtkdata_post_tets/post_tets.vtu cgns_static_mixer/static_mixer.vtu cgns_heating_coil/heating_coil_fluid.vtu \
+         cgns_heating_coil/heating_coil_solid.vtu exodus_disk_out_ref/disk_out_ref.ex2 nasa_bluntfin/bluntfin_tets.vtu \
+         nasa_bluntfin/bluntfin.vts nasa_combustion_chamber/comb_tets.vtu nasa_combustion_chamber/comb.vts \
+         vtkdata_angular_sector/angular_sector.vtu vtkdata_can/can.vtu vtkdata_notch_stress/notch_stress.vtu \
+         vtk_small_cell_samples/elements.vtu; do
+  [ -f "$data/$f" ] && meshes+=("$data/$f")
+done
+[ ${#meshes[@]} -gt 0 ] || { echo "no datasets under $data" >&2; exit 1; }
+rows=$out/abuffer_1024.jsonl
+"$exe" sortbench "${meshes[@]}" --views 8 --size 1024x1024 --projection both --sorts mpvo,mpvo-abuffer --check --json > "$rows"
+"$exe" sortbench "${meshes[@]}" --views 8 --size 1024x1024 --projection both --sorts mpvo-abuffer --abuffer-every-pixel \
+  --json >> "$rows"
+python3 - "$rows" <<'EOF'
+import json, os, sys
+rows = [json.loads(line) for line in open(sys.argv[1])]
+key = lambda r: (os.path.basename(r["mesh"]), r["projection"])
+mpvo = {key(r): r for r in rows if r["sort"] == "mpvo"}
+sweep = {key(r): r for r in rows if r["sort"] == "mpvo-abuffer" and not r["abuffer_every_pixel"]}
+every = {key(r): r for r in rows if r["sort"] == "mpvo-abuffer" and r["abuffer_every_pixel"]}
+print("| mesh | cells | proj | mpvo ms | mpvo-abuffer ms | ratio (target <= 3) | A-buffer ms | runs | pixels | "
+      "violations (pixels) | cycles | every pixel: A-buffer ms | sweep gain | split ms |")
+print("| --- | ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: | ---: |")
+for k, s in sweep.items():
+    m, e = mpvo[k], every[k]
+    a, ae = s["phase_seconds"]["abuffer"], e["phase_seconds"]["abuffer"]
+    print(f"| {k[0]} | {s['cells']} | {k[1]} | {m['median_seconds']*1e3:.3f} | {s['median_seconds']*1e3:.3f} | "
+          f"{s['median_seconds']/m['median_seconds']:.2f} | {a*1e3:.3f} | {s['abuffer_runs']} | {s['abuffer_fragments']} | "
+          f"{s['violations']} ({s['violating_pixels']}) | {s['cycles']} | {ae*1e3:.3f} | {ae/a:.2f} | "
+          f"{s['split_seconds']*1e3:.1f} |")
+EOF
