@@ -5,19 +5,11 @@
 # usage: bash bench/abuffer.sh [BUILD_DIR] [OUT_DIR]     (about 3 minutes on 2 cores)
 set -euo pipefail
 build=${1:-build}; out=${2:-bench/results}
-here=$(cd "$(dirname "$0")/.." && pwd)
-data=$here/../shared/data
 exe=$build/bin/cellproj
+source "$(dirname "$0")/shared_data.sh"
 mkdir -p "$out"
-meshes=()
-for f in vtkdata_post_tets/post_tets.vtu cgns_static_mixer/static_mixer.vtu cgns_heating_coil/heating_coil_fluid.vtu \
-         cgns_heating_coil/heating_coil_solid.vtu exodus_disk_out_ref/disk_out_ref.ex2 nasa_bluntfin/bluntfin_tets.vtu \
-         nasa_bluntfin/bluntfin.vts nasa_combustion_chamber/comb_tets.vtu nasa_combustion_chamber/comb.vts \
-         vtkdata_angular_sector/angular_sector.vtu vtkdata_can/can.vtu vtkdata_notch_stress/notch_stress.vtu \
-         vtk_small_cell_samples/elements.vtu; do
-  [ -f "$data/$f" ] && meshes+=("$data/$f")
-done
-[ ${#meshes[@]} -gt 0 ] || { echo "no datasets under $data" >&2; exit 1; }
+mapfile -t meshes < <(shared_meshes --non-convex)
+[ ${#meshes[@]} -gt 0 ] || { echo "no datasets under $shared_data" >&2; exit 1; }
 rows=$out/abuffer_1024.jsonl
 "$exe" sortbench "${meshes[@]}" --views 8 --size 1024x1024 --projection both --sorts mpvo,mpvo-abuffer --check --json > "$rows"
 "$exe" sortbench "${meshes[@]}" --views 8 --size 1024x1024 --projection both --sorts mpvo-abuffer --abuffer-every-pixel \

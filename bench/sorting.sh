@@ -4,9 +4,8 @@
 # usage: bash bench/sorting.sh [BUILD_DIR] [OUT_DIR]     (about 10 minutes on 2 cores)
 set -euo pipefail
 build=${1:-build}; out=${2:-bench/results}
-here=$(cd "$(dirname "$0")/.." && pwd)
-data=$here/../shared/data
 exe=$build/bin/cellproj
+source "$(dirname "$0")/shared_data.sh"
 mkdir -p "$out"
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 "$exe" generate box-tets -n 12 -o "$tmp/box-tets-10k.vtu" >/dev/null
@@ -14,13 +13,7 @@ tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 "$exe" generate swirl -n 12 -o "$tmp/swirl-hex-5k.vtu" >/dev/null
 "$exe" generate mixed -n 10 -o "$tmp/mixed-3k.vtu" >/dev/null
 meshes=("$tmp"/*.vtu)
-for f in vtkdata_post_tets/post_tets.vtu cgns_static_mixer/static_mixer.vtu cgns_heating_coil/heating_coil_fluid.vtu \
-         cgns_heating_coil/heating_coil_solid.vtu exodus_disk_out_ref/disk_out_ref.ex2 nasa_bluntfin/bluntfin_tets.vtu \
-         nasa_bluntfin/bluntfin.vts nasa_combustion_chamber/comb_tets.vtu nasa_combustion_chamber/comb.vts \
-         vtkdata_angular_sector/angular_sector.vtu vtkdata_can/can.vtu vtkdata_hexa/hexa.vtu \
-         vtkdata_notch_stress/notch_stress.vtu vtkdata_tetramesh/tetramesh.vtu vtk_small_cell_samples/elements.vtu; do
-  [ -f "$data/$f" ] && meshes+=("$data/$f")
-done
+mapfile -t -O ${#meshes[@]} meshes < <(shared_meshes)
 "$exe" sortbench "${meshes[@]}" --views 8 --size 512x512 --projection both --check --pairwise-limit 20000 \
   --csv "$out/sorting.csv" | tee "$out/sorting.txt"
 # The 1M-tetrahedra targets: mpvo against the centroid radix sort in the same run.
