@@ -32,55 +32,87 @@ int reflex(const RecentredPoints& pts, std::int64_t a, std::int64_t b, std::int6
   return CGAL::orientation(P(a), P(b), P(c), P(d)) == CGAL::POSITIVE;
 }
 
-// A ray crosses the cell's surface (its quads split by the lowest-id diagonal) more than twice
-// only across a contour edge that folds inward: an edge whose two triangles face opposite ways
-// from the viewpoint while the cell is not convex there (figure 3's warped diagonal, or a cell
-// bent at one of its own edges).
-bool is_problem(const MeshView& mesh, const RecentredPoints& pts, const Viewpoint& view, std::int64_t c) {
+// The triangles of a cell's surface, its quads split by the diagonal from their lowest id, as the
+// cell's own vertex indices; returns how many.
+int surface_triangles(const MeshView& mesh, std::int64_t c, std::uint8_t tri[12][3]) {
   const CellDef& def = cell_def(mesh.type(c));
   const std::int64_t* ids = mesh.cell(c);
-  if (def.vertices == 4) return false;
-  if (view.perspective)
-    for (int k = 0; k < def.vertices; ++k)
-      if (!(glm::dot(pts(ids[k]) - view.eye, view.dir) > 0.0)) return true;
-  std::int64_t tri[12][3];
+  auto local = [&](std::int64_t id) {
+    int k = 0;
+    while (ids[k] != id) ++k;
+    return static_cast<std::uint8_t>(k);
+  };
   int n = 0;
   for (int f = 0; f < def.faces; ++f) {
     const FaceDef& face = def.face[f];
-    std::int64_t q[4];
-    for (int k = 0; k < face.size; ++k) q[k] = ids[face.v[k]];
     if (face.size == 3) {
-      std::copy(q, q + 3, tri[n++]);
+      for (int k = 0; k < 3; ++k) tri[n][k] = static_cast<std::uint8_t>(face.v[k]);
+      ++n;
       continue;
     }
-    std::int64_t t[2][3];
+    std::int64_t q[4], t[2][3];
+    for (int k = 0; k < 4; ++k) q[k] = ids[face.v[k]];
     split_quad(q, t);
-    std::copy(t[0], t[0] + 3, tri[n++]);
-    std::copy(t[1], t[1] + 3, tri[n++]);
+    for (int h = 0; h < 2; ++h, ++n)
+      for (int k = 0; k < 3; ++k) tri[n][k] = local(t[h][k]);
   }
-  int side[12];
-  for (int t = 0; t < n; ++t) side[t] = facing(pts, view, tri[t][0], tri[t][1], tri[t][2]);
+  return n;
+}
+
+// The folds of cell c (appended to out when given); returns how many.
+int cell_folds(const MeshView& mesh, const RecentredPoints& pts, std::int64_t c, CellFolds::Fold* out) {
+  if (mesh.type(c) == CellType::Tetra) return 0;
+  const std::int64_t* ids = mesh.cell(c);
+  std::uint8_t tri[12][3];
+  const int n = surface_triangles(mesh, c, tri);
+  int folds = 0;
   for (int t = 0; t < n; ++t)
     for (int e = 0; e < 3; ++e) {
-      const std::int64_t a = tri[t][e], b = tri[t][(e + 1) % 3];
-      for (int u = t + 1; u < n; ++u) {
-        if (side[t] * side[u] >= 0) continue;  // not a contour edge between these two
+      const std::uint8_t a = tri[t][e], b = tri[t][(e + 1) % 3];
+      for (int u = t + 1; u < n; ++u)
         for (int g = 0; g < 3; ++g)
           if (tri[u][g] == b && tri[u][(g + 1) % 3] == a &&
-              reflex(pts, tri[t][0], tri[t][1], tri[t][2], tri[u][(g + 2) % 3]))
-            return true;
-      }
+              reflex(pts, ids[tri[t][0]], ids[tri[t][1]], ids[tri[t][2]], ids[tri[u][(g + 2) % 3]])) {
+            if (out) out[folds] = {{tri[t][0], tri[t][1], tri[t][2]}, {tri[u][0], tri[u][1], tri[u][2]}};
+            ++folds;
+          }
     }
-  return false;
+  return folds;
 }
 
 }  // namespace
 
-std::vector<char> problem_cells(const MeshView& mesh, const RecentredPoints& points, const Viewpoint& view,
-                                std::int64_t* count) {
-  std::vector<char> problem(static_cast<std::size_t>(mesh.n_cells), 0);
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, mesh.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-    for (std::int64_t c = r.begin(); c < r.end(); ++c) problem[c] = is_problem(mesh, points, view, c);
+CellFolds::CellFolds(const MeshView& mesh, std::shared_ptr<const RecentredPoints> points)
+    : mesh_(mesh), points_(std::move(points)), start_(static_cast<std::size_t>(mesh.n_cells) + 1, 0) {
+  const auto cells = tbb::blocked_range<std::int64_t>(0, mesh.n_cells, 4096);
+  tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
+    for (std::int64_t c = r.begin(); c < r.end(); ++c) start_[c + 1] = cell_folds(mesh_, *points_, c, nullptr);
+  });
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c) start_[c + 1] += start_[c];
+  folds_.resize(static_cast<std::size_t>(start_.back()));
+  tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
+    for (std::int64_t c = r.begin(); c < r.end(); ++c) cell_folds(mesh_, *points_, c, folds_.data() + start_[c]);
+  });
+}
+
+std::vector<char> CellFolds::problem_cells(const Viewpoint& view, std::int64_t* count) const {
+  const RecentredPoints& pts = *points_;
+  std::vector<char> problem(static_cast<std::size_t>(mesh_.n_cells), 0);
+  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, mesh_.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
+    for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+      if (mesh_.type(c) == CellType::Tetra) continue;
+      const std::int64_t* ids = mesh_.cell(c);
+      bool behind = false;
+      if (view.perspective)
+        for (int k = 0; k < mesh_.cell_size(c) && !behind; ++k) behind = !(glm::dot(pts(ids[k]) - view.eye, view.dir) > 0.0);
+      bool folded = false;
+      for (std::int64_t f = start_[c]; f < start_[c + 1] && !behind && !folded; ++f) {
+        const Fold& fold = folds_[f];
+        folded = facing(pts, view, ids[fold.t[0]], ids[fold.t[1]], ids[fold.t[2]]) *
+                     facing(pts, view, ids[fold.u[0]], ids[fold.u[1]], ids[fold.u[2]]) < 0;
+      }
+      problem[c] = behind || folded;
+    }
   });
   if (count) *count = std::count(problem.begin(), problem.end(), char(1));
   return problem;

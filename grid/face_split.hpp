@@ -7,6 +7,7 @@
 // Those are the problem cells (also cells bent inward at one of their own edges, seen along it);
 // only they are split into their canonical tetrahedra, for this view.
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -24,12 +25,31 @@ struct Viewpoint {
   glm::dvec3 dir{0.0, 0.0, -1.0};  // unit
 };
 
-// Per cell: 1 when the cell is not a tetrahedron and, seen from `view`, a ray may cross its surface
-// more than twice (an inward-folding edge on its contour), or (perspective) one of its vertices is
-// not in front of the eye (such a cell is ray cast through its tetrahedra). Exact orientation tests
-// (CGAL); parallel over cells (oneTBB).
-std::vector<char> problem_cells(const MeshView& mesh, const RecentredPoints& points, const Viewpoint& view,
-                                std::int64_t* count = nullptr);
+// The inward folds of every cell's surface (its quads split by the diagonal from their lowest id):
+// pairs of its triangles that share an edge at a reflex dihedral angle, found once per mesh with
+// exact orientation tests (CGAL), parallel over cells (oneTBB). A ray crosses a cell's surface more
+// than twice only across a fold on the contour (figure 3's warped diagonal, or a cell bent at one
+// of its own edges), so per view only the folds' two triangles are tested.
+class CellFolds {
+ public:
+  // The mesh's arrays must outlive it; points = recentre(mesh).
+  CellFolds(const MeshView& mesh, std::shared_ptr<const RecentredPoints> points);
+  // Per cell: 1 when the cell is not a tetrahedron and, seen from `view`, one of its folds lies on
+  // the contour (its two triangles face opposite ways), or (perspective) one of its vertices is not
+  // in front of the eye (such a cell is ray cast through its tetrahedra). Parallel over cells.
+  std::vector<char> problem_cells(const Viewpoint& view, std::int64_t* count = nullptr) const;
+  std::int64_t folds() const { return static_cast<std::int64_t>(folds_.size()); }
+
+  struct Fold {
+    std::uint8_t t[3], u[3];  // the two triangles, as the cell's own vertex indices
+  };
+
+ private:
+  MeshView mesh_;
+  std::shared_ptr<const RecentredPoints> points_;
+  std::vector<std::int64_t> start_;  // per cell: its folds from start_[c] to start_[c + 1]
+  std::vector<Fold> folds_;
+};
 
 // A mesh whose chosen cells are replaced by their canonical tetrahedra, over the original mesh's
 // points and field (which must outlive it). Conforming, since both cells of a face split it alike.

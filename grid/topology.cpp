@@ -144,11 +144,8 @@ FaceTopology build_topology(const MeshView& m) {
   return t;
 }
 
-HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) {
+BoundaryHull::BoundaryHull(const MeshView& m, const FaceTopology& t) {
   using K = CGAL::Exact_predicates_inexact_constructions_kernel;
-  HullReport r;
-  if (t.boundary.empty()) return r;
-
   std::vector<char> on_boundary(static_cast<std::size_t>(m.n_points), 0);
   std::vector<K::Point_3> pts;
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
@@ -165,36 +162,50 @@ HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) {
       hi = glm::max(hi, x);
     }
   }
+  if (pts.empty()) return;
   CGAL::Surface_mesh<K::Point_3> hull;
   CGAL::convex_hull_3(pts.begin(), pts.end(), hull);
-  if (hull.number_of_faces() == 0) return r;  // flat or lower-dimensional: no volume to be convex
-
-  // Hull vertices and their neighbours, for climbing to the support point of a direction.
-  std::vector<glm::dvec3> hp;
-  std::vector<std::vector<int>> adj;
+  if (hull.number_of_faces() == 0) return;  // flat or lower-dimensional: no volume to be convex
   for (auto v : hull.vertices()) {
     const auto& p = hull.point(v);
-    hp.emplace_back(p.x(), p.y(), p.z());
-    adj.emplace_back();
-    for (auto u : CGAL::vertices_around_target(hull.halfedge(v), hull)) adj.back().push_back(static_cast<int>(u));
+    vertex_.emplace_back(p.x(), p.y(), p.z());
+    adjacent_.emplace_back();
+    for (auto u : CGAL::vertices_around_target(hull.halfedge(v), hull)) adjacent_.back().push_back(static_cast<int>(u));
   }
-  // On a convex polytope a vertex with no better neighbour maximizes a linear function.
-  auto support = [&](const glm::dvec3& n, int& v) {
-    double best = glm::dot(n, hp[v]);
-    for (bool moved = true; moved;) {
-      moved = false;
-      for (int u : adj[v])
-        if (const double d = glm::dot(n, hp[u]); d > best) {
-          best = d;
-          v = u;
-          moved = true;
-          break;
-        }
-    }
-    return best;
-  };
+  tol_ = 1e-6 * glm::length(hi - lo);  // float32 files round curved hulls by ~1e-7
+}
 
-  const double tol = 1e-6 * glm::length(hi - lo);  // float32 files round curved hulls by ~1e-7
+// On a convex polytope a vertex with no better neighbour maximizes a linear function.
+double BoundaryHull::support(const glm::dvec3& n, int& v) const {
+  double best = glm::dot(n, vertex_[v]);
+  for (bool moved = true; moved;) {
+    moved = false;
+    for (int u : adjacent_[v])
+      if (const double d = glm::dot(n, vertex_[u]); d > best) {
+        best = d;
+        v = u;
+        moved = true;
+        break;
+      }
+  }
+  return best;
+}
+
+bool BoundaryHull::supports(const glm::dvec3& dir, const glm::dvec3* p, int n, int& up, int& down) const {
+  double fmax = -std::numeric_limits<double>::max(), fmin = std::numeric_limits<double>::max();
+  for (int i = 0; i < n; ++i) {
+    fmax = std::max(fmax, glm::dot(dir, p[i]));
+    fmin = std::min(fmin, glm::dot(dir, p[i]));
+  }
+  // Either side of the face may be the outside (inverted cells are not re-oriented in a view).
+  return support(dir, up) <= fmax + tol_ || -support(-dir, down) >= fmin - tol_;
+}
+
+HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) { return boundary_convexity(m, t, BoundaryHull(m, t)); }
+
+HullReport boundary_convexity(const MeshView& m, const FaceTopology& t, const BoundaryHull& hull) {
+  HullReport r;
+  if (t.boundary.empty() || hull.empty()) return r;
   int up = 0, down = 0;
   double area = 0.0, off_area = 0.0;
   r.off_hull.assign(t.boundary.size(), 0);
@@ -210,15 +221,7 @@ HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) {
       r.off_hull[b] = 1;
       continue;
     }
-    const glm::dvec3 dir = nn / len;
-    double fmax = -std::numeric_limits<double>::max(), fmin = std::numeric_limits<double>::max();
-    for (int i = 0; i < n; ++i) {
-      fmax = std::max(fmax, glm::dot(dir, p[i]));
-      fmin = std::min(fmin, glm::dot(dir, p[i]));
-    }
-    // Either side of the face may be the outside (inverted cells are not re-oriented in a view).
-    const bool on_hull = support(dir, up) <= fmax + tol || -support(-dir, down) >= fmin - tol;
-    if (!on_hull) {
+    if (!hull.supports(nn / len, p, n, up, down)) {
       r.off_hull[b] = 1;
       ++r.boundary_faces_off_hull;
       off_area += 0.5 * len;

@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "grid/mesh.hpp"
 
 namespace cellproj {
@@ -47,8 +49,28 @@ struct HullReport {
   std::vector<char> off_hull;  // per FaceTopology::boundary entry: 1 when that face is not on the hull
 };
 
+// The convex hull of a mesh's boundary points (CGAL's 3D convex hull), for telling the boundary
+// faces on it from those off it. The same for a mesh and any mesh made from it by splitting cells
+// (a split adds no boundary point), so it is made once per mesh.
+class BoundaryHull {
+ public:
+  BoundaryHull(const MeshView& mesh, const FaceTopology& topo);
+  bool empty() const { return vertex_.empty(); }  // no boundary, or a flat one
+  // Whether the face through p[0..n) with unit normal dir lies on a supporting plane of the hull,
+  // within 1e-6 of the bounding-box diagonal (thinner concavities are invisible), on either side.
+  // up and down: hull vertices to start the climbs from (the last answer's, for nearby faces).
+  bool supports(const glm::dvec3& dir, const glm::dvec3* p, int n, int& up, int& down) const;
+
+ private:
+  double support(const glm::dvec3& n, int& v) const;  // max n . x over the hull, climbing from vertex v
+  std::vector<glm::dvec3> vertex_;
+  std::vector<std::vector<int>> adjacent_;
+  double tol_ = 0.0;
+};
+
 // The boundary is convex when every boundary face lies on the convex hull of the mesh (a face on
-// a supporting plane, within 1e-6 of the bounding-box diagonal: thinner concavities are invisible). Uses CGAL's 3D convex hull.
+// a supporting plane of the hull).
 HullReport boundary_convexity(const MeshView& mesh, const FaceTopology& topo);
+HullReport boundary_convexity(const MeshView& mesh, const FaceTopology& topo, const BoundaryHull& hull);
 
 }  // namespace cellproj

@@ -28,7 +28,8 @@ const char* name_of(Tetrahedralize mode) { return name_in(kModes, mode); }
 std::string tetrahedralize_names() { return names(kModes); }
 
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
-                                            std::shared_ptr<const RecentredPoints> points) {
+                                            std::shared_ptr<const RecentredPoints> points,
+                                            std::shared_ptr<const BoundaryHull> hull) {
   auto s = std::make_shared<SortableMesh>();
   if (which) {
     s->split = split_cells(mesh, *which);
@@ -37,7 +38,8 @@ std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vec
     s->cells = mesh;
   }
   s->topology = build_topology(s->cells);
-  s->hull = boundary_convexity(s->cells, s->topology);
+  s->boundary_hull = hull ? std::move(hull) : std::make_shared<const BoundaryHull>(s->cells, s->topology);
+  s->hull = boundary_convexity(s->cells, s->topology, *s->boundary_hull);
   s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull, std::move(points));
   return s;
 }
@@ -47,6 +49,7 @@ SplittingSorter::SplittingSorter(const MeshView& mesh, Tetrahedralize mode)
   const bool mixed = std::any_of(mesh.types, mesh.types + mesh.n_cells,
                                  [](std::uint8_t t) { return t != static_cast<std::uint8_t>(CellType::Tetra); });
   if (!mixed) mode_ = Tetrahedralize::none;  // nothing to split
+  if (mixed && mode_ != Tetrahedralize::all) folds_ = std::make_unique<const CellFolds>(mesh, points_);
 }
 
 const SortableMesh& SplittingSorter::base() const { return *base_mesh(); }
@@ -55,7 +58,8 @@ std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!base_) {  // made when first needed: in problem mode most views of a warped grid never need it
     const std::vector<char> all;  // empty: every cell that is not a tetrahedron
-    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr, points_);
+    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr, points_, hull_);
+    hull_ = base_->boundary_hull;
   }
   return base_;
 }
@@ -63,14 +67,17 @@ std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
 SplittingSorter::~SplittingSorter() = default;
 
 std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector<char>& problem) const {
+  std::shared_ptr<const BoundaryHull> hull;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (last_ && last_->problem == problem) return last_;
+    hull = hull_;
   }
-  auto s = sortable_mesh(mesh_, &problem, points_);
+  auto s = sortable_mesh(mesh_, &problem, points_, hull);
   s->problem = problem;
   std::lock_guard<std::mutex> lock(mutex_);
   last_ = s;
+  hull_ = s->boundary_hull;
   return s;
 }
 
@@ -82,7 +89,8 @@ ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view) const {
     return out;
   }
   check_camera(view.camera, "sort view");
-  std::vector<char> problem = problem_cells(mesh_, *points_, viewpoint(view.camera, points_->centre), &out.problem_cells);
+  std::vector<char> problem = folds_ ? folds_->problem_cells(viewpoint(view.camera, points_->centre), &out.problem_cells)
+                                     : std::vector<char>(static_cast<std::size_t>(mesh_.n_cells), 0);
   if (mode_ == Tetrahedralize::none || out.problem_cells == 0) {
     out.mesh = base_mesh();
     out.sorted = out.mesh->sorter->sort(method, view);

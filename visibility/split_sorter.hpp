@@ -30,6 +30,7 @@ struct SortableMesh {
   SplitMesh split;  // the cells when some were split; empty otherwise
   MeshView cells;
   FaceTopology topology;
+  std::shared_ptr<const BoundaryHull> boundary_hull;  // the mesh's, shared by its split meshes
   HullReport hull;
   std::unique_ptr<VisibilitySorter> sorter;
   std::vector<char> problem;  // per original cell, what was split (problem mode)
@@ -62,14 +63,18 @@ class SplittingSorter {
   MeshView mesh_;
   Tetrahedralize mode_;
   std::shared_ptr<const RecentredPoints> points_;  // shared with every sorter it prepares
+  std::unique_ptr<const CellFolds> folds_;         // the cells' inward folds (not in mode all)
   mutable std::mutex mutex_;
   mutable std::shared_ptr<const SortableMesh> base_;
   mutable std::shared_ptr<const SortableMesh> last_;  // the last view's split mesh
+  mutable std::shared_ptr<const BoundaryHull> hull_;   // made with the first mesh prepared
 };
 
 // Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given);
-// `points` are the mesh's recentred points when the caller has them (the split shares them).
+// `points` are the mesh's recentred points and `hull` its boundary's convex hull when the caller
+// has them (every split of the mesh shares them).
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
-                                            std::shared_ptr<const RecentredPoints> points = nullptr);
+                                            std::shared_ptr<const RecentredPoints> points = nullptr,
+                                            std::shared_ptr<const BoundaryHull> hull = nullptr);
 
 }  // namespace cellproj
