@@ -156,10 +156,4 @@ void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int
   }
 }
 
-// The same coverage without the weights: covered(i, j).
-template <class Covered>
-void rasterize_triangle(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Covered&& covered) {
-  rasterize_triangle_weights(p0, p1, p2, width, height, [&](int i, int j, double, double, double) { covered(i, j); });
-}
-
 }  // namespace cellproj

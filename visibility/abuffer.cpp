@@ -168,8 +168,8 @@ void project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, cons
   sort_by_pixel(runs, static_cast<std::uint32_t>(view.width) * static_cast<std::uint32_t>(view.height));
 }
 
-// Sweeps the image row by row and hands each pixel's list of faces, front to back, to `gaps`
-// once per stretch of pixels over which it is the same.
+// Sweeps the image row by row, keeping the list of faces over the current pixel front to back, and
+// reads its "leave, then enter" pairs once per stretch of pixels over which the list is the same.
 class GapSweep {
  public:
   GapSweep(const std::vector<ImageFace>& faces, const SortView& view, bool every_pixel, SortStats& stats)
