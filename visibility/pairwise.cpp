@@ -1,9 +1,10 @@
 // Newell, Newell and Sancha's ordering extended to polyhedra (Stein, Becker and Max; MWSC section
 // 3): every two cells whose projections overlap are tested, cheap rejections first (screen boxes,
 // disjoint depth ranges), then the exact occlusion test: a ray through a point of the overlap of
-// their projections, clipped against both cells. O(n^2) in the worst case: the ground truth for
+// their projections, crossing both cells' surfaces. O(n^2) in the worst case: the ground truth for
 // small meshes.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <limits>
 
@@ -11,6 +12,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
+#include "grid/tetrahedralize.hpp"
 #include "visibility/prepared.hpp"
 
 namespace cellproj {
@@ -70,39 +72,71 @@ double area(const Polygon& p, glm::dvec2& centroid) {
   return 0.5 * a;
 }
 
-// A convex cell's face planes (Newell normals, outward; a point inside has n . x <= d).
-struct CellPlanes {
+// A cell's surface as triangles: quads split by the diagonal from their lowest id, as the
+// rasterizers, the A-buffer and the exact renderer see a warped face.
+struct CellSurface {
   int count = 0;
-  glm::dvec3 n[6];
-  double d[6];
+  std::array<std::int64_t, 3> tri[12];
 };
 
-CellPlanes cell_planes(const VisibilitySorter::Prepared& p, std::int64_t c) {
+CellSurface cell_surface(const VisibilitySorter::Prepared& p, std::int64_t c) {
   const CellDef& def = cell_def(p.mesh.type(c));
   const std::int64_t* ids = p.mesh.cell(c);
-  CellPlanes planes;
+  CellSurface s;
   for (int f = 0; f < def.faces; ++f) {
     const FaceDef& fd = def.face[f];
-    glm::dvec3 x[4], centre(0.0);
-    for (int k = 0; k < fd.size; ++k) x[k] = p.point(ids[fd.v[k]]), centre += x[k] / double(fd.size);
-    planes.n[f] = newell_normal(x, fd.size);
-    planes.d[f] = glm::dot(planes.n[f], centre);
+    std::int64_t q[4], t[2][3];
+    for (int k = 0; k < fd.size; ++k) q[k] = ids[fd.v[k]];
+    if (fd.size == 3) {
+      s.tri[s.count++] = {q[0], q[1], q[2]};
+      continue;
+    }
+    split_quad(q, t);
+    for (const auto& h : t) s.tri[s.count++] = {h[0], h[1], h[2]};
   }
-  planes.count = def.faces;
-  return planes;
+  return s;
 }
 
-// The ray's interval [t0, t1] inside a convex cell; false if it misses.
-bool clip_ray(const CellPlanes& planes, const Ray& r, double& t0, double& t1) {
-  t0 = -std::numeric_limits<double>::infinity();
-  t1 = std::numeric_limits<double>::infinity();
-  for (int f = 0; f < planes.count; ++f) {
-    const double nd = glm::dot(planes.n[f], r.dir), gap = planes.d[f] - glm::dot(planes.n[f], r.origin);
-    if (nd > 0) t1 = std::min(t1, gap / nd);
-    else if (nd < 0) t0 = std::max(t0, gap / nd);
-    else if (gap < 0) return false;
+// The ray's interval [t0, t1] through the cell: from the first to the last of its surface
+// triangles the ray crosses (Moller-Trumbore); false if it crosses none.
+bool ray_interval(const VisibilitySorter::Prepared& p, const CellSurface& s, const Ray& r, double& t0, double& t1) {
+  t0 = std::numeric_limits<double>::infinity();
+  t1 = -t0;
+  for (int k = 0; k < s.count; ++k) {
+    const glm::dvec3 a = p.point(s.tri[k][0]), e1 = p.point(s.tri[k][1]) - a, e2 = p.point(s.tri[k][2]) - a;
+    const glm::dvec3 h = glm::cross(r.dir, e2);
+    const double det = glm::dot(e1, h);
+    if (det == 0.0) continue;  // the ray runs in the triangle's plane
+    const glm::dvec3 o = r.origin - a;
+    const double u = glm::dot(o, h) / det;
+    if (u < 0.0 || u > 1.0) continue;
+    const glm::dvec3 q = glm::cross(o, e1);
+    const double w = glm::dot(r.dir, q) / det;
+    if (w < 0.0 || u + w > 1.0) continue;
+    const double t = glm::dot(e2, q) / det;
+    t0 = std::min(t0, t), t1 = std::max(t1, t);
   }
-  return t1 > t0;
+  return t1 >= t0;
+}
+
+// Calls visit(centre) for the pixel centres (y up, as the hulls) inside convex polygon `poly`
+// that lie in the image, at most kMaxCentres of them, while visit returns true.
+template <class Visit>
+void for_each_centre(const Polygon& poly, int width, int height, Visit&& visit) {
+  constexpr int kMaxCentres = 4096;
+  double x0 = std::numeric_limits<double>::max(), x1 = -x0, y0 = x0, y1 = -x0;
+  for (const auto& q : poly) x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
+  const int i0 = std::max(0, static_cast<int>(std::ceil(x0 - 0.5))), i1 = std::min(width - 1, static_cast<int>(std::floor(x1 - 0.5)));
+  const int j0 = std::max(0, static_cast<int>(std::ceil(-y1 - 0.5))), j1 = std::min(height - 1, static_cast<int>(std::floor(-y0 - 0.5)));
+  int visited = 0;
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
+      const glm::dvec2 c(i + 0.5, -(j + 0.5));
+      bool inside = true;
+      for (std::size_t e = 0; e < poly.size() && inside; ++e) inside = cross(poly[e], poly[(e + 1) % poly.size()], c) >= 0;
+      if (!inside) continue;
+      if (++visited > kMaxCentres || !visit(c)) return;
+    }
 }
 
 struct CellShadow {
@@ -110,7 +144,7 @@ struct CellShadow {
   double x0, x1, y0, y1;  // screen box
   double z0, z1;          // depth range along the view direction
   bool usable = false;    // false when the cell crosses the eye plane
-  CellPlanes planes;
+  CellSurface surface;
 };
 
 }  // namespace
@@ -124,7 +158,7 @@ Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFram
   for (std::int64_t c = 0; c < n; ++c) {
     CellShadow& s = sh[c];
     Polygon pts;
-    s.planes = cell_planes(p, c);
+    s.surface = cell_surface(p, c);
     s.z0 = std::numeric_limits<double>::max(), s.z1 = -s.z0;
     s.usable = true;
     for (int k = 0; k < p.mesh.cell_size(c); ++k) {
@@ -165,15 +199,29 @@ Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFram
           if (overlap.size() < 3 || area(overlap, centre) <= 1e-12 * (a.x1 - a.x0 + b.x1 - b.x0) * (a.y1 - a.y0 + b.y1 - b.y0))
             continue;
           const std::int64_t ca = bin[i], cb = bin[j];
-          bool a_front;
+          bool a_front = false;
           if (a.z1 <= b.z0) a_front = true;
           else if (b.z1 <= a.z0) a_front = false;
           else {  // the exact test: along a ray through the overlap, which is met first
-            const Ray r = rays.ray(centre.x, -centre.y);
-            double ta0, ta1, tb0, tb1;
-            // A ray that misses one of them (an overlap too thin to hold a ray) relates nothing.
-            if (!clip_ray(a.planes, r, ta0, ta1) || !clip_ray(b.planes, r, tb0, tb1)) continue;
-            a_front = ta0 + ta1 < tb0 + tb1;
+            // The overlap of the hulls may hold parts of it that one shadow leaves out (a warped
+            // cell's shadow need not be convex): its centre first, then points pulled in from its
+            // corners, until a ray crosses both.
+            bool hit = false;
+            auto try_ray = [&](const glm::dvec2& at) {  // at: a point of the overlap (y up)
+              const Ray r = rays.ray(at.x, -at.y);
+              double ta0, ta1, tb0, tb1;
+              hit = ray_interval(p, a.surface, r, ta0, ta1) && ray_interval(p, b.surface, r, tb0, tb1);
+              if (hit) a_front = ta0 + ta1 < tb0 + tb1;
+            };
+            for (std::size_t k = 0; k <= overlap.size() && !hit; ++k)
+              try_ray(k == 0 ? centre : centre + 0.5 * (overlap[k - 1] - centre));
+            // Still none: the shadows may meet in a sliver only; the pixel centres inside the
+            // overlap are where the picture (and the oracle) can tell, up to kMaxCentres of them.
+            for_each_centre(overlap, view.width, view.height, [&](const glm::dvec2& at) {
+              if (!hit) try_ray(at);
+              return !hit;
+            });
+            if (!hit) continue;  // no ray through a pixel centre crosses both: nothing to relate
           }
           pairs.emplace_back(a_front ? cb : ca, a_front ? ca : cb);  // the one behind first
         }
