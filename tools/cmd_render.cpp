@@ -58,6 +58,7 @@ nlohmann::json projection_stats_json(const ProjectionStats& p) {
           {"direct_cells", c.direct_cells},
           {"face_relations", p.sort.face_relations},
           {"gap_relations", p.sort.gap_relations},
+          {"abuffer_runs", p.sort.abuffer_runs},
           {"cycles", p.sort.cycles.size()},
           {"phase_seconds", phases}};
   if (!p.gl_renderer.empty()) j["gl_renderer"] = p.gl_renderer;
