@@ -32,30 +32,13 @@ int reflex(const RecentredPoints& pts, std::int64_t a, std::int64_t b, std::int6
   return CGAL::orientation(P(a), P(b), P(c), P(d)) == CGAL::POSITIVE;
 }
 
-// The triangles of a cell's surface, its quads split by the diagonal from their lowest id, as the
-// cell's own vertex indices; returns how many.
-int surface_triangles(const MeshView& mesh, std::int64_t c, std::uint8_t tri[12][3]) {
-  const CellDef& def = cell_def(mesh.type(c));
+// The triangles of a cell's surface (grid/tetrahedralize) as the cell's own vertex indices.
+int surface_triangles(const MeshView& mesh, std::int64_t c, std::uint8_t tri[kMaxSurfaceTriangles][3]) {
   const std::int64_t* ids = mesh.cell(c);
-  auto local = [&](std::int64_t id) {
-    int k = 0;
-    while (ids[k] != id) ++k;
-    return static_cast<std::uint8_t>(k);
-  };
-  int n = 0;
-  for (int f = 0; f < def.faces; ++f) {
-    const FaceDef& face = def.face[f];
-    if (face.size == 3) {
-      for (int k = 0; k < 3; ++k) tri[n][k] = static_cast<std::uint8_t>(face.v[k]);
-      ++n;
-      continue;
-    }
-    std::int64_t q[4], t[2][3];
-    for (int k = 0; k < 4; ++k) q[k] = ids[face.v[k]];
-    split_quad(q, t);
-    for (int h = 0; h < 2; ++h, ++n)
-      for (int k = 0; k < 3; ++k) tri[n][k] = local(t[h][k]);
-  }
+  std::int64_t global[kMaxSurfaceTriangles][3];
+  const int n = surface_triangles(mesh, c, global);
+  for (int t = 0; t < n; ++t)
+    for (int k = 0; k < 3; ++k) tri[t][k] = static_cast<std::uint8_t>(std::find(ids, ids + mesh.cell_size(c), global[t][k]) - ids);
   return n;
 }
 
@@ -63,7 +46,7 @@ int surface_triangles(const MeshView& mesh, std::int64_t c, std::uint8_t tri[12]
 int cell_folds(const MeshView& mesh, const RecentredPoints& pts, std::int64_t c, CellFolds::Fold* out) {
   if (mesh.type(c) == CellType::Tetra) return 0;
   const std::int64_t* ids = mesh.cell(c);
-  std::uint8_t tri[12][3];
+  std::uint8_t tri[kMaxSurfaceTriangles][3];
   const int n = surface_triangles(mesh, c, tri);
   int folds = 0;
   for (int t = 0; t < n; ++t)

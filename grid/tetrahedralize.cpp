@@ -11,6 +11,26 @@ void split_quad(const std::int64_t q[4], std::int64_t tri[2][3]) {
   tri[1][0] = a; tri[1][1] = c; tri[1][2] = d;
 }
 
+int surface_triangles(const MeshView& mesh, std::int64_t c, std::int64_t out[kMaxSurfaceTriangles][3]) {
+  const CellDef& def = cell_def(mesh.type(c));
+  const std::int64_t* ids = mesh.cell(c);
+  int n = 0;
+  for (int f = 0; f < def.faces; ++f) {
+    const FaceDef& face = def.face[f];
+    std::int64_t q[4];
+    for (int k = 0; k < face.size; ++k) q[k] = ids[face.v[k]];
+    if (face.size == 3) {
+      std::copy(q, q + 3, out[n++]);
+      continue;
+    }
+    std::int64_t t[2][3];
+    split_quad(q, t);
+    std::copy(t[0], t[0] + 3, out[n++]);
+    std::copy(t[1], t[1] + 3, out[n++]);
+  }
+  return n;
+}
+
 int canonical_tetrahedra(const MeshView& mesh, std::int64_t c, Tet out[kMaxTetsPerCell]) {
   const std::int64_t* ids = mesh.cell(c);
   const CellDef& def = cell_def(mesh.type(c));
@@ -19,25 +39,14 @@ int canonical_tetrahedra(const MeshView& mesh, std::int64_t c, Tet out[kMaxTetsP
     return 1;
   }
   const std::int64_t apex = *std::min_element(ids, ids + def.vertices);
+  std::int64_t tri[kMaxSurfaceTriangles][3];
+  const int ntri = surface_triangles(mesh, c, tri);
   int n = 0;
-  for (int f = 0; f < def.faces; ++f) {
-    const FaceDef& face = def.face[f];
-    std::int64_t q[4];
-    bool has_apex = false;
-    for (int k = 0; k < face.size; ++k) {
-      q[k] = ids[face.v[k]];
-      has_apex |= q[k] == apex;
-    }
-    if (has_apex) continue;
-    std::int64_t tri[2][3] = {{q[0], q[1], q[2]}, {}};
-    int ntri = 1;
-    if (face.size == 4) {
-      split_quad(q, tri);
-      ntri = 2;
-    }
+  for (int t = 0; t < ntri; ++t) {
+    if (tri[t][0] == apex || tri[t][1] == apex || tri[t][2] == apex) continue;
     // The face is outward, so its triangle turns clockwise seen from the apex: swap to make
     // (t0, t2, t1) counter-clockwise from the apex, VTK's positive orientation.
-    for (int t = 0; t < ntri; ++t) out[n++] = {tri[t][0], tri[t][2], tri[t][1], apex};
+    out[n++] = {tri[t][0], tri[t][2], tri[t][1], apex};
   }
   return n;
 }

@@ -16,8 +16,15 @@ constexpr int kMaxTetsPerCell = 6;  // a hexahedron: 3 faces without the apex, 2
 // Splits quad q (in its cyclic order) into two triangles by the diagonal from its lowest id.
 void split_quad(const std::int64_t q[4], std::int64_t tri[2][3]);
 
+constexpr int kMaxSurfaceTriangles = 12;  // a hexahedron's six quads, two triangles each
+
+// Writes the triangles of cell c's surface (global point ids, each turning as its face, outward
+// for a positive cell) into out, its quads split by split_quad; returns how many.
+int surface_triangles(const MeshView& mesh, std::int64_t c, std::int64_t out[kMaxSurfaceTriangles][3]);
+
 // Writes the tetrahedra of cell c (global point ids, VTK-positive when the cell is) into out and
-// returns how many (1 for a tetrahedron).
+// returns how many (1 for a tetrahedron): the lowest-index vertex joined to each surface triangle
+// that does not contain it.
 int canonical_tetrahedra(const MeshView& mesh, std::int64_t c, Tet out[kMaxTetsPerCell]);
 
 }  // namespace cellproj

@@ -265,18 +265,9 @@ int problem_by_definition(const MeshView& mesh, const RecentredPoints& pts, cons
   if (view.perspective)
     for (int k = 0; k < def.vertices; ++k)
       if (!(glm::dot(pts(ids[k]) - view.eye, view.dir) > 0.0)) return 1;
+  std::int64_t surface[kMaxSurfaceTriangles][3];
   std::vector<std::array<std::int64_t, 3>> tri;
-  for (int f = 0; f < def.faces; ++f) {
-    std::int64_t q[4], t[2][3];
-    for (int k = 0; k < def.face[f].size; ++k) q[k] = ids[def.face[f].v[k]];
-    if (def.face[f].size == 3) {
-      tri.push_back({q[0], q[1], q[2]});
-      continue;
-    }
-    split_quad(q, t);
-    tri.push_back({t[0][0], t[0][1], t[0][2]});
-    tri.push_back({t[1][0], t[1][1], t[1][2]});
-  }
+  for (int t = 0, n = surface_triangles(mesh, c, surface); t < n; ++t) tri.push_back({surface[t][0], surface[t][1], surface[t][2]});
   bool unsure = false;
   // The sign of (b - a) x (c - a) . w, or 0 when it is within rounding of zero.
   auto sign = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& w) {

@@ -4,7 +4,6 @@
 // their projections, crossing both cells' surfaces. O(n^2) in the worst case: the ground truth for
 // small meshes.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <limits>
 
@@ -72,28 +71,16 @@ double area(const Polygon& p, glm::dvec2& centroid) {
   return 0.5 * a;
 }
 
-// A cell's surface as triangles: quads split by the diagonal from their lowest id, as the
-// rasterizers, the A-buffer and the exact renderer see a warped face.
+// A cell's surface as triangles (grid/tetrahedralize: quads split by the diagonal from their
+// lowest id, as the rasterizers, the A-buffer and the exact renderer see a warped face).
 struct CellSurface {
   int count = 0;
-  std::array<std::int64_t, 3> tri[12];
+  std::int64_t tri[kMaxSurfaceTriangles][3];
 };
 
 CellSurface cell_surface(const VisibilitySorter::Prepared& p, std::int64_t c) {
-  const CellDef& def = cell_def(p.mesh.type(c));
-  const std::int64_t* ids = p.mesh.cell(c);
   CellSurface s;
-  for (int f = 0; f < def.faces; ++f) {
-    const FaceDef& fd = def.face[f];
-    std::int64_t q[4], t[2][3];
-    for (int k = 0; k < fd.size; ++k) q[k] = ids[fd.v[k]];
-    if (fd.size == 3) {
-      s.tri[s.count++] = {q[0], q[1], q[2]};
-      continue;
-    }
-    split_quad(q, t);
-    for (const auto& h : t) s.tri[s.count++] = {h[0], h[1], h[2]};
-  }
+  s.count = surface_triangles(p.mesh, c, s.tri);
   return s;
 }
 
