@@ -1,5 +1,11 @@
+#include <algorithm>
+#include <array>
+#include <random>
+#include <string>
+
 #include <gtest/gtest.h>
 
+#include "grid/split_topology.hpp"
 #include "grid/topology.hpp"
 #include "test_util.hpp"
 
@@ -55,4 +61,56 @@ TEST(Topology, QuadMatchesOnlyAQuad) {
   const FaceTopology t = build_topology(m.view());
   EXPECT_EQ(t.shared_faces, 1);
   EXPECT_EQ(static_cast<std::int64_t>(t.boundary.size()), 5 + 4);
+}
+
+// The split mesh's topology patched from the mesh's equals the one built from scratch, for random
+// sets of split cells on meshes of hexahedra, wedges, pyramids and tetrahedra (whose faces meet
+// whole quads, split quads and other tetrahedra).
+TEST(Topology, SplitTopologyEqualsBuildingIt) {
+  std::mt19937 rng(9);
+  for (const char* kind : {"mixed", "swirl", "box", "swirl-tets"}) {
+    const Mesh m = generate(kind, 4);
+    const FaceTopology base = build_topology(m.view());
+    for (int share : {0, 5, 30, 100}) {
+      std::vector<char> which(static_cast<std::size_t>(m.n_cells()), 0);
+      std::uniform_int_distribution<int> pct(0, 99);
+      for (auto& w : which) w = pct(rng) < share;
+      const SplitMesh split = split_cells(m.view(), which);
+      const FaceTopology want = build_topology(split.view), got = split_topology(m.view(), base, split);
+      EXPECT_EQ(got.face_offsets, want.face_offsets) << kind << " " << share;
+      EXPECT_EQ(got.neighbor, want.neighbor) << kind << " " << share;
+      EXPECT_EQ(got.boundary, want.boundary) << kind << " " << share;
+      auto sorted = [](std::vector<std::array<std::int64_t, 3>> v) { return std::sort(v.begin(), v.end()), v; };
+      EXPECT_EQ(sorted(got.split_faces), sorted(want.split_faces)) << kind << " " << share;
+      EXPECT_EQ(got.shared_faces, want.shared_faces) << kind << " " << share;
+      EXPECT_EQ(got.nonmanifold_faces, want.nonmanifold_faces);
+      if (share > 0 && std::string(kind) != "swirl-tets") EXPECT_GT(split.cells_split, 0);
+    }
+  }
+}
+
+// A mesh whose own tetrahedra already meet whole quads (here: a mesh split once, taken as the
+// input): its quads matched to two triangles stay so, or become pairs of triangles when split.
+TEST(Topology, SplitTopologyOfAMeshWithSplitQuads) {
+  std::mt19937 rng(4);
+  std::uniform_int_distribution<int> pct(0, 99);
+  for (const char* kind : {"mixed", "swirl", "box"}) {
+    const Mesh m = generate(kind, 4);
+    std::vector<char> once(static_cast<std::size_t>(m.n_cells()), 0);
+    for (auto& w : once) w = pct(rng) < 40;
+    const SplitMesh input = split_cells(m.view(), once);
+    const FaceTopology base = build_topology(input.view);
+    ASSERT_GT(base.split_faces.size(), 0u) << kind;
+    for (int share : {10, 50}) {
+      std::vector<char> which(static_cast<std::size_t>(input.view.n_cells), 0);
+      for (auto& w : which) w = pct(rng) < share;
+      const SplitMesh split = split_cells(input.view, which);
+      const FaceTopology want = build_topology(split.view), got = split_topology(input.view, base, split);
+      EXPECT_EQ(got.neighbor, want.neighbor) << kind << " " << share;
+      EXPECT_EQ(got.boundary, want.boundary) << kind << " " << share;
+      auto sorted = [](std::vector<std::array<std::int64_t, 3>> v) { return std::sort(v.begin(), v.end()), v; };
+      EXPECT_EQ(sorted(got.split_faces), sorted(want.split_faces)) << kind << " " << share;
+      EXPECT_EQ(got.shared_faces, want.shared_faces) << kind << " " << share;
+    }
+  }
 }

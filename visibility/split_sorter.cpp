@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "grid/name_table.hpp"
+#include "grid/split_topology.hpp"
 
 namespace cellproj {
 namespace {
@@ -29,7 +30,7 @@ std::string tetrahedralize_names() { return names(kModes); }
 
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points,
-                                            std::shared_ptr<const BoundaryHull> hull) {
+                                            std::shared_ptr<const BoundaryHull> hull, const FaceTopology* topology) {
   auto s = std::make_shared<SortableMesh>();
   if (which) {
     s->split = split_cells(mesh, *which);
@@ -37,7 +38,7 @@ std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vec
   } else {
     s->cells = mesh;
   }
-  s->topology = build_topology(s->cells);
+  s->topology = which && topology ? split_topology(mesh, *topology, s->split) : build_topology(s->cells);
   s->boundary_hull = hull ? std::move(hull) : std::make_shared<const BoundaryHull>(s->cells, s->topology);
   s->hull = boundary_convexity(s->cells, s->topology, *s->boundary_hull);
   s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull, std::move(points));
@@ -56,10 +57,9 @@ const SortableMesh& SplittingSorter::base() const { return *base_mesh(); }
 
 std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!base_) {  // made when first needed: in problem mode most views of a warped grid never need it
+  if (!base_) {  // made when first needed: sorted when no cell needs splitting, patched by each split
     const std::vector<char> all;  // empty: every cell that is not a tetrahedron
-    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr, points_, hull_);
-    hull_ = base_->boundary_hull;
+    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr, points_);
   }
   return base_;
 }
@@ -67,17 +67,16 @@ std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
 SplittingSorter::~SplittingSorter() = default;
 
 std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector<char>& problem) const {
-  std::shared_ptr<const BoundaryHull> hull;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (last_ && last_->problem == problem) return last_;
-    hull = hull_;
   }
-  auto s = sortable_mesh(mesh_, &problem, points_, hull);
+  // The unsplit mesh's topology (and hull), prepared once, which each view's split patches.
+  const std::shared_ptr<const SortableMesh> whole = base_mesh();
+  auto s = sortable_mesh(mesh_, &problem, points_, whole->boundary_hull, &whole->topology);
   s->problem = problem;
   std::lock_guard<std::mutex> lock(mutex_);
   last_ = s;
-  hull_ = s->boundary_hull;
   return s;
 }
 

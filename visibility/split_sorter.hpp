@@ -65,16 +65,17 @@ class SplittingSorter {
   std::shared_ptr<const RecentredPoints> points_;  // shared with every sorter it prepares
   std::unique_ptr<const CellFolds> folds_;         // the cells' inward folds (not in mode all)
   mutable std::mutex mutex_;
-  mutable std::shared_ptr<const SortableMesh> base_;
+  mutable std::shared_ptr<const SortableMesh> base_;  // also the topology and hull each split patches
   mutable std::shared_ptr<const SortableMesh> last_;  // the last view's split mesh
-  mutable std::shared_ptr<const BoundaryHull> hull_;   // made with the first mesh prepared
 };
 
 // Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given);
-// `points` are the mesh's recentred points and `hull` its boundary's convex hull when the caller
-// has them (every split of the mesh shares them).
+// `points` are the mesh's recentred points, `hull` its boundary's convex hull and `topology` its
+// face topology when the caller has them (every split of the mesh shares the first two; a split's
+// topology is patched from the mesh's, grid/split_topology).
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points = nullptr,
-                                            std::shared_ptr<const BoundaryHull> hull = nullptr);
+                                            std::shared_ptr<const BoundaryHull> hull = nullptr,
+                                            const FaceTopology* topology = nullptr);
 
 }  // namespace cellproj
