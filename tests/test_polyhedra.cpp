@@ -321,3 +321,27 @@ TEST(Polyhedra, FoldsFoundOnceGiveEachViewsProblemCells) {
     EXPECT_LT(unsure, m.n_cells());  // over 12 views: rarely too close to call in doubles
   }
 }
+
+// A split mesh's sorter that copies the face planes of the cells left whole from the unsplit
+// mesh's sorter sorts exactly as one that computes them all.
+TEST(Polyhedra, SplitSorterCopyingWholeCellsPlanesSortsTheSame) {
+  for (int kind = 0; kind < 2; ++kind) {
+    const Mesh m = kind == 0 ? warped_hexahedra(5) : twisted_mixed(4);
+    const auto pts = std::make_shared<const RecentredPoints>(recentre(m.view()));
+    const FaceTopology topo = build_topology(m.view());
+    const VisibilitySorter whole(m.view(), topo, boundary_convexity(m.view(), topo), pts);
+    std::vector<char> which(static_cast<std::size_t>(m.n_cells()), 0);
+    for (std::size_t c = 0; c < which.size(); c += 3) which[c] = 1;
+    const SplitMesh split = split_cells(m.view(), which);
+    const FaceTopology st = build_topology(split.view);
+    const HullReport hull = boundary_convexity(split.view, st);
+    const VisibilitySorter fresh(split.view, st, hull, pts), copied(split.view, st, hull, pts, &whole, &split.parent);
+    for (const Camera& c : views(3))
+      for (const SortMethod method : {SortMethod::mpvo, SortMethod::mpvo_abuffer}) {
+        const SortResult a = fresh.sort(method, {c, 64, 64}), b = copied.sort(method, {c, 64, 64});
+        EXPECT_EQ(a.order, b.order) << kind;
+        EXPECT_EQ(a.stats.face_relations, b.stats.face_relations);
+        EXPECT_EQ(a.stats.gap_relations, b.stats.gap_relations);
+      }
+  }
+}

@@ -28,6 +28,7 @@ struct VisibilitySorter::Prepared {
   std::vector<glm::dvec3> normal;
   std::vector<double> offset;
   std::vector<std::array<std::int64_t, 3>> face_tri;  // a triangle face's ids turning with the normal; [0] = -1 for quads
+  std::vector<std::int64_t> face_start;  // per cell: the shared faces it makes start here (n + 1)
   std::vector<std::uint8_t> local_a, local_b;  // per shared face: its index among face_a's / face_b's faces
                                                // (local_b kNoLocalFace: face_b's side is a split quad)
   std::vector<std::int32_t> across;   // per cell face (topology order): the cell across a shared face, or -1

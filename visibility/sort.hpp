@@ -69,8 +69,12 @@ class VisibilitySorter {
   // The mesh's arrays and the topology must outlive the sorter. The hull report
   // (boundary_convexity) decides what `automatic` runs, and which boundary faces can bound a gap.
   // `points` (recentre(mesh)) may be shared with other users of the same points; made when null.
+  // A mesh made by splitting cells of another (grid/face_split) may name that mesh's sorter
+  // (`whole`, sharing `points`) and each cell's parent there: the face planes between cells that
+  // stayed whole are copied from it instead of computed again.
   VisibilitySorter(const MeshView& mesh, const FaceTopology& topology, const HullReport& hull,
-                   std::shared_ptr<const RecentredPoints> points = nullptr);
+                   std::shared_ptr<const RecentredPoints> points = nullptr, const VisibilitySorter* whole = nullptr,
+                   const std::vector<std::int64_t>* parent = nullptr);
   ~VisibilitySorter();
   VisibilitySorter(VisibilitySorter&&) noexcept;
 

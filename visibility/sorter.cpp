@@ -56,7 +56,8 @@ const char* name_of(SortMethod method) { return name_in(kNames, method); }
 std::string sort_method_names() { return names(kNames); }
 
 VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& topo, const HullReport& hull,
-                                   std::shared_ptr<const RecentredPoints> points)
+                                   std::shared_ptr<const RecentredPoints> points, const VisibilitySorter* whole,
+                                   const std::vector<std::int64_t>* parent)
     : p_(std::make_unique<Prepared>()) {
   Prepared& p = *p_;
   p.mesh = mesh;
@@ -102,6 +103,20 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
   });
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) first[c + 1] += first[c];
   const std::size_t n_shared = static_cast<std::size_t>(first.back());
+  // A face between two cells the mesh `whole` has too (a split mesh's cells that stayed whole: the
+  // same type as their parent) has the same ids, maker and points there: its plane is copied.
+  auto plane_from_whole = [&](std::int64_t c, std::int64_t m, std::size_t at) {
+    if (!whole) return false;
+    const Prepared& w = *whole->p_;
+    const std::int64_t pc = (*parent)[c], pm = (*parent)[m];
+    if (w.mesh.types[pc] != mesh.types[c] || w.mesh.types[pm] != mesh.types[m]) return false;
+    for (std::int64_t k = w.face_start[pc]; k < w.face_start[pc + 1]; ++k)
+      if (w.face_b[k] == pm && w.local_a[k] == p.local_a[at]) {
+        p.normal[at] = w.normal[k], p.offset[at] = w.offset[k], p.face_tri[at] = w.face_tri[k];
+        return true;
+      }
+    return false;
+  };
   p.face_a.resize(n_shared), p.face_b.resize(n_shared), p.local_a.resize(n_shared), p.local_b.resize(n_shared);
   p.normal.resize(n_shared), p.offset.resize(n_shared), p.face_tri.resize(n_shared);
   tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
@@ -111,18 +126,20 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
         if (!makes(c, cf, back)) continue;
         const std::int64_t m = topo.neighbor[cf];
         // back < 0: c's triangle is half of m's quad (kSplitFace), made from the triangle's side only
-        glm::dvec3 normal, point;
-        face_plane(p, ids, face_ids(c, cf, ids), normal, point, p.face_tri[at]);
         p.across[cf] = static_cast<std::int32_t>(m);
         if (back >= 0) p.across[back] = static_cast<std::int32_t>(c);  // written by this face's maker only
         p.face_a[at] = static_cast<std::int32_t>(c);
         p.face_b[at] = static_cast<std::int32_t>(m);
         p.local_a[at] = static_cast<std::uint8_t>(cf - fo[c]);
         p.local_b[at] = back >= 0 ? static_cast<std::uint8_t>(back - fo[m]) : kNoLocalFace;
-        const double len = glm::length(normal);
-        if (len > 0) normal /= len;
-        p.normal[at] = normal;
-        p.offset[at] = glm::dot(normal, point);
+        if (!plane_from_whole(c, m, at)) {
+          glm::dvec3 normal, point;
+          face_plane(p, ids, face_ids(c, cf, ids), normal, point, p.face_tri[at]);
+          const double len = glm::length(normal);
+          if (len > 0) normal /= len;
+          p.normal[at] = normal;
+          p.offset[at] = glm::dot(normal, point);
+        }
         ++at;
       }
     }
@@ -143,6 +160,7 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
       p.boundary_tri.push_back({tri[t][0], tri[t][1], tri[t][2]});
     }
   }
+  p.face_start = std::move(first);
   p.all_tetrahedra = std::all_of(mesh.types, mesh.types + mesh.n_cells,
                                  [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); });
 }

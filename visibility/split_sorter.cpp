@@ -30,7 +30,8 @@ std::string tetrahedralize_names() { return names(kModes); }
 
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points,
-                                            std::shared_ptr<const BoundaryHull> hull, const FaceTopology* topology) {
+                                            std::shared_ptr<const BoundaryHull> hull, const FaceTopology* topology,
+                                            const VisibilitySorter* whole) {
   auto s = std::make_shared<SortableMesh>();
   if (which) {
     s->split = split_cells(mesh, *which);
@@ -41,7 +42,8 @@ std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vec
   s->topology = which && topology ? split_topology(mesh, *topology, s->split) : build_topology(s->cells);
   s->boundary_hull = hull ? std::move(hull) : std::make_shared<const BoundaryHull>(s->cells, s->topology);
   s->hull = boundary_convexity(s->cells, s->topology, *s->boundary_hull);
-  s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull, std::move(points));
+  s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull, std::move(points),
+                                                 which ? whole : nullptr, which ? &s->split.parent : nullptr);
   return s;
 }
 
@@ -73,7 +75,7 @@ std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector
   }
   // The unsplit mesh's topology (and hull), prepared once, which each view's split patches.
   const std::shared_ptr<const SortableMesh> whole = base_mesh();
-  auto s = sortable_mesh(mesh_, &problem, points_, whole->boundary_hull, &whole->topology);
+  auto s = sortable_mesh(mesh_, &problem, points_, whole->boundary_hull, &whole->topology, whole->sorter.get());
   s->problem = problem;
   std::lock_guard<std::mutex> lock(mutex_);
   last_ = s;

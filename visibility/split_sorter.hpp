@@ -70,12 +70,14 @@ class SplittingSorter {
 };
 
 // Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given);
-// `points` are the mesh's recentred points, `hull` its boundary's convex hull and `topology` its
-// face topology when the caller has them (every split of the mesh shares the first two; a split's
-// topology is patched from the mesh's, grid/split_topology).
+// `points` are the mesh's recentred points, `hull` its boundary's convex hull, `topology` its face
+// topology and `whole` its sorter when the caller has them (every split of the mesh shares the
+// first two; a split's topology is patched from the mesh's, grid/split_topology, and its sorter
+// copies the face planes of the cells left whole).
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points = nullptr,
                                             std::shared_ptr<const BoundaryHull> hull = nullptr,
-                                            const FaceTopology* topology = nullptr);
+                                            const FaceTopology* topology = nullptr,
+                                            const VisibilitySorter* whole = nullptr);
 
 }  // namespace cellproj
