@@ -32,6 +32,20 @@ int reflex(const RecentredPoints& pts, std::int64_t a, std::int64_t b, std::int6
   return CGAL::orientation(P(a), P(b), P(c), P(d)) == CGAL::POSITIVE;
 }
 
+// reflex() in doubles where they are sure of it: 1 or 0, or -1 when d is too near the plane of
+// (a, b, c) for the determinant's rounding (Shewchuk's bound for orient3d, 7.8e-16 of its
+// permanent; here with a margin), where only the exact test can tell. Nearly coplanar pairs (the two
+// halves of a planar quad) are common, and the exact test is slow on them.
+int surely_reflex(const RecentredPoints& pts, std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d) {
+  const glm::dvec3 pa = pts(a), u = pts(b) - pa, v = pts(c) - pa, w = pts(d) - pa;
+  const double det = u.x * (v.y * w.z - v.z * w.y) + u.y * (v.z * w.x - v.x * w.z) + u.z * (v.x * w.y - v.y * w.x);
+  const double permanent = std::abs(u.x) * (std::abs(v.y * w.z) + std::abs(v.z * w.y)) +
+                           std::abs(u.y) * (std::abs(v.z * w.x) + std::abs(v.x * w.z)) +
+                           std::abs(u.z) * (std::abs(v.x * w.y) + std::abs(v.y * w.x));
+  const double bound = 2e-15 * permanent;
+  return det > bound ? 1 : det < -bound ? 0 : -1;
+}
+
 // The triangles of a cell's surface (grid/tetrahedralize) as the cell's own vertex indices.
 int surface_triangles(const MeshView& mesh, std::int64_t c, std::uint8_t tri[kMaxSurfaceTriangles][3]) {
   const std::int64_t* ids = mesh.cell(c);
@@ -42,40 +56,48 @@ int surface_triangles(const MeshView& mesh, std::int64_t c, std::uint8_t tri[kMa
   return n;
 }
 
-// The folds of cell c (appended to out when given); returns how many.
-int cell_folds(const MeshView& mesh, const RecentredPoints& pts, std::int64_t c, CellFolds::Fold* out) {
-  if (mesh.type(c) == CellType::Tetra) return 0;
+// Appends the folds of cell c to out: pairs of its surface triangles across an edge (the
+// triangle with the edge a -> b and the one with b -> a) whose dihedral angle is reflex, or too
+// near flat for doubles to tell (left to the exact test, in the views that need it).
+void cell_folds(const MeshView& mesh, const RecentredPoints& pts, std::int64_t c, std::vector<CellFolds::Fold>& out) {
+  if (mesh.type(c) == CellType::Tetra) return;
   const std::int64_t* ids = mesh.cell(c);
   std::uint8_t tri[kMaxSurfaceTriangles][3];
   const int n = surface_triangles(mesh, c, tri);
-  int folds = 0;
+  std::int8_t owner[8][8];  // owner[a][b]: the triangle with the directed edge a -> b
+  std::fill(&owner[0][0], &owner[0][0] + 64, std::int8_t(-1));
+  for (int t = 0; t < n; ++t)
+    for (int e = 0; e < 3; ++e) owner[tri[t][e]][tri[t][(e + 1) % 3]] = static_cast<std::int8_t>(t);
   for (int t = 0; t < n; ++t)
     for (int e = 0; e < 3; ++e) {
-      const std::uint8_t a = tri[t][e], b = tri[t][(e + 1) % 3];
-      for (int u = t + 1; u < n; ++u)
-        for (int g = 0; g < 3; ++g)
-          if (tri[u][g] == b && tri[u][(g + 1) % 3] == a &&
-              reflex(pts, ids[tri[t][0]], ids[tri[t][1]], ids[tri[t][2]], ids[tri[u][(g + 2) % 3]])) {
-            if (out) out[folds] = {{tri[t][0], tri[t][1], tri[t][2]}, {tri[u][0], tri[u][1], tri[u][2]}};
-            ++folds;
-          }
+      const int u = owner[tri[t][(e + 1) % 3]][tri[t][e]];
+      if (u <= t) continue;  // each pair once, from its lower triangle
+      int far = 0;
+      while (tri[u][far] == tri[t][e] || tri[u][far] == tri[t][(e + 1) % 3]) ++far;
+      const int sure = surely_reflex(pts, ids[tri[t][0]], ids[tri[t][1]], ids[tri[t][2]], ids[tri[u][far]]);
+      if (sure != 0)
+        out.push_back({{tri[t][0], tri[t][1], tri[t][2]}, {tri[u][0], tri[u][1], tri[u][2]}, tri[u][far], sure < 0});
     }
-  return folds;
 }
 
 }  // namespace
 
 CellFolds::CellFolds(const MeshView& mesh, std::shared_ptr<const RecentredPoints> points)
     : mesh_(mesh), points_(std::move(points)), start_(static_cast<std::size_t>(mesh.n_cells) + 1, 0) {
-  const auto cells = tbb::blocked_range<std::int64_t>(0, mesh.n_cells, 4096);
-  tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
-    for (std::int64_t c = r.begin(); c < r.end(); ++c) start_[c + 1] = cell_folds(mesh_, *points_, c, nullptr);
+  // Found per chunk of cells in parallel, then laid end to end in cell order.
+  constexpr std::int64_t kChunk = 4096;
+  const std::int64_t chunks = (mesh.n_cells + kChunk - 1) / kChunk;
+  std::vector<std::vector<Fold>> found(static_cast<std::size_t>(chunks));
+  tbb::parallel_for(std::int64_t(0), chunks, [&](std::int64_t k) {
+    for (std::int64_t c = k * kChunk; c < std::min(mesh.n_cells, (k + 1) * kChunk); ++c) {
+      const std::size_t before = found[k].size();
+      cell_folds(mesh_, *points_, c, found[k]);
+      start_[c + 1] = static_cast<std::int64_t>(found[k].size() - before);
+    }
   });
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) start_[c + 1] += start_[c];
-  folds_.resize(static_cast<std::size_t>(start_.back()));
-  tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
-    for (std::int64_t c = r.begin(); c < r.end(); ++c) cell_folds(mesh_, *points_, c, folds_.data() + start_[c]);
-  });
+  folds_.reserve(static_cast<std::size_t>(start_.back()));
+  for (const auto& f : found) folds_.insert(folds_.end(), f.begin(), f.end());
 }
 
 std::vector<char> CellFolds::problem_cells(const Viewpoint& view, std::int64_t* count) const {
@@ -92,7 +114,8 @@ std::vector<char> CellFolds::problem_cells(const Viewpoint& view, std::int64_t* 
       for (std::int64_t f = start_[c]; f < start_[c + 1] && !behind && !folded; ++f) {
         const Fold& fold = folds_[f];
         folded = facing(pts, view, ids[fold.t[0]], ids[fold.t[1]], ids[fold.t[2]]) *
-                     facing(pts, view, ids[fold.u[0]], ids[fold.u[1]], ids[fold.u[2]]) < 0;
+                     facing(pts, view, ids[fold.u[0]], ids[fold.u[1]], ids[fold.u[2]]) < 0 &&
+                 (!fold.unsure || reflex(pts, ids[fold.t[0]], ids[fold.t[1]], ids[fold.t[2]], ids[fold.far]));
       }
       problem[c] = behind || folded;
     }

@@ -26,8 +26,9 @@ struct Viewpoint {
 };
 
 // The inward folds of every cell's surface (its quads split by the diagonal from their lowest id):
-// pairs of its triangles that share an edge at a reflex dihedral angle, found once per mesh with
-// exact orientation tests (CGAL), parallel over cells (oneTBB). A ray crosses a cell's surface more
+// pairs of its triangles that share an edge at a reflex dihedral angle, found once per mesh,
+// parallel over cells (oneTBB); pairs too near flat for doubles are kept and decided by the exact
+// test (CGAL) in a view where they lie on the contour. A ray crosses a cell's surface more
 // than twice only across a fold on the contour (figure 3's warped diagonal, or a cell bent at one
 // of its own edges), so per view only the folds' two triangles are tested.
 class CellFolds {
@@ -42,6 +43,8 @@ class CellFolds {
 
   struct Fold {
     std::uint8_t t[3], u[3];  // the two triangles, as the cell's own vertex indices
+    std::uint8_t far;         // u's vertex off the shared edge
+    bool unsure;              // too near flat for doubles: reflex only if the exact test says so
   };
 
  private:
