@@ -61,7 +61,8 @@ std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
   std::lock_guard<std::mutex> lock(mutex_);
   if (!base_) {  // made when first needed: sorted when no cell needs splitting, patched by each split
     const std::vector<char> all;  // empty: every cell that is not a tetrahedron
-    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr, points_);
+    base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr, points_, hull_);
+    if (!hull_) hull_ = base_->boundary_hull;
   }
   return base_;
 }
@@ -69,16 +70,23 @@ std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
 SplittingSorter::~SplittingSorter() = default;
 
 std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector<char>& problem) const {
+  std::shared_ptr<const SortableMesh> whole;
+  std::shared_ptr<const BoundaryHull> hull;
+  bool first_split;
   {
     std::lock_guard<std::mutex> lock(mutex_);
     if (last_ && last_->problem == problem) return last_;
+    whole = base_, hull = hull_, first_split = !last_;
   }
-  // The unsplit mesh's topology (and hull), prepared once, which each view's split patches.
-  const std::shared_ptr<const SortableMesh> whole = base_mesh();
-  auto s = sortable_mesh(mesh_, &problem, points_, whole->boundary_hull, &whole->topology, whole->sorter.get());
+  // Each split patches the unsplit mesh's topology and sorter (grid/split_topology), made once,
+  // when a second split is needed: a single view pays for its own split only, as from scratch.
+  if (!whole && !first_split) whole = base_mesh();
+  auto s = whole ? sortable_mesh(mesh_, &problem, points_, whole->boundary_hull, &whole->topology, whole->sorter.get())
+                 : sortable_mesh(mesh_, &problem, points_, hull);
   s->problem = problem;
   std::lock_guard<std::mutex> lock(mutex_);
   last_ = s;
+  if (!hull_) hull_ = s->boundary_hull;
   return s;
 }
 

@@ -67,6 +67,7 @@ class SplittingSorter {
   mutable std::mutex mutex_;
   mutable std::shared_ptr<const SortableMesh> base_;  // also the topology and hull each split patches
   mutable std::shared_ptr<const SortableMesh> last_;  // the last view's split mesh
+  mutable std::shared_ptr<const BoundaryHull> hull_;   // the boundary's hull, from the first mesh prepared
 };
 
 // Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given);
