@@ -64,15 +64,18 @@ void cell_folds(const MeshView& mesh, const RecentredPoints& pts, std::int64_t c
   const std::int64_t* ids = mesh.cell(c);
   std::uint8_t tri[kMaxSurfaceTriangles][3];
   const int n = surface_triangles(mesh, c, tri);
+  // A triangle with a repeated vertex (a collapsed cell) has no area and makes no fold.
+  auto flat = [&](int t) { return tri[t][0] == tri[t][1] || tri[t][1] == tri[t][2] || tri[t][2] == tri[t][0]; };
   std::int8_t owner[8][8];  // owner[a][b]: the triangle with the directed edge a -> b
   std::fill(&owner[0][0], &owner[0][0] + 64, std::int8_t(-1));
   for (int t = 0; t < n; ++t)
-    for (int e = 0; e < 3; ++e) owner[tri[t][e]][tri[t][(e + 1) % 3]] = static_cast<std::int8_t>(t);
+    if (!flat(t))
+      for (int e = 0; e < 3; ++e) owner[tri[t][e]][tri[t][(e + 1) % 3]] = static_cast<std::int8_t>(t);
   for (int t = 0; t < n; ++t)
-    for (int e = 0; e < 3; ++e) {
+    for (int e = 0; e < 3 && !flat(t); ++e) {
       const int u = owner[tri[t][(e + 1) % 3]][tri[t][e]];
       if (u <= t) continue;  // each pair once, from its lower triangle
-      int far = 0;
+      int far = 0;  // u's vertex off the shared edge (u has three distinct vertices)
       while (tri[u][far] == tri[t][e] || tri[u][far] == tri[t][(e + 1) % 3]) ++far;
       const int sure = surely_reflex(pts, ids[tri[t][0]], ids[tri[t][1]], ids[tri[t][2]], ids[tri[u][far]]);
       if (sure != 0)

@@ -345,3 +345,26 @@ TEST(Polyhedra, SplitSorterCopyingWholeCellsPlanesSortsTheSame) {
       }
   }
 }
+
+// A hexahedron collapsed to a wedge (two vertex ids repeated, as some files store wedges): its
+// zero-area triangles make no fold, and a warped neighbour's folds are still found.
+TEST(Polyhedra, FoldsOfACollapsedHexahedron) {
+  Mesh m = warped_hexahedra(2);
+  const auto* ids = m.view().cell(0);
+  std::vector<std::int64_t> collapsed(ids, ids + 8);
+  collapsed[7] = collapsed[4], collapsed[6] = collapsed[5];  // the top face's edge 4-5 doubled
+  m.add_cell(CellType::Hexahedron, collapsed.data());
+  set_field(m, "s", [](const glm::dvec3&) { return 0.0; });
+  const auto pts = std::make_shared<const RecentredPoints>(recentre(m.view()));
+  const CellFolds folds(m.view(), pts);
+  EXPECT_GT(folds.folds(), 0);
+  for (const Camera& cam : views(3)) {
+    const Camera c = recentred(cam, pts->centre);
+    Viewpoint v;
+    v.perspective = c.projection == Projection::Perspective;
+    v.eye = c.eye;
+    v.dir = glm::normalize(c.target - c.eye);
+    const std::vector<char> problem = folds.problem_cells(v);
+    EXPECT_EQ(problem.size(), static_cast<std::size_t>(m.n_cells()));
+  }
+}
