@@ -38,10 +38,16 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
   std::vector<std::int64_t> first(static_cast<std::size_t>(n) + 1, s.n_cells);
   for (std::int64_t sc = s.n_cells; sc-- > 0;) first[split.parent[sc]] = sc;
   auto is_split = [&](std::int64_t c) { return first[c + 1] - first[c] > 1 || s.type(first[c]) != mesh.type(c); };
-  for (std::int64_t c = 0; c < n; ++c)
-    if (is_split(c))
-      for (std::int64_t cf = base.face_offsets[c]; cf < base.face_offsets[c + 1]; ++cf)
-        if (base.neighbor[cf] == kNonManifold) return build_topology(s);
+  // A split cell with a non-manifold face or a repeated vertex (a collapsed cell) is matched the
+  // general way.
+  for (std::int64_t c = 0; c < n; ++c) {
+    if (!is_split(c)) continue;
+    for (std::int64_t cf = base.face_offsets[c]; cf < base.face_offsets[c + 1]; ++cf)
+      if (base.neighbor[cf] == kNonManifold) return build_topology(s);
+    const std::int64_t* ids = mesh.cell(c);
+    for (int i = 0; i < mesh.cell_size(c); ++i)
+      if (std::find(ids + i + 1, ids + mesh.cell_size(c), ids[i]) != ids + mesh.cell_size(c)) return build_topology(s);
+  }
 
   FaceTopology t;
   t.face_offsets.resize(static_cast<std::size_t>(s.n_cells) + 1, 0);
@@ -104,6 +110,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
       if (size == 4) split_quad(q, tri);
       else std::copy(q, q + 3, tri[0]);
       const TetFace* on[2] = {find(mine, key_of(tri[0], 3)), ntri == 2 ? find(mine, key_of(tri[1], 3)) : nullptr};
+      if (!on[0] || (ntri == 2 && !on[1])) return build_topology(s);  // not a face of the tetrahedra
       if (m == kSplitFace) {  // the mesh's own triangles across this quad (of tetrahedra: never split)
         for (const auto& [quad, t0, t1] : base.split_faces) {
           if (quad != cf) continue;
@@ -123,6 +130,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
         std::int64_t back = -1;
         for (std::int64_t g = base.face_offsets[m]; g < base.face_offsets[m + 1] && back < 0; ++g)
           if (base.neighbor[g] == c && face_key(mesh, m, static_cast<int>(g - base.face_offsets[m])) == k) back = g;
+        if (back < 0) return build_topology(s);  // no face of m with these ids faces c
         for (int h = 0; h < ntri; ++h) t.neighbor[on[h]->cf] = first[m];
         if (size == 3) {
           t.neighbor[scf(back)] = on[0]->cell;

@@ -10,7 +10,7 @@ namespace cellproj {
 // The topology of split.view, where split = split_cells(mesh, ...) and base = build_topology(mesh):
 // the same face offsets, neighbours, boundary list, split quads and counts of shared and
 // non-manifold faces as build_topology(split.view) (tested); the quad statistics are base's.
-// Falls back to build_topology where a split cell has a non-manifold face.
+// Falls back to build_topology where a split cell has a non-manifold face or a repeated vertex.
 FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, const SplitMesh& split);
 
 }  // namespace cellproj

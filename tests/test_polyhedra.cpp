@@ -14,6 +14,7 @@
 
 #include "grid/face_split.hpp"
 #include "grid/read_mesh.hpp"
+#include "grid/split_topology.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "parallel/projection_renderer.hpp"
 #include "projection/projected_cell.hpp"
@@ -367,4 +368,12 @@ TEST(Polyhedra, FoldsOfACollapsedHexahedron) {
     const std::vector<char> problem = folds.problem_cells(v);
     EXPECT_EQ(problem.size(), static_cast<std::size_t>(m.n_cells()));
   }
+  // Split with the cells around it, its topology is patched as it is built.
+  std::vector<char> which(static_cast<std::size_t>(m.n_cells()), 1);
+  which[1] = 0;
+  const SplitMesh split = split_cells(m.view(), which);
+  const FaceTopology base = build_topology(m.view()), want = build_topology(split.view);
+  const FaceTopology got = split_topology(m.view(), base, split);
+  EXPECT_EQ(got.neighbor, want.neighbor);
+  EXPECT_EQ(got.boundary, want.boundary);
 }
