@@ -12,6 +12,7 @@
 #include <glm/vec2.hpp>
 
 #include "grid/tetrahedralize.hpp"
+#include "view/raster.hpp"
 #include "visibility/prepared.hpp"
 
 namespace cellproj {
@@ -106,24 +107,19 @@ bool ray_interval(const VisibilitySorter::Prepared& p, const CellSurface& s, con
   return t1 >= t0;
 }
 
-// Calls visit(centre) for the pixel centres (y up, as the hulls) inside convex polygon `poly`
-// that lie in the image, at most kMaxCentres of them, while visit returns true.
+// Calls visit(centre) for the pixel centres (y up, as the hulls) that convex polygon `poly` covers
+// in the image (its fan of triangles, with the rasterizers' coverage rule), at most kMaxCentres of
+// them, until visit returns false.
 template <class Visit>
 void for_each_centre(const Polygon& poly, int width, int height, Visit&& visit) {
   constexpr int kMaxCentres = 4096;
-  double x0 = std::numeric_limits<double>::max(), x1 = -x0, y0 = x0, y1 = -x0;
-  for (const auto& q : poly) x0 = std::min(x0, q.x), x1 = std::max(x1, q.x), y0 = std::min(y0, q.y), y1 = std::max(y1, q.y);
-  const int i0 = std::max(0, static_cast<int>(std::ceil(x0 - 0.5))), i1 = std::min(width - 1, static_cast<int>(std::floor(x1 - 0.5)));
-  const int j0 = std::max(0, static_cast<int>(std::ceil(-y1 - 0.5))), j1 = std::min(height - 1, static_cast<int>(std::floor(-y0 - 0.5)));
   int visited = 0;
-  for (int j = j0; j <= j1; ++j)
-    for (int i = i0; i <= i1; ++i) {
-      const glm::dvec2 c(i + 0.5, -(j + 0.5));
-      bool inside = true;
-      for (std::size_t e = 0; e < poly.size() && inside; ++e) inside = cross(poly[e], poly[(e + 1) % poly.size()], c) >= 0;
-      if (!inside) continue;
-      if (++visited > kMaxCentres || !visit(c)) return;
-    }
+  bool go = true;
+  auto image = [](const glm::dvec2& q) { return glm::dvec2(q.x, -q.y); };
+  for (std::size_t k = 1; k + 1 < poly.size() && go; ++k)
+    rasterize_triangle_runs(image(poly[0]), image(poly[k]), image(poly[k + 1]), width, height, [&](int j, int b, int e) {
+      for (int i = b; i < e && go; ++i) go = ++visited <= kMaxCentres && visit(glm::dvec2(i + 0.5, -(j + 0.5)));
+    });
 }
 
 struct CellShadow {
