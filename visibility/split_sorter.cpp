@@ -30,8 +30,9 @@ std::string tetrahedralize_names() { return names(kModes); }
 
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points,
-                                            std::shared_ptr<const BoundaryHull> hull, const FaceTopology* topology,
-                                            const VisibilitySorter* whole) {
+                                            std::shared_ptr<const BoundaryHull> hull, const SortableMesh* whole) {
+  if (!which) whole = nullptr;  // nothing to patch
+  if (whole) hull = whole->boundary_hull;
   auto s = std::make_shared<SortableMesh>();
   if (which) {
     s->split = split_cells(mesh, *which);
@@ -39,11 +40,11 @@ std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vec
   } else {
     s->cells = mesh;
   }
-  s->topology = which && topology ? split_topology(mesh, *topology, s->split) : build_topology(s->cells);
+  s->topology = whole ? split_topology(mesh, whole->topology, s->split) : build_topology(s->cells);
   s->boundary_hull = hull ? std::move(hull) : std::make_shared<const BoundaryHull>(s->cells, s->topology);
   s->hull = boundary_convexity(s->cells, s->topology, *s->boundary_hull);
   s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull, std::move(points),
-                                                 which ? whole : nullptr, which ? &s->split.parent : nullptr);
+                                                 whole ? whole->sorter.get() : nullptr, whole ? &s->split.parent : nullptr);
   return s;
 }
 
@@ -81,8 +82,7 @@ std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector
   // Each split patches the unsplit mesh's topology and sorter (grid/split_topology), made once,
   // when a second split is needed: a single view pays for its own split only, as from scratch.
   if (!whole && !first_split) whole = base_mesh();
-  auto s = whole ? sortable_mesh(mesh_, &problem, points_, whole->boundary_hull, &whole->topology, whole->sorter.get())
-                 : sortable_mesh(mesh_, &problem, points_, hull);
+  auto s = sortable_mesh(mesh_, &problem, points_, hull, whole.get());
   s->problem = problem;
   std::lock_guard<std::mutex> lock(mutex_);
   last_ = s;

@@ -71,14 +71,13 @@ class SplittingSorter {
 };
 
 // Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given);
-// `points` are the mesh's recentred points, `hull` its boundary's convex hull, `topology` its face
-// topology and `whole` its sorter when the caller has them (every split of the mesh shares the
-// first two; a split's topology is patched from the mesh's, grid/split_topology, and its sorter
-// copies the face planes of the cells left whole).
+// `points` are the mesh's recentred points and `hull` its boundary's convex hull when the caller
+// has them (every split of the mesh shares both). A split given the prepared unsplit mesh `whole`
+// patches its topology (grid/split_topology) and copies the face planes of the cells left whole
+// from it, and shares its hull.
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points = nullptr,
                                             std::shared_ptr<const BoundaryHull> hull = nullptr,
-                                            const FaceTopology* topology = nullptr,
-                                            const VisibilitySorter* whole = nullptr);
+                                            const SortableMesh* whole = nullptr);
 
 }  // namespace cellproj
