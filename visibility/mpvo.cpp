@@ -135,6 +135,7 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
     drain([&](std::int64_t c, std::int64_t m) {
       if (!emitted[m]) breaker.consumed(c, m);
     });
+    // The cells the drain queued after the broken one are out too.
     for (std::size_t k = order.size(); k-- > 0 && !emitted[order[k]];) emitted[order[k]] = 1;
   }
   return order;
