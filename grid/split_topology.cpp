@@ -9,23 +9,13 @@
 namespace cellproj {
 namespace {
 
-using Key = std::array<std::int64_t, 4>;  // a face's sorted ids; a triangle's 4th is max()
-
-Key key_of(const std::int64_t* ids, int n) {
-  Key k{0, 0, 0, std::numeric_limits<std::int64_t>::max()};
-  for (int i = 0; i < n; ++i) {  // insertion sort of 3 or 4
-    int j = i;
-    for (; j > 0 && k[j - 1] > ids[i]; --j) k[j] = k[j - 1];
-    k[j] = ids[i];
-  }
-  return k;
-}
+using Key = FaceKey;
 
 Key face_key(const MeshView& m, std::int64_t c, int local) {
   const FaceDef& f = cell_def(m.type(c)).face[local];
   std::int64_t ids[4];
   for (int k = 0; k < f.size; ++k) ids[k] = m.cell(c)[f.v[k]];
-  return key_of(ids, f.size);
+  return face_key_of(ids, f.size);
 }
 
 }  // namespace
@@ -58,10 +48,16 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
     return t.face_offsets[first[c]] + (base_cf - base.face_offsets[c]);
   };
 
+  // Seams (matched by position) are matched again at the end, as build_topology does.
+  std::vector<char> seam(base.seam.empty() ? 0 : base.neighbor.size(), 0);
+  for (const std::int64_t cf : base.seam) seam[cf] = 1;
+  auto on_seam = [&](std::int64_t base_cf) { return !seam.empty() && seam[base_cf]; };
+
   // Unsplit cells keep their neighbours (those across from split cells are set below).
   for (std::int64_t c = 0; c < n; ++c) {
     if (is_split(c)) continue;
     for (std::int64_t cf = base.face_offsets[c]; cf < base.face_offsets[c + 1]; ++cf) {
+      if (on_seam(cf)) continue;
       const std::int64_t m = base.neighbor[cf];
       if (m >= 0 && !is_split(m)) t.neighbor[t.face_offsets[first[c]] + (cf - base.face_offsets[c])] = first[m];
       else if (m == kNonManifold) t.neighbor[t.face_offsets[first[c]] + (cf - base.face_offsets[c])] = kNonManifold;
@@ -70,7 +66,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
   // Quads matched to two triangles in the mesh itself stay so while the quad's cell is whole.
   for (const auto& [quad, t0, t1] : base.split_faces) {
     const std::int64_t qc = base.cell_of(quad);
-    if (is_split(qc)) continue;
+    if (is_split(qc) || on_seam(quad)) continue;
     t.neighbor[scf(quad)] = kSplitFace;
     t.neighbor[scf(t0)] = t.neighbor[scf(t1)] = first[qc];
     t.split_faces.push_back({scf(quad), scf(t0), scf(t1)});
@@ -101,7 +97,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
     const CellDef& def = cell_def(mesh.type(c));
     for (int f = 0; f < def.faces; ++f) {
       const std::int64_t cf = base.face_offsets[c] + f, m = base.neighbor[cf];
-      if (m == kBoundary) continue;
+      if (m == kBoundary || on_seam(cf)) continue;
       // The face's triangles (a quad split by the diagonal from its lowest id) and the faces of
       // c's tetrahedra on them.
       const int size = def.face[f].size, ntri = size == 4 ? 2 : 1;
@@ -109,7 +105,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
       for (int k = 0; k < size; ++k) q[k] = mesh.cell(c)[def.face[f].v[k]];
       if (size == 4) split_quad(q, tri);
       else std::copy(q, q + 3, tri[0]);
-      const TetFace* on[2] = {find(mine, key_of(tri[0], 3)), ntri == 2 ? find(mine, key_of(tri[1], 3)) : nullptr};
+      const TetFace* on[2] = {find(mine, face_key_of(tri[0], 3)), ntri == 2 ? find(mine, face_key_of(tri[1], 3)) : nullptr};
       if (!on[0] || (ntri == 2 && !on[1])) return build_topology(s);  // not a face of the tetrahedra
       if (m == kSplitFace) {  // the mesh's own triangles across this quad (of tetrahedra: never split)
         for (const auto& [quad, t0, t1] : base.split_faces) {
@@ -126,7 +122,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
         for (int h = 0; h < ntri; ++h)
           if (const TetFace* o = find(theirs, on[h]->key)) t.neighbor[on[h]->cf] = o->cell;
       } else {  // a whole cell across: its face with the same ids
-        const Key k = key_of(q, size);
+        const Key k = face_key_of(q, size);
         std::int64_t back = -1;
         for (std::int64_t g = base.face_offsets[m]; g < base.face_offsets[m + 1] && back < 0; ++g)
           if (base.neighbor[g] == c && face_key(mesh, m, static_cast<int>(g - base.face_offsets[m])) == k) back = g;
@@ -139,7 +135,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
           std::int64_t bq[4], bt[2][3];
           for (int k = 0; k < 4; ++k) bq[k] = mesh.cell(m)[bf.v[k]];
           split_quad(bq, bt);
-          const bool same = key_of(bt[0], 3) == on[0]->key;
+          const bool same = face_key_of(bt[0], 3) == on[0]->key;
           t.neighbor[scf(back)] = kSplitFace;
           t.split_faces.push_back({scf(back), same ? on[0]->cf : on[1]->cf, same ? on[1]->cf : on[0]->cf});
         }
@@ -153,6 +149,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
     across += t.neighbor[f] >= 0;
   }
   t.shared_faces = across / 2;  // a pair of faces, or a split quad's two triangles, each
+  if (!base.seam.empty()) glue_seams(s, t);  // none can appear where the mesh had none
   t.nonmanifold_faces = base.nonmanifold_faces;
   t.first_nonmanifold_cell = base.first_nonmanifold_cell < 0 ? -1 : first[base.first_nonmanifold_cell];
   t.nonplanar_faces = base.nonplanar_faces;

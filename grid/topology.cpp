@@ -17,8 +17,6 @@
 namespace cellproj {
 namespace {
 
-using FaceKey = std::array<std::int64_t, 4>;  // sorted vertex ids; a triangle's 4th is max()
-
 FaceKey face_key(const std::int64_t* ids, const FaceDef& face) {
   FaceKey k{0, 0, 0, std::numeric_limits<std::int64_t>::max()};
   for (int i = 0; i < face.size; ++i) k[i] = ids[face.v[i]];
@@ -141,6 +139,7 @@ FaceTopology build_topology(const MeshView& m) {
   match_split_quads(m, keys, owner, t);
   for (std::int64_t f = 0; f < n_faces; ++f)
     if (t.neighbor[f] == kBoundary) t.boundary.push_back(f);
+  glue_seams(m, t);
   return t;
 }
 

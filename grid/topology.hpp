@@ -3,6 +3,7 @@
 // three), the boundary faces, non-planar quadrilaterals, and whether the boundary is convex.
 #include <array>
 #include <cstdint>
+#include <limits>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -26,6 +27,9 @@ struct FaceTopology {
   // Quads matched to the two triangles of their canonical split: (quad's cell face, the triangles'
   // cell faces). The triangles' neighbor is the quad's cell; the quad's is kSplitFace.
   std::vector<std::array<std::int64_t, 3>> split_faces;
+  // Seams glued by glue_seams: the cell faces matched by position, not by ids (both sides listed).
+  std::vector<std::int64_t> seam;
+  std::int64_t seam_faces = 0;          // shared faces among those (counted once)
   std::int64_t shared_faces = 0;        // faces (counted once) between exactly two cells
   std::int64_t nonmanifold_faces = 0;   // faces (counted once) used by three or more cells
   std::int64_t first_nonmanifold_cell = -1;
@@ -36,11 +40,31 @@ struct FaceTopology {
   std::int64_t cell_of(std::int64_t cell_face) const;  // the cell a cell face belongs to
 };
 
+// A face's vertex ids in increasing order, what faces are matched by; a triangle's 4th is max().
+using FaceKey = std::array<std::int64_t, 4>;
+inline FaceKey face_key_of(const std::int64_t* ids, int n) {
+  FaceKey k{0, 0, 0, std::numeric_limits<std::int64_t>::max()};
+  for (int i = 0; i < n; ++i) {  // insertion sort of 3 or 4
+    int j = i;
+    for (; j > 0 && k[j - 1] > ids[i]; --j) k[j] = k[j - 1];
+    k[j] = ids[i];
+  }
+  return k;
+}
+
 // A quad is non-planar when its diagonals pass further apart than this share of their length.
 constexpr double kNonPlanarRelative = 1e-6;
 
-// O(F) after a counting sort of the faces by their lowest vertex; parallel over buckets.
+// O(F) after a counting sort of the faces by their lowest vertex; parallel over buckets. Then
+// glue_seams.
 FaceTopology build_topology(const MeshView& mesh);
+
+// Glues the seams among t's boundary faces: blocks stored with their interface points repeated
+// leave pairs of boundary faces at the same place. Two boundary faces whose vertices have the same
+// coordinates (bit-identical), whose cells lie on opposite sides and that no third face shares
+// become a shared face; so does a quad with the two triangles of its diagonal from the lowest id.
+// O(b log b) in the boundary faces; nothing changes when no two boundary points coincide.
+void glue_seams(const MeshView& mesh, FaceTopology& t);
 
 struct HullReport {
   bool convex = false;

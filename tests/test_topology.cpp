@@ -68,8 +68,9 @@ TEST(Topology, QuadMatchesOnlyAQuad) {
 // whole quads, split quads and other tetrahedra).
 TEST(Topology, SplitTopologyEqualsBuildingIt) {
   std::mt19937 rng(9);
-  for (const char* kind : {"mixed", "swirl", "box", "swirl-tets"}) {
-    const Mesh m = generate(kind, 4);
+  for (const std::string kind : {"mixed", "swirl", "box", "swirl-tets", "seamed mixed", "seamed swirl"}) {
+    const bool seamed = kind.rfind("seamed ", 0) == 0;
+    const Mesh m = seamed ? test::with_seam(generate(kind.substr(7), 4), 0.0) : generate(kind, 4);
     const FaceTopology base = build_topology(m.view());
     for (int share : {0, 5, 30, 100}) {
       std::vector<char> which(static_cast<std::size_t>(m.n_cells()), 0);
@@ -84,7 +85,9 @@ TEST(Topology, SplitTopologyEqualsBuildingIt) {
       EXPECT_EQ(sorted(got.split_faces), sorted(want.split_faces)) << kind << " " << share;
       EXPECT_EQ(got.shared_faces, want.shared_faces) << kind << " " << share;
       EXPECT_EQ(got.nonmanifold_faces, want.nonmanifold_faces);
-      if (share > 0 && std::string(kind) != "swirl-tets") EXPECT_GT(split.cells_split, 0);
+      EXPECT_EQ(got.seam_faces, want.seam_faces) << kind << " " << share;
+      if (seamed) EXPECT_GT(got.seam_faces, 0) << kind << " " << share;
+      if (share > 0 && kind != "swirl-tets") EXPECT_GT(split.cells_split, 0);
     }
   }
 }
@@ -113,4 +116,51 @@ TEST(Topology, SplitTopologyOfAMeshWithSplitQuads) {
       EXPECT_EQ(got.shared_faces, want.shared_faces) << kind << " " << share;
     }
   }
+}
+
+// Two blocks with their interface points repeated: the seam's faces are matched by position, so
+// the topology is the one of the mesh stored with each point once (the same cells across the same
+// faces, quads across split quads included) and the boundary is convex again.
+TEST(Topology, SeamOfRepeatedPointsIsGlued) {
+  for (const char* kind : {"box", "mixed", "swirl"}) {
+    const Mesh m = generate(kind, 4), seamed = test::with_seam(m, 0.0);
+    const FaceTopology want = build_topology(m.view()), got = build_topology(seamed.view());
+    EXPECT_EQ(want.seam_faces, 0) << kind;
+    EXPECT_GT(got.seam_faces, 0) << kind;
+    EXPECT_EQ(got.neighbor, want.neighbor) << kind;
+    EXPECT_EQ(got.boundary, want.boundary) << kind;
+    EXPECT_EQ(got.shared_faces, want.shared_faces) << kind;
+    auto sorted = [](std::vector<std::array<std::int64_t, 3>> v) { return std::sort(v.begin(), v.end()), v; };
+    EXPECT_EQ(sorted(got.split_faces), sorted(want.split_faces)) << kind;
+    EXPECT_EQ(boundary_convexity(seamed.view(), got).convex, boundary_convexity(m.view(), want).convex) << kind;
+    // The cells beyond the seam split into tetrahedra: each seam quad is glued to two triangles.
+    std::vector<char> beyond(static_cast<std::size_t>(m.n_cells()), 0);
+    for (std::int64_t c = 0; c < m.n_cells(); ++c) beyond[c] = seamed.connectivity[seamed.offsets[c]] >= m.n_points();
+    const SplitMesh split = split_cells(m.view(), beyond), split_seamed = split_cells(seamed.view(), beyond);
+    const FaceTopology want_split = build_topology(split.view), got_split = build_topology(split_seamed.view);
+    EXPECT_EQ(got_split.neighbor, want_split.neighbor) << kind;
+    EXPECT_EQ(sorted(got_split.split_faces), sorted(want_split.split_faces)) << kind;
+    // A glued pair lists 2 faces, a quad glued to its two triangles 3: some of the latter.
+    EXPECT_GT(got_split.seam.size(), 2 * static_cast<std::size_t>(got_split.seam_faces)) << kind;
+  }
+  const FaceTopology box = build_topology(test::with_seam(generate("box", 4), 0.0).view());
+  EXPECT_EQ(box.seam_faces, 4 * 4);  // the interface x = 0 of a 4 x 4 x 4 box
+}
+
+// Faces at one place are glued only when their cells lie on opposite sides and no third face is
+// there: coincident faces of overlapping cells stay boundary faces.
+TEST(Topology, CoincidentFacesOfOverlappingCellsAreNotGlued) {
+  const glm::dvec3 tri[3] = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}};
+  auto mesh_with = [&](std::initializer_list<double> apex_z) {
+    Mesh m;
+    for (const double z : apex_z) {  // each tetrahedron on its own copy of the triangle
+      const std::int64_t a = m.add_point(tri[0]), b = m.add_point(tri[1]), c = m.add_point(tri[2]);
+      const std::int64_t d = m.add_point({0.2, 0.2, z});
+      m.add_cell(CellType::Tetra, z > 0 ? std::initializer_list<std::int64_t>{a, b, c, d} : std::initializer_list<std::int64_t>{a, c, b, d});
+    }
+    return m;
+  };
+  EXPECT_EQ(build_topology(mesh_with({1.0, -1.0}).view()).seam_faces, 1);
+  EXPECT_EQ(build_topology(mesh_with({1.0, 0.5}).view()).seam_faces, 0);       // same side: overlapping
+  EXPECT_EQ(build_topology(mesh_with({1.0, -1.0, -0.5}).view()).seam_faces, 0);  // three faces at one place
 }

@@ -32,3 +32,21 @@ void append(Mesh& a, const Mesh& b) {
 }
 
 }  // namespace cellproj::test
+
+namespace cellproj::test {
+
+Mesh with_seam(const Mesh& m, double x) {
+  Mesh s = m;
+  const std::int64_t n = m.n_points();
+  s.points.insert(s.points.end(), m.points.begin(), m.points.end());  // point p's copy is n + p
+  for (auto& f : s.fields) f.values.insert(f.values.end(), f.values.begin(), f.values.end());
+  for (std::int64_t c = 0; c < m.n_cells(); ++c) {
+    double cx = 0.0;
+    for (std::int64_t k = m.offsets[c]; k < m.offsets[c + 1]; ++k) cx += m.points[3 * m.connectivity[k]];
+    if (cx / static_cast<double>(m.offsets[c + 1] - m.offsets[c]) > x)
+      for (std::int64_t k = m.offsets[c]; k < m.offsets[c + 1]; ++k) s.connectivity[k] += n;
+  }
+  return s;
+}
+
+}  // namespace cellproj::test

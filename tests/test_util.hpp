@@ -34,6 +34,10 @@ namespace cellproj::test {
 // b's points and cells appended to a (fields: the first field of each, concatenated).
 void append(Mesh& a, const Mesh& b);
 
+// m with the cells whose centroid lies beyond x on copies of the points (point p's is n + p): two
+// blocks with their interface points repeated, a seam (../shared/data: AngularSector, Blunt Fin).
+Mesh with_seam(const Mesh& m, double x);
+
 // int_0^L C(t) kappa(t) exp(-int_0^t kappa) dt by composite Simpson (2e5 intervals): an
 // independent check on the renderer's integrals.
 template <class Kappa, class Colour>

@@ -59,6 +59,7 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
           {"nonfinite_values", nonfinite},
           {"boundary_faces", static_cast<std::int64_t>(topo.boundary.size())},
           {"shared_faces", topo.shared_faces},
+          {"seam_faces", topo.seam_faces},
           {"nonmanifold_faces", topo.nonmanifold_faces},
           {"convex", hull.convex},
           {"boundary_faces_off_hull", hull.boundary_faces_off_hull},
@@ -86,8 +87,10 @@ void print_text(const nlohmann::json& j) {
   for (const auto& [k, v] : j["fields"].items())
     std::printf("    %-28s [%s, %s]  (%s)\n", k.c_str(), v[0].dump().c_str(), v[1].dump().c_str(),
                 j["field_origins"][k].get<std::string>().c_str());
-  std::printf("  boundary faces %lld, shared faces %lld; boundary %s", j["boundary_faces"].get<long long>(),
-              j["shared_faces"].get<long long>(), j["convex"].get<bool>() ? "convex" : "NOT convex");
+  std::printf("  boundary faces %lld, shared faces %lld", j["boundary_faces"].get<long long>(), j["shared_faces"].get<long long>());
+  if (j["seam_faces"].get<long long>())
+    std::printf(" (%lld of them seams: faces at repeated points, matched by position)", j["seam_faces"].get<long long>());
+  std::printf("; boundary %s", j["convex"].get<bool>() ? "convex" : "NOT convex");
   if (!j["convex"].get<bool>())
     std::printf(" (%lld boundary faces, %.1f%% of the boundary area, off the convex hull)",
                 j["boundary_faces_off_hull"].get<long long>(), 100 * j["boundary_area_off_hull"].get<double>());

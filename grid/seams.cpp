@@ -1,0 +1,119 @@
+// Seams: blocks of a multi-block grid written into one file with their interface points repeated
+// (../shared/data: AngularSector, Blunt Fin) meet along pairs of boundary faces at the same place,
+// a zero-thickness "boundary" inside the mesh. Matched by position, such a pair is one shared face:
+// a ray crosses it from one cell into the other, so the order needs the face's relation, not an
+// A-buffer gap, and the mesh may well be convex.
+#include <algorithm>
+#include <array>
+#include <limits>
+#include <tuple>
+#include <unordered_map>
+
+#include <glm/geometric.hpp>
+
+#include "grid/geometry.hpp"
+#include "grid/tetrahedralize.hpp"
+#include "grid/topology.hpp"
+
+namespace cellproj {
+namespace {
+
+using Key = FaceKey;
+constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
+
+// A boundary face that touches a point repeated elsewhere: its key over the points' first ids.
+struct Open {
+  Key key;
+  std::int64_t cf, cell;
+};
+
+}  // namespace
+
+void glue_seams(const MeshView& m, FaceTopology& t) {
+  auto ids_of = [&](std::int64_t cf, std::int64_t ids[4]) {
+    const std::int64_t c = t.cell_of(cf);
+    const FaceDef& face = cell_def(m.type(c)).face[cf - t.face_offsets[c]];
+    for (int i = 0; i < face.size; ++i) ids[i] = m.cell(c)[face.v[i]];
+    return static_cast<int>(face.size);
+  };
+  // The boundary's points in order of their coordinates; a group at the same (bit-identical)
+  // coordinates is named by its lowest id.
+  std::vector<std::int64_t> pts;
+  for (const std::int64_t cf : t.boundary) {
+    std::int64_t ids[4];
+    const int n = ids_of(cf, ids);
+    pts.insert(pts.end(), ids, ids + n);
+  }
+  auto coords = [&](std::int64_t p) { return std::tie(m.points[3 * p], m.points[3 * p + 1], m.points[3 * p + 2]); };
+  std::sort(pts.begin(), pts.end(), [&](std::int64_t a, std::int64_t b) {
+    return coords(a) < coords(b) || (coords(a) == coords(b) && a < b);
+  });
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
+  std::unordered_map<std::int64_t, std::int64_t> first_id;  // only the points of groups of two or more
+  for (std::size_t s = 0, e; s < pts.size(); s = e) {
+    for (e = s + 1; e < pts.size() && coords(pts[e]) == coords(pts[s]);) ++e;
+    if (e - s > 1)
+      for (std::size_t k = s; k < e; ++k) first_id[pts[k]] = pts[s];
+  }
+  if (first_id.empty()) return;
+
+  std::vector<Open> open;
+  for (const std::int64_t cf : t.boundary) {
+    std::int64_t ids[4];
+    const int n = ids_of(cf, ids);
+    bool repeated = false;
+    for (int i = 0; i < n; ++i)
+      if (const auto it = first_id.find(ids[i]); it != first_id.end()) ids[i] = it->second, repeated = true;
+    if (repeated) open.push_back({face_key_of(ids, n), cf, t.cell_of(cf)});
+  }
+  std::sort(open.begin(), open.end(), [](const Open& a, const Open& b) { return std::tie(a.key, a.cf) < std::tie(b.key, b.cf); });
+  auto normal = [&](std::int64_t cf) {
+    std::int64_t ids[4];
+    const int n = ids_of(cf, ids);
+    glm::dvec3 p[4];
+    for (int i = 0; i < n; ++i) p[i] = m.point(ids[i]);
+    return newell_normal(p, n);
+  };
+  // Two faces at one place are a seam when their cells lie on opposite sides of it (overlapping
+  // cells are not glued) and no third face is there too.
+  auto opposite = [&](const Open& a, const Open& b) { return a.cell != b.cell && glm::dot(normal(a.cf), normal(b.cf)) < 0; };
+  auto glue = [&](const Open& a, const Open& b) {
+    t.neighbor[a.cf] = b.cell, t.neighbor[b.cf] = a.cell;
+    t.seam.push_back(a.cf), t.seam.push_back(b.cf);
+  };
+  std::int64_t glued = 0;
+  for (std::size_t s = 0, e; s < open.size(); s = e) {
+    for (e = s + 1; e < open.size() && open[e].key == open[s].key;) ++e;
+    if (e - s == 2 && opposite(open[s], open[s + 1])) glue(open[s], open[s + 1]), ++glued;
+  }
+  // A quad across from two triangles (the cell there split into tetrahedra by the same diagonal).
+  auto find = [&](const Key& k) -> const Open* {
+    const auto it = std::lower_bound(open.begin(), open.end(), k, [](const Open& o, const Key& key) { return o.key < key; });
+    const bool unique = it != open.end() && it->key == k && (it + 1 == open.end() || (it + 1)->key != k);
+    return unique && t.neighbor[it->cf] == kBoundary ? &*it : nullptr;
+  };
+  for (const Open& q : open) {
+    if (q.key[3] == kNone || t.neighbor[q.cf] != kBoundary) continue;
+    std::int64_t ids[4], tri[2][3];
+    ids_of(q.cf, ids);
+    split_quad(ids, tri);
+    const Open* on[2];
+    for (int h = 0; h < 2; ++h) {
+      for (auto& id : tri[h])
+        if (const auto it = first_id.find(id); it != first_id.end()) id = it->second;
+      on[h] = find(face_key_of(tri[h], 3));
+    }
+    if (!on[0] || !on[1] || !opposite(q, *on[0]) || !opposite(q, *on[1])) continue;
+    t.neighbor[q.cf] = kSplitFace;
+    t.neighbor[on[0]->cf] = t.neighbor[on[1]->cf] = q.cell;
+    t.split_faces.push_back({q.cf, on[0]->cf, on[1]->cf});
+    t.seam.insert(t.seam.end(), {q.cf, on[0]->cf, on[1]->cf});
+    ++glued;
+  }
+  t.seam_faces += glued;
+  t.shared_faces += glued;
+  t.boundary.erase(std::remove_if(t.boundary.begin(), t.boundary.end(), [&](std::int64_t cf) { return t.neighbor[cf] != kBoundary; }),
+                   t.boundary.end());
+}
+
+}  // namespace cellproj
