@@ -11,6 +11,8 @@
 #include <filesystem>
 #include <set>
 
+#include <tbb/task_arena.h>
+
 #include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
 #include "grid/validate.hpp"
@@ -159,6 +161,27 @@ TEST(Visibility, AbufferSweepEqualsOrderingEveryPixel) {
       EXPECT_LE(sweep.stats.abuffer_fragments, every.stats.abuffer_fragments);
       EXPECT_LT(sweep.stats.abuffer_runs, every.stats.abuffer_fragments / 2) << kind;
       gaps += sweep.stats.gap_relations;
+    }
+    EXPECT_GT(gaps, 0) << kind;
+  }
+}
+
+// The A-buffer sweeps bands of rows on worker threads, as many bands as the threads allow: the
+// relations, and so the order, are the same from 1 thread as from several.
+TEST(Visibility, AbufferGivesTheSameOrderFromOneAndManyThreads) {
+  for (const char* kind : {"swirl-tets", "mixed"}) {
+    const Scene s(generate(kind, 6));
+    std::int64_t gaps = 0;
+    for (const Camera& c : both_projections(3)) {
+      const SortView view{c, 300, 200};
+      SortResult one, many;
+      tbb::task_arena(1).execute([&] { one = s.sorter->sort(SortMethod::mpvo_abuffer, view); });
+      tbb::task_arena(5).execute([&] { many = s.sorter->sort(SortMethod::mpvo_abuffer, view); });
+      gaps += one.stats.gap_relations;
+      EXPECT_EQ(one.stats.gap_relations, many.stats.gap_relations) << kind;
+      EXPECT_EQ(one.stats.abuffer_runs, many.stats.abuffer_runs) << kind;
+      EXPECT_EQ(one.stats.abuffer_crossings, many.stats.abuffer_crossings) << kind;
+      EXPECT_EQ(one.order, many.order) << kind;
     }
     EXPECT_GT(gaps, 0) << kind;
   }

@@ -8,6 +8,8 @@
 #include <sstream>
 
 #include <nlohmann/json.hpp>
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
 
 #include "grid/error.hpp"
 #include "grid/read_mesh.hpp"
@@ -26,7 +28,7 @@ struct SortbenchArgs {
   std::vector<std::string> meshes;
   std::string sorts = "centroid,mpvo,mpvo-abuffer,pairwise", size = "512x512", projection = "ortho", csv,
               tetrahedralize = "problem";
-  int views = 8;
+  int views = 8, threads = 0;
   bool check = false, json = false, abuffer_every_pixel = false;
   std::int64_t pairwise_limit = 50000;
 };
@@ -146,57 +148,62 @@ int run_sortbench(const SortbenchArgs& a) {
     if (!csv) throw InputError(where(a.csv, "cannot write the CSV file"));
     for (const char* c : kColumns) csv << c << (c == last ? "\n" : ",");
   }
-  for (const std::string& path : a.meshes) {
-    const auto t0 = std::chrono::steady_clock::now();
-    LoadedMesh loaded = load_mesh(path);
-    const Mesh& mesh = loaded.mesh;
-    const double load_seconds = seconds_since(t0);
-    const auto t1 = std::chrono::steady_clock::now();
-    const SplittingSorter sorter(mesh.view(), tetrahedralize);
-    const bool convex = sorter.base().hull.convex;
-    const double prepare_seconds = seconds_since(t1);
-    std::unique_ptr<CellRayTracer> tracer;
-    if (a.check) tracer = std::make_unique<CellRayTracer>(mesh.view());
-    std::vector<std::vector<Camera>> views;  // per projection, shared by every sort
-    for (Projection projection : projections) views.push_back(sphere_views(mesh, projection, a.views, double(w) / h));
-    if (!a.json)
-      std::printf("%s: %lld cells, boundary %s; read %.3f s, topology and sort preparation %.3f s; %d views, %dx%d\n",
-                  path.c_str(), static_cast<long long>(mesh.n_cells()), convex ? "convex" : "not convex", load_seconds,
-                  prepare_seconds, a.views, w, h);
-    for (SortMethod method : methods) {
-      if (method == SortMethod::pairwise && mesh.n_cells() > a.pairwise_limit) {
-        if (!a.json)
-          std::printf("  pairwise skipped: %lld cells is above --pairwise-limit %lld (it is O(n^2))\n",
-                      static_cast<long long>(mesh.n_cells()), static_cast<long long>(a.pairwise_limit));
-        continue;
-      }
-      for (const auto& cameras : views) {
-        const nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, cameras, w, h, a.abuffer_every_pixel);
-        if (a.json) std::printf("%s\n", row.dump().c_str());
-        else {
-          std::printf("  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  cycles %lld",
-                      cell(row["sort"]).c_str(), cell(row["projection"]).c_str(), row["median_seconds"].get<double>(),
-                      row["min_seconds"].get<double>(), row["max_seconds"].get<double>(),
-                      row["cells_per_second"].get<double>(), row["face_relations"].get<long long>(),
-                      row["gap_relations"].get<long long>(), row["pair_relations"].get<long long>(),
-                      row["cycles"].get<long long>());
-          if (row["problem_cells"].get<long long>() > 0)
-            std::printf("  problem cells %lld (split %lld, %.5f s)", row["problem_cells"].get<long long>(),
-                        row["cells_split"].get<long long>(), row["split_seconds"].get<double>());
-          if (row["abuffer_runs"].get<long long>() > 0)
-            std::printf("  A-buffer: %lld runs, %lld pixels%s", row["abuffer_runs"].get<long long>(),
-                        row["abuffer_fragments"].get<long long>(), a.abuffer_every_pixel ? " (every pixel ordered)" : "");
-          if (a.check) std::printf("  violations %s (%s pixels)", cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str());
-          std::printf("\n    phases:");
-          for (const auto& [phase, s] : row["phase_seconds"].items()) std::printf(" %s %.5f s", phase.c_str(), s.get<double>());
-          std::printf("\n");
+  const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+  tbb::task_arena arena(threads);
+  arena.execute([&] {
+    for (const std::string& path : a.meshes) {
+      const auto t0 = std::chrono::steady_clock::now();
+      LoadedMesh loaded = load_mesh(path);
+      const Mesh& mesh = loaded.mesh;
+      const double load_seconds = seconds_since(t0);
+      const auto t1 = std::chrono::steady_clock::now();
+      const SplittingSorter sorter(mesh.view(), tetrahedralize);
+      const bool convex = sorter.base().hull.convex;
+      const double prepare_seconds = seconds_since(t1);
+      std::unique_ptr<CellRayTracer> tracer;
+      if (a.check) tracer = std::make_unique<CellRayTracer>(mesh.view());
+      std::vector<std::vector<Camera>> views;  // per projection, shared by every sort
+      for (Projection projection : projections) views.push_back(sphere_views(mesh, projection, a.views, double(w) / h));
+      if (!a.json)
+        std::printf("%s: %lld cells, boundary %s; read %.3f s, topology and sort preparation %.3f s; %d views, %dx%d\n",
+                    path.c_str(), static_cast<long long>(mesh.n_cells()), convex ? "convex" : "not convex", load_seconds,
+                    prepare_seconds, a.views, w, h);
+      for (SortMethod method : methods) {
+        if (method == SortMethod::pairwise && mesh.n_cells() > a.pairwise_limit) {
+          if (!a.json)
+            std::printf("  pairwise skipped: %lld cells is above --pairwise-limit %lld (it is O(n^2))\n",
+                        static_cast<long long>(mesh.n_cells()), static_cast<long long>(a.pairwise_limit));
+          continue;
         }
-        if (csv.is_open())
-          for (const char* c : kColumns) csv << cell(row[c]) << (c == last ? "\n" : ",");
-        std::fflush(stdout);
+        for (const auto& cameras : views) {
+          nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, cameras, w, h, a.abuffer_every_pixel);
+          row["threads"] = threads;
+          if (a.json) std::printf("%s\n", row.dump().c_str());
+          else {
+            std::printf("  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  cycles %lld",
+                        cell(row["sort"]).c_str(), cell(row["projection"]).c_str(), row["median_seconds"].get<double>(),
+                        row["min_seconds"].get<double>(), row["max_seconds"].get<double>(),
+                        row["cells_per_second"].get<double>(), row["face_relations"].get<long long>(),
+                        row["gap_relations"].get<long long>(), row["pair_relations"].get<long long>(),
+                        row["cycles"].get<long long>());
+            if (row["problem_cells"].get<long long>() > 0)
+              std::printf("  problem cells %lld (split %lld, %.5f s)", row["problem_cells"].get<long long>(),
+                          row["cells_split"].get<long long>(), row["split_seconds"].get<double>());
+            if (row["abuffer_runs"].get<long long>() > 0)
+              std::printf("  A-buffer: %lld runs, %lld pixels%s", row["abuffer_runs"].get<long long>(),
+                          row["abuffer_fragments"].get<long long>(), a.abuffer_every_pixel ? " (every pixel ordered)" : "");
+            if (a.check) std::printf("  violations %s (%s pixels)", cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str());
+            std::printf("\n    phases:");
+            for (const auto& [phase, s] : row["phase_seconds"].items()) std::printf(" %s %.5f s", phase.c_str(), s.get<double>());
+            std::printf("\n");
+          }
+          if (csv.is_open())
+            for (const char* c : kColumns) csv << cell(row[c]) << (c == last ? "\n" : ",");
+          std::fflush(stdout);
+        }
       }
     }
-  }
+  });
   return kExitOk;
 }
 
@@ -215,6 +222,8 @@ Action add_sortbench(CLI::App& app) {
   cmd->add_option("--tetrahedralize", args->tetrahedralize,
                   "Cells other than tetrahedra split into tetrahedra: problem (per view, those a ray may cross more "
                   "than twice), all, or none")->capture_default_str();
+  cmd->add_option("--threads", args->threads, "Worker threads for the sorts' parallel phases (default: all cores)")
+      ->check(CLI::Range(1, 1024));
   cmd->add_flag("--check", args->check, "Count order violations with the ray-traced oracle (slow)");
   cmd->add_flag("--abuffer-every-pixel", args->abuffer_every_pixel,
                 "mpvo-abuffer samples every boundary face off the hull and orders each pixel's list (the reference "

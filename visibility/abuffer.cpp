@@ -15,6 +15,9 @@
 #include <memory>
 
 #include <glm/geometric.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
 
 #include "view/raster.hpp"
 #include "visibility/prepared.hpp"
@@ -51,16 +54,17 @@ bool in_front(const Listed& a, const Listed& b) {
   return !a.entering && b.entering;
 }
 
-// Stable LSD radix sort of the runs by their first pixel, 11 bits a pass.
-void sort_by_pixel(std::vector<Run>& runs, std::uint32_t pixels) {
+// Stable LSD radix sort of the runs by their first pixel, all in first <= pixel < first + pixels,
+// 11 bits a pass.
+void sort_by_pixel(std::vector<Run>& runs, std::uint32_t first, std::uint32_t pixels) {
   std::unique_ptr<Run[]> tmp(new Run[runs.size()]);  // every element is written before it is read
   Run* from = runs.data();
   Run* to = tmp.get();
   for (int shift = 0; shift < 32 && (pixels - 1) >> shift; shift += 11) {
     std::uint32_t count[2049] = {};
-    for (std::size_t k = 0; k < runs.size(); ++k) ++count[((from[k].begin >> shift) & 2047u) + 1];
+    for (std::size_t k = 0; k < runs.size(); ++k) ++count[(((from[k].begin - first) >> shift) & 2047u) + 1];
     for (int b = 0; b < 2048; ++b) count[b + 1] += count[b];
-    for (std::size_t k = 0; k < runs.size(); ++k) to[count[(from[k].begin >> shift) & 2047u]++] = from[k];
+    for (std::size_t k = 0; k < runs.size(); ++k) to[count[((from[k].begin - first) >> shift) & 2047u]++] = from[k];
     std::swap(from, to);
   }
   if (from != runs.data()) std::copy(from, from + runs.size(), runs.data());
@@ -100,81 +104,88 @@ void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int h
       else nearest_leaving[t] = std::min(nearest_leaving[t], f.kmin);
       return false;
     });
-  faces.erase(std::remove_if(faces.begin(), faces.end(), [&](const ProjectedFace& f) {
-                return !each_tile(f, [&](std::size_t t) {
-                  return f.face.entering() ? nearest_leaving[t] <= f.kmax + key_slack(nearest_leaving[t], f.kmax)
-                                           : deepest_entering[t] + key_slack(deepest_entering[t], f.kmin) >= f.kmin;
-                });
-              }),
-              faces.end());
+  std::vector<char> keep(faces.size());
+  tbb::parallel_for(std::size_t(0), faces.size(), [&](std::size_t k) {
+    const ProjectedFace& f = faces[k];
+    keep[k] = each_tile(f, [&](std::size_t t) {
+      return f.face.entering() ? nearest_leaving[t] <= f.kmax + key_slack(nearest_leaving[t], f.kmax)
+                               : deepest_entering[t] + key_slack(deepest_entering[t], f.kmin) >= f.kmin;
+    });
+  });
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < faces.size(); ++k)
+    if (keep[k]) faces[kept++] = faces[k];
+  faces.resize(kept);
 }
 
-// The boundary faces off the hull projected into the image (those that can bound a gap, unless
-// every face is asked for), and their runs sorted by pixel.
-void project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, bool cull,
-                   std::vector<ImageFace>& faces, std::vector<Run>& runs) {
+// Boundary face b (off the hull) in the image: false when it covers no pixel centre or crosses the
+// eye plane.
+bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, const PixelRays& rays,
+                  std::size_t b, ProjectedFace& f) {
+  const auto& tri = p.boundary_tri[b];
+  const glm::dvec3 x[3] = {p.point(tri[0]), p.point(tri[1]), p.point(tri[2])};
+  glm::dvec2* s = f.s;
+  double key[3];
+  bool visible = true;
+  for (int k = 0; k < 3; ++k) {
+    visible = visible && rays.project(x[k], s[k].x, s[k].y);
+    const double depth = glm::dot(x[k] - v.eye, v.dir);
+    key[k] = v.perspective ? -1.0 / depth : depth;  // affine in the image: 1/depth under perspective
+  }
+  if (!visible) return false;  // crosses the eye plane: a ray from the eye cannot leave through it and come back
+  const glm::dvec3 n = glm::cross(x[1] - x[0], x[2] - x[0]);  // outward
+  const bool entering = v.perspective ? glm::dot(n, v.eye - x[0]) > 0 : glm::dot(n, v.dir) < 0;
+  const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y);
+  if (area == 0.0) return false;  // edge-on: no pixel centre is covered
+  // The pixels whose centres lie in the bounding box; none: the face covers no centre.
+  f.i0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].x, s[1].x, s[2].x}) - 0.5)));
+  f.i1 = static_cast<int>(std::min(view.width - 1.0, std::floor(std::max({s[0].x, s[1].x, s[2].x}) - 0.5)));
+  f.j0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].y, s[1].y, s[2].y}) - 0.5)));
+  f.j1 = static_cast<int>(std::min(view.height - 1.0, std::floor(std::max({s[0].y, s[1].y, s[2].y}) - 0.5)));
+  if (f.i0 > f.i1 || f.j0 > f.j1) return false;
+  // key(x, y) = k0 + kx x + ky y through the three projected vertices.
+  ImageFace& g = f.face;
+  g.kx = ((key[1] - key[0]) * (s[2].y - s[0].y) - (key[2] - key[0]) * (s[1].y - s[0].y)) / area;
+  g.ky = ((key[2] - key[0]) * (s[1].x - s[0].x) - (key[1] - key[0]) * (s[2].x - s[0].x)) / area;
+  g.k0 = key[0] - g.kx * s[0].x - g.ky * s[0].y;
+  g.tagged = 2u * static_cast<std::uint32_t>(p.boundary_cell[b]) + (entering ? 1u : 0u);
+  // The key's range at the pixel centres it covers, widened by the plane's rounding there.
+  const double rounding = 1e-12 * (std::abs(g.k0) + std::abs(g.kx) * view.width + std::abs(g.ky) * view.height);
+  f.kmin = std::min({key[0], key[1], key[2]}) - rounding;
+  f.kmax = std::max({key[0], key[1], key[2]}) + rounding;
+  return true;
+}
+
+// The boundary faces off the hull projected into the image: those that can bound a gap, unless
+// every face is asked for. Parallel over faces (oneTBB).
+std::vector<ProjectedFace> project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
+                                         bool cull) {
   const PixelRays rays(v.camera, view.width, view.height);
   const std::size_t nb = p.boundary_tri.size();
-  std::vector<ProjectedFace> projected;
-  projected.reserve(nb);
-  for (std::size_t b = 0; b < nb; ++b) {
-    const auto& tri = p.boundary_tri[b];
-    const glm::dvec3 x[3] = {p.point(tri[0]), p.point(tri[1]), p.point(tri[2])};
-    ProjectedFace f;
-    glm::dvec2* s = f.s;
-    double key[3];
-    bool visible = true;
-    for (int k = 0; k < 3; ++k) {
-      visible = visible && rays.project(x[k], s[k].x, s[k].y);
-      const double depth = glm::dot(x[k] - v.eye, v.dir);
-      key[k] = v.perspective ? -1.0 / depth : depth;  // affine in the image: 1/depth under perspective
-    }
-    if (!visible) continue;  // crosses the eye plane: a ray from the eye cannot leave through it and come back
-    const glm::dvec3 n = glm::cross(x[1] - x[0], x[2] - x[0]);  // outward
-    const bool entering = v.perspective ? glm::dot(n, v.eye - x[0]) > 0 : glm::dot(n, v.dir) < 0;
-    const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y);
-    if (area == 0.0) continue;  // edge-on: no pixel centre is covered
-    // The pixels whose centres lie in the bounding box; none: the face covers no centre.
-    f.i0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].x, s[1].x, s[2].x}) - 0.5)));
-    f.i1 = static_cast<int>(std::min(view.width - 1.0, std::floor(std::max({s[0].x, s[1].x, s[2].x}) - 0.5)));
-    f.j0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].y, s[1].y, s[2].y}) - 0.5)));
-    f.j1 = static_cast<int>(std::min(view.height - 1.0, std::floor(std::max({s[0].y, s[1].y, s[2].y}) - 0.5)));
-    if (f.i0 > f.i1 || f.j0 > f.j1) continue;
-    // key(x, y) = k0 + kx x + ky y through the three projected vertices.
-    ImageFace& g = f.face;
-    g.kx = ((key[1] - key[0]) * (s[2].y - s[0].y) - (key[2] - key[0]) * (s[1].y - s[0].y)) / area;
-    g.ky = ((key[2] - key[0]) * (s[1].x - s[0].x) - (key[1] - key[0]) * (s[2].x - s[0].x)) / area;
-    g.k0 = key[0] - g.kx * s[0].x - g.ky * s[0].y;
-    g.tagged = 2u * static_cast<std::uint32_t>(p.boundary_cell[b]) + (entering ? 1u : 0u);
-    // The key's range at the pixel centres it covers, widened by the plane's rounding there.
-    const double rounding = 1e-12 * (std::abs(g.k0) + std::abs(g.kx) * view.width + std::abs(g.ky) * view.height);
-    f.kmin = std::min({key[0], key[1], key[2]}) - rounding;
-    f.kmax = std::max({key[0], key[1], key[2]}) + rounding;
-    projected.push_back(f);
-  }
+  std::vector<ProjectedFace> projected(nb);
+  std::vector<char> in_image(nb, 0);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb, 256), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t b = r.begin(); b < r.end(); ++b) in_image[b] = project_face(p, v, view, rays, b, projected[b]);
+  });
+  std::size_t kept = 0;
+  for (std::size_t b = 0; b < nb; ++b)
+    if (in_image[b]) projected[kept++] = projected[b];
+  projected.resize(kept);
   if (cull) cull_faces_without_gaps(projected, view.width, view.height);
-
-  faces.resize(projected.size());
-  runs.reserve(8 * projected.size());
-  const auto width = static_cast<std::uint32_t>(view.width);
-  for (std::size_t k = 0; k < projected.size(); ++k) {
-    const ProjectedFace& f = projected[k];
-    faces[k] = f.face;
-    rasterize_triangle_runs(f.s[0], f.s[1], f.s[2], view.width, view.height, [&](int j, int i0, int i1) {
-      const std::uint32_t row = static_cast<std::uint32_t>(j) * width;
-      runs.push_back({row + static_cast<std::uint32_t>(i0), row + static_cast<std::uint32_t>(i1), static_cast<std::uint32_t>(k)});
-    });
-  }
-  sort_by_pixel(runs, static_cast<std::uint32_t>(view.width) * static_cast<std::uint32_t>(view.height));
+  return projected;
 }
+
+constexpr int kBandsPerThread = 4;  // bands of rows per worker thread: enough to balance the load
+constexpr int kMinBandRows = 16;    // fewer rows: the faces over two bands are rasterized twice too often
 
 // Sweeps the image row by row, keeping the list of faces over the current pixel front to back, and
 // reads its "leave, then enter" pairs once per stretch of pixels over which the list is the same.
 class GapSweep {
  public:
-  GapSweep(const std::vector<ImageFace>& faces, const SortView& view, bool every_pixel, SortStats& stats)
-      : faces_(faces), width_(static_cast<std::uint32_t>(view.width)), every_pixel_(every_pixel), stats_(stats),
+  GapSweep(const std::vector<ImageFace>& faces, const SortView& view, bool every_pixel)
+      : faces_(faces), width_(static_cast<std::uint32_t>(view.width)), every_pixel_(every_pixel),
         recent_(std::size_t(1) << kRecentBits, ~0ull) {}
+  std::int64_t crossings() const { return crossings_; }  // stretches ordered pixel by pixel
 
   // The "leave, then enter" pairs of every list, as (cell entered, cell left): the cell entered is
   // composited first.
@@ -212,7 +223,7 @@ class GapSweep {
         order_at(x - first + 0.5, y);
         emit_gaps();
         if (next - x > 1 && (every_pixel_ || !ordered_at(next - 1 - first + 0.5, y))) {
-          stats_.abuffer_crossings += !every_pixel_;
+          crossings_ += !every_pixel_;
           for (std::uint32_t q = x + 1; q < next; ++q) order_at(q - first + 0.5, y), emit_gaps();
         }
       }
@@ -261,7 +272,7 @@ class GapSweep {
   const std::vector<ImageFace>& faces_;
   const std::uint32_t width_;
   const bool every_pixel_;
-  SortStats& stats_;
+  std::int64_t crossings_ = 0;
   std::vector<std::uint64_t> recent_;  // (cell entered, cell left) pairs met lately, by hash
   std::vector<Listed> list_;
   std::vector<std::pair<std::int64_t, std::int64_t>> pairs_;
@@ -270,12 +281,56 @@ class GapSweep {
 }  // namespace
 
 Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, SortStats& stats) {
-  std::vector<ImageFace> faces;
-  std::vector<Run> runs;
-  project_faces(p, v, view, !view.abuffer_every_pixel, faces, runs);
-  stats.abuffer_runs = static_cast<std::int64_t>(runs.size());
-  for (const Run& r : runs) stats.abuffer_fragments += r.end - r.begin;
-  std::vector<std::pair<std::int64_t, std::int64_t>> pairs = GapSweep(faces, view, view.abuffer_every_pixel, stats).run(runs);
+  const std::vector<ProjectedFace> projected = project_faces(p, v, view, !view.abuffer_every_pixel);
+  std::vector<ImageFace> faces(projected.size());
+  for (std::size_t k = 0; k < projected.size(); ++k) faces[k] = projected[k].face;
+  // Bands of rows are swept apart, in parallel (oneTBB): each rasterizes the runs of the faces
+  // over it, sorts them by pixel and sweeps its rows. The pairs do not depend on the bands.
+  const int wanted = kBandsPerThread * tbb::this_task_arena::max_concurrency();
+  const int band_rows = std::max(kMinBandRows, (view.height + wanted - 1) / wanted);
+  const int bands = (view.height + band_rows - 1) / band_rows;
+  std::vector<std::uint32_t> start(static_cast<std::size_t>(bands) + 1, 0), over;  // the faces over each band
+  for (const ProjectedFace& f : projected)
+    for (int b = f.j0 / band_rows; b <= f.j1 / band_rows; ++b) ++start[b + 1];
+  for (int b = 0; b < bands; ++b) start[b + 1] += start[b];
+  over.resize(start.back());
+  {
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < projected.size(); ++k)
+      for (int b = projected[k].j0 / band_rows; b <= projected[k].j1 / band_rows; ++b) over[fill[b]++] = static_cast<std::uint32_t>(k);
+  }
+  struct BandResult {
+    std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
+    std::int64_t runs = 0, fragments = 0, crossings = 0;
+  };
+  std::vector<BandResult> result(static_cast<std::size_t>(bands));
+  const auto width = static_cast<std::uint32_t>(view.width);
+  tbb::parallel_for(0, bands, [&](int b) {
+    const int row0 = b * band_rows, row1 = std::min(view.height, row0 + band_rows);
+    std::vector<Run> runs;
+    runs.reserve(8 * (start[b + 1] - start[b]));
+    for (std::uint32_t at = start[b]; at < start[b + 1]; ++at) {
+      const ProjectedFace& f = projected[over[at]];
+      const TriangleCoverage t(f.s[0], f.s[1], f.s[2], view.width, view.height);
+      for (int j = std::max(row0, t.first_row()); j <= std::min(row1 - 1, t.last_row()); ++j) {
+        int i0, i1;
+        t.run(t.row(j), i0, i1);
+        if (i0 < i1) runs.push_back({j * width + static_cast<std::uint32_t>(i0), j * width + static_cast<std::uint32_t>(i1), over[at]});
+      }
+    }
+    sort_by_pixel(runs, static_cast<std::uint32_t>(row0) * width, static_cast<std::uint32_t>(row1 - row0) * width);
+    BandResult& r = result[b];
+    r.runs = static_cast<std::int64_t>(runs.size());
+    for (const Run& run : runs) r.fragments += run.end - run.begin;
+    GapSweep sweep(faces, view, view.abuffer_every_pixel);
+    r.pairs = sweep.run(runs);
+    r.crossings = sweep.crossings();
+  });
+  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
+  for (const BandResult& r : result) {
+    stats.abuffer_runs += r.runs, stats.abuffer_fragments += r.fragments, stats.abuffer_crossings += r.crossings;
+    pairs.insert(pairs.end(), r.pairs.begin(), r.pairs.end());
+  }
   Relations rel;
   stats.gap_relations = rel.build(p.mesh.n_cells, pairs);
   return rel;
