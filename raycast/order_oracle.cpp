@@ -1,6 +1,8 @@
 #include "raycast/order_oracle.hpp"
 
 #include <atomic>
+#include <cmath>
+#include <limits>
 #include <mutex>
 
 #include <tbb/enumerable_thread_specific.h>
@@ -44,7 +46,7 @@ OrderCheck check_order(const CellRayTracer& tracer, std::int64_t n_cells, const 
   }
   for (std::int64_t p : position) out.missing_cells += p == kAbsent;
 
-  std::atomic<std::int64_t> violations{0}, pixels{0}, covered{0};
+  std::atomic<std::int64_t> violations{0}, pixels{0}, covered{0}, overlapping{0}, clear{0};
   std::mutex first;
   tbb::enumerable_thread_specific<std::pair<std::vector<std::int64_t>, std::vector<std::int64_t>>> scratch;
   tracer.trace(camera, width, height, [&](int i, int j, const Ray&, const RaySegment* seg, std::size_t n) {
@@ -55,17 +57,26 @@ OrderCheck check_order(const CellRayTracer& tracer, std::int64_t n_cells, const 
     auto& [pos, tmp] = scratch.local();
     pos.clear();
     std::int64_t last = -1;
+    double reach = -std::numeric_limits<double>::infinity();  // the farthest end of a segment so far
+    std::int64_t reach_cell = -1;
+    bool overlap = false;
     for (std::size_t k = 0; k < n; ++k) {
-      if (seg[k].t1 - seg[k].t0 <= kContact * seg[k].t1 || seg[k].cell == last) continue;
+      if (seg[k].t1 - seg[k].t0 <= kContact * seg[k].t1) continue;
+      // A segment that starts before another cell's has ended, by more than a contact.
+      overlap = overlap || (seg[k].cell != reach_cell && seg[k].t0 < reach - kContact * std::abs(reach));
+      if (seg[k].t1 > reach) reach = seg[k].t1, reach_cell = seg[k].cell;
+      if (seg[k].cell == last) continue;
       last = seg[k].cell;
       if (position[last] != kAbsent) pos.push_back(position[last]);
     }
     if (n) ++covered;
+    if (overlap) ++overlapping;
     tmp.resize(pos.size());
     const std::int64_t bad = ascending_pairs(pos, tmp, 0, pos.size());
     if (bad) {
       violations += bad;
       ++pixels;
+      if (!overlap) ++clear;
       std::lock_guard<std::mutex> lock(first);
       if (out.first_pixel_i < 0) out.first_pixel_i = i, out.first_pixel_j = j;
     }
@@ -74,6 +85,8 @@ OrderCheck check_order(const CellRayTracer& tracer, std::int64_t n_cells, const 
   out.violating_pixels = pixels;
   out.pixels = static_cast<std::int64_t>(width) * height;
   out.pixels_covered = covered;
+  out.overlapping_pixels = overlapping;
+  out.violating_pixels_without_overlap = clear;
   return out;
 }
 

@@ -15,6 +15,10 @@ struct OrderCheck {
   std::int64_t violating_pixels = 0;  // pixels with at least one such pair
   std::int64_t missing_cells = 0;     // cells absent from the order (each one an error)
   std::int64_t repeated_cells = 0;    // cells listed more than once
+  // Pixels whose ray is inside two cells at once over more than a contact (overlapping cells:
+  // inverted or intersecting ones). No back-to-front order of whole cells is right there.
+  std::int64_t overlapping_pixels = 0;
+  std::int64_t violating_pixels_without_overlap = 0;  // where the order, not the mesh, is wrong
   std::int64_t pixels = 0, pixels_covered = 0;
   std::int64_t first_pixel_i = -1, first_pixel_j = -1;  // a violating pixel, for messages
 };

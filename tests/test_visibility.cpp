@@ -249,6 +249,23 @@ TEST(Visibility, CentroidSortIsDefeatedByGradedCells) {
   std::printf("centroid sort on the graded grid: %lld order violations over 8 views\n", static_cast<long long>(centroid));
 }
 
+// Where two cells overlap no order of whole cells is right: the oracle counts those pixels apart.
+// A mesh without overlaps has none (cells sharing faces touch, they do not overlap).
+TEST(Visibility, TheOracleCountsPixelsWhereCellsOverlap) {
+  const Camera c = views(1, Projection::Orthographic, 6.0)[0];
+  const Scene box(generate("box-tets", 3));
+  const OrderCheck none = box.check(SortMethod::mpvo, c, 48);
+  EXPECT_GT(none.pixels_covered, 500);
+  EXPECT_EQ(none.overlapping_pixels, 0);
+  Mesh m = generate("box-tets", 3);
+  test::append(m, generate("box-tets", 1));  // one cube of 6 tetrahedra over the whole box
+  const Scene both(std::move(m));
+  const OrderCheck k = both.check(SortMethod::centroid, c, 48);
+  EXPECT_EQ(k.overlapping_pixels, k.pixels_covered);  // the big cube covers every pixel the box does
+  EXPECT_GT(k.violating_pixels, 0);
+  EXPECT_EQ(k.violating_pixels_without_overlap, 0);
+}
+
 TEST(Visibility, TheOracleCountsAReversedOrder) {
   const Scene s(generate("box-tets", 3));
   const Camera c = views(1, Projection::Orthographic, 6.0)[0];

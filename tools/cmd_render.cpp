@@ -152,6 +152,16 @@ int run_render(const RenderArgs& a) {
                  "(--tetrahedralize none): the order and the picture may be wrong there\n",
                  static_cast<long long>(pst.problem_cells));
 
+  if (!exact && !pst.sort.cycles.empty()) {  // the last frame's
+    long long cells = 0;
+    for (const VisibilityCycle& c : pst.sort.cycles) cells += c.size;
+    std::fprintf(stderr,
+                 "cellproj: warning: the visibility sort met %zu visibility cycle%s (%lld cells) and broke each at one "
+                 "relation: those cells have no back-to-front order (cells that overlap, or warped faces), so the picture "
+                 "may be wrong where they cover each other; --method exact is exact there\n",
+                 pst.sort.cycles.size(), pst.sort.cycles.size() == 1 ? "" : "s", cells);
+  }
+
   std::string png = a.png;
   if (png.empty() && a.npy.empty()) png = std::filesystem::path(a.scene).stem().string() + ".png";
   for (const std::string& out : {png, a.npy}) {

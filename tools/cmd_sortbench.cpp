@@ -57,7 +57,8 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
   const Projection projection = cameras.front().projection;
   std::vector<double> times;
   std::map<std::string, std::vector<double>> phases;
-  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0, problem = 0, split = 0;
+  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0, overlapping_pixels = 0, clear = 0,
+               problem = 0, split = 0;
   std::int64_t fragments = 0, runs = 0, crossings = 0;
   std::vector<double> split_times;
   std::string ran;
@@ -82,7 +83,8 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
       const OrderCheck k = check_order(split_tracer ? *split_tracer : *tracer, v.mesh->cells.n_cells, r.order, camera, w, h);
       if (k.missing_cells || k.repeated_cells)
         throw std::logic_error(std::string(name_of(method)) + " dropped or repeated cells");  // a bug, exit 3
-      violations += k.violations, violating_pixels += k.violating_pixels;
+      violations += k.violations, violating_pixels += k.violating_pixels, overlapping_pixels += k.overlapping_pixels;
+      clear += k.violating_pixels_without_overlap;
     }
   }
   nlohmann::json phase_json = nlohmann::json::object();
@@ -114,7 +116,9 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
           {"cells_split", split / views},
           {"split_seconds", median(split_times)},
           {"violations", tracer ? nlohmann::json(violations) : nlohmann::json(nullptr)},
-          {"violating_pixels", tracer ? nlohmann::json(violating_pixels) : nlohmann::json(nullptr)}};
+          {"violating_pixels", tracer ? nlohmann::json(violating_pixels) : nlohmann::json(nullptr)},
+          {"overlapping_pixels", tracer ? nlohmann::json(overlapping_pixels) : nlohmann::json(nullptr)},
+          {"violating_pixels_without_overlap", tracer ? nlohmann::json(clear) : nlohmann::json(nullptr)}};
 }
 
 std::string cell(const nlohmann::json& v) {
@@ -140,7 +144,8 @@ int run_sortbench(const SortbenchArgs& a) {
                                    "max_seconds", "cells_per_second", "face_relations", "gap_relations",
                                    "pair_relations", "cycles", "tetrahedralize", "problem_cells", "cells_split",
                                    "abuffer_every_pixel", "abuffer_fragments", "abuffer_runs", "abuffer_crossings",
-                                   "violations", "violating_pixels"};
+                                   "violations", "violating_pixels", "overlapping_pixels",
+                                   "violating_pixels_without_overlap"};
   const char* const last = kColumns[std::size(kColumns) - 1];
   std::ofstream csv;
   if (!a.csv.empty()) {
@@ -192,7 +197,10 @@ int run_sortbench(const SortbenchArgs& a) {
             if (row["abuffer_runs"].get<long long>() > 0)
               std::printf("  A-buffer: %lld runs, %lld pixels%s", row["abuffer_runs"].get<long long>(),
                           row["abuffer_fragments"].get<long long>(), a.abuffer_every_pixel ? " (every pixel ordered)" : "");
-            if (a.check) std::printf("  violations %s (%s pixels)", cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str());
+            if (a.check)
+              std::printf("  violations %s (%s pixels, %s of them where no cells overlap; cells overlap on %s)",
+                          cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str(),
+                          cell(row["violating_pixels_without_overlap"]).c_str(), cell(row["overlapping_pixels"]).c_str());
             std::printf("\n    phases:");
             for (const auto& [phase, s] : row["phase_seconds"].items()) std::printf(" %s %.5f s", phase.c_str(), s.get<double>());
             std::printf("\n");
