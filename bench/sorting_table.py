@@ -2,6 +2,9 @@
 """The markdown table of docs/sorting.md from the CSV files bench/sorting.sh writes.
 
 usage: python3 bench/sorting_table.py bench/results/sorting.csv [bench/results/sorting_1m.csv ...]
+                                      [--times bench/results/sorting_times.csv]
+With --times, the timing columns come from that run without the oracle (same meshes, sorts and
+views), the relations and violations from the checked run.
 """
 import csv
 import os
@@ -14,20 +17,38 @@ COLUMNS = [("mesh", "mesh"), ("cells", "cells"), ("sort", "sort"), ("projection"
 LEFT = {"mesh", "sort", "projection"}
 
 
-def row_cells(row):
-    out = [os.path.basename(row["mesh"]) if key == "mesh" else row.get(key, "") for key, _ in COLUMNS]
+TIMING = ("median_seconds", "min_seconds", "max_seconds", "cells_per_second")
+
+
+def key(row):
+    return os.path.basename(row["mesh"]), row["sort"], row["projection"]
+
+
+def row_cells(row, times):
+    timed = times.get(key(row), row)
+    out = [os.path.basename(row["mesh"]) if k == "mesh" else (timed if k in TIMING else row).get(k, "") for k, _ in COLUMNS]
     violations = row.get("violations", "-")
-    out.append("not checked" if violations in ("", "-") else f"{violations} ({row.get('violating_pixels', '')})")
+    if violations in ("", "-"):
+        out.append("not checked")
+    else:
+        clear = row.get("violating_pixels_without_overlap", "")
+        out.append(f"{violations} ({row.get('violating_pixels', '')}" + (f"; {clear} without overlap)" if clear else ")"))
     return out
 
 
-def main(paths):
+def main(args):
+    times = {}
+    if "--times" in args:
+        at = args.index("--times")
+        with open(args[at + 1], newline="") as f:
+            times = {key(r): r for r in csv.DictReader(f)}
+        args = args[:at] + args[at + 2:]
     print("| " + " | ".join(title for _, title in COLUMNS) + " | violations (pixels) |")
-    print("| " + " | ".join("---" if key in LEFT else "---:" for key, _ in COLUMNS) + " | ---: |")
-    for path in paths:
+    print("| " + " | ".join("---" if k in LEFT else "---:" for k, _ in COLUMNS) + " | ---: |")
+    for path in args:
         with open(path, newline="") as f:
             for row in csv.DictReader(f):
-                print("| " + " | ".join(row_cells(row)) + " |")
+                print("| " + " | ".join(row_cells(row, times)) + " |")
 
 
 if __name__ == "__main__":
