@@ -8,7 +8,8 @@
 // or ends, the same faces cover every pixel, and since each face's depth key is affine along the
 // row, a list that is front to back at both ends of such a stretch is front to back at every pixel
 // centre of it. Only a stretch whose order differs at its two ends (faces crossing in depth) is
-// sampled pixel by pixel. The cost is O(b + r + n), r the runs, not the sampled pixels.
+// sampled pixel by pixel. The cost is O(b + r + n), r the runs, not the sampled pixels. Bands of
+// rows are rasterized and swept on worker threads.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -278,58 +279,74 @@ class GapSweep {
   std::vector<std::pair<std::int64_t, std::int64_t>> pairs_;
 };
 
+// The image cut into bands of rows (kBandsPerThread per worker thread, at least kMinBandRows
+// rows), each with the faces whose rows reach into it.
+struct RowBands {
+  int rows = 0, count = 0;
+  std::vector<std::uint32_t> start, face;  // band b's faces: face[start[b] .. start[b + 1])
+
+  RowBands(const std::vector<ProjectedFace>& faces, int height) {
+    const int wanted = kBandsPerThread * tbb::this_task_arena::max_concurrency();
+    rows = std::max(kMinBandRows, (height + wanted - 1) / wanted);
+    count = (height + rows - 1) / rows;
+    start.assign(static_cast<std::size_t>(count) + 1, 0);
+    for (const ProjectedFace& f : faces)
+      for (int b = f.j0 / rows; b <= f.j1 / rows; ++b) ++start[b + 1];
+    for (int b = 0; b < count; ++b) start[b + 1] += start[b];
+    face.resize(start.back());
+    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
+    for (std::size_t k = 0; k < faces.size(); ++k)
+      for (int b = faces[k].j0 / rows; b <= faces[k].j1 / rows; ++b) face[fill[b]++] = static_cast<std::uint32_t>(k);
+  }
+};
+
+struct BandGaps {
+  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;  // (cell entered, cell left)
+  std::int64_t runs = 0, fragments = 0, crossings = 0;
+};
+
+// Band b's rows on their own: the runs of its faces there, sorted by pixel, swept.
+BandGaps sweep_band(const RowBands& bands, int b, const std::vector<ProjectedFace>& projected,
+                    const std::vector<ImageFace>& faces, const SortView& view) {
+  const int row0 = b * bands.rows, row1 = std::min(view.height, row0 + bands.rows);
+  const auto width = static_cast<std::uint32_t>(view.width);
+  std::vector<Run> runs;
+  runs.reserve(8 * (bands.start[b + 1] - bands.start[b]));
+  for (std::uint32_t at = bands.start[b]; at < bands.start[b + 1]; ++at) {
+    const std::uint32_t k = bands.face[at];
+    const ProjectedFace& f = projected[k];
+    const TriangleCoverage t(f.s[0], f.s[1], f.s[2], view.width, view.height);
+    for (int j = std::max(row0, t.first_row()); j <= std::min(row1 - 1, t.last_row()); ++j) {
+      int i0, i1;
+      t.run(t.row(j), i0, i1);
+      const std::uint32_t row = static_cast<std::uint32_t>(j) * width;
+      if (i0 < i1) runs.push_back({row + static_cast<std::uint32_t>(i0), row + static_cast<std::uint32_t>(i1), k});
+    }
+  }
+  sort_by_pixel(runs, static_cast<std::uint32_t>(row0) * width, static_cast<std::uint32_t>(row1 - row0) * width);
+  BandGaps out;
+  out.runs = static_cast<std::int64_t>(runs.size());
+  for (const Run& r : runs) out.fragments += r.end - r.begin;
+  GapSweep sweep(faces, view, view.abuffer_every_pixel);
+  out.pairs = sweep.run(runs);
+  out.crossings = sweep.crossings();
+  return out;
+}
+
 }  // namespace
 
 Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, SortStats& stats) {
   const std::vector<ProjectedFace> projected = project_faces(p, v, view, !view.abuffer_every_pixel);
   std::vector<ImageFace> faces(projected.size());
   for (std::size_t k = 0; k < projected.size(); ++k) faces[k] = projected[k].face;
-  // Bands of rows are swept apart, in parallel (oneTBB): each rasterizes the runs of the faces
-  // over it, sorts them by pixel and sweeps its rows. The pairs do not depend on the bands.
-  const int wanted = kBandsPerThread * tbb::this_task_arena::max_concurrency();
-  const int band_rows = std::max(kMinBandRows, (view.height + wanted - 1) / wanted);
-  const int bands = (view.height + band_rows - 1) / band_rows;
-  std::vector<std::uint32_t> start(static_cast<std::size_t>(bands) + 1, 0), over;  // the faces over each band
-  for (const ProjectedFace& f : projected)
-    for (int b = f.j0 / band_rows; b <= f.j1 / band_rows; ++b) ++start[b + 1];
-  for (int b = 0; b < bands; ++b) start[b + 1] += start[b];
-  over.resize(start.back());
-  {
-    std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t k = 0; k < projected.size(); ++k)
-      for (int b = projected[k].j0 / band_rows; b <= projected[k].j1 / band_rows; ++b) over[fill[b]++] = static_cast<std::uint32_t>(k);
-  }
-  struct BandResult {
-    std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
-    std::int64_t runs = 0, fragments = 0, crossings = 0;
-  };
-  std::vector<BandResult> result(static_cast<std::size_t>(bands));
-  const auto width = static_cast<std::uint32_t>(view.width);
-  tbb::parallel_for(0, bands, [&](int b) {
-    const int row0 = b * band_rows, row1 = std::min(view.height, row0 + band_rows);
-    std::vector<Run> runs;
-    runs.reserve(8 * (start[b + 1] - start[b]));
-    for (std::uint32_t at = start[b]; at < start[b + 1]; ++at) {
-      const ProjectedFace& f = projected[over[at]];
-      const TriangleCoverage t(f.s[0], f.s[1], f.s[2], view.width, view.height);
-      for (int j = std::max(row0, t.first_row()); j <= std::min(row1 - 1, t.last_row()); ++j) {
-        int i0, i1;
-        t.run(t.row(j), i0, i1);
-        if (i0 < i1) runs.push_back({j * width + static_cast<std::uint32_t>(i0), j * width + static_cast<std::uint32_t>(i1), over[at]});
-      }
-    }
-    sort_by_pixel(runs, static_cast<std::uint32_t>(row0) * width, static_cast<std::uint32_t>(row1 - row0) * width);
-    BandResult& r = result[b];
-    r.runs = static_cast<std::int64_t>(runs.size());
-    for (const Run& run : runs) r.fragments += run.end - run.begin;
-    GapSweep sweep(faces, view, view.abuffer_every_pixel);
-    r.pairs = sweep.run(runs);
-    r.crossings = sweep.crossings();
-  });
+  // The bands are swept apart, in parallel (oneTBB); the pairs do not depend on the bands.
+  const RowBands bands(projected, view.height);
+  std::vector<BandGaps> band(static_cast<std::size_t>(bands.count));
+  tbb::parallel_for(0, bands.count, [&](int b) { band[b] = sweep_band(bands, b, projected, faces, view); });
   std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
-  for (const BandResult& r : result) {
-    stats.abuffer_runs += r.runs, stats.abuffer_fragments += r.fragments, stats.abuffer_crossings += r.crossings;
-    pairs.insert(pairs.end(), r.pairs.begin(), r.pairs.end());
+  for (const BandGaps& g : band) {
+    stats.abuffer_runs += g.runs, stats.abuffer_fragments += g.fragments, stats.abuffer_crossings += g.crossings;
+    pairs.insert(pairs.end(), g.pairs.begin(), g.pairs.end());
   }
   Relations rel;
   stats.gap_relations = rel.build(p.mesh.n_cells, pairs);
