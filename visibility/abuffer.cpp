@@ -119,23 +119,38 @@ void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int h
   faces.resize(kept);
 }
 
+// A boundary point in the image: its position, its depth key and whether it is in front of the eye.
+struct ImagePoint {
+  glm::dvec2 s;
+  double key;  // affine in the image: view depth, or -1/depth under perspective
+  bool visible;
+};
+
+std::vector<ImagePoint> project_points(const VisibilitySorter::Prepared& p, const ViewFrame& v, const PixelRays& rays) {
+  std::vector<ImagePoint> out(p.boundary_point.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), 2048), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t k = r.begin(); k < r.end(); ++k) {
+      const glm::dvec3 x = p.point(p.boundary_point[k]);
+      ImagePoint& q = out[k];
+      q.visible = rays.project(x, q.s.x, q.s.y);
+      const double depth = glm::dot(x - v.eye, v.dir);
+      q.key = v.perspective ? -1.0 / depth : depth;
+    }
+  });
+  return out;
+}
+
 // Boundary face b (off the hull) in the image: false when it covers no pixel centre or crosses the
 // eye plane.
-bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, const PixelRays& rays,
-                  std::size_t b, ProjectedFace& f) {
+bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
+                  const std::vector<ImagePoint>& points, std::size_t b, ProjectedFace& f) {
   const auto& tri = p.boundary_tri[b];
-  const glm::dvec3 x[3] = {p.point(tri[0]), p.point(tri[1]), p.point(tri[2])};
+  const ImagePoint* q[3] = {&points[tri[0]], &points[tri[1]], &points[tri[2]]};
+  // Crosses the eye plane: a ray from the eye cannot leave through it and come back.
+  if (!q[0]->visible || !q[1]->visible || !q[2]->visible) return false;
   glm::dvec2* s = f.s;
-  double key[3];
-  bool visible = true;
-  for (int k = 0; k < 3; ++k) {
-    visible = visible && rays.project(x[k], s[k].x, s[k].y);
-    const double depth = glm::dot(x[k] - v.eye, v.dir);
-    key[k] = v.perspective ? -1.0 / depth : depth;  // affine in the image: 1/depth under perspective
-  }
-  if (!visible) return false;  // crosses the eye plane: a ray from the eye cannot leave through it and come back
-  const glm::dvec3 n = glm::cross(x[1] - x[0], x[2] - x[0]);  // outward
-  const bool entering = v.perspective ? glm::dot(n, v.eye - x[0]) > 0 : glm::dot(n, v.dir) < 0;
+  const double key[3] = {q[0]->key, q[1]->key, q[2]->key};
+  for (int k = 0; k < 3; ++k) s[k] = q[k]->s;
   const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y);
   if (area == 0.0) return false;  // edge-on: no pixel centre is covered
   // The pixels whose centres lie in the bounding box; none: the face covers no centre.
@@ -144,6 +159,9 @@ bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const
   f.j0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].y, s[1].y, s[2].y}) - 0.5)));
   f.j1 = static_cast<int>(std::min(view.height - 1.0, std::floor(std::max({s[0].y, s[1].y, s[2].y}) - 0.5)));
   if (f.i0 > f.i1 || f.j0 > f.j1) return false;
+  const glm::dvec3 x[3] = {p.point(p.boundary_point[tri[0]]), p.point(p.boundary_point[tri[1]]), p.point(p.boundary_point[tri[2]])};
+  const glm::dvec3 n = glm::cross(x[1] - x[0], x[2] - x[0]);  // outward
+  const bool entering = v.perspective ? glm::dot(n, v.eye - x[0]) > 0 : glm::dot(n, v.dir) < 0;
   // key(x, y) = k0 + kx x + ky y through the three projected vertices.
   ImageFace& g = f.face;
   g.kx = ((key[1] - key[0]) * (s[2].y - s[0].y) - (key[2] - key[0]) * (s[1].y - s[0].y)) / area;
@@ -158,15 +176,15 @@ bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const
 }
 
 // The boundary faces off the hull projected into the image: those that can bound a gap, unless
-// every face is asked for. Parallel over faces (oneTBB).
+// every face is asked for. Parallel over points, then over faces (oneTBB).
 std::vector<ProjectedFace> project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
                                          bool cull) {
-  const PixelRays rays(v.camera, view.width, view.height);
+  const std::vector<ImagePoint> points = project_points(p, v, PixelRays(v.camera, view.width, view.height));
   const std::size_t nb = p.boundary_tri.size();
   std::vector<ProjectedFace> projected(nb);
   std::vector<char> in_image(nb, 0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb, 256), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t b = r.begin(); b < r.end(); ++b) in_image[b] = project_face(p, v, view, rays, b, projected[b]);
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
+    for (std::size_t b = r.begin(); b < r.end(); ++b) in_image[b] = project_face(p, v, view, points, b, projected[b]);
   });
   std::size_t kept = 0;
   for (std::size_t b = 0; b < nb; ++b)

@@ -34,9 +34,11 @@ struct VisibilitySorter::Prepared {
   std::vector<std::int32_t> across;   // per cell face (topology order): the cell across a shared face, or -1
   bool all_tetrahedra = false;        // then cell c's faces start at 4 c
   // Boundary faces off the convex hull as triangles (quads split by the diagonal from their lowest
-  // id), outward.
+  // id), outward, over the points they use (indices into boundary_point, so that a view projects
+  // each point once).
   std::vector<std::int64_t> boundary_cell;
-  std::vector<std::array<std::int64_t, 3>> boundary_tri;
+  std::vector<std::array<std::uint32_t, 3>> boundary_tri;
+  std::vector<std::int64_t> boundary_point;
 
   glm::dvec3 point(std::int64_t p) const { return (*points)(p); }
 };

@@ -1,5 +1,6 @@
 #include <cstring>
 #include <algorithm>
+#include <unordered_map>
 #include <climits>
 #include <limits>
 
@@ -147,6 +148,12 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
   // Boundary faces off the convex hull: only they can bound a gap (a ray leaving through a hull
   // face never comes back), so only they go into the A-buffer.
   const bool know_hull = hull.off_hull.size() == topo.boundary.size();
+  std::unordered_map<std::int64_t, std::uint32_t> local;  // a point's index in boundary_point
+  auto local_id = [&](std::int64_t id) {
+    const auto [it, added] = local.try_emplace(id, static_cast<std::uint32_t>(p.boundary_point.size()));
+    if (added) p.boundary_point.push_back(id);
+    return it->second;
+  };
   for (std::size_t b = 0; b < topo.boundary.size(); ++b) {
     if (know_hull && !hull.off_hull[b]) continue;
     const std::int64_t cf = topo.boundary[b], c = topo.cell_of(cf);
@@ -157,7 +164,7 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
     else split_quad(ids, tri);
     for (int t = 0; t < (n == 3 ? 1 : 2); ++t) {
       p.boundary_cell.push_back(c);
-      p.boundary_tri.push_back({tri[t][0], tri[t][1], tri[t][2]});
+      p.boundary_tri.push_back({local_id(tri[t][0]), local_id(tri[t][1]), local_id(tri[t][2])});
     }
   }
   p.face_start = std::move(first);
