@@ -5,6 +5,7 @@
 // A-buffer gap, and the mesh may well be convex.
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <limits>
 #include <tuple>
 #include <unordered_map>
@@ -39,10 +40,14 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
   // The boundary's points in order of their coordinates; a group at the same (bit-identical)
   // coordinates is named by its lowest id.
   std::vector<std::int64_t> pts;
+  auto finite = [&](std::int64_t q) {  // a NaN would break the sort's order (validation rejects them)
+    return std::isfinite(m.points[3 * q]) && std::isfinite(m.points[3 * q + 1]) && std::isfinite(m.points[3 * q + 2]);
+  };
   for (const std::int64_t cf : t.boundary) {
     std::int64_t ids[4];
     const int n = ids_of(cf, ids);
-    pts.insert(pts.end(), ids, ids + n);
+    for (int i = 0; i < n; ++i)
+      if (finite(ids[i])) pts.push_back(ids[i]);
   }
   auto coords = [&](std::int64_t p) { return std::tie(m.points[3 * p], m.points[3 * p + 1], m.points[3 * p + 2]); };
   std::sort(pts.begin(), pts.end(), [&](std::int64_t a, std::int64_t b) {

@@ -1,5 +1,6 @@
 #include <algorithm>
 #include <array>
+#include <cmath>
 #include <random>
 #include <string>
 
@@ -163,4 +164,8 @@ TEST(Topology, CoincidentFacesOfOverlappingCellsAreNotGlued) {
   EXPECT_EQ(build_topology(mesh_with({1.0, -1.0}).view()).seam_faces, 1);
   EXPECT_EQ(build_topology(mesh_with({1.0, 0.5}).view()).seam_faces, 0);       // same side: overlapping
   EXPECT_EQ(build_topology(mesh_with({1.0, -1.0, -0.5}).view()).seam_faces, 0);  // three faces at one place
+  // Solver arrays handed over unvalidated: a NaN point is never at the same place as another.
+  Mesh nan = mesh_with({1.0, -1.0});
+  nan.points[0] = nan.points[12] = std::nan("");
+  EXPECT_EQ(build_topology(nan.view()).seam_faces, 0);
 }
