@@ -49,11 +49,12 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
     for (int i = 0; i < n; ++i)
       if (finite(ids[i])) pts.push_back(ids[i]);
   }
+  std::sort(pts.begin(), pts.end());  // each point once, then by coordinates
+  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
   auto coords = [&](std::int64_t p) { return std::tie(m.points[3 * p], m.points[3 * p + 1], m.points[3 * p + 2]); };
   std::sort(pts.begin(), pts.end(), [&](std::int64_t a, std::int64_t b) {
     return coords(a) < coords(b) || (coords(a) == coords(b) && a < b);
   });
-  pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
   std::unordered_map<std::int64_t, std::int64_t> first_id;  // only the points of groups of two or more
   for (std::size_t s = 0, e; s < pts.size(); s = e) {
     for (e = s + 1; e < pts.size() && coords(pts[e]) == coords(pts[s]);) ++e;
