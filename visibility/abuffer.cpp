@@ -76,7 +76,8 @@ void sort_by_pixel(std::vector<Run>& runs, std::uint32_t first, std::uint32_t pi
 struct ProjectedFace {
   glm::dvec2 s[3];
   ImageFace face;
-  double kmin, kmax;
+  double kmin, kmax;  // over the face, widened by `rounding`
+  double rounding;    // of the key's plane at the image's pixel centres
   int i0, i1, j0, j1;
 };
 
@@ -87,30 +88,40 @@ double key_slack(double a, double b) { return 2e-9 * (std::abs(a) + std::abs(b))
 // entering face) somewhere can be one side of a gap; dropping the others changes no pixel's
 // "leave, then enter" pairs (a face between such a pair would itself be one of its sides). The
 // test is conservative, on 16 x 16 tiles: a leaving face is kept where a tile it touches has an
-// entering face that reaches as deep, an entering face where a tile has a leaving face as near.
+// entering face that reaches as deep there, an entering face where a tile has a leaving face as
+// near there. A face's keys in a tile lie between its plane's extremes over the part of its
+// bounding box in the tile (and within its keys over the whole face).
 void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int height) {
   constexpr int kTile = 16;
   const int tw = (width + kTile - 1) / kTile, th = (height + kTile - 1) / kTile;
   const double inf = std::numeric_limits<double>::infinity();
   std::vector<double> nearest_leaving(static_cast<std::size_t>(tw) * th, inf), deepest_entering(nearest_leaving.size(), -inf);
+  // visit(tile, lowest key, highest key) for each tile the face's bounding box touches.
   auto each_tile = [&](const ProjectedFace& f, auto&& visit) {
-    for (int ty = f.j0 / kTile; ty <= f.j1 / kTile; ++ty)
-      for (int tx = f.i0 / kTile; tx <= f.i1 / kTile; ++tx)
-        if (visit(static_cast<std::size_t>(ty) * tw + tx)) return true;
+    const ImageFace& g = f.face;
+    for (int ty = f.j0 / kTile; ty <= f.j1 / kTile; ++ty) {
+      const double y0 = g.ky * (std::max(f.j0, ty * kTile) + 0.5), y1 = g.ky * (std::min(f.j1, ty * kTile + kTile - 1) + 0.5);
+      for (int tx = f.i0 / kTile; tx <= f.i1 / kTile; ++tx) {
+        const double x0 = g.kx * (std::max(f.i0, tx * kTile) + 0.5), x1 = g.kx * (std::min(f.i1, tx * kTile + kTile - 1) + 0.5);
+        const double lo = std::max(f.kmin, g.k0 + std::min(x0, x1) + std::min(y0, y1) - f.rounding);
+        const double hi = std::min(f.kmax, g.k0 + std::max(x0, x1) + std::max(y0, y1) + f.rounding);
+        if (visit(static_cast<std::size_t>(ty) * tw + tx, lo, hi)) return true;
+      }
+    }
     return false;
   };
   for (const ProjectedFace& f : faces)
-    each_tile(f, [&](std::size_t t) {
-      if (f.face.entering()) deepest_entering[t] = std::max(deepest_entering[t], f.kmax);
-      else nearest_leaving[t] = std::min(nearest_leaving[t], f.kmin);
+    each_tile(f, [&](std::size_t t, double lo, double hi) {
+      if (f.face.entering()) deepest_entering[t] = std::max(deepest_entering[t], hi);
+      else nearest_leaving[t] = std::min(nearest_leaving[t], lo);
       return false;
     });
   std::vector<char> keep(faces.size());
   tbb::parallel_for(std::size_t(0), faces.size(), [&](std::size_t k) {
     const ProjectedFace& f = faces[k];
-    keep[k] = each_tile(f, [&](std::size_t t) {
-      return f.face.entering() ? nearest_leaving[t] <= f.kmax + key_slack(nearest_leaving[t], f.kmax)
-                               : deepest_entering[t] + key_slack(deepest_entering[t], f.kmin) >= f.kmin;
+    keep[k] = each_tile(f, [&](std::size_t t, double lo, double hi) {
+      return f.face.entering() ? nearest_leaving[t] <= hi + key_slack(nearest_leaving[t], hi)
+                               : deepest_entering[t] + key_slack(deepest_entering[t], lo) >= lo;
     });
   });
   std::size_t kept = 0;
@@ -169,9 +180,9 @@ bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const
   g.k0 = key[0] - g.kx * s[0].x - g.ky * s[0].y;
   g.tagged = 2u * static_cast<std::uint32_t>(p.boundary_cell[b]) + (entering ? 1u : 0u);
   // The key's range at the pixel centres it covers, widened by the plane's rounding there.
-  const double rounding = 1e-12 * (std::abs(g.k0) + std::abs(g.kx) * view.width + std::abs(g.ky) * view.height);
-  f.kmin = std::min({key[0], key[1], key[2]}) - rounding;
-  f.kmax = std::max({key[0], key[1], key[2]}) + rounding;
+  f.rounding = 1e-12 * (std::abs(g.k0) + std::abs(g.kx) * view.width + std::abs(g.ky) * view.height);
+  f.kmin = std::min({key[0], key[1], key[2]}) - f.rounding;
+  f.kmax = std::max({key[0], key[1], key[2]}) + f.rounding;
   return true;
 }
 
