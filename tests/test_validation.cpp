@@ -4,6 +4,7 @@
 
 #include "grid/error.hpp"
 #include "grid/geometry.hpp"
+#include "grid/overlaps.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "grid/topology.hpp"
 #include "grid/validate.hpp"
@@ -116,4 +117,36 @@ TEST(Tetrahedralize, CanonicalSplitConservesVolumeAndConforms) {
                         hex.view().point(out[k][3])) / 6;
   }
   EXPECT_NEAR(vt, vh, 1e-12);
+}
+
+// Cells whose interiors overlap are found; cells that only touch (at a face, an edge, a vertex, or
+// across a gap thinner than rounding) are not.
+TEST(Overlaps, OverlappingCellsAreFoundTouchingOnesAreNot) {
+  for (const char* kind : {"box-tets", "box", "mixed", "swirl"}) {
+    const OverlapReport r = overlapping_cells(generate(kind, 4).view());
+    EXPECT_EQ(r.cell_pairs, 0) << kind;
+    EXPECT_GT(r.candidates, 0) << kind;  // neighbours' boxes meet: the test did run
+  }
+  Mesh m = generate("box", 3);  // 27 hexahedra over [-1, 1]^3
+  test::append(m, generate("box", 1));  // one hexahedron over all of them
+  const OverlapReport all = overlapping_cells(m.view());
+  EXPECT_EQ(all.cell_pairs, 27);
+  EXPECT_EQ(all.first_a, 0);
+  EXPECT_EQ(all.first_b, 27);
+  // Two tetrahedra on the triangle z = 0, one above and one below it, each moved by `lift`.
+  auto pair_with = [](double lift) {
+    Mesh t;
+    const std::int64_t a = t.add_point({0, 0, 0}), b = t.add_point({1, 0, 0}), c = t.add_point({0, 1, 0});
+    const std::int64_t up = t.add_point({0.2, 0.2, 1});
+    t.add_cell(CellType::Tetra, {a, b, c, up});
+    const std::int64_t a2 = t.add_point({0, 0, lift}), b2 = t.add_point({1, 0, lift}), c2 = t.add_point({0, 1, lift});
+    const std::int64_t down = t.add_point({0.3, 0.3, lift - 1});
+    t.add_cell(CellType::Tetra, {a2, c2, b2, down});
+    return overlapping_cells(t.view()).cell_pairs;
+  };
+  EXPECT_EQ(pair_with(0.0), 0);     // sharing a face's place
+  EXPECT_EQ(pair_with(-0.1), 0);    // apart
+  EXPECT_EQ(pair_with(1e-12), 0);   // into each other by 1e-12 of their size: a contact
+  EXPECT_EQ(pair_with(1e-3), 1);    // into each other
+  EXPECT_EQ(pair_with(0.5), 1);
 }

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grid/read_mesh.hpp"
+#include "grid/overlaps.hpp"
 #include "grid/topology.hpp"
 #include "tools/commands.hpp"
 #include "tools/scene_setup.hpp"
@@ -18,7 +19,7 @@ namespace {
 struct InfoArgs {
   std::string mesh;
   ReadOptions reader;
-  bool json = false;
+  bool json = false, overlaps = false;
 };
 
 nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
@@ -104,13 +105,30 @@ void print_text(const nlohmann::json& j) {
   for (const auto& [k, v] : j["nonfinite_values"].items())
     std::printf("  WARNING: field '%s' has %lld non-finite values: it cannot be rendered\n", k.c_str(), v.get<long long>());
   for (const auto& n : j["notes"]) std::printf("  note: %s\n", n.get<std::string>().c_str());
+  if (!j["overlapping_cell_pairs"].is_null()) {
+    if (const auto pairs = j["overlapping_cell_pairs"].get<long long>())
+      std::printf("  WARNING: cells overlap in %lld pair%s (first: cells %lld and %lld): no back-to-front order of "
+                  "whole cells is right there, so the projection methods are not; --method exact is\n",
+                  pairs, pairs == 1 ? "" : "s", j["first_overlapping_cells"][0].get<long long>(),
+                  j["first_overlapping_cells"][1].get<long long>());
+    else
+      std::printf("  overlapping cells: none\n");
+  }
 }
 
 int run_info(const InfoArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
   const LoadedMesh loaded = load_mesh(a.mesh, a.reader);
   const double read = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  const nlohmann::json j = describe(loaded, read);
+  nlohmann::json j = describe(loaded, read);
+  j["overlapping_cell_pairs"] = nullptr;
+  if (a.overlaps) {
+    const auto t1 = std::chrono::steady_clock::now();
+    const OverlapReport o = overlapping_cells(loaded.mesh.view());
+    j["overlapping_cell_pairs"] = o.cell_pairs;
+    j["first_overlapping_cells"] = o.cell_pairs ? nlohmann::json::array({o.first_a, o.first_b}) : nlohmann::json(nullptr);
+    j["overlap_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
+  }
   if (a.json) std::printf("%s\n", j.dump().c_str());
   else print_text(j);
   return kExitOk;
@@ -129,6 +147,8 @@ Action add_info(CLI::App& app) {
   cmd->add_option("--zone", args->reader.zone, "CGNS: read only this zone");
   cmd->add_option("--time-step", args->reader.time_step, "Exodus II: time step of the fields (from 0)")->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", args->json, "Print one JSON object instead of text");
+  cmd->add_flag("--overlaps", args->overlaps,
+                "Also look for cells whose interiors overlap (over their tetrahedra; seconds per million cells)");
   return [args] { return run_info(*args); };
 }
 
