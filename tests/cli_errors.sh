@@ -74,7 +74,7 @@ expect 0 "warning: the visibility sort met 1 visibility cycle \(3 cells\) .* --m
 # info --overlaps: none in the box; two tetrahedra pushed into each other are named.
 expect 0 "overlapping cells: none" -- info "$tmp/box.vtu" --overlaps
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n0 0 0 1 0 0 0 1 0 0.2 0.2 1 0 0 0.5 1 0 0.5 0 1 0.5 0.3 0.3 -0.5\nCELLS 2 10\n4 0 1 2 3\n4 4 6 5 7\nCELL_TYPES 2\n10 10\n' > "$tmp/overlap.vtk"
-expect 0 "WARNING: 1 pairs of cells overlap \(first: cells 0 and 1\)" -- info "$tmp/overlap.vtk" --overlaps
+expect 0 "WARNING: cells overlap in 1 pair \(first: cells 0 and 1\)" -- info "$tmp/overlap.vtk" --overlaps
 expect 1 "--method exact is a ray integrator" -- render "$tmp/ok.json" --method exact --backend opengl
 expect 1 "--interpolation chooses the field inside cells for --method exact" -- render "$tmp/ok.json" --interpolation canonical-tets
 expect 1 "unknown --tetrahedralize 'some' \(known: problem, all, none\)" -- render "$tmp/ok.json" --tetrahedralize some
