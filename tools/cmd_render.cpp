@@ -158,7 +158,8 @@ int run_render(const RenderArgs& a) {
     std::fprintf(stderr,
                  "cellproj: warning: the visibility sort met %zu visibility cycle%s (%lld cells) and broke each at one "
                  "relation: those cells have no back-to-front order (cells that overlap, or warped faces), so the picture "
-                 "may be wrong where they cover each other; --method exact is exact there\n",
+                 "may be wrong where they cover each other; --method exact is exact there, and `cellproj info "
+                 "--overlaps` tells whether cells overlap\n",
                  pst.sort.cycles.size(), pst.sort.cycles.size() == 1 ? "" : "s", cells);
   }
 
