@@ -57,7 +57,7 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
   const Projection projection = cameras.front().projection;
   std::vector<double> times;
   std::map<std::string, std::vector<double>> phases;
-  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0, overlapping_pixels = 0, clear = 0,
+  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0, overlapping_pixels = 0, violating_clear = 0,
                problem = 0, split = 0;
   std::int64_t fragments = 0, runs = 0, crossings = 0;
   std::vector<double> split_times;
@@ -84,7 +84,7 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
       if (k.missing_cells || k.repeated_cells)
         throw std::logic_error(std::string(name_of(method)) + " dropped or repeated cells");  // a bug, exit 3
       violations += k.violations, violating_pixels += k.violating_pixels, overlapping_pixels += k.overlapping_pixels;
-      clear += k.violating_pixels_without_overlap;
+      violating_clear += k.violating_pixels_without_overlap;
     }
   }
   nlohmann::json phase_json = nlohmann::json::object();
@@ -118,7 +118,7 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
           {"violations", tracer ? nlohmann::json(violations) : nlohmann::json(nullptr)},
           {"violating_pixels", tracer ? nlohmann::json(violating_pixels) : nlohmann::json(nullptr)},
           {"overlapping_pixels", tracer ? nlohmann::json(overlapping_pixels) : nlohmann::json(nullptr)},
-          {"violating_pixels_without_overlap", tracer ? nlohmann::json(clear) : nlohmann::json(nullptr)}};
+          {"violating_pixels_without_overlap", tracer ? nlohmann::json(violating_clear) : nlohmann::json(nullptr)}};
 }
 
 std::string cell(const nlohmann::json& v) {
@@ -127,6 +127,28 @@ std::string cell(const nlohmann::json& v) {
   if (v.is_number_float()) std::snprintf(b, sizeof b, "%.4g", v.get<double>());
   else return v.is_string() ? v.get<std::string>() : v.dump();
   return b;
+}
+
+// One row as the text table's two lines.
+void print_row(const nlohmann::json& row, bool checked, bool every_pixel) {
+  std::printf("  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  cycles %lld",
+              cell(row["sort"]).c_str(), cell(row["projection"]).c_str(), row["median_seconds"].get<double>(),
+              row["min_seconds"].get<double>(), row["max_seconds"].get<double>(), row["cells_per_second"].get<double>(),
+              row["face_relations"].get<long long>(), row["gap_relations"].get<long long>(),
+              row["pair_relations"].get<long long>(), row["cycles"].get<long long>());
+  if (row["problem_cells"].get<long long>() > 0)
+    std::printf("  problem cells %lld (split %lld, %.5f s)", row["problem_cells"].get<long long>(),
+                row["cells_split"].get<long long>(), row["split_seconds"].get<double>());
+  if (row["abuffer_runs"].get<long long>() > 0)
+    std::printf("  A-buffer: %lld runs, %lld pixels%s", row["abuffer_runs"].get<long long>(),
+                row["abuffer_fragments"].get<long long>(), every_pixel ? " (every pixel ordered)" : "");
+  if (checked)
+    std::printf("  violations %s (%s pixels, %s of them where no cells overlap; cells overlap on %s)",
+                cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str(),
+                cell(row["violating_pixels_without_overlap"]).c_str(), cell(row["overlapping_pixels"]).c_str());
+  std::printf("\n    phases:");
+  for (const auto& [phase, s] : row["phase_seconds"].items()) std::printf(" %s %.5f s", phase.c_str(), s.get<double>());
+  std::printf("\n");
 }
 
 int run_sortbench(const SortbenchArgs& a) {
@@ -184,27 +206,7 @@ int run_sortbench(const SortbenchArgs& a) {
           nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, cameras, w, h, a.abuffer_every_pixel);
           row["threads"] = threads;
           if (a.json) std::printf("%s\n", row.dump().c_str());
-          else {
-            std::printf("  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  cycles %lld",
-                        cell(row["sort"]).c_str(), cell(row["projection"]).c_str(), row["median_seconds"].get<double>(),
-                        row["min_seconds"].get<double>(), row["max_seconds"].get<double>(),
-                        row["cells_per_second"].get<double>(), row["face_relations"].get<long long>(),
-                        row["gap_relations"].get<long long>(), row["pair_relations"].get<long long>(),
-                        row["cycles"].get<long long>());
-            if (row["problem_cells"].get<long long>() > 0)
-              std::printf("  problem cells %lld (split %lld, %.5f s)", row["problem_cells"].get<long long>(),
-                          row["cells_split"].get<long long>(), row["split_seconds"].get<double>());
-            if (row["abuffer_runs"].get<long long>() > 0)
-              std::printf("  A-buffer: %lld runs, %lld pixels%s", row["abuffer_runs"].get<long long>(),
-                          row["abuffer_fragments"].get<long long>(), a.abuffer_every_pixel ? " (every pixel ordered)" : "");
-            if (a.check)
-              std::printf("  violations %s (%s pixels, %s of them where no cells overlap; cells overlap on %s)",
-                          cell(row["violations"]).c_str(), cell(row["violating_pixels"]).c_str(),
-                          cell(row["violating_pixels_without_overlap"]).c_str(), cell(row["overlapping_pixels"]).c_str());
-            std::printf("\n    phases:");
-            for (const auto& [phase, s] : row["phase_seconds"].items()) std::printf(" %s %.5f s", phase.c_str(), s.get<double>());
-            std::printf("\n");
-          }
+          else print_row(row, a.check, a.abuffer_every_pixel);
           if (csv.is_open())
             for (const char* c : kColumns) csv << cell(row[c]) << (c == last ? "\n" : ",");
           std::fflush(stdout);
