@@ -2,7 +2,7 @@
 # The table of docs/sorting.md: every sort on the synthetic meshes and on every dataset of
 # ../shared/data, 8 views, orthographic and perspective, checked by the order oracle. The sorts
 # are timed in a run of their own (the oracle between two timed sorts would evict their caches).
-# usage: bash bench/sorting.sh [BUILD_DIR] [OUT_DIR]     (about 13 minutes on 2 cores)
+# usage: bash bench/sorting.sh [BUILD_DIR] [OUT_DIR]     (about 5 minutes on 2 cores)
 # table: python3 bench/sorting_table.py OUT_DIR/sorting.csv OUT_DIR/sorting_1m.csv --times OUT_DIR/sorting_times.csv
 set -euo pipefail
 build=${1:-build}; out=${2:-bench/results}
