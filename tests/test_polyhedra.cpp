@@ -320,11 +320,7 @@ TEST(Polyhedra, FoldsFoundOnceGiveEachViewsProblemCells) {
     EXPECT_GT(folds.folds(), 0);
     std::int64_t problems = 0, unsure = 0;
     for (const Camera& cam : views(6)) {
-      const Camera c = recentred(cam, pts->centre);
-      Viewpoint v;
-      v.perspective = c.projection == Projection::Perspective;
-      v.eye = c.eye;
-      v.dir = glm::normalize(c.target - c.eye);
+      const Viewpoint v = viewpoint(cam, pts->centre);
       std::int64_t count = 0;
       const std::vector<char> got = folds.problem_cells(v, &count);
       for (std::int64_t cell = 0; cell < m.n_cells(); ++cell) {
@@ -377,12 +373,7 @@ TEST(Polyhedra, FoldsOfACollapsedHexahedron) {
   const CellFolds folds(m.view(), pts);
   EXPECT_GT(folds.folds(), 0);
   for (const Camera& cam : views(3)) {
-    const Camera c = recentred(cam, pts->centre);
-    Viewpoint v;
-    v.perspective = c.projection == Projection::Perspective;
-    v.eye = c.eye;
-    v.dir = glm::normalize(c.target - c.eye);
-    const std::vector<char> problem = folds.problem_cells(v);
+    const std::vector<char> problem = folds.problem_cells(viewpoint(cam, pts->centre));
     EXPECT_EQ(problem.size(), static_cast<std::size_t>(m.n_cells()));
   }
   // Split with the cells around it, its topology is patched as it is built.

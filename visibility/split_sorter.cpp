@@ -13,6 +13,8 @@ namespace {
 constexpr std::pair<Tetrahedralize, const char*> kModes[] = {
     {Tetrahedralize::problem, "problem"}, {Tetrahedralize::all, "all"}, {Tetrahedralize::none, "none"}};
 
+}  // namespace
+
 Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre) {
   const Camera c = recentred(camera, centre);
   Viewpoint v;
@@ -21,8 +23,6 @@ Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre) {
   v.dir = glm::normalize(c.target - c.eye);
   return v;
 }
-
-}  // namespace
 
 Tetrahedralize tetrahedralize_from_name(const std::string& name) { return from_name(kModes, name, "--tetrahedralize"); }
 const char* name_of(Tetrahedralize mode) { return name_in(kModes, mode); }

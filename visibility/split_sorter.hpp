@@ -25,6 +25,10 @@ Tetrahedralize tetrahedralize_from_name(const std::string& name);  // throws Inp
 const char* name_of(Tetrahedralize mode);
 std::string tetrahedralize_names();
 
+// Where a camera looks from, in the frame of points recentred on `centre` (RecentredPoints): what
+// CellFolds::problem_cells takes.
+Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre);
+
 // A mesh ready to sort: its cells (possibly some of them split), face topology, boundary convexity.
 struct SortableMesh {
   SplitMesh split;  // the cells when some were split; empty otherwise
