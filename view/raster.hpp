@@ -73,6 +73,22 @@ struct EdgeFunction {
 };
 }  // namespace raster_detail
 
+// The pixels i0 <= i <= i1, j0 <= j <= j1 of a width x height image whose centres lie in the
+// bounding box of a triangle (none when i1 < i0 or j1 < j0): the only ones it can cover.
+struct PixelBox {
+  int i0 = 0, i1 = -1, j0 = 0, j1 = -1;
+  PixelBox() = default;
+  PixelBox(const glm::dvec2& p0, const glm::dvec2& p1, const glm::dvec2& p2, int width, int height) {
+    const double xmin = std::min({p0.x, p1.x, p2.x}), xmax = std::max({p0.x, p1.x, p2.x});
+    const double ymin = std::min({p0.y, p1.y, p2.y}), ymax = std::max({p0.y, p1.y, p2.y});
+    i0 = static_cast<int>(std::max(0.0, std::ceil(xmin - 0.5)));
+    i1 = static_cast<int>(std::min(double(width - 1), std::floor(xmax - 0.5)));
+    j0 = static_cast<int>(std::max(0.0, std::ceil(ymin - 0.5)));
+    j1 = static_cast<int>(std::min(double(height - 1), std::floor(ymax - 0.5)));
+  }
+  bool empty() const { return i1 < i0 || j1 < j0; }
+};
+
 // A triangle in pixel coordinates (x right, y down), turned positive, with its edge functions:
 // which pixel centres of each row it covers. Along a row every edge function is monotone (each
 // rounding step is), so the centres a triangle covers on one row are one run of pixels.
@@ -81,8 +97,8 @@ class TriangleCoverage {
   TriangleCoverage(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height)
       : TriangleCoverage(p0, p1, p2, raster_detail::edge(p0, p1, p2.x, p2.y), width, height) {}
   // Rows first_row() <= j <= last_row() may hold covered centres (none when last < first).
-  int first_row() const { return j0_; }
-  int last_row() const { return j1_; }
+  int first_row() const { return box_.j0; }
+  int last_row() const { return box_.j1; }
 
   struct Row {
     double y, r0, r1, r2;  // y = j + 0.5 and the edge functions' row terms there
@@ -95,7 +111,7 @@ class TriangleCoverage {
   // inside all three edges, each of which holds on one side of the row (a half-line of pixels, or
   // all or none of them for a horizontal edge).
   void run(const Row& r, int& begin, int& end) const {
-    begin = i0_, end = i1_ + 1;
+    begin = box_.i0, end = box_.i1 + 1;
     f0_.bound(r.r0, r.y, begin, end), f1_.bound(r.r1, r.y, begin, end), f2_.bound(r.r2, r.y, begin, end);
     end = std::max(begin, end);
   }
@@ -116,17 +132,12 @@ class TriangleCoverage {
         f2_(swapped_ ? p1 : p2, p0),
         inv_(1.0 / std::abs(area)) {
     if (!(area != 0.0) || !std::isfinite(area)) return;  // degenerate: covers nothing
-    const double xmin = std::min({p0.x, p1.x, p2.x}), xmax = std::max({p0.x, p1.x, p2.x});
-    const double ymin = std::min({p0.y, p1.y, p2.y}), ymax = std::max({p0.y, p1.y, p2.y});
-    i0_ = static_cast<int>(std::max(0.0, std::ceil(xmin - 0.5)));
-    i1_ = static_cast<int>(std::min(double(width - 1), std::floor(xmax - 0.5)));
-    j0_ = static_cast<int>(std::max(0.0, std::ceil(ymin - 0.5)));
-    j1_ = static_cast<int>(std::min(double(height - 1), std::floor(ymax - 0.5)));
+    box_ = PixelBox(p0, p1, p2, width, height);
   }
   bool swapped_;
   raster_detail::EdgeFunction f0_, f1_, f2_;
   double inv_;
-  int i0_ = 0, i1_ = -1, j0_ = 0, j1_ = -1;
+  PixelBox box_;
 };
 
 // Calls run(j, begin, end) for every row j of a width x height image on which the triangle covers

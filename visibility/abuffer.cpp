@@ -46,8 +46,9 @@ struct Listed {
   bool entering;
 };
 
-// Front to back; at (nearly) equal distance a leaving face comes first, so a seam of coincident
-// faces (duplicated points) still reads as "leave one cell, enter the next".
+// Front to back; at (nearly) equal distance a leaving face comes first, so that a ray through an
+// edge where two faces meet, or a seam whose two sides are not bit-identical (grid/seams.cpp glues
+// the others), still reads as "leave one cell, enter the next".
 bool in_front(const Listed& a, const Listed& b) {
   const double tol = 1e-9 * std::max(std::abs(a.key), std::abs(b.key));
   if (a.key < b.key - tol) return true;
@@ -71,15 +72,23 @@ void sort_by_pixel(std::vector<Run>& runs, std::uint32_t first, std::uint32_t pi
   if (from != runs.data()) std::copy(from, from + runs.size(), runs.data());
 }
 
-// A boundary face off the hull as the image sees it: its triangle, its depth key as a plane, the
-// range of that key over the image, and the pixels of its bounding box.
+// A boundary face off the hull as the image sees it: its triangle, the pixels of its bounding box,
+// its depth key as a plane and the range of that key over the face.
 struct ProjectedFace {
   glm::dvec2 s[3];
+  PixelBox box;
   ImageFace face;
   double kmin, kmax;  // over the face, widened by `rounding`
   double rounding;    // of the key's plane at the image's pixel centres
-  int i0, i1, j0, j1;
 };
+
+// Keeps the faces whose flag is set, in order.
+void keep_flagged(std::vector<ProjectedFace>& faces, const std::vector<char>& keep) {
+  std::size_t kept = 0;
+  for (std::size_t k = 0; k < faces.size(); ++k)
+    if (keep[k]) faces[kept++] = faces[k];
+  faces.resize(kept);
+}
 
 // Slack for comparing keys a and b: in_front's tolerance, twice over.
 double key_slack(double a, double b) { return 2e-9 * (std::abs(a) + std::abs(b)); }
@@ -99,10 +108,11 @@ void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int h
   // visit(tile, lowest key, highest key) for each tile the face's bounding box touches.
   auto each_tile = [&](const ProjectedFace& f, auto&& visit) {
     const ImageFace& g = f.face;
-    for (int ty = f.j0 / kTile; ty <= f.j1 / kTile; ++ty) {
-      const double y0 = g.ky * (std::max(f.j0, ty * kTile) + 0.5), y1 = g.ky * (std::min(f.j1, ty * kTile + kTile - 1) + 0.5);
-      for (int tx = f.i0 / kTile; tx <= f.i1 / kTile; ++tx) {
-        const double x0 = g.kx * (std::max(f.i0, tx * kTile) + 0.5), x1 = g.kx * (std::min(f.i1, tx * kTile + kTile - 1) + 0.5);
+    const auto [i0, i1, j0, j1] = f.box;
+    for (int ty = j0 / kTile; ty <= j1 / kTile; ++ty) {
+      const double y0 = g.ky * (std::max(j0, ty * kTile) + 0.5), y1 = g.ky * (std::min(j1, ty * kTile + kTile - 1) + 0.5);
+      for (int tx = i0 / kTile; tx <= i1 / kTile; ++tx) {
+        const double x0 = g.kx * (std::max(i0, tx * kTile) + 0.5), x1 = g.kx * (std::min(i1, tx * kTile + kTile - 1) + 0.5);
         const double lo = std::max(f.kmin, g.k0 + std::min(x0, x1) + std::min(y0, y1) - f.rounding);
         const double hi = std::min(f.kmax, g.k0 + std::max(x0, x1) + std::max(y0, y1) + f.rounding);
         if (visit(static_cast<std::size_t>(ty) * tw + tx, lo, hi)) return true;
@@ -124,10 +134,7 @@ void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int h
                                : deepest_entering[t] + key_slack(deepest_entering[t], lo) >= lo;
     });
   });
-  std::size_t kept = 0;
-  for (std::size_t k = 0; k < faces.size(); ++k)
-    if (keep[k]) faces[kept++] = faces[k];
-  faces.resize(kept);
+  keep_flagged(faces, keep);
 }
 
 // A boundary point in the image: its position, its depth key and whether it is in front of the eye.
@@ -160,16 +167,12 @@ bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const
   // Crosses the eye plane: a ray from the eye cannot leave through it and come back.
   if (!q[0]->visible || !q[1]->visible || !q[2]->visible) return false;
   glm::dvec2* s = f.s;
-  const double key[3] = {q[0]->key, q[1]->key, q[2]->key};
   for (int k = 0; k < 3; ++k) s[k] = q[k]->s;
+  const double key[3] = {q[0]->key, q[1]->key, q[2]->key};
   const double area = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y);
   if (area == 0.0) return false;  // edge-on: no pixel centre is covered
-  // The pixels whose centres lie in the bounding box; none: the face covers no centre.
-  f.i0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].x, s[1].x, s[2].x}) - 0.5)));
-  f.i1 = static_cast<int>(std::min(view.width - 1.0, std::floor(std::max({s[0].x, s[1].x, s[2].x}) - 0.5)));
-  f.j0 = static_cast<int>(std::max(0.0, std::ceil(std::min({s[0].y, s[1].y, s[2].y}) - 0.5)));
-  f.j1 = static_cast<int>(std::min(view.height - 1.0, std::floor(std::max({s[0].y, s[1].y, s[2].y}) - 0.5)));
-  if (f.i0 > f.i1 || f.j0 > f.j1) return false;
+  f.box = PixelBox(s[0], s[1], s[2], view.width, view.height);
+  if (f.box.empty()) return false;  // no pixel centre in its bounding box
   const glm::dvec3 x[3] = {p.point(p.boundary_point[tri[0]]), p.point(p.boundary_point[tri[1]]), p.point(p.boundary_point[tri[2]])};
   const glm::dvec3 n = glm::cross(x[1] - x[0], x[2] - x[0]);  // outward
   const bool entering = v.perspective ? glm::dot(n, v.eye - x[0]) > 0 : glm::dot(n, v.dir) < 0;
@@ -197,10 +200,7 @@ std::vector<ProjectedFace> project_faces(const VisibilitySorter::Prepared& p, co
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb, 1024), [&](const tbb::blocked_range<std::size_t>& r) {
     for (std::size_t b = r.begin(); b < r.end(); ++b) in_image[b] = project_face(p, v, view, points, b, projected[b]);
   });
-  std::size_t kept = 0;
-  for (std::size_t b = 0; b < nb; ++b)
-    if (in_image[b]) projected[kept++] = projected[b];
-  projected.resize(kept);
+  keep_flagged(projected, in_image);
   if (cull) cull_faces_without_gaps(projected, view.width, view.height);
   return projected;
 }
@@ -320,12 +320,12 @@ struct RowBands {
     count = (height + rows - 1) / rows;
     start.assign(static_cast<std::size_t>(count) + 1, 0);
     for (const ProjectedFace& f : faces)
-      for (int b = f.j0 / rows; b <= f.j1 / rows; ++b) ++start[b + 1];
+      for (int b = f.box.j0 / rows; b <= f.box.j1 / rows; ++b) ++start[b + 1];
     for (int b = 0; b < count; ++b) start[b + 1] += start[b];
     face.resize(start.back());
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t k = 0; k < faces.size(); ++k)
-      for (int b = faces[k].j0 / rows; b <= faces[k].j1 / rows; ++b) face[fill[b]++] = static_cast<std::uint32_t>(k);
+      for (int b = faces[k].box.j0 / rows; b <= faces[k].box.j1 / rows; ++b) face[fill[b]++] = static_cast<std::uint32_t>(k);
   }
 };
 
