@@ -6,25 +6,21 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <limits>
 #include <tuple>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
 
+#include "grid/face_match.hpp"
 #include "grid/geometry.hpp"
-#include "grid/tetrahedralize.hpp"
 #include "grid/topology.hpp"
 
 namespace cellproj {
 namespace {
 
-using Key = FaceKey;
-constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
-
 // A boundary face that touches a point repeated elsewhere: its key over the points' first ids.
 struct Open {
-  Key key;
+  FaceKey key;
   std::int64_t cf, cell;
 };
 
@@ -82,7 +78,9 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
   };
   // Two faces at one place are a seam when their cells lie on opposite sides of it (overlapping
   // cells are not glued) and no third face is there too.
-  auto opposite = [&](const Open& a, const Open& b) { return a.cell != b.cell && glm::dot(normal(a.cf), normal(b.cf)) < 0; };
+  auto opposite = [&](std::int64_t a, std::int64_t b) {  // cell faces
+    return t.cell_of(a) != t.cell_of(b) && glm::dot(normal(a), normal(b)) < 0;
+  };
   auto glue = [&](const Open& a, const Open& b) {
     t.neighbor[a.cf] = b.cell, t.neighbor[b.cf] = a.cell;
     t.seam.push_back(a.cf), t.seam.push_back(b.cf);
@@ -90,34 +88,22 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
   std::int64_t glued = 0;
   for (std::size_t s = 0, e; s < open.size(); s = e) {
     for (e = s + 1; e < open.size() && open[e].key == open[s].key;) ++e;
-    if (e - s == 2 && opposite(open[s], open[s + 1])) glue(open[s], open[s + 1]), ++glued;
+    if (e - s == 2 && opposite(open[s].cf, open[s + 1].cf)) glue(open[s], open[s + 1]), ++glued;
   }
-  // A quad across from two triangles (the cell there split into tetrahedra by the same diagonal).
-  auto find = [&](const Key& k) -> const Open* {
-    const auto it = std::lower_bound(open.begin(), open.end(), k, [](const Open& o, const Key& key) { return o.key < key; });
-    const bool unique = it != open.end() && it->key == k && (it + 1 == open.end() || (it + 1)->key != k);
-    return unique && t.neighbor[it->cf] == kBoundary ? &*it : nullptr;
-  };
-  for (const Open& q : open) {
-    if (q.key[3] == kNone || t.neighbor[q.cf] != kBoundary) continue;
-    std::int64_t ids[4], tri[2][3];
-    ids_of(q.cf, ids);
-    split_quad(ids, tri);
-    const Open* on[2];
-    for (int h = 0; h < 2; ++h) {
-      for (auto& id : tri[h])
-        if (const auto it = first_id.find(id); it != first_id.end()) id = it->second;
-      on[h] = find(face_key_of(tri[h], 3));
-    }
-    if (!on[0] || !on[1] || !opposite(q, *on[0]) || !opposite(q, *on[1])) continue;
-    t.neighbor[q.cf] = kSplitFace;
-    t.neighbor[on[0]->cf] = t.neighbor[on[1]->cf] = q.cell;
-    t.split_faces.push_back({q.cf, on[0]->cf, on[1]->cf});
-    t.seam.insert(t.seam.end(), {q.cf, on[0]->cf, on[1]->cf});
-    ++glued;
-  }
-  t.seam_faces += glued;
   t.shared_faces += glued;
+  // A quad across from two triangles (the cell there split into tetrahedra by the same diagonal).
+  std::vector<std::int64_t> quad_or_tri;
+  for (const Open& o : open)
+    if (t.neighbor[o.cf] == kBoundary) quad_or_tri.push_back(o.cf);
+  auto same = [&](std::int64_t p) {
+    const auto it = first_id.find(p);
+    return it == first_id.end() ? p : it->second;
+  };
+  const std::size_t before = t.split_faces.size();
+  glued += match_quads_to_triangles(m, t, quad_or_tri, same, opposite);
+  for (std::size_t k = before; k < t.split_faces.size(); ++k)
+    t.seam.insert(t.seam.end(), t.split_faces[k].begin(), t.split_faces[k].end());
+  t.seam_faces += glued;
   t.boundary.erase(std::remove_if(t.boundary.begin(), t.boundary.end(), [&](std::int64_t cf) { return t.neighbor[cf] != kBoundary; }),
                    t.boundary.end());
 }

@@ -11,6 +11,7 @@
 #include <CGAL/convex_hull_3.h>
 #include <tbb/parallel_for.h>
 
+#include "grid/face_match.hpp"
 #include "grid/geometry.hpp"
 #include "grid/tetrahedralize.hpp"
 
@@ -38,47 +39,56 @@ int face_points(const MeshView& m, std::int64_t cell, int local, glm::dvec3 p[4]
   return face.size;
 }
 
-// Unmatched quads against unmatched triangles: a quad whose two canonical triangles are faces of
-// other cells (a neighbour split into tetrahedra, grid/face_split) is shared with both.
-void match_split_quads(const MeshView& m, const std::vector<FaceKey>& keys, const std::vector<std::int64_t>& owner,
-                       FaceTopology& t) {
-  constexpr std::int64_t kNone = std::numeric_limits<std::int64_t>::max();
-  std::vector<std::pair<FaceKey, std::int64_t>> open_tris;
-  std::vector<std::int64_t> open_quads;
-  for (std::size_t f = 0; f < keys.size(); ++f) {
-    if (t.neighbor[f] != kBoundary) continue;
-    if (keys[f][3] == kNone) open_tris.emplace_back(keys[f], static_cast<std::int64_t>(f));
-    else open_quads.push_back(static_cast<std::int64_t>(f));
-  }
-  if (open_tris.empty() || open_quads.empty()) return;
-  std::sort(open_tris.begin(), open_tris.end());
-  auto find = [&](const std::int64_t tri[3]) -> std::int64_t {
-    std::int64_t id[3] = {tri[0], tri[1], tri[2]};
-    sort_triangle_ids(id);
-    const FaceKey k{id[0], id[1], id[2], kNone};
-    const auto it = std::lower_bound(open_tris.begin(), open_tris.end(), std::make_pair(k, std::int64_t(-1)));
-    return it != open_tris.end() && it->first == k ? it->second : -1;
-  };
-  for (const std::int64_t q : open_quads) {
-    const std::int64_t c = owner[q];
-    const FaceDef& face = cell_def(m.type(c)).face[q - t.face_offsets[c]];
-    const std::int64_t ids[4] = {m.cell(c)[face.v[0]], m.cell(c)[face.v[1]], m.cell(c)[face.v[2]], m.cell(c)[face.v[3]]};
-    std::int64_t tri[2][3];
-    split_quad(ids, tri);
-    const std::int64_t f0 = find(tri[0]), f1 = find(tri[1]);
-    if (f0 < 0 || f1 < 0 || t.neighbor[f0] != kBoundary || t.neighbor[f1] != kBoundary) continue;
-    t.neighbor[q] = kSplitFace;
-    t.neighbor[f0] = c, t.neighbor[f1] = c;
-    t.split_faces.push_back({q, f0, f1});
-    ++t.shared_faces;
-  }
-}
-
 }  // namespace
 
 std::int64_t FaceTopology::cell_of(std::int64_t cf) const {
   return static_cast<std::int64_t>(std::upper_bound(face_offsets.begin(), face_offsets.end(), cf) -
                                    face_offsets.begin()) - 1;
+}
+
+std::int64_t match_quads_to_triangles(const MeshView& m, FaceTopology& t, const std::vector<std::int64_t>& open,
+                                                   const std::function<std::int64_t(std::int64_t)>& same,
+                                                   const std::function<bool(std::int64_t, std::int64_t)>& accept) {
+  auto key_of = [&](std::int64_t* ids, int n) {
+    for (int i = 0; i < n; ++i) ids[i] = same(ids[i]);
+    return face_key_of(ids, n);
+  };
+  auto ids_of = [&](std::int64_t cf, std::int64_t ids[4]) {
+    const std::int64_t c = t.cell_of(cf);
+    const FaceDef& face = cell_def(m.type(c)).face[cf - t.face_offsets[c]];
+    for (int i = 0; i < face.size; ++i) ids[i] = m.cell(c)[face.v[i]];
+    return static_cast<int>(face.size);
+  };
+  std::vector<std::pair<FaceKey, std::int64_t>> tris;
+  std::vector<std::int64_t> quads;
+  std::int64_t matched = 0;
+  for (const std::int64_t cf : open) {
+    std::int64_t ids[4];
+    const int n = ids_of(cf, ids);
+    if (n == 3) tris.emplace_back(key_of(ids, 3), cf);
+    else quads.push_back(cf);
+  }
+  if (tris.empty() || quads.empty()) return matched;
+  std::sort(tris.begin(), tris.end());
+  auto find = [&](std::int64_t tri[3]) -> std::int64_t {  // the only open triangle with tri's key, or -1
+    const FaceKey k = key_of(tri, 3);
+    const auto it = std::lower_bound(tris.begin(), tris.end(), std::make_pair(k, std::int64_t(-1)));
+    if (it == tris.end() || it->first != k || (it + 1 != tris.end() && (it + 1)->first == k)) return -1;
+    return t.neighbor[it->second] == kBoundary ? it->second : -1;
+  };
+  for (const std::int64_t q : quads) {
+    std::int64_t ids[4], tri[2][3];
+    ids_of(q, ids);
+    split_quad(ids, tri);
+    const std::int64_t f0 = find(tri[0]), f1 = find(tri[1]), c = t.cell_of(q);
+    if (f0 < 0 || f1 < 0 || !accept(q, f0) || !accept(q, f1)) continue;
+    t.neighbor[q] = kSplitFace;
+    t.neighbor[f0] = t.neighbor[f1] = c;
+    t.split_faces.push_back({q, f0, f1});
+    ++t.shared_faces;
+    ++matched;
+  }
+  return matched;
 }
 
 FaceTopology build_topology(const MeshView& m) {
@@ -136,8 +146,13 @@ FaceTopology build_topology(const MeshView& m) {
     }
     i = j;
   }
-  match_split_quads(m, keys, owner, t);
+  // Quads whose two triangles are faces of other cells (a neighbour split into tetrahedra,
+  // grid/face_split) are shared with both.
+  std::vector<std::int64_t> open;
   for (std::int64_t f = 0; f < n_faces; ++f)
+    if (t.neighbor[f] == kBoundary) open.push_back(f);
+  match_quads_to_triangles(m, t, open, [](std::int64_t p) { return p; }, [](std::int64_t, std::int64_t) { return true; });
+  for (const std::int64_t f : open)
     if (t.neighbor[f] == kBoundary) t.boundary.push_back(f);
   glue_seams(m, t);
   return t;
