@@ -118,7 +118,7 @@ std::vector<std::string> ValidationReport::warnings(const std::string& source) c
   if (duplicate_points)
     w.push_back(where(source, std::to_string(duplicate_points) + " duplicate points (first: point " +
                                   std::to_string(first_duplicate) +
-                                  "): cells joined only through them leave internal boundary faces"));
+                                  "): faces of cells joined only through them are matched by position (seams)"));
   return w;
 }
 
