@@ -97,7 +97,9 @@ Image ProjectionRenderer::render(const TransferFunction& tf, const Camera& camer
   st.phase_seconds.emplace_back("project points", since(t));
 
   t = std::chrono::steady_clock::now();
-  ViewOrder view = sorter_.sort(options.sort, SortView{camera, width, height});
+  SortView sort_view{camera, width, height};
+  sort_view.gaps = options.gaps;
+  ViewOrder view = sorter_.sort(options.sort, sort_view);
   SortResult& sorted = view.sorted;
   const MeshView& cells = view.mesh->cells;
   st.tetrahedralize = sorter_.mode();

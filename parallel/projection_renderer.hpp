@@ -23,6 +23,7 @@ struct ProjectionOptions {
   ProjectionMethod method = ProjectionMethod::pt_breakpoints;
   ProjectionBackend backend = ProjectionBackend::software;  // the OpenGL ones draw pt-linear and pt-table
   SortMethod sort = SortMethod::automatic;
+  GapMethod gaps = GapMethod::automatic;  // how mpvo-abuffer finds the relations across gaps
   int table_size = 256;      // pt-table: nodes per axis of the opacity table
   int batch_cells = 0;       // cells per pipeline token; 0: about 16 tokens per thread, 64 to 2048
 };

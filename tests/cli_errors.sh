@@ -102,15 +102,22 @@ grep -q '"sort":"mpvo".*"violations":0' "$tmp/out" || { echo "FAIL: mpvo on a bo
 expect 0 '"problem_cells":[0-9]+.*"violations":0,' -- sortbench "$tmp/mixed.vtu" --views 3 --size 48x48 --sorts mpvo-abuffer --projection persp --check --json
 expect 1 "unknown --tetrahedralize 'half'" -- sortbench "$tmp/mixed.vtu" --tetrahedralize half
 # The A-buffer's sweep and its reference (every pixel ordered) find the same gap relations.
-"$exe" sortbench "$tmp/mixed.vtu" --views 3 --size 96x96 --sorts mpvo-abuffer --json > "$tmp/sweep.json" &&
+# The overlaps' relations hold every one the A-buffer finds (auto: no view of this mesh needs the A-buffer).
+"$exe" sortbench "$tmp/mixed.vtu" --views 3 --size 96x96 --sorts mpvo-abuffer --gaps abuffer --json > "$tmp/sweep.json" &&
   "$exe" sortbench "$tmp/mixed.vtu" --views 3 --size 96x96 --sorts mpvo-abuffer --abuffer-every-pixel --json > "$tmp/every.json" &&
-  python3 - "$tmp/sweep.json" "$tmp/every.json" <<'PY' || { echo "FAIL: --abuffer-every-pixel"; failed=$((failed+1)); }
+  "$exe" sortbench "$tmp/mixed.vtu" --views 3 --size 96x96 --sorts mpvo-abuffer --json > "$tmp/auto.json" &&
+  python3 - "$tmp/sweep.json" "$tmp/every.json" "$tmp/auto.json" <<'PY' || { echo "FAIL: --abuffer-every-pixel, --gaps"; failed=$((failed+1)); }
 import json, sys
-sweep, every = (json.loads(open(f).readline()) for f in sys.argv[1:3])
+sweep, every, auto = (json.loads(open(f).readline()) for f in sys.argv[1:4])
 assert not sweep["abuffer_every_pixel"] and every["abuffer_every_pixel"]
 assert sweep["gap_relations"] > 0 and sweep["gap_relations"] == every["gap_relations"], (sweep["gap_relations"], every["gap_relations"])
 assert 0 < sweep["abuffer_runs"] < sweep["abuffer_fragments"] <= every["abuffer_fragments"]
+assert sweep["gaps"] == "abuffer" and sweep["abuffer_views"] == 3 and sweep["gap_pair_tests"] == 0
+assert auto["gaps"] == "auto" and auto["abuffer_views"] == 0 and auto["gap_pair_tests"] > 0 and auto["abuffer_runs"] == 0
+assert auto["gap_relations"] >= sweep["gap_relations"], (auto["gap_relations"], sweep["gap_relations"])
 PY
+expect 1 "unknown gap method 'pixels' \(known: auto, overlaps, abuffer\)" -- sortbench "$tmp/mixed.vtu" --gaps pixels
+expect 1 "unknown gap method 'pixels'" -- render "$tmp/ok.json" --gaps pixels
 
 # info --json: the documented keys with this mesh's values.
 "$exe" info "$tmp/box.vtu" --json > "$tmp/info.json" || { echo "FAIL: info --json"; failed=$((failed+1)); }

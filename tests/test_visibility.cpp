@@ -39,8 +39,11 @@ struct Scene {
     tracer = std::make_unique<CellRayTracer>(mesh.view());
   }
   // Sorts and checks; the order must hold every cell exactly once.
-  OrderCheck check(SortMethod method, const Camera& c, int size = 64, SortStats* stats = nullptr) const {
-    const SortResult r = sorter->sort(method, {c, size, size});
+  OrderCheck check(SortMethod method, const Camera& c, int size = 64, SortStats* stats = nullptr,
+                   GapMethod gaps = GapMethod::automatic) const {
+    SortView view{c, size, size};
+    view.gaps = gaps;
+    const SortResult r = sorter->sort(method, view);
     EXPECT_EQ(static_cast<std::int64_t>(r.order.size()), mesh.n_cells()) << name_of(method);
     const OrderCheck k = check_order(*tracer, mesh.n_cells(), r.order, c, size, size);
     EXPECT_EQ(k.missing_cells, 0) << name_of(method);
@@ -109,9 +112,17 @@ TEST(Visibility, MpvoAbufferOnNonConvexMeshesHasNoViolations) {
     ASSERT_FALSE(s.convex) << kind;
     std::int64_t mpvo_violations = 0;
     for (const Camera& c : both_projections(6)) {
-      SortStats st;
-      const OrderCheck k = s.check(SortMethod::mpvo_abuffer, c, 64, &st);
-      EXPECT_EQ(k.violations, 0) << kind << " eye " << c.eye.x << "," << c.eye.y << "," << c.eye.z;
+      // The overlaps' relations hold every pair the A-buffer finds at a pixel centre, and more.
+      SortStats from_overlaps, from_abuffer;
+      const OrderCheck a = s.check(SortMethod::mpvo_abuffer, c, 64, &from_overlaps, GapMethod::overlaps);
+      const OrderCheck b = s.check(SortMethod::mpvo_abuffer, c, 64, &from_abuffer, GapMethod::abuffer);
+      EXPECT_EQ(a.violations, 0) << kind << " overlaps, eye " << c.eye.x << "," << c.eye.y << "," << c.eye.z;
+      EXPECT_EQ(b.violations, 0) << kind << " abuffer, eye " << c.eye.x << "," << c.eye.y << "," << c.eye.z;
+      EXPECT_EQ(from_overlaps.gaps_from, GapMethod::overlaps);
+      EXPECT_EQ(from_abuffer.gaps_from, GapMethod::abuffer);
+      EXPECT_GE(from_overlaps.gap_relations, from_abuffer.gap_relations) << kind;
+      EXPECT_GT(from_overlaps.gap_pair_tests, 0) << kind;
+      EXPECT_TRUE(from_overlaps.cycles.empty()) << kind;
       mpvo_violations += s.check(SortMethod::mpvo, c).violations;
     }
     EXPECT_GT(mpvo_violations, 0) << kind << ": without the gap relations the ring must come out wrong somewhere";
@@ -151,6 +162,7 @@ TEST(Visibility, AbufferSweepEqualsOrderingEveryPixel) {
     std::int64_t gaps = 0;
     for (const Camera& c : both_projections(4)) {
       SortView view{c, 256, 192};
+      view.gaps = GapMethod::abuffer;
       const SortResult sweep = s.sorter->sort(SortMethod::mpvo_abuffer, view);
       view.abuffer_every_pixel = true;
       const SortResult every = s.sorter->sort(SortMethod::mpvo_abuffer, view);
@@ -166,14 +178,17 @@ TEST(Visibility, AbufferSweepEqualsOrderingEveryPixel) {
   }
 }
 
-// The A-buffer sweeps bands of rows on worker threads, as many bands as the threads allow: the
-// relations, and so the order, are the same from 1 thread as from several.
-TEST(Visibility, AbufferGivesTheSameOrderFromOneAndManyThreads) {
+// The A-buffer sweeps bands of rows on worker threads, as many bands as the threads allow, and
+// the overlaps are tested in tiles on them: the relations, and so the order, are the same from 1
+// thread as from several.
+TEST(Visibility, GapRelationsAreTheSameFromOneAndManyThreads) {
   for (const char* kind : {"swirl-tets", "mixed"}) {
     const Scene s(generate(kind, 6));
     std::int64_t gaps = 0;
-    for (const Camera& c : both_projections(3)) {
-      const SortView view{c, 300, 200};
+    for (const Camera& c : both_projections(3))
+      for (const GapMethod method : {GapMethod::abuffer, GapMethod::overlaps}) {
+      SortView view{c, 300, 200};
+      view.gaps = method;
       SortResult one, many;
       tbb::task_arena(1).execute([&] { one = s.sorter->sort(SortMethod::mpvo_abuffer, view); });
       tbb::task_arena(5).execute([&] { many = s.sorter->sort(SortMethod::mpvo_abuffer, view); });
@@ -181,6 +196,7 @@ TEST(Visibility, AbufferGivesTheSameOrderFromOneAndManyThreads) {
       EXPECT_EQ(one.stats.gap_relations, many.stats.gap_relations) << kind;
       EXPECT_EQ(one.stats.abuffer_runs, many.stats.abuffer_runs) << kind;
       EXPECT_EQ(one.stats.abuffer_crossings, many.stats.abuffer_crossings) << kind;
+      EXPECT_EQ(one.stats.gap_pair_tests, many.stats.gap_pair_tests) << kind;
       EXPECT_EQ(one.order, many.order) << kind;
     }
     EXPECT_GT(gaps, 0) << kind;
@@ -202,6 +218,7 @@ TEST(Visibility, AbufferSweepOrdersFacesThatCrossPixelByPixel) {
   top.eye = {0.05, 0.02, 5};
   top.height = 3.0;
   SortView view{top, 128, 128};
+  view.gaps = GapMethod::abuffer;
   const SortResult sweep = s.sorter->sort(SortMethod::mpvo_abuffer, view);
   view.abuffer_every_pixel = true;
   const SortResult every = s.sorter->sort(SortMethod::mpvo_abuffer, view);
@@ -212,6 +229,21 @@ TEST(Visibility, AbufferSweepOrdersFacesThatCrossPixelByPixel) {
   // Each cell lies in front of the other on one side of the crossing: no order is right.
   ASSERT_EQ(sweep.stats.cycles.size(), 1u);
   EXPECT_EQ(sweep.stats.cycles[0].size, 2);
+  EXPECT_TRUE(sweep.stats.cycles[0].across_gap);
+
+  // The overlaps find both relations, a cycle across a gap; by default the view then asks the
+  // A-buffer, and gets its order exactly.
+  view.abuffer_every_pixel = false;
+  view.gaps = GapMethod::overlaps;
+  const SortResult overlaps = s.sorter->sort(SortMethod::mpvo_abuffer, view);
+  EXPECT_EQ(overlaps.stats.gap_relations, 2);
+  ASSERT_EQ(overlaps.stats.cycles.size(), 1u);
+  EXPECT_TRUE(overlaps.stats.cycles[0].across_gap);
+  view.gaps = GapMethod::automatic;
+  const SortResult automatic = s.sorter->sort(SortMethod::mpvo_abuffer, view);
+  EXPECT_EQ(automatic.stats.gaps_from, GapMethod::abuffer);
+  EXPECT_EQ(automatic.order, sweep.order);
+  EXPECT_EQ(automatic.stats.cycles.size(), 1u);
 }
 
 TEST(Visibility, AutoPicksWhatTheMeshNeeds) {
@@ -307,6 +339,17 @@ TEST(Visibility, ACycleOfThreeSticksIsFoundAndBroken) {
     EXPECT_EQ(st.cycles[0].cells.size(), 3u);
     EXPECT_GE(st.cycles[0].relations_dropped, 1);
   }
+  // In a 12 x 12 image no pixel centre lies where two sticks overlap: the overlaps still close
+  // the cycle, across gaps, so mpvo-abuffer asks the A-buffer, which finds no relation and no cycle.
+  SortStats overlaps, automatic;
+  s.check(SortMethod::mpvo_abuffer, top, 12, &overlaps, GapMethod::overlaps);
+  ASSERT_EQ(overlaps.cycles.size(), 1u);
+  EXPECT_TRUE(overlaps.cycles[0].across_gap);
+  EXPECT_EQ(overlaps.gap_face_crossings, 0);
+  EXPECT_EQ(s.check(SortMethod::mpvo_abuffer, top, 12, &automatic).violations, 0);
+  EXPECT_EQ(automatic.gaps_from, GapMethod::abuffer);
+  EXPECT_TRUE(automatic.cycles.empty());
+  EXPECT_EQ(automatic.gap_relations, 0);
 }
 
 TEST(Visibility, CombTetsViolationsAllCrossItsInvertedCells) {

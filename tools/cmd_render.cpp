@@ -26,7 +26,7 @@ namespace cellproj {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto",
+  std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto", gaps = "auto",
               backend = "software", tetrahedralize = "problem";
   int threads = 0, frames = 1, table_size = 256;
   bool interpolation_given = false;  // --interpolation on the command line (it applies to exact only)
@@ -81,6 +81,7 @@ int run_render(const RenderArgs& a) {
   }
   // Every option is checked, also those the chosen method does not use: a typo never passes silently.
   projection.sort = sort_method_from_name(a.sort);
+  projection.gaps = gap_method_from_name(a.gaps);
   projection.table_size = a.table_size;
   projection.backend = projection_backend_from_name(a.backend);
   const Tetrahedralize tetrahedralize = tetrahedralize_from_name(a.tetrahedralize);
@@ -216,6 +217,8 @@ Action add_render(CLI::App& app) {
                   "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
                   "pt-table, pt-linear (fastest), or exact (the reference ray integrator); see docs/methods.md");
   cmd->add_option("--sort", args->sort, "Visibility sort for the projection methods: " + sort_method_names());
+  cmd->add_option("--gaps", args->gaps,
+                  "How mpvo-abuffer finds the relations across gaps: " + gap_method_names() + " (as sortbench's)");
   cmd->add_option("--backend", args->backend,
                   "Where the projection methods rasterize: software (default), or for pt-linear and pt-table "
                   "opengl (OSMesa, float target), opengl-8bit, opengl-8bit-dither");

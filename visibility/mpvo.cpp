@@ -58,7 +58,8 @@ FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v
 }
 
 std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p, const ViewFrame& v, FaceOrder& faces,
-                                            const std::vector<const Relations*>& extra, SortStats& stats) {
+                                            const std::vector<const Relations*>& extra, SortStats& stats,
+                                            const Relations* gaps) {
   const std::int64_t n = p.mesh.n_cells;
   const auto& fo = p.topo->face_offsets;
   std::vector<const Relations*> lists;
@@ -117,6 +118,7 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
     start[c + 1] = static_cast<std::int64_t>(to.size());
   }
   CycleBreaker breaker(std::move(start), std::move(to), emitted);
+  std::vector<char> inside(gaps ? static_cast<std::size_t>(n) : 0, 0);  // the cells of the cycle at hand
   while (static_cast<std::int64_t>(order.size()) < n) {
     const std::vector<std::int64_t> cells = breaker.next_cycle(emitted);
     if (cells.empty()) throw std::logic_error("topological sort stalled without a visibility cycle");
@@ -126,6 +128,12 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
     for (std::int64_t c : cells) {
       if (cycle.cells.size() < VisibilityCycle::kMaxCycleCells) cycle.cells.push_back(c);
       if (const double k = v.far_key(p.centroid[c]); k > farthest) farthest = k, cycle.broken_at = c;
+    }
+    if (gaps && !gaps->start.empty()) {
+      for (std::int64_t c : cells) inside[c] = 1;
+      for (std::int64_t c : cells)
+        for (std::int64_t k = gaps->start[c]; k < gaps->start[c + 1] && !cycle.across_gap; ++k) cycle.across_gap = inside[gaps->to[k]];
+      for (std::int64_t c : cells) inside[c] = 0;
     }
     cycle.relations_dropped = in[cycle.broken_at];
     in[cycle.broken_at] = 0;

@@ -78,6 +78,11 @@ FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v
 // Relations across the gaps of a non-convex mesh, from an A-buffer of its boundary faces at the
 // view's pixel centres.
 Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, SortStats& stats);
+// The same from the overlaps of those faces in the image: a superset, true wherever rays go
+// (visibility/overlap_gaps.cpp). Counts the pairs of faces that pass through each other; with
+// stop_at_crossing, stops at the first (the relations are then incomplete).
+Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
+                                SortStats& stats, bool stop_at_crossing);
 // Relations from pairwise occlusion tests between every two cells whose projections overlap.
 Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
                              SortStats& stats);
@@ -86,9 +91,11 @@ std::vector<std::int64_t> centroid_order(const VisibilitySorter::Prepared& p, co
 
 // Kahn's topological sort (in-counts and a FIFO queue, O(n + relations)) over the face relations
 // and extra relation lists; when it stalls, the visibility cycles are found (strongly connected
-// components), reported, and broken at their farthest cell. Consumes faces.in.
+// components), reported, and broken at their farthest cell; a cycle holding a relation of `gaps`
+// is marked across_gap. Consumes faces.in.
 std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p, const ViewFrame& v, FaceOrder& faces,
-                                            const std::vector<const Relations*>& extra, SortStats& stats);
+                                            const std::vector<const Relations*>& extra, SortStats& stats,
+                                            const Relations* gaps = nullptr);
 
 class PhaseClock {
  public:

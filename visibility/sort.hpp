@@ -34,12 +34,27 @@ struct VisibilityCycle {
   std::vector<std::int64_t> cells;  // the first kMaxCycleCells of them
   std::int64_t broken_at = -1;      // the cell emitted early
   std::int64_t relations_dropped = 0;
+  bool across_gap = false;          // a relation across a gap lies inside it (not only face relations)
 };
+
+// How mpvo-abuffer finds the relations across gaps.
+enum class GapMethod : std::uint8_t {
+  automatic,  // overlaps; the A-buffer for a view where a visibility cycle holds a relation from them,
+              // or where two of the faces pass through each other (which makes such a cycle)
+  overlaps,   // from the boundary faces' overlaps in the image (object space, visibility/overlap_gaps.cpp)
+  abuffer,    // from the software A-buffer at the pixel centres (visibility/abuffer.cpp)
+};
+GapMethod gap_method_from_name(const std::string& name);  // throws InputError listing the names
+const char* name_of(GapMethod method);
+std::string gap_method_names();
 
 struct SortStats {
   SortMethod method = SortMethod::centroid;  // the method that ran (auto resolved)
   std::int64_t face_relations = 0;  // relations across shared faces
-  std::int64_t gap_relations = 0;   // relations across gaps between boundary faces (A-buffer), distinct
+  std::int64_t gap_relations = 0;   // relations across gaps between boundary faces, distinct
+  GapMethod gaps_from = GapMethod::automatic;  // overlaps or abuffer: what found them (mpvo-abuffer)
+  std::int64_t gap_pair_tests = 0;  // pairs of faces tested for a gap between them (overlaps)
+  std::int64_t gap_face_crossings = 0;  // of those, pairs passing through each other in depth (overlaps)
   std::int64_t pair_relations = 0;  // relations from pairwise occlusion tests
   std::int64_t abuffer_fragments = 0;  // pixel centres covered by boundary faces in the A-buffer
   std::int64_t abuffer_runs = 0;       // runs of them, one per face and row: the A-buffer's work
@@ -62,6 +77,7 @@ struct SortView {
   // Orders the A-buffer's lists at every pixel centre instead of once per stretch of a row covered
   // by the same faces: the same relations, slower; the reference the sweep is tested against.
   bool abuffer_every_pixel = false;
+  GapMethod gaps = GapMethod::automatic;  // every_pixel implies abuffer
 };
 
 class VisibilitySorter {

@@ -23,6 +23,8 @@ constexpr std::pair<SortMethod, const char*> kNames[] = {{SortMethod::automatic,
                                  {SortMethod::mpvo, "mpvo"},
                                  {SortMethod::mpvo_abuffer, "mpvo-abuffer"},
                                  {SortMethod::pairwise, "pairwise"}};
+constexpr std::pair<GapMethod, const char*> kGapNames[] = {
+    {GapMethod::automatic, "auto"}, {GapMethod::overlaps, "overlaps"}, {GapMethod::abuffer, "abuffer"}};
 
 // A face's normal (outward for the cell listing it in this order) and a point of its plane.
 // Triangles take their normal from the vertices in increasing id and their centroid, so both cells
@@ -55,6 +57,9 @@ void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, in
 SortMethod sort_method_from_name(const std::string& name) { return from_name(kNames, name, "sort"); }
 const char* name_of(SortMethod method) { return name_in(kNames, method); }
 std::string sort_method_names() { return names(kNames); }
+GapMethod gap_method_from_name(const std::string& name) { return from_name(kGapNames, name, "gap method"); }
+const char* name_of(GapMethod method) { return name_in(kGapNames, method); }
+std::string gap_method_names() { return names(kGapNames); }
 
 VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& topo, const HullReport& hull,
                                    std::shared_ptr<const RecentredPoints> points, const VisibilitySorter* whole,
@@ -206,13 +211,33 @@ SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const
       FaceOrder faces = face_relations(p, v);
       r.stats.face_relations = faces.relations;
       clock.lap("face_relations");
-      Relations gaps;
-      if (method == SortMethod::mpvo_abuffer) {
-        gaps = gap_relations(p, v, view, r.stats);
-        clock.lap("abuffer");
+      if (method == SortMethod::mpvo) {
+        r.order = topological_order(p, v, faces, {}, r.stats);
+        clock.lap("topological_sort");
+        break;
       }
-      r.order = topological_order(p, v, faces, {&gaps}, r.stats);
+      const GapMethod gaps_by = view.abuffer_every_pixel ? GapMethod::abuffer : view.gaps;
+      if (gaps_by != GapMethod::abuffer) {
+        const Relations gaps = overlap_gap_relations(p, v, view, r.stats, gaps_by == GapMethod::automatic);
+        clock.lap("overlaps");
+        // A cycle across a gap may be one that no pixel centre sees: then ask the pixel centres.
+        if (gaps_by == GapMethod::overlaps || r.stats.gap_face_crossings == 0) {
+          r.order = topological_order(p, v, faces, {&gaps}, r.stats, &gaps);
+          clock.lap("topological_sort");
+          r.stats.gaps_from = GapMethod::overlaps;
+          const bool cycle_across_gap = std::any_of(r.stats.cycles.begin(), r.stats.cycles.end(),
+                                                    [](const VisibilityCycle& c) { return c.across_gap; });
+          if (gaps_by == GapMethod::overlaps || !cycle_across_gap) break;
+          r.stats.cycles.clear();
+          faces = face_relations(p, v);  // the sort consumed its in-counts
+          clock.lap("face_relations");
+        }
+      }
+      const Relations gaps = gap_relations(p, v, view, r.stats);
+      clock.lap("abuffer");
+      r.order = topological_order(p, v, faces, {&gaps}, r.stats, &gaps);
       clock.lap("topological_sort");
+      r.stats.gaps_from = GapMethod::abuffer;
       break;
     }
     case SortMethod::pairwise: {

@@ -1,0 +1,198 @@
+// The relations across the gaps of a non-convex mesh from the overlaps of its boundary faces in the
+// image, in object space: wherever a face where rays leave the mesh lies in front of a face where
+// they enter it again, somewhere over the area where the two overlap in the image, the cell entered
+// is composited before the cell left. Every pair of faces the A-buffer (visibility/abuffer.cpp)
+// finds consecutive at some pixel centre is such a pair, so an order that keeps all of these
+// relations keeps the A-buffer's too; pairs that are not consecutive anywhere add relations that
+// are true wherever their rays go, harmless unless they close a visibility cycle, which the caller
+// checks (a cycle holding one of these relations makes it ask the A-buffer instead, and so do two
+// faces that pass through each other, which close such a cycle).
+//
+// The work is per pair of faces whose pixel boxes overlap, not per pixel: it does not grow with the
+// image. Pairs are found in tiles about as large as the faces' boxes, tested on worker threads.
+#include <algorithm>
+#include <atomic>
+#include <cmath>
+#include <limits>
+
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+
+#include "visibility/image_faces.hpp"
+
+namespace cellproj {
+namespace {
+
+struct ClipPoint {
+  double x, y;
+};
+
+// Clips the convex polygon (n points) to a x + b y + c >= -eps (Sutherland-Hodgman); out has room
+// for n + 1 points.
+int clip(const ClipPoint* poly, int n, double a, double b, double c, double eps, ClipPoint* out) {
+  int m = 0;
+  const ClipPoint* P = &poly[n - 1];
+  double eP = a * P->x + b * P->y + c + eps;
+  for (int k = 0; k < n; ++k) {
+    const ClipPoint* Q = &poly[k];
+    const double eQ = a * Q->x + b * Q->y + c + eps;
+    if ((eP >= 0) != (eQ >= 0)) {
+      const double t = eP / (eP - eQ);
+      out[m++] = {P->x + t * (Q->x - P->x), P->y + t * (Q->y - P->y)};
+    }
+    if (eQ >= 0) out[m++] = *Q;
+    P = Q, eP = eQ;
+  }
+  return m;
+}
+
+// Edge k of triangle s as a x + b y + c, positive inside.
+struct EdgeLine {
+  double a, b, c;
+  EdgeLine(const glm::dvec2* s, int k, double turn) {
+    const glm::dvec2 &p = s[k], &q = s[(k + 1) % 3];
+    a = -turn * (q.y - p.y), b = turn * (q.x - p.x), c = -(a * p.x + b * p.y);
+  }
+  double at(const glm::dvec2& x) const { return a * x.x + b * x.y + c; }
+  double length() const { return std::abs(a) + std::abs(b); }  // at least the Euclidean one
+};
+
+double turn(const glm::dvec2* s) {
+  return (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y) > 0 ? 1.0 : -1.0;
+}
+
+// Whether an edge of one triangle has the other wholly outside it or within eps of it (relative to
+// the edge's length): then they overlap over no area wider than eps.
+bool apart(const glm::dvec2* s, const glm::dvec2* t, double eps) {
+  for (int pass = 0; pass < 2; ++pass, std::swap(s, t)) {
+    const double ts = turn(s);
+    for (int k = 0; k < 3; ++k) {
+      const EdgeLine e(s, k, ts);
+      const double inside = eps * e.length();
+      if (e.at(t[0]) < inside && e.at(t[1]) < inside && e.at(t[2]) < inside) return true;
+    }
+  }
+  return false;
+}
+
+enum class Pair { apart, gap, crossing };
+
+// Whether rays can leave the mesh through face f and enter it again through face g: whether the
+// two overlap in the image over an area (faces that only touch, as neighbours do, do not), and f
+// is in front of g somewhere there (a gap; a crossing when g is in front of f elsewhere: the faces
+// pass through each other), or level with it all over (the two sides of a seam that are not
+// bit-identical: the A-buffer reads those as "leave, then enter" too).
+Pair leaves_then_enters(const ProjectedFace& f, const ProjectedFace& g) {
+  const double slack = key_slack(f.kmin, g.kmax) + f.rounding + g.rounding;
+  if (f.kmin > g.kmax + slack) return Pair::apart;  // f behind g wherever they overlap
+  double scale = 1.0;
+  for (int k = 0; k < 3; ++k)
+    scale = std::max({scale, std::abs(f.s[k].x), std::abs(f.s[k].y), std::abs(g.s[k].x), std::abs(g.s[k].y)});
+  const double eps = 1e-9 * scale;  // pixel coordinates' rounding, many times over
+  if (apart(f.s, g.s, eps)) return Pair::apart;
+  if (f.kmax < g.kmin - slack) return Pair::gap;  // f in front of g wherever they overlap
+  // Where the two overlap (g clipped to f shrunk by eps), the key difference is affine: its
+  // extremes are at the corners.
+  ClipPoint a[8], b[8];
+  for (int k = 0; k < 3; ++k) a[k] = {g.s[k].x, g.s[k].y};
+  ClipPoint *from = a, *to = b;
+  int n = 3;
+  const double tf = turn(f.s);
+  for (int k = 0; k < 3 && n > 0; ++k, std::swap(from, to)) {
+    const EdgeLine e(f.s, k, tf);
+    n = clip(from, n, e.a, e.b, e.c, -eps * e.length(), to);
+  }
+  if (n == 0) return Pair::apart;
+  double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin;
+  for (int k = 0; k < n; ++k) {
+    const double d = (f.face.k0 - g.face.k0) + (f.face.kx - g.face.kx) * from[k].x + (f.face.ky - g.face.ky) * from[k].y;
+    dmin = std::min(dmin, d), dmax = std::max(dmax, d);
+  }
+  if (dmin < -slack) return dmax > slack ? Pair::crossing : Pair::gap;
+  return dmax <= slack ? Pair::gap : Pair::apart;
+}
+
+// The faces' pixel boxes binned into square tiles (about as large as the boxes on average), each
+// tile's leaving faces before its entering ones.
+struct TileBins {
+  int tile = 8, across = 0, down = 0;
+  std::vector<std::uint32_t> start, entering_from, face;  // tile t: face[start[t] .. entering_from[t] .. start[t + 1])
+
+  TileBins(const std::vector<ProjectedFace>& faces, int width, int height) {
+    double sides = 0;
+    for (const ProjectedFace& f : faces) sides += (f.box.i1 - f.box.i0 + f.box.j1 - f.box.j0 + 2) * 0.5;
+    if (!faces.empty()) tile = std::max(8, static_cast<int>(sides / static_cast<double>(faces.size())));
+    across = (width + tile - 1) / tile, down = (height + tile - 1) / tile;
+    const std::size_t tiles = static_cast<std::size_t>(across) * down;
+    std::vector<std::uint32_t> leaving(tiles + 1, 0);
+    start.assign(tiles + 1, 0);
+    each_tile(faces, [&](std::uint32_t k, std::size_t t) { ++start[t + 1], leaving[t + 1] += !faces[k].face.entering(); });
+    for (std::size_t t = 0; t < tiles; ++t) start[t + 1] += start[t];
+    entering_from.resize(tiles);
+    for (std::size_t t = 0; t < tiles; ++t) entering_from[t] = start[t] + leaving[t + 1];
+    face.resize(start.back());
+    std::vector<std::uint32_t> fill_leaving(start.begin(), start.end() - 1), fill_entering(entering_from);
+    each_tile(faces, [&](std::uint32_t k, std::size_t t) {
+      face[faces[k].face.entering() ? fill_entering[t]++ : fill_leaving[t]++] = k;
+    });
+  }
+  std::size_t tiles() const { return entering_from.size(); }
+
+ private:
+  template <class Visit>
+  void each_tile(const std::vector<ProjectedFace>& faces, Visit&& visit) const {
+    for (std::uint32_t k = 0; k < faces.size(); ++k) {
+      const PixelBox& b = faces[k].box;
+      for (int ty = b.j0 / tile; ty <= b.j1 / tile; ++ty)
+        for (int tx = b.i0 / tile; tx <= b.i1 / tile; ++tx) visit(k, static_cast<std::size_t>(ty) * across + tx);
+    }
+  }
+};
+
+struct FoundGaps {
+  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;  // (cell entered, cell left)
+  std::int64_t tests = 0, crossings = 0;
+};
+
+}  // namespace
+
+Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
+                                SortStats& stats, bool stop_at_crossing) {
+  const std::vector<ProjectedFace> faces = project_faces(p, v, view, true);
+  const TileBins bins(faces, view.width, view.height);
+  constexpr std::size_t kTilesPerTask = 64;
+  tbb::enumerable_thread_specific<FoundGaps> found;
+  std::atomic<bool> crossed{false};
+  tbb::parallel_for(std::size_t(0), (bins.tiles() + kTilesPerTask - 1) / kTilesPerTask, [&](std::size_t task) {
+    FoundGaps& out = found.local();
+    for (std::size_t t = task * kTilesPerTask; t < std::min(bins.tiles(), (task + 1) * kTilesPerTask); ++t) {
+      if (stop_at_crossing && crossed.load(std::memory_order_relaxed)) return;
+      const int tx = static_cast<int>(t % bins.across), ty = static_cast<int>(t / bins.across);
+      for (std::uint32_t i = bins.start[t]; i < bins.entering_from[t]; ++i) {
+        const ProjectedFace& f = faces[bins.face[i]];
+        for (std::uint32_t j = bins.entering_from[t]; j < bins.start[t + 1]; ++j) {
+          const ProjectedFace& g = faces[bins.face[j]];
+          if (g.face.cell() == f.face.cell()) continue;
+          // Each pair once: in the tile of the first pixel their boxes share.
+          const int i0 = std::max(f.box.i0, g.box.i0), j0 = std::max(f.box.j0, g.box.j0);
+          if (i0 > std::min(f.box.i1, g.box.i1) || j0 > std::min(f.box.j1, g.box.j1)) continue;
+          if (i0 / bins.tile != tx || j0 / bins.tile != ty) continue;
+          ++out.tests;
+          const Pair pair = leaves_then_enters(f, g);
+          if (pair != Pair::apart) out.pairs.emplace_back(g.face.cell(), f.face.cell());
+          if (pair == Pair::crossing) ++out.crossings, crossed.store(true, std::memory_order_relaxed);
+        }
+      }
+    }
+  });
+  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
+  for (const FoundGaps& g : found) {
+    pairs.insert(pairs.end(), g.pairs.begin(), g.pairs.end());
+    stats.gap_pair_tests += g.tests, stats.gap_face_crossings += g.crossings;
+  }
+  Relations rel;
+  stats.gap_relations = rel.build(p.mesh.n_cells, pairs);
+  return rel;
+}
+
+}  // namespace cellproj
