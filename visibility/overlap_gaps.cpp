@@ -46,34 +46,34 @@ int clip(const ClipPoint* poly, int n, double a, double b, double c, double eps,
   return m;
 }
 
-// Edge k of triangle s as a x + b y + c, positive inside.
-struct EdgeLine {
-  double a, b, c;
-  EdgeLine(const glm::dvec2* s, int k, double turn) {
-    const glm::dvec2 &p = s[k], &q = s[(k + 1) % 3];
-    a = -turn * (q.y - p.y), b = turn * (q.x - p.x), c = -(a * p.x + b * p.y);
-  }
-  double at(const glm::dvec2& x) const { return a * x.x + b * x.y + c; }
-  double length() const { return std::abs(a) + std::abs(b); }  // at least the Euclidean one
-};
-
-double turn(const glm::dvec2* s) {
-  return (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y) > 0 ? 1.0 : -1.0;
-}
-
-// Whether an edge of one triangle has the other wholly outside it or within eps of it (relative to
-// the edge's length): then they overlap over no area wider than eps.
-bool apart(const glm::dvec2* s, const glm::dvec2* t, double eps) {
-  for (int pass = 0; pass < 2; ++pass, std::swap(s, t)) {
-    const double ts = turn(s);
+// A face's triangle as the lines of its edges, a x + b y + c positive inside, each with a + b
+// (at least its Euclidean length), and eps: how far from an edge a point is still on it (pixel
+// coordinates' rounding, many times over).
+struct EdgeLines {
+  double a[3], b[3], c[3], length[3];
+  double eps;
+  explicit EdgeLines(const glm::dvec2* s) {
+    const double turn = (s[1].x - s[0].x) * (s[2].y - s[0].y) - (s[2].x - s[0].x) * (s[1].y - s[0].y) > 0 ? 1.0 : -1.0;
+    double extent = 1.0;
     for (int k = 0; k < 3; ++k) {
-      const EdgeLine e(s, k, ts);
-      const double inside = eps * e.length();
-      if (e.at(t[0]) < inside && e.at(t[1]) < inside && e.at(t[2]) < inside) return true;
+      const glm::dvec2 &p = s[k], &q = s[(k + 1) % 3];
+      a[k] = -turn * (q.y - p.y), b[k] = turn * (q.x - p.x), c[k] = -(a[k] * p.x + b[k] * p.y);
+      length[k] = std::abs(a[k]) + std::abs(b[k]);
+      extent = std::max({extent, std::abs(p.x), std::abs(p.y)});
     }
+    eps = 1e-9 * extent;
   }
-  return false;
-}
+  double at(int k, const glm::dvec2& x) const { return a[k] * x.x + b[k] * x.y + c[k]; }
+  // Whether an edge has triangle t wholly outside it or within eps of it: then the two overlap
+  // over no area wider than eps.
+  bool has_outside(const glm::dvec2* t, double e) const {
+    for (int k = 0; k < 3; ++k) {
+      const double inside = e * length[k];
+      if (at(k, t[0]) < inside && at(k, t[1]) < inside && at(k, t[2]) < inside) return true;
+    }
+    return false;
+  }
+};
 
 enum class Pair { apart, gap, crossing };
 
@@ -82,14 +82,11 @@ enum class Pair { apart, gap, crossing };
 // is in front of g somewhere there (a gap; a crossing when g is in front of f elsewhere: the faces
 // pass through each other), or level with it all over (the two sides of a seam that are not
 // bit-identical: the A-buffer reads those as "leave, then enter" too).
-Pair leaves_then_enters(const ProjectedFace& f, const ProjectedFace& g) {
+Pair leaves_then_enters(const ProjectedFace& f, const EdgeLines& fe, const ProjectedFace& g, const EdgeLines& ge) {
   const double slack = key_slack(f.kmin, g.kmax) + f.rounding + g.rounding;
   if (f.kmin > g.kmax + slack) return Pair::apart;  // f behind g wherever they overlap
-  double scale = 1.0;
-  for (int k = 0; k < 3; ++k)
-    scale = std::max({scale, std::abs(f.s[k].x), std::abs(f.s[k].y), std::abs(g.s[k].x), std::abs(g.s[k].y)});
-  const double eps = 1e-9 * scale;  // pixel coordinates' rounding, many times over
-  if (apart(f.s, g.s, eps)) return Pair::apart;
+  const double eps = std::max(fe.eps, ge.eps);
+  if (fe.has_outside(g.s, eps) || ge.has_outside(f.s, eps)) return Pair::apart;
   if (f.kmax < g.kmin - slack) return Pair::gap;  // f in front of g wherever they overlap
   // Where the two overlap (g clipped to f shrunk by eps), the key difference is affine: its
   // extremes are at the corners.
@@ -97,11 +94,8 @@ Pair leaves_then_enters(const ProjectedFace& f, const ProjectedFace& g) {
   for (int k = 0; k < 3; ++k) a[k] = {g.s[k].x, g.s[k].y};
   ClipPoint *from = a, *to = b;
   int n = 3;
-  const double tf = turn(f.s);
-  for (int k = 0; k < 3 && n > 0; ++k, std::swap(from, to)) {
-    const EdgeLine e(f.s, k, tf);
-    n = clip(from, n, e.a, e.b, e.c, -eps * e.length(), to);
-  }
+  for (int k = 0; k < 3 && n > 0; ++k, std::swap(from, to))
+    n = clip(from, n, fe.a[k], fe.b[k], fe.c[k], -eps * fe.length[k], to);
   if (n == 0) return Pair::apart;
   double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin;
   for (int k = 0; k < n; ++k) {
@@ -112,16 +106,24 @@ Pair leaves_then_enters(const ProjectedFace& f, const ProjectedFace& g) {
   return dmax <= slack ? Pair::gap : Pair::apart;
 }
 
-// The faces' pixel boxes binned into square tiles (about as large as the boxes on average), each
-// tile's leaving faces before its entering ones.
+// A face in a tile: its pixel box, its cell and its index, packed for the search for pairs.
+struct Binned {
+  PixelBox box;
+  std::uint32_t cell, face;
+};
+
+// The faces' pixel boxes binned into square tiles (twice as large as the boxes on average: larger
+// tiles hold more pairs to reject, smaller ones more copies of each face), each tile's leaving
+// faces before its entering ones.
 struct TileBins {
   int tile = 8, across = 0, down = 0;
-  std::vector<std::uint32_t> start, entering_from, face;  // tile t: face[start[t] .. entering_from[t] .. start[t + 1])
+  std::vector<std::uint32_t> start, entering_from;  // tile t: entry[start[t] .. entering_from[t] .. start[t + 1])
+  std::vector<Binned> entry;
 
   TileBins(const std::vector<ProjectedFace>& faces, int width, int height) {
     double sides = 0;
     for (const ProjectedFace& f : faces) sides += (f.box.i1 - f.box.i0 + f.box.j1 - f.box.j0 + 2) * 0.5;
-    if (!faces.empty()) tile = std::max(8, static_cast<int>(sides / static_cast<double>(faces.size())));
+    if (!faces.empty()) tile = std::max(8, static_cast<int>(2 * sides / static_cast<double>(faces.size())));
     across = (width + tile - 1) / tile, down = (height + tile - 1) / tile;
     const std::size_t tiles = static_cast<std::size_t>(across) * down;
     std::vector<std::uint32_t> leaving(tiles + 1, 0);
@@ -130,10 +132,11 @@ struct TileBins {
     for (std::size_t t = 0; t < tiles; ++t) start[t + 1] += start[t];
     entering_from.resize(tiles);
     for (std::size_t t = 0; t < tiles; ++t) entering_from[t] = start[t] + leaving[t + 1];
-    face.resize(start.back());
+    entry.resize(start.back());
     std::vector<std::uint32_t> fill_leaving(start.begin(), start.end() - 1), fill_entering(entering_from);
     each_tile(faces, [&](std::uint32_t k, std::size_t t) {
-      face[faces[k].face.entering() ? fill_entering[t]++ : fill_leaving[t]++] = k;
+      const ImageFace& f = faces[k].face;
+      entry[f.entering() ? fill_entering[t]++ : fill_leaving[t]++] = {faces[k].box, f.tagged >> 1, k};
     });
   }
   std::size_t tiles() const { return entering_from.size(); }
@@ -152,6 +155,17 @@ struct TileBins {
 struct FoundGaps {
   std::vector<std::pair<std::int64_t, std::int64_t>> pairs;  // (cell entered, cell left)
   std::int64_t tests = 0, crossings = 0;
+  // Neighbouring faces mostly pair the same two cells again (a quad's two triangles, the faces
+  // of one cell): a small table of the pairs met lately keeps the list near its distinct size.
+  static constexpr int kRecentBits = 10;
+  std::vector<std::uint64_t> recent = std::vector<std::uint64_t>(std::size_t(1) << kRecentBits, ~0ull);
+  void add(std::int64_t entered, std::int64_t left) {
+    const std::uint64_t pair = static_cast<std::uint64_t>(entered) << 32 | static_cast<std::uint64_t>(left);
+    std::uint64_t& slot = recent[(pair * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits)];
+    if (slot == pair) return;
+    slot = pair;
+    pairs.emplace_back(entered, left);
+  }
 };
 
 }  // namespace
@@ -160,6 +174,9 @@ Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewF
                                 SortStats& stats, bool stop_at_crossing) {
   const std::vector<ProjectedFace> faces = project_faces(p, v, view, true);
   const TileBins bins(faces, view.width, view.height);
+  std::vector<EdgeLines> edges;
+  edges.reserve(faces.size());
+  for (const ProjectedFace& f : faces) edges.emplace_back(f.s);
   constexpr std::size_t kTilesPerTask = 64;
   tbb::enumerable_thread_specific<FoundGaps> found;
   std::atomic<bool> crossed{false};
@@ -167,19 +184,19 @@ Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewF
     FoundGaps& out = found.local();
     for (std::size_t t = task * kTilesPerTask; t < std::min(bins.tiles(), (task + 1) * kTilesPerTask); ++t) {
       if (stop_at_crossing && crossed.load(std::memory_order_relaxed)) return;
-      const int tx = static_cast<int>(t % bins.across), ty = static_cast<int>(t / bins.across);
+      // Each pair once: in the tile of the first pixel their boxes share (both boxes reach into
+      // this tile, so that pixel is in it when it is not left of or above it).
+      const int x0 = static_cast<int>(t % bins.across) * bins.tile, y0 = static_cast<int>(t / bins.across) * bins.tile;
       for (std::uint32_t i = bins.start[t]; i < bins.entering_from[t]; ++i) {
-        const ProjectedFace& f = faces[bins.face[i]];
+        const Binned& f = bins.entry[i];
+        const bool f_x = f.box.i0 >= x0, f_y = f.box.j0 >= y0;
         for (std::uint32_t j = bins.entering_from[t]; j < bins.start[t + 1]; ++j) {
-          const ProjectedFace& g = faces[bins.face[j]];
-          if (g.face.cell() == f.face.cell()) continue;
-          // Each pair once: in the tile of the first pixel their boxes share.
-          const int i0 = std::max(f.box.i0, g.box.i0), j0 = std::max(f.box.j0, g.box.j0);
-          if (i0 > std::min(f.box.i1, g.box.i1) || j0 > std::min(f.box.j1, g.box.j1)) continue;
-          if (i0 / bins.tile != tx || j0 / bins.tile != ty) continue;
+          const Binned& g = bins.entry[j];
+          if (g.box.i0 > f.box.i1 || f.box.i0 > g.box.i1 || g.box.j0 > f.box.j1 || f.box.j0 > g.box.j1) continue;
+          if (!(f_x || g.box.i0 >= x0) || !(f_y || g.box.j0 >= y0) || g.cell == f.cell) continue;
           ++out.tests;
-          const Pair pair = leaves_then_enters(f, g);
-          if (pair != Pair::apart) out.pairs.emplace_back(g.face.cell(), f.face.cell());
+          const Pair pair = leaves_then_enters(faces[f.face], edges[f.face], faces[g.face], edges[g.face]);
+          if (pair != Pair::apart) out.add(g.cell, f.cell);
           if (pair == Pair::crossing) ++out.crossings, crossed.store(true, std::memory_order_relaxed);
         }
       }

@@ -255,14 +255,24 @@ SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const
 }
 
 std::int64_t Relations::build(std::int64_t n, std::vector<std::pair<std::int64_t, std::int64_t>>& pairs) {
-  std::sort(pairs.begin(), pairs.end());
-  pairs.erase(std::unique(pairs.begin(), pairs.end()), pairs.end());
+  // A counting sort by `from` (O(n + pairs)), then each cell's short list sorted and deduplicated.
   start.assign(static_cast<std::size_t>(n + 1), 0);
   for (const auto& e : pairs) ++start[e.first + 1];
   for (std::int64_t c = 0; c < n; ++c) start[c + 1] += start[c];
   to.resize(pairs.size());
-  for (std::size_t k = 0; k < pairs.size(); ++k) to[k] = pairs[k].second;  // already grouped by `from`
-  return static_cast<std::int64_t>(pairs.size());
+  for (const auto& e : pairs) to[start[e.first]++] = e.second;  // start[c] ends as c's end
+  std::int64_t kept = 0, begin = 0;
+  for (std::int64_t c = 0; c < n; ++c) {
+    const std::int64_t end = start[c];
+    std::sort(to.begin() + begin, to.begin() + end);
+    start[c] = kept;
+    for (std::int64_t k = begin; k < end; ++k)
+      if (k == begin || to[k] != to[k - 1]) to[kept++] = to[k];
+    begin = end;
+  }
+  start[n] = kept;
+  to.resize(static_cast<std::size_t>(kept));
+  return kept;
 }
 
 std::vector<std::int64_t> centroid_order(const VisibilitySorter::Prepared& p, const ViewFrame& v) {
