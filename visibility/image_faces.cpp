@@ -10,9 +10,9 @@
 namespace cellproj {
 namespace {
 
-// Points or faces per task: fewer are not worth waking a worker thread for (2 cores: splitting
-// disk_out_ref's 1,124 faces in two made their projection take twice as long).
-constexpr std::size_t kGrain = 4096;
+// Points or faces per task: fewer are not worth waking a worker thread for (2 cores: split in two,
+// angular_sector's 2,475 faces took 0.18 ms to project instead of 0.07 ms on one thread).
+constexpr std::size_t kGrain = 8192;
 
 // Keeps the faces whose flag is set, in order.
 void keep_flagged(std::vector<ProjectedFace>& faces, const std::vector<char>& keep) {
@@ -126,12 +126,18 @@ std::vector<ProjectedFace> project_faces(const VisibilitySorter::Prepared& p, co
                                          bool cull) {
   const std::vector<ImagePoint> points = project_points(p, v, PixelRays(v.camera, view.width, view.height));
   const std::size_t nb = p.boundary_tri.size();
-  std::vector<ProjectedFace> projected(nb);
-  std::vector<char> in_image(nb, 0);
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, nb, kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t b = r.begin(); b < r.end(); ++b) in_image[b] = project_face(p, v, view, points, b, projected[b]);
+  // In chunks of kGrain faces, each kept in order: only the faces in the image are written.
+  std::vector<std::vector<ProjectedFace>> chunk((nb + kGrain - 1) / kGrain);
+  tbb::parallel_for(std::size_t(0), chunk.size(), [&](std::size_t c) {
+    std::vector<ProjectedFace>& out = chunk[c];
+    out.reserve(std::min(nb, (c + 1) * kGrain) - c * kGrain);
+    ProjectedFace f;
+    for (std::size_t b = c * kGrain; b < std::min(nb, (c + 1) * kGrain); ++b)
+      if (project_face(p, v, view, points, b, f)) out.push_back(f);
   });
-  keep_flagged(projected, in_image);
+  std::vector<ProjectedFace> projected;
+  if (chunk.size() == 1) projected = std::move(chunk[0]);
+  for (std::size_t c = chunk.size() == 1 ? 1 : 0; c < chunk.size(); ++c) projected.insert(projected.end(), chunk[c].begin(), chunk[c].end());
   if (cull) cull_faces_without_gaps(projected, view.width, view.height);
   return projected;
 }

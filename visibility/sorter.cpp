@@ -9,6 +9,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "grid/error.hpp"
 #include "grid/name_table.hpp"
@@ -50,6 +51,52 @@ void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, in
   normal = glm::cross(p.point(s[1]) - p.point(s[0]), p.point(s[2]) - p.point(s[0]));
   if (flip) normal = -normal, std::swap(s[1], s[2]);
   tri = {s[0], s[1], s[2]};
+}
+
+// mpvo-abuffer: the face relations, and the relations across gaps from the faces' overlaps, found
+// side by side (they are independent; the topological sort needs both). A view where two faces
+// pass through each other, or where a visibility cycle holds a relation from the overlaps, takes
+// the A-buffer's relations instead (GapMethod::automatic).
+std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
+                                         SortStats& stats, PhaseClock& clock) {
+  const GapMethod gaps_by = view.abuffer_every_pixel ? GapMethod::abuffer : view.gaps;
+  FaceOrder faces;
+  if (gaps_by != GapMethod::abuffer) {
+    Relations gaps;
+    double face_seconds = 0, overlap_seconds = 0;
+    auto timed = [](double& seconds, auto&& work) {
+      const auto t = std::chrono::steady_clock::now();
+      work();
+      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+    };
+    tbb::parallel_invoke([&] { timed(face_seconds, [&] { faces = face_relations(p, v); }); },
+                         [&] {
+                           timed(overlap_seconds, [&] {
+                             gaps = overlap_gap_relations(p, v, view, stats, gaps_by == GapMethod::automatic);
+                           });
+                         });
+    stats.face_relations = faces.relations;
+    clock.add("face_relations", face_seconds), clock.add("overlaps", overlap_seconds), clock.restart();
+    // A cycle across a gap may be one that no pixel centre sees: then ask the pixel centres.
+    if (gaps_by == GapMethod::overlaps || stats.gap_face_crossings == 0) {
+      std::vector<std::int64_t> order = topological_order(p, v, faces, {&gaps}, stats, &gaps);
+      clock.lap("topological_sort");
+      stats.gaps_from = GapMethod::overlaps;
+      const bool cycle_across_gap =
+          std::any_of(stats.cycles.begin(), stats.cycles.end(), [](const VisibilityCycle& c) { return c.across_gap; });
+      if (gaps_by == GapMethod::overlaps || !cycle_across_gap) return order;
+      stats.cycles.clear();
+    }
+  }
+  faces = face_relations(p, v);  // again if the overlaps' sort consumed its in-counts
+  stats.face_relations = faces.relations;
+  clock.lap("face_relations");
+  const Relations gaps = gap_relations(p, v, view, stats);
+  clock.lap("abuffer");
+  std::vector<std::int64_t> order = topological_order(p, v, faces, {&gaps}, stats, &gaps);
+  clock.lap("topological_sort");
+  stats.gaps_from = GapMethod::abuffer;
+  return order;
 }
 
 }  // namespace
@@ -206,40 +253,17 @@ SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const
       r.order = centroid_order(p, v);
       clock.lap("radix_sort");
       break;
-    case SortMethod::mpvo:
-    case SortMethod::mpvo_abuffer: {
+    case SortMethod::mpvo: {
       FaceOrder faces = face_relations(p, v);
       r.stats.face_relations = faces.relations;
       clock.lap("face_relations");
-      if (method == SortMethod::mpvo) {
-        r.order = topological_order(p, v, faces, {}, r.stats);
-        clock.lap("topological_sort");
-        break;
-      }
-      const GapMethod gaps_by = view.abuffer_every_pixel ? GapMethod::abuffer : view.gaps;
-      if (gaps_by != GapMethod::abuffer) {
-        const Relations gaps = overlap_gap_relations(p, v, view, r.stats, gaps_by == GapMethod::automatic);
-        clock.lap("overlaps");
-        // A cycle across a gap may be one that no pixel centre sees: then ask the pixel centres.
-        if (gaps_by == GapMethod::overlaps || r.stats.gap_face_crossings == 0) {
-          r.order = topological_order(p, v, faces, {&gaps}, r.stats, &gaps);
-          clock.lap("topological_sort");
-          r.stats.gaps_from = GapMethod::overlaps;
-          const bool cycle_across_gap = std::any_of(r.stats.cycles.begin(), r.stats.cycles.end(),
-                                                    [](const VisibilityCycle& c) { return c.across_gap; });
-          if (gaps_by == GapMethod::overlaps || !cycle_across_gap) break;
-          r.stats.cycles.clear();
-          faces = face_relations(p, v);  // the sort consumed its in-counts
-          clock.lap("face_relations");
-        }
-      }
-      const Relations gaps = gap_relations(p, v, view, r.stats);
-      clock.lap("abuffer");
-      r.order = topological_order(p, v, faces, {&gaps}, r.stats, &gaps);
+      r.order = topological_order(p, v, faces, {}, r.stats);
       clock.lap("topological_sort");
-      r.stats.gaps_from = GapMethod::abuffer;
       break;
     }
+    case SortMethod::mpvo_abuffer:
+      r.order = mpvo_with_gaps(p, v, view, r.stats, clock);
+      break;
     case SortMethod::pairwise: {
       const Relations pairs = pairwise_relations(p, v, view, r.stats);
       clock.lap("occlusion_tests");
