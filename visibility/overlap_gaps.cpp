@@ -161,11 +161,13 @@ struct FoundGaps {
   // of one cell): a small table of the pairs met lately keeps the list near its distinct size.
   static constexpr int kRecentBits = 10;
   std::vector<std::uint64_t> recent = std::vector<std::uint64_t>(std::size_t(1) << kRecentBits, ~0ull);
-  void add(std::int64_t entered, std::int64_t left) {
-    const std::uint64_t pair = static_cast<std::uint64_t>(entered) << 32 | static_cast<std::uint64_t>(left);
-    std::uint64_t& slot = recent[(pair * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits)];
-    if (slot == pair) return;
-    slot = pair;
+  std::uint64_t& slot(std::uint64_t pair) { return recent[(pair * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits)]; }
+  static std::uint64_t key(std::uint32_t entered, std::uint32_t left) { return std::uint64_t(entered) << 32 | left; }
+  // Whether this thread has the relation already: then testing more faces of the two cells can
+  // add nothing (a crossing it would miss still closes a cycle the caller sees).
+  bool met(std::uint32_t entered, std::uint32_t left) { return slot(key(entered, left)) == key(entered, left); }
+  void add(std::uint32_t entered, std::uint32_t left) {
+    slot(key(entered, left)) = key(entered, left);
     pairs.emplace_back(entered, left);
   }
 };
@@ -198,7 +200,7 @@ Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewF
         for (std::uint32_t j = bins.entering_from[t]; j < bins.start[t + 1]; ++j) {
           const Binned& g = bins.entry[j];
           if (g.box.i0 > f.box.i1 || f.box.i0 > g.box.i1 || g.box.j0 > f.box.j1 || f.box.j0 > g.box.j1) continue;
-          if (!(f_x || g.box.i0 >= x0) || !(f_y || g.box.j0 >= y0) || g.cell == f.cell) continue;
+          if (!(f_x || g.box.i0 >= x0) || !(f_y || g.box.j0 >= y0) || g.cell == f.cell || out.met(g.cell, f.cell)) continue;
           ++out.tests;
           const Pair pair = leaves_then_enters(faces[f.face], edges[f.face], faces[g.face], edges[g.face]);
           if (pair != Pair::apart) out.add(g.cell, f.cell);
