@@ -53,7 +53,7 @@ struct SortStats {
   std::int64_t face_relations = 0;  // relations across shared faces
   std::int64_t gap_relations = 0;   // relations across gaps between boundary faces, distinct
   GapMethod gaps_from = GapMethod::automatic;  // overlaps or abuffer: what found them (mpvo-abuffer)
-  std::int64_t gap_pair_tests = 0;  // pairs of faces tested for a gap between them (overlaps)
+  std::int64_t gap_pair_tests = 0;  // pairs of faces tested for a gap between them (overlaps; varies with threads)
   std::int64_t gap_face_crossings = 0;  // of those, pairs passing through each other in depth (overlaps)
   std::int64_t pair_relations = 0;  // relations from pairwise occlusion tests
   std::int64_t abuffer_fragments = 0;  // pixel centres covered by boundary faces in the A-buffer
