@@ -43,7 +43,7 @@ for m in pt-linear pt-table pt-analytic pt-breakpoints exact; do
   grep -q "\"method\":\"$m\"" "$tmp/err" || { echo "FAIL: --stats names $m"; failed=$((failed+1)); }
 done
 "$exe" render "$tmp/ok.json" --size 40x30 --method pt-table -o "$tmp/t.png" --stats 2>"$tmp/err" >/dev/null
-for key in tets cells_split class1_tets class2_tets fragments breakpoint_cells gap_relations phase_seconds sort; do
+for key in tets cells_split class1_tets class2_tets fragments breakpoint_cells gap_relations gaps_from gap_pair_tests phase_seconds sort; do
   grep -q "\"$key\":" "$tmp/err" || { echo "FAIL: render --stats lacks $key"; failed=$((failed+1)); }
 done
 # pt-breakpoints is exact for the canonical tetrahedra: the same picture as exact --interpolation canonical-tets.
@@ -90,7 +90,7 @@ expect 2 "projection" -- sortbench "$tmp/box.vtu" --projection sideways
 expect 1 "missing.vtu: no such file" -- sortbench "$tmp/missing.vtu"
 expect 0 '"sort":"mpvo"' -- sortbench "$tmp/box.vtu" --views 2 --size 32x32 --sorts centroid,mpvo --check --json --csv "$tmp/sorts.csv"
 for key in mesh sort projection views median_seconds min_seconds max_seconds cells cells_per_second face_relations \
-           gap_relations cycles abuffer_runs abuffer_fragments abuffer_crossings violations violating_pixels; do
+           gap_relations gaps gap_pair_tests abuffer_views cycles abuffer_runs abuffer_fragments abuffer_crossings violations violating_pixels; do
   grep -q "\"$key\":" "$tmp/out" || { echo "FAIL: sortbench --json lacks $key"; failed=$((failed+1)); }
 done
 grep -q '"sort":"mpvo".*"violations":0' "$tmp/out" || { echo "FAIL: mpvo on a box must have no violations"; failed=$((failed+1)); }

@@ -58,6 +58,9 @@ nlohmann::json projection_stats_json(const ProjectionStats& p) {
           {"direct_cells", c.direct_cells},
           {"face_relations", p.sort.face_relations},
           {"gap_relations", p.sort.gap_relations},
+          {"gaps_from", p.sort.method == SortMethod::mpvo_abuffer ? nlohmann::json(name_of(p.sort.gaps_from))
+                                                                   : nlohmann::json(nullptr)},
+          {"gap_pair_tests", p.sort.gap_pair_tests},
           {"abuffer_runs", p.sort.abuffer_runs},
           {"cycles", p.sort.cycles.size()},
           {"phase_seconds", phases}};
