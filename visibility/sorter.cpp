@@ -53,6 +53,17 @@ void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, in
   tri = {s[0], s[1], s[2]};
 }
 
+// mpvo: the face relations, then the topological sort.
+std::vector<std::int64_t> mpvo_order(const VisibilitySorter::Prepared& p, const ViewFrame& v, SortStats& stats,
+                                     PhaseClock& clock) {
+  FaceOrder faces = face_relations(p, v);
+  stats.face_relations = faces.relations;
+  clock.lap("face_relations");
+  std::vector<std::int64_t> order = topological_order(p, v, faces, {}, stats);
+  clock.lap("topological_sort");
+  return order;
+}
+
 // mpvo-abuffer: the face relations, and the relations across gaps from the faces' overlaps, found
 // side by side (they are independent; the topological sort needs both). A view where two faces
 // pass through each other, or where a visibility cycle holds a relation from the overlaps, takes
@@ -61,6 +72,10 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
                                          SortStats& stats, PhaseClock& clock) {
   const GapMethod gaps_by = view.abuffer_every_pixel ? GapMethod::abuffer : view.gaps;
   FaceOrder faces;
+  if (p.boundary_tri.empty()) {  // a convex boundary: no face can bound a gap
+    stats.gaps_from = gaps_by == GapMethod::abuffer ? GapMethod::abuffer : GapMethod::overlaps;
+    return mpvo_order(p, v, stats, clock);
+  }
   if (gaps_by != GapMethod::abuffer) {
     Relations gaps;
     double face_seconds = 0, overlap_seconds = 0;
@@ -253,14 +268,9 @@ SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const
       r.order = centroid_order(p, v);
       clock.lap("radix_sort");
       break;
-    case SortMethod::mpvo: {
-      FaceOrder faces = face_relations(p, v);
-      r.stats.face_relations = faces.relations;
-      clock.lap("face_relations");
-      r.order = topological_order(p, v, faces, {}, r.stats);
-      clock.lap("topological_sort");
+    case SortMethod::mpvo:
+      r.order = mpvo_order(p, v, r.stats, clock);
       break;
-    }
     case SortMethod::mpvo_abuffer:
       r.order = mpvo_with_gaps(p, v, view, r.stats, clock);
       break;
