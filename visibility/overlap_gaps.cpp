@@ -1,15 +1,15 @@
 // The relations across the gaps of a non-convex mesh from the overlaps of its boundary faces in the
-// image, in object space: wherever a face where rays leave the mesh lies in front of a face where
-// they enter it again, somewhere over the area where the two overlap in the image, the cell entered
-// is composited before the cell left. Every pair of faces the A-buffer (visibility/abuffer.cpp)
-// finds consecutive at some pixel centre is such a pair, so an order that keeps all of these
-// relations keeps the A-buffer's too; pairs that are not consecutive anywhere add relations that
-// are true wherever their rays go, harmless unless they close a visibility cycle, which the caller
-// checks (a cycle holding one of these relations makes it ask the A-buffer instead, and so do two
-// faces that pass through each other, which close such a cycle).
+// image: wherever a face where rays leave the mesh lies in front of a face where they enter it
+// again, somewhere over the area where the two overlap in the image, the cell entered is
+// composited before the cell left. Every pair of faces the A-buffer (visibility/abuffer.cpp) finds
+// consecutive at some pixel centre is such a pair, so an order that keeps all of these relations
+// keeps the A-buffer's too; pairs that are not consecutive anywhere add relations that are true
+// wherever their rays go, harmless unless they close a visibility cycle, which the caller checks (a
+// cycle holding one of these relations makes it ask the A-buffer instead, and so do two faces that
+// pass through each other, which close such a cycle).
 //
-// The work is per pair of faces whose pixel boxes overlap, not per pixel: it does not grow with the
-// image. Pairs are found in tiles about as large as the faces' boxes, tested on worker threads.
+// The work is per pair of faces whose pixel boxes overlap, not per row or pixel. Pairs are found in
+// square tiles of the image, tested on worker threads.
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -46,7 +46,7 @@ int clip(const ClipPoint* poly, int n, double a, double b, double c, double eps,
   return m;
 }
 
-// A face's triangle as the lines of its edges, a x + b y + c positive inside, each with a + b
+// A face's triangle as the lines of its edges, a x + b y + c positive inside, each with |a| + |b|
 // (at least its Euclidean length), and eps: how far from an edge a point is still on it (pixel
 // coordinates' rounding, many times over).
 struct EdgeLines {
