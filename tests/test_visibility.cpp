@@ -203,6 +203,34 @@ TEST(Visibility, GapRelationsAreTheSameFromOneAndManyThreads) {
   }
 }
 
+// Two tetrahedra far apart in depth whose shadows overlap by a sliver 4e-13 pixels wide, with a
+// column of pixel centres in it: the A-buffer sees the gap there, and so must the overlaps (faces
+// that share no vertex count as overlapping within the rounding slack, not only beyond it).
+TEST(Visibility, OverlapsFindAGapAcrossASliverThinnerThanTheirSlack) {
+  Mesh m;
+  const double d = 1e-13, x = 0.25;  // x: the pixel centres of column 2 of a 4-pixel image over [-1, 1]
+  auto tet = [&](std::initializer_list<glm::dvec3> corners) {
+    std::vector<std::int64_t> ids;
+    for (const glm::dvec3& c : corners) ids.push_back(m.add_point(c));
+    m.add_cell(CellType::Tetra, ids.data());
+  };
+  // In front: its bottom face (where rays leave it) ends at x + d, along a vertical face.
+  tet({{x + d, -0.5, 1}, {x + d, 0.5, 1}, {x + d, 0, 2}, {-0.5, -0.5, 1}});
+  // Behind: its top face (where rays enter it) starts at x - d.
+  tet({{x - d, -0.5, -1}, {x - d, 0.5, -1}, {x - d, 0, -2}, {1, -0.5, -1}});
+  const Scene s(tetrahedra_mesh(std::move(m)));
+  ASSERT_FALSE(s.convex);
+  Camera top;
+  top.eye = {0, 0, 10};
+  top.height = 2.0;
+  EXPECT_GT(s.check(SortMethod::mpvo, top, 4).violations, 0);  // the rays in the sliver cross both
+  for (const GapMethod method : {GapMethod::abuffer, GapMethod::overlaps}) {
+    SortStats st;
+    EXPECT_EQ(s.check(SortMethod::mpvo_abuffer, top, 4, &st, method).violations, 0) << name_of(method);
+    EXPECT_EQ(st.gap_relations, 1) << name_of(method);
+  }
+}
+
 // Two flat tetrahedra tilted opposite ways pass through each other (as inverted cells do): seen
 // from above, their faces swap depth along a line across the rows. The sweep must notice the
 // stretches whose order differs at their ends and order those pixel by pixel.

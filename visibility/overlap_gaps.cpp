@@ -64,8 +64,8 @@ struct EdgeLines {
     eps = 1e-9 * extent;
   }
   double at(int k, const glm::dvec2& x) const { return a[k] * x.x + b[k] * x.y + c[k]; }
-  // Whether an edge has triangle t wholly outside it or within eps of it: then the two overlap
-  // over no area wider than eps.
+  // Whether an edge has triangle t wholly outside it or within e of it (e > 0: then the two
+  // overlap over no area wider than e), or beyond -e outside it (e < 0: they are apart by more).
   bool has_outside(const glm::dvec2* t, double e) const {
     for (int k = 0; k < 3; ++k) {
       const double inside = e * length[k];
@@ -77,19 +77,33 @@ struct EdgeLines {
 
 enum class Pair { apart, gap, crossing };
 
+// Whether two faces share a vertex in the image (the same point, or the two sides of a seam:
+// points with bit-identical coordinates project to the same bits).
+bool share_a_point(const ProjectedFace& f, const ProjectedFace& g) {
+  for (const glm::dvec2& x : f.s)
+    if (x == g.s[0] || x == g.s[1] || x == g.s[2]) return true;
+  return false;
+}
+
 // Whether rays can leave the mesh through face f and enter it again through face g: whether the
-// two overlap in the image over an area (faces that only touch, as neighbours do, do not), and f
-// is in front of g somewhere there (a gap; a crossing when g is in front of f elsewhere: the faces
-// pass through each other), or level with it all over (the two sides of a seam that are not
-// bit-identical: the A-buffer reads those as "leave, then enter" too).
-Pair leaves_then_enters(const ProjectedFace& f, const EdgeLines& fe, const ProjectedFace& g, const EdgeLines& ge) {
+// two overlap in the image, and f is in front of g somewhere there (a gap; a crossing when g is in
+// front of f elsewhere: the faces pass through each other), or level with it all over (the two
+// sides of a seam that are not bit-identical: the A-buffer reads those as "leave, then enter"
+// too). Faces that share a vertex must overlap over an area wider than eps: where they only
+// touch, at that vertex or along a shared edge, the coverage rule gives a pixel centre to one of
+// them (a shared edge's function is exactly negated; a centre exactly on a shared vertex is the
+// one case left), and their keys there are equal, which would read as a gap. Other faces count as
+// overlapping within eps of touching: then every pair the A-buffer can find at a pixel centre is
+// found here.
+Pair leaves_then_enters(const ProjectedFace& f, const EdgeLines& fe, const ProjectedFace& g, const EdgeLines& ge,
+                        bool neighbours) {
   const double slack = key_slack(f.kmin, g.kmax) + f.rounding + g.rounding;
   if (f.kmin > g.kmax + slack) return Pair::apart;  // f behind g wherever they overlap
-  const double eps = std::max(fe.eps, ge.eps);
+  const double eps = neighbours ? std::max(fe.eps, ge.eps) : -std::max(fe.eps, ge.eps);  // shrink, or grow
   if (fe.has_outside(g.s, eps) || ge.has_outside(f.s, eps)) return Pair::apart;
   if (f.kmax < g.kmin - slack) return Pair::gap;  // f in front of g wherever they overlap
-  // Where the two overlap (g clipped to f shrunk by eps), the key difference is affine: its
-  // extremes are at the corners.
+  // Where the two overlap (g clipped to f, shrunk or grown by eps), the key difference is affine:
+  // its extremes are at the corners.
   ClipPoint a[8], b[8];
   for (int k = 0; k < 3; ++k) a[k] = {g.s[k].x, g.s[k].y};
   ClipPoint *from = a, *to = b;
@@ -202,7 +216,8 @@ Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewF
           if (g.box.i0 > f.box.i1 || f.box.i0 > g.box.i1 || g.box.j0 > f.box.j1 || f.box.j0 > g.box.j1) continue;
           if (!(f_x || g.box.i0 >= x0) || !(f_y || g.box.j0 >= y0) || g.cell == f.cell || out.met(g.cell, f.cell)) continue;
           ++out.tests;
-          const Pair pair = leaves_then_enters(faces[f.face], edges[f.face], faces[g.face], edges[g.face]);
+          const ProjectedFace &ff = faces[f.face], &gf = faces[g.face];
+          const Pair pair = leaves_then_enters(ff, edges[f.face], gf, edges[g.face], share_a_point(ff, gf));
           if (pair != Pair::apart) out.add(g.cell, f.cell);
           if (pair == Pair::crossing) ++out.crossings, crossed.store(true, std::memory_order_relaxed);
         }
