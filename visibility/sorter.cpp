@@ -72,6 +72,7 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
                                          SortStats& stats, PhaseClock& clock) {
   const GapMethod gaps_by = view.abuffer_every_pixel ? GapMethod::abuffer : view.gaps;
   FaceOrder faces;
+  bool have_faces = false;  // face relations found and not consumed by a sort
   if (p.boundary_tri.empty()) {  // a convex boundary: no face can bound a gap
     stats.gaps_from = gaps_by == GapMethod::abuffer ? GapMethod::abuffer : GapMethod::overlaps;
     return mpvo_order(p, v, stats, clock);
@@ -92,8 +93,10 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
                          });
     stats.face_relations = faces.relations;
     clock.add("face_relations", face_seconds), clock.add("overlaps", overlap_seconds), clock.restart();
+    have_faces = true;
     // A cycle across a gap may be one that no pixel centre sees: then ask the pixel centres.
     if (gaps_by == GapMethod::overlaps || stats.gap_face_crossings == 0) {
+      have_faces = false;
       std::vector<std::int64_t> order = topological_order(p, v, faces, {&gaps}, stats, &gaps);
       clock.lap("topological_sort");
       stats.gaps_from = GapMethod::overlaps;
@@ -103,9 +106,11 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
       stats.cycles.clear();
     }
   }
-  faces = face_relations(p, v);  // again if the overlaps' sort consumed its in-counts
-  stats.face_relations = faces.relations;
-  clock.lap("face_relations");
+  if (!have_faces) {
+    faces = face_relations(p, v);
+    stats.face_relations = faces.relations;
+    clock.lap("face_relations");
+  }
   const Relations gaps = gap_relations(p, v, view, stats);
   clock.lap("abuffer");
   std::vector<std::int64_t> order = topological_order(p, v, faces, {&gaps}, stats, &gaps);
