@@ -5,7 +5,7 @@
 # only for views that need it; the A-buffer alone (--gaps abuffer) and its reference that orders
 # every pixel's list (--abuffer-every-pixel) are timed next to it. The timed runs and the oracle's
 # check are separate sortbench runs.
-# usage: bash bench/abuffer.sh [BUILD_DIR] [OUT_DIR]     (about 5 minutes on 2 cores)
+# usage: bash bench/abuffer.sh [BUILD_DIR] [OUT_DIR]     (about 2 minutes on 2 cores)
 set -euo pipefail
 build=${1:-build}; out=${2:-bench/results}
 exe=$build/bin/cellproj

@@ -71,8 +71,7 @@ constexpr int kMinBandRows = 16;    // fewer rows: the faces over two bands are 
 class GapSweep {
  public:
   GapSweep(const std::vector<ImageFace>& faces, const SortView& view, bool every_pixel)
-      : faces_(faces), width_(static_cast<std::uint32_t>(view.width)), every_pixel_(every_pixel),
-        recent_(std::size_t(1) << kRecentBits, ~0ull) {}
+      : faces_(faces), width_(static_cast<std::uint32_t>(view.width)), every_pixel_(every_pixel) {}
   std::int64_t crossings() const { return crossings_; }  // stretches ordered pixel by pixel
 
   // The "leave, then enter" pairs of every list, as (cell entered, cell left): the cell entered is
@@ -85,12 +84,10 @@ class GapSweep {
       sweep_row(runs, at, end, row);
       at = end;
     }
-    return std::move(pairs_);
+    return std::move(found_.pairs);
   }
 
  private:
-  static constexpr int kRecentBits = 12;
-
   void sweep_row(const std::vector<Run>& runs, std::size_t k, std::size_t end, std::uint32_t row) {
     const double y = row + 0.5;
     const std::uint32_t first = row * width_;
@@ -146,14 +143,7 @@ class GapSweep {
       const Listed &leave = list_[k], &enter = list_[k + 1];
       if (leave.entering || !enter.entering) continue;
       const std::int64_t left = faces_[leave.face].cell(), entered = faces_[enter.face].cell();
-      if (left == entered) continue;
-      // The next stretches and rows mostly pair the same two cells again: a small table of the
-      // pairs met lately keeps the relation list near its distinct size.
-      const std::uint64_t pair = static_cast<std::uint64_t>(entered) << 32 | static_cast<std::uint64_t>(left);
-      std::uint64_t& slot = recent_[(pair * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits)];
-      if (slot == pair) continue;
-      slot = pair;
-      pairs_.emplace_back(entered, left);
+      if (left != entered) found_.add(entered, left);
     }
   }
 
@@ -161,9 +151,8 @@ class GapSweep {
   const std::uint32_t width_;
   const bool every_pixel_;
   std::int64_t crossings_ = 0;
-  std::vector<std::uint64_t> recent_;  // (cell entered, cell left) pairs met lately, by hash
   std::vector<Listed> list_;
-  std::vector<std::pair<std::int64_t, std::int64_t>> pairs_;
+  GapPairs found_;
 };
 
 // The image cut into bands of rows (kBandsPerThread per worker thread, at least kMinBandRows
@@ -220,11 +209,10 @@ BandGaps sweep_band(const RowBands& bands, int b, const std::vector<ProjectedFac
   return out;
 }
 
-
 }  // namespace
 
-Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, SortStats& stats) {
-  const std::vector<ProjectedFace> projected = project_faces(p, v, view, !view.abuffer_every_pixel);
+Relations gap_relations(const VisibilitySorter::Prepared& p, const std::vector<ProjectedFace>& projected,
+                        const SortView& view, SortStats& stats) {
   std::vector<ImageFace> faces(projected.size());
   for (std::size_t k = 0; k < projected.size(); ++k) faces[k] = projected[k].face;
   // The bands are swept apart, in parallel (oneTBB); the pairs do not depend on the bands.

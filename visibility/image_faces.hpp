@@ -4,6 +4,7 @@
 // visibility/overlap_gaps.cpp) start from. Internal to visibility/.
 #include <cmath>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/vec2.hpp>
@@ -40,5 +41,41 @@ inline double key_slack(double a, double b) { return 2e-9 * (std::abs(a) + std::
 // Parallel over points, then over faces (oneTBB).
 std::vector<ProjectedFace> project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
                                          bool cull);
+
+// The (cell entered, cell left) pairs across gaps as they are found. The next stretches, rows and
+// faces mostly pair the same two cells again: a small table of the pairs met lately keeps the list
+// near its distinct size.
+class GapPairs {
+ public:
+  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
+
+  // Whether the pair is among those met lately (then it is in `pairs`).
+  bool met(std::int64_t entered, std::int64_t left) const { return recent_[slot(key(entered, left))] == key(entered, left); }
+  void add(std::int64_t entered, std::int64_t left) {
+    const std::uint64_t k = key(entered, left);
+    std::uint64_t& seen = recent_[slot(k)];
+    if (seen == k) return;
+    seen = k;
+    pairs.emplace_back(entered, left);
+  }
+
+ private:
+  static constexpr int kRecentBits = 12;
+  static std::uint64_t key(std::int64_t entered, std::int64_t left) {
+    return static_cast<std::uint64_t>(entered) << 32 | static_cast<std::uint64_t>(left);
+  }
+  static std::size_t slot(std::uint64_t k) { return (k * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits); }
+  std::vector<std::uint64_t> recent_ = std::vector<std::uint64_t>(std::size_t(1) << kRecentBits, ~0ull);
+};
+
+// Relations across the gaps of a non-convex mesh between the faces of project_faces, from an
+// A-buffer at the view's pixel centres (visibility/abuffer.cpp).
+Relations gap_relations(const VisibilitySorter::Prepared& p, const std::vector<ProjectedFace>& faces,
+                        const SortView& view, SortStats& stats);
+// The same from the overlaps of those faces (culled) in the image: a superset, true wherever rays
+// go (visibility/overlap_gaps.cpp). Counts the pairs of faces that pass through each other; with
+// stop_at_crossing, stops at the first (the relations are then incomplete).
+Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const std::vector<ProjectedFace>& faces,
+                                const SortView& view, SortStats& stats, bool stop_at_crossing);
 
 }  // namespace cellproj

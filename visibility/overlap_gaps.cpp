@@ -152,7 +152,7 @@ struct TileBins {
     std::vector<std::uint32_t> fill_leaving(start.begin(), start.end() - 1), fill_entering(entering_from);
     each_tile(faces, [&](std::uint32_t k, std::size_t t) {
       const ImageFace& f = faces[k].face;
-      entry[f.entering() ? fill_entering[t]++ : fill_leaving[t]++] = {faces[k].box, f.tagged >> 1, k};
+      entry[f.entering() ? fill_entering[t]++ : fill_leaving[t]++] = {faces[k].box, static_cast<std::uint32_t>(f.cell()), k};
     });
   }
   std::size_t tiles() const { return entering_from.size(); }
@@ -169,34 +169,20 @@ struct TileBins {
 };
 
 struct FoundGaps {
-  std::vector<std::pair<std::int64_t, std::int64_t>> pairs;  // (cell entered, cell left)
+  GapPairs found;
   std::int64_t tests = 0, crossings = 0;
-  // Neighbouring faces mostly pair the same two cells again (a quad's two triangles, the faces
-  // of one cell): a small table of the pairs met lately keeps the list near its distinct size.
-  static constexpr int kRecentBits = 10;
-  std::vector<std::uint64_t> recent = std::vector<std::uint64_t>(std::size_t(1) << kRecentBits, ~0ull);
-  std::uint64_t& slot(std::uint64_t pair) { return recent[(pair * 0x9E3779B97F4A7C15ull) >> (64 - kRecentBits)]; }
-  static std::uint64_t key(std::uint32_t entered, std::uint32_t left) { return std::uint64_t(entered) << 32 | left; }
-  // Whether this thread has the relation already: then testing more faces of the two cells can
-  // add nothing (a crossing it would miss still closes a cycle the caller sees).
-  bool met(std::uint32_t entered, std::uint32_t left) { return slot(key(entered, left)) == key(entered, left); }
-  void add(std::uint32_t entered, std::uint32_t left) {
-    slot(key(entered, left)) = key(entered, left);
-    pairs.emplace_back(entered, left);
-  }
 };
 
 }  // namespace
 
-Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
-                                SortStats& stats, bool stop_at_crossing) {
-  const std::vector<ProjectedFace> faces = project_faces(p, v, view, true);
+Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const std::vector<ProjectedFace>& faces,
+                                const SortView& view, SortStats& stats, bool stop_at_crossing) {
   const TileBins bins(faces, view.width, view.height);
   std::vector<EdgeLines> edges;
   edges.reserve(faces.size());
   for (const ProjectedFace& f : faces) edges.emplace_back(f.s);
   // Tiles per task; a small search stays on the calling thread, since waking a worker costs more
-  // than it saves (2 cores: angular_sector's 4,700 scans took 0.036 ms on one, 0.064 ms on two).
+  // than it saves (on this project's 2-core machine, for angular_sector's few thousand scans).
   constexpr std::size_t kSerialScans = 8192;
   const std::size_t kTilesPerTask = bins.scans < kSerialScans ? std::max<std::size_t>(1, bins.tiles()) : 64;
   tbb::enumerable_thread_specific<FoundGaps> found;
@@ -214,11 +200,11 @@ Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewF
         for (std::uint32_t j = bins.entering_from[t]; j < bins.start[t + 1]; ++j) {
           const Binned& g = bins.entry[j];
           if (g.box.i0 > f.box.i1 || f.box.i0 > g.box.i1 || g.box.j0 > f.box.j1 || f.box.j0 > g.box.j1) continue;
-          if (!(f_x || g.box.i0 >= x0) || !(f_y || g.box.j0 >= y0) || g.cell == f.cell || out.met(g.cell, f.cell)) continue;
+          if (!(f_x || g.box.i0 >= x0) || !(f_y || g.box.j0 >= y0) || g.cell == f.cell || out.found.met(g.cell, f.cell)) continue;
           ++out.tests;
           const ProjectedFace &ff = faces[f.face], &gf = faces[g.face];
           const Pair pair = leaves_then_enters(ff, edges[f.face], gf, edges[g.face], share_a_point(ff, gf));
-          if (pair != Pair::apart) out.add(g.cell, f.cell);
+          if (pair != Pair::apart) out.found.add(g.cell, f.cell);
           if (pair == Pair::crossing) ++out.crossings, crossed.store(true, std::memory_order_relaxed);
         }
       }
@@ -226,7 +212,7 @@ Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewF
   });
   std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
   for (const FoundGaps& g : found) {
-    pairs.insert(pairs.end(), g.pairs.begin(), g.pairs.end());
+    pairs.insert(pairs.end(), g.found.pairs.begin(), g.found.pairs.end());
     stats.gap_pair_tests += g.tests, stats.gap_face_crossings += g.crossings;
   }
   Relations rel;

@@ -75,14 +75,7 @@ struct FaceOrder {
   std::int64_t relations = 0;
 };
 FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v);
-// Relations across the gaps of a non-convex mesh, from an A-buffer of its boundary faces at the
-// view's pixel centres.
-Relations gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, SortStats& stats);
-// The same from the overlaps of those faces in the image: a superset, true wherever rays go
-// (visibility/overlap_gaps.cpp). Counts the pairs of faces that pass through each other; with
-// stop_at_crossing, stops at the first (the relations are then incomplete).
-Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
-                                SortStats& stats, bool stop_at_crossing);
+// Relations across the gaps of a non-convex mesh: visibility/image_faces.hpp.
 // Relations from pairwise occlusion tests between every two cells whose projections overlap.
 Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
                              SortStats& stats);

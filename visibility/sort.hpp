@@ -41,7 +41,7 @@ struct VisibilityCycle {
 enum class GapMethod : std::uint8_t {
   automatic,  // overlaps; the A-buffer for a view where a visibility cycle holds a relation from them,
               // or where two of the faces pass through each other (which makes such a cycle)
-  overlaps,   // from the boundary faces' overlaps in the image (object space, visibility/overlap_gaps.cpp)
+  overlaps,   // from the boundary faces' overlaps in the image, per pair of faces (visibility/overlap_gaps.cpp)
   abuffer,    // from the software A-buffer at the pixel centres (visibility/abuffer.cpp)
 };
 GapMethod gap_method_from_name(const std::string& name);  // throws InputError listing the names

@@ -14,7 +14,7 @@
 #include "grid/error.hpp"
 #include "grid/name_table.hpp"
 #include "grid/tetrahedralize.hpp"
-#include "visibility/prepared.hpp"
+#include "visibility/image_faces.hpp"
 
 namespace cellproj {
 namespace {
@@ -67,17 +67,25 @@ std::vector<std::int64_t> mpvo_order(const VisibilitySorter::Prepared& p, const 
 // mpvo-abuffer: the face relations, and the relations across gaps from the faces' overlaps, found
 // side by side (they are independent; the topological sort needs both). A view where two faces
 // pass through each other, or where a visibility cycle holds a relation from the overlaps, takes
-// the A-buffer's relations instead (GapMethod::automatic).
+// the A-buffer's relations instead (GapMethod::automatic), over the faces already projected.
 std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
                                          SortStats& stats, PhaseClock& clock) {
   const GapMethod gaps_by = view.abuffer_every_pixel ? GapMethod::abuffer : view.gaps;
-  FaceOrder faces;
-  bool have_faces = false;  // face relations found and not consumed by a sort
   if (p.boundary_tri.empty()) {  // a convex boundary: no face can bound a gap
     stats.gaps_from = gaps_by == GapMethod::abuffer ? GapMethod::abuffer : GapMethod::overlaps;
     return mpvo_order(p, v, stats, clock);
   }
-  if (gaps_by != GapMethod::abuffer) {
+  FaceOrder faces;
+  auto find_face_relations = [&] {
+    faces = face_relations(p, v);
+    stats.face_relations = faces.relations;
+  };
+  std::vector<ProjectedFace> in_image;  // the off-hull faces as the view sees them
+  if (gaps_by == GapMethod::abuffer) {
+    find_face_relations();
+    clock.lap("face_relations");
+    in_image = project_faces(p, v, view, !view.abuffer_every_pixel);  // timed with the A-buffer
+  } else {
     Relations gaps;
     double face_seconds = 0, overlap_seconds = 0;
     auto timed = [](double& seconds, auto&& work) {
@@ -85,18 +93,16 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
       work();
       seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     };
-    tbb::parallel_invoke([&] { timed(face_seconds, [&] { faces = face_relations(p, v); }); },
+    tbb::parallel_invoke([&] { timed(face_seconds, find_face_relations); },
                          [&] {
                            timed(overlap_seconds, [&] {
-                             gaps = overlap_gap_relations(p, v, view, stats, gaps_by == GapMethod::automatic);
+                             in_image = project_faces(p, v, view, true);
+                             gaps = overlap_gap_relations(p, in_image, view, stats, gaps_by == GapMethod::automatic);
                            });
                          });
-    stats.face_relations = faces.relations;
     clock.add("face_relations", face_seconds), clock.add("overlaps", overlap_seconds), clock.restart();
-    have_faces = true;
     // A cycle across a gap may be one that no pixel centre sees: then ask the pixel centres.
     if (gaps_by == GapMethod::overlaps || stats.gap_face_crossings == 0) {
-      have_faces = false;
       std::vector<std::int64_t> order = topological_order(p, v, faces, {&gaps}, stats, &gaps);
       clock.lap("topological_sort");
       stats.gaps_from = GapMethod::overlaps;
@@ -104,14 +110,11 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
           std::any_of(stats.cycles.begin(), stats.cycles.end(), [](const VisibilityCycle& c) { return c.across_gap; });
       if (gaps_by == GapMethod::overlaps || !cycle_across_gap) return order;
       stats.cycles.clear();
+      find_face_relations();  // the sort consumed their in-counts
+      clock.lap("face_relations");
     }
   }
-  if (!have_faces) {
-    faces = face_relations(p, v);
-    stats.face_relations = faces.relations;
-    clock.lap("face_relations");
-  }
-  const Relations gaps = gap_relations(p, v, view, stats);
+  const Relations gaps = gap_relations(p, in_image, view, stats);
   clock.lap("abuffer");
   std::vector<std::int64_t> order = topological_order(p, v, faces, {&gaps}, stats, &gaps);
   clock.lap("topological_sort");
