@@ -1,5 +1,7 @@
 #include "grid/cell_type.hpp"
 
+#include "base/error.hpp"
+
 #include <stdexcept>
 
 namespace cellproj {
@@ -60,7 +62,7 @@ const CellDef& cell_def(CellType type) {
     case CellType::Wedge: return kWedge;
     case CellType::Pyramid: return kPyramid;
   }
-  throw std::invalid_argument("cell_def: not a supported cell type code " +
+  throw InputError("not a supported cell type code " +
                               std::to_string(static_cast<int>(type)));
 }
 

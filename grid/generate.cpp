@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/tetrahedralize.hpp"
 
 namespace cellproj {

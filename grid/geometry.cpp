@@ -53,7 +53,10 @@ RecentredPoints recentre(const MeshView& mesh) {
   r.centre = 0.5 * (lo + hi);
   r.half_diagonal = 0.5 * glm::length(hi - lo);
   r.xyz.resize(static_cast<std::size_t>(3 * mesh.n_points));
-  for (std::int64_t i = 0; i < 3 * mesh.n_points; ++i) r.xyz[i] = mesh.points[i] - r.centre[i % 3];
+  for (std::int64_t p = 0; p < mesh.n_points; ++p) {
+    const glm::dvec3 x = mesh.point(p) - r.centre;
+    r.xyz[3 * p] = x.x, r.xyz[3 * p + 1] = x.y, r.xyz[3 * p + 2] = x.z;
+  }
   return r;
 }
 

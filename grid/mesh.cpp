@@ -4,7 +4,7 @@
 #include <numeric>
 #include <tuple>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
 
@@ -51,11 +51,16 @@ MeshView Mesh::view() const {
   return v;
 }
 
-MeshView Mesh::view(const std::string& field_name) const {
-  MeshView v = view();
-  v.scalar = field(field_name).values.data();
-  v.field = field_name;
-  return v;
+PointArray PointArray::strided(const double* first, std::ptrdiff_t stride_bytes) {
+  PointArray a(first);
+  if (stride_bytes != 0) a.stride_ = stride_bytes;
+  return a;
+}
+
+PointArray PointArray::strided(const float* first, std::ptrdiff_t stride_bytes) {
+  PointArray a(first);
+  if (stride_bytes != 0) a.stride_ = stride_bytes;
+  return a;
 }
 
 std::int64_t merge_coincident_points(Mesh& mesh) {

@@ -1,7 +1,7 @@
 #pragma once
-// The mesh model: double-precision points, cells in flat arrays (connectivity, offsets, VTK type
-// codes) and named point fields. `MeshView` is the non-owning form every algorithm takes, so a
-// solver can hand over its own arrays without copying.
+// The mesh model: points, cells in flat arrays (connectivity, offsets, VTK type codes) and named
+// point fields. `MeshView` is the non-owning form every algorithm takes, so a solver can hand over
+// its own arrays without copying; `Mesh` owns its arrays (what the readers make).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,22 +12,50 @@
 
 namespace cellproj {
 
+// A caller's point coordinates as they are: float or double, x y z packed or every `stride` bytes
+// (an array of structures, a column of a larger record). Read through operator(), never copied.
+class PointArray {
+ public:
+  PointArray() = default;
+  PointArray(const double* xyz) : data_(xyz), stride_(3 * sizeof(double)) {}  // NOLINT: packed doubles, implicitly
+  PointArray(const float* xyz) : data_(xyz), stride_(3 * sizeof(float)), is_float_(true) {}  // NOLINT
+  // x, y, z of point p at data + p * stride bytes; stride 0 means packed.
+  static PointArray strided(const double* first, std::ptrdiff_t stride_bytes);
+  static PointArray strided(const float* first, std::ptrdiff_t stride_bytes);
+
+  glm::dvec3 operator()(std::int64_t p) const {
+    const char* at = static_cast<const char*>(data_) + p * stride_;
+    if (is_float_) {
+      const float* f = reinterpret_cast<const float*>(at);
+      return {f[0], f[1], f[2]};
+    }
+    const double* d = reinterpret_cast<const double*>(at);
+    return {d[0], d[1], d[2]};
+  }
+  bool empty() const { return data_ == nullptr; }
+  bool packed_double() const { return !is_float_ && stride_ == 3 * std::ptrdiff_t(sizeof(double)); }
+
+ private:
+  const void* data_ = nullptr;
+  std::ptrdiff_t stride_ = 0;
+  bool is_float_ = false;
+};
+
 // A non-owning view over a caller's arrays. Nothing is copied; the arrays must outlive the view.
+// Point ids are 64-bit here; render/volume.hpp takes 32-bit ones too (widening them once).
 struct MeshView {
-  const double* points = nullptr;           // x y z per point
+  PointArray points;                        // x y z per point
   std::int64_t n_points = 0;
   const std::int64_t* connectivity = nullptr;
   const std::int64_t* offsets = nullptr;    // n_cells + 1 entries; cell c is [offsets[c], offsets[c+1])
   const std::uint8_t* types = nullptr;      // VTK codes: 10 tetra, 11 voxel, 12 hexahedron, 13 wedge, 14 pyramid
   std::int64_t n_cells = 0;
-  const double* scalar = nullptr;           // one value per point (may be null for geometry-only use)
   std::string source;                       // named in error messages (a file, or "solver arrays")
-  std::string field;                        // the scalar's name, for messages
 
   CellType type(std::int64_t c) const { return static_cast<CellType>(types[c]); }
   const std::int64_t* cell(std::int64_t c) const { return connectivity + offsets[c]; }
   int cell_size(std::int64_t c) const { return static_cast<int>(offsets[c + 1] - offsets[c]); }
-  glm::dvec3 point(std::int64_t p) const { return {points[3 * p], points[3 * p + 1], points[3 * p + 2]}; }
+  glm::dvec3 point(std::int64_t p) const { return points(p); }
 };
 
 struct PointField {
@@ -58,7 +86,6 @@ class Mesh {
   PointField& add_field(std::string name, std::string origin);
 
   MeshView view() const;
-  MeshView view(const std::string& field_name) const;
 };
 
 // Merges points with bit-identical coordinates (the duplicated interface points of the pieces of a

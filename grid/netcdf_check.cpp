@@ -5,7 +5,7 @@
 
 #include <netcdf.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
 

@@ -6,7 +6,7 @@
 
 #include <zlib.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace fs = std::filesystem;
 

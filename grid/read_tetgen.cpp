@@ -7,7 +7,7 @@
 
 #include <tetgen.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/text_scanner.hpp"
 

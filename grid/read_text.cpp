@@ -8,7 +8,7 @@
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Triangulation_vertex_base_with_info_3.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/text_scanner.hpp"
 #include "grid/vtk_points.hpp"

@@ -32,7 +32,7 @@
 #include <vtkPoints.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/geometry.hpp"
 #include "grid/netcdf_check.hpp"
 #include "grid/read_mesh.hpp"

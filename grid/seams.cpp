@@ -37,7 +37,8 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
   // coordinates is named by its lowest id.
   std::vector<std::int64_t> pts;
   auto finite = [&](std::int64_t q) {  // a NaN would break the sort's order (validation rejects them)
-    return std::isfinite(m.points[3 * q]) && std::isfinite(m.points[3 * q + 1]) && std::isfinite(m.points[3 * q + 2]);
+    const glm::dvec3 x = m.point(q);
+    return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z);
   };
   for (const std::int64_t cf : t.boundary) {
     std::int64_t ids[4];
@@ -47,7 +48,10 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
   }
   std::sort(pts.begin(), pts.end());  // each point once, then by coordinates
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  auto coords = [&](std::int64_t p) { return std::tie(m.points[3 * p], m.points[3 * p + 1], m.points[3 * p + 2]); };
+  auto coords = [&](std::int64_t p) {
+    const glm::dvec3 x = m.point(p);
+    return std::make_tuple(x.x, x.y, x.z);
+  };
   std::sort(pts.begin(), pts.end(), [&](std::int64_t a, std::int64_t b) {
     return coords(a) < coords(b) || (coords(a) == coords(b) && a < b);
   });

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <cstdlib>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
 

@@ -4,11 +4,12 @@
 #include <cmath>
 #include <map>
 #include <numeric>
+#include <tuple>
 
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/geometry.hpp"
 
 namespace cellproj {
@@ -45,28 +46,26 @@ void check_cells(const MeshView& m) {
 }
 
 void check_points(const MeshView& m) {
-  for (std::int64_t i = 0; i < 3 * m.n_points; ++i)
-    if (!std::isfinite(m.points[i]))
-      throw InputError(where(m.source, "point " + std::to_string(i / 3) + " has a non-finite coordinate (" +
-                                           "xyz"[i % 3] + " = " + std::to_string(m.points[i]) + ")"));
-  if (m.scalar)
-    for (std::int64_t p = 0; p < m.n_points; ++p)
-      if (!std::isfinite(m.scalar[p]))
-        throw InputError(where(m.source, "field '" + m.field + "' is not finite at point " + std::to_string(p) +
-                                             " (" + std::to_string(m.scalar[p]) + ")"));
+  for (std::int64_t p = 0; p < m.n_points; ++p) {
+    const glm::dvec3 x = m.point(p);
+    for (int k = 0; k < 3; ++k)
+      if (!std::isfinite(x[k]))
+        throw InputError(where(m.source, "point " + std::to_string(p) + " has a non-finite coordinate (" + "xyz"[k] +
+                                             " = " + std::to_string(x[k]) + ")"));
+  }
 }
 
 void count_duplicates(const MeshView& m, ValidationReport& r) {
   std::vector<std::int64_t> order(static_cast<std::size_t>(m.n_points));
   std::iota(order.begin(), order.end(), 0);
-  const double* x = m.points;
-  auto less = [x](std::int64_t a, std::int64_t b) {
-    return std::lexicographical_compare(x + 3 * a, x + 3 * a + 3, x + 3 * b, x + 3 * b + 3) ||
-           (std::equal(x + 3 * a, x + 3 * a + 3, x + 3 * b) && a < b);
+  auto key = [&m](std::int64_t p) {
+    const glm::dvec3 x = m.point(p);
+    return std::make_tuple(x.x, x.y, x.z);
   };
+  auto less = [&key](std::int64_t a, std::int64_t b) { return key(a) < key(b) || (key(a) == key(b) && a < b); };
   tbb::parallel_sort(order.begin(), order.end(), less);
   for (std::size_t i = 1; i < order.size(); ++i)
-    if (std::equal(x + 3 * order[i], x + 3 * order[i] + 3, x + 3 * order[i - 1])) {
+    if (key(order[i]) == key(order[i - 1])) {
       ++r.duplicate_points;
       if (r.first_duplicate < 0 || order[i] < r.first_duplicate) r.first_duplicate = order[i];
     }
@@ -123,9 +122,14 @@ std::vector<std::string> ValidationReport::warnings(const std::string& source) c
 }
 
 std::int64_t reorient_inverted(Mesh& mesh, const ValidationReport& r) {
+  return reorient_inverted(mesh.connectivity.data(), mesh.offsets.data(), mesh.types.data(), r);
+}
+
+std::int64_t reorient_inverted(std::int64_t* connectivity, const std::int64_t* offsets, const std::uint8_t* types,
+                               const ValidationReport& r) {
   for (std::int64_t c : r.inverted) {
-    std::int64_t* ids = mesh.connectivity.data() + mesh.offsets[c];
-    switch (static_cast<CellType>(mesh.types[c])) {
+    std::int64_t* ids = connectivity + offsets[c];
+    switch (static_cast<CellType>(types[c])) {
       case CellType::Tetra: std::swap(ids[1], ids[2]); break;
       case CellType::Pyramid: std::swap(ids[1], ids[3]); break;  // reverse the base
       case CellType::Wedge: std::swap_ranges(ids, ids + 3, ids + 3); break;

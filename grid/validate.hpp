@@ -22,7 +22,7 @@ struct ValidationReport {
 
 // Throws InputError (naming the source and the first offending element) for: a cell with a wrong
 // vertex count, an unsupported or unknown cell type (with the count of each), a point id out of
-// range, a NaN or infinite coordinate, and a NaN or infinite value of the view's scalar field.
+// range, a NaN or infinite coordinate.
 ValidationReport validate(const MeshView& mesh);
 
 // Throws InputError for the first non-finite value of a field.
@@ -30,5 +30,8 @@ void check_finite(const std::string& source, const PointField& field);
 
 // Flips every inverted cell of an owned mesh so its volume is positive; returns how many.
 std::int64_t reorient_inverted(Mesh& mesh, const ValidationReport& report);
+// The same on writable cell arrays.
+std::int64_t reorient_inverted(std::int64_t* connectivity, const std::int64_t* offsets, const std::uint8_t* types,
+                               const ValidationReport& report);
 
 }  // namespace cellproj

@@ -13,7 +13,7 @@
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLUnstructuredGridWriter.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
 

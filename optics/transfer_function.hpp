@@ -6,7 +6,6 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
-#include <nlohmann/json_fwd.hpp>
 
 namespace cellproj {
 
@@ -50,14 +49,5 @@ class TransferFunction {
   std::vector<ExtinctionPoint> extinction_;
   std::vector<double> breakpoints_;
 };
-
-// From the scene's JSON object:
-//   {"color": [[s, r, g, b], ...] | "color_preset": {"file": F, "name": N, "range": [s0, s1]},
-//    "extinction": [[s, kappa], ...]}
-// A ParaView colour-map preset (an exported JSON array of maps with "Name" and "RGBPoints") has its
-// x range mapped onto `range` (default: `field_range`). Relative preset paths resolve against
-// `base_dir`. Errors name `source` and the key.
-TransferFunction transfer_function_from_json(const nlohmann::json& j, const std::string& source,
-                                             const std::string& base_dir, double field_min, double field_max);
 
 }  // namespace cellproj

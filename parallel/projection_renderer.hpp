@@ -1,17 +1,17 @@
 #pragma once
-// Cell projection end to end (MWSC sections 2, 3 and 7): the cells in visibility order feed
-// batches to projection workers (oneTBB pipeline), and one compositor blends their fragments in
-// order, so 1 and N threads give the same image bit for bit.
+// Cell projection end to end (MWSC sections 2, 3 and 7): the cells in visibility order feed the
+// ordered batch pipeline (composite/), whose workers project them into fragments while one
+// compositor blends them in order, so 1 and N threads give the same image bit for bit. The mesh's
+// geometry is prepared once; the field comes with each frame.
 #include <cstdint>
-#include <memory>
+#include <string>
 #include <utility>
 #include <vector>
 
 #include "grid/mesh.hpp"
-#include "grid/topology.hpp"
 #include "optics/transfer_function.hpp"
-#include "projection/method.hpp"
 #include "projection/cell_fragments.hpp"
+#include "projection/method.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
 #include "visibility/sort.hpp"
@@ -21,12 +21,15 @@ namespace cellproj {
 
 struct ProjectionOptions {
   ProjectionMethod method = ProjectionMethod::pt_breakpoints;
-  ProjectionBackend backend = ProjectionBackend::software;  // the OpenGL ones draw pt-linear and pt-table
+  ProjectionBackend backend = ProjectionBackend::software;  // the OpenGL ones draw the Gouraud methods
   SortMethod sort = SortMethod::automatic;
   GapMethod gaps = GapMethod::automatic;  // how mpvo-abuffer finds the relations across gaps
-  int table_size = 256;      // pt-table: nodes per axis of the opacity table
-  int batch_cells = 0;       // cells per pipeline token; 0: about 16 tokens per thread, 64 to 2048
+  int table_size = 256;                   // pt-table: nodes per axis of the opacity table
+  int batch_cells = 0;                    // cells per pipeline token; 0: about 16 tokens per thread, 64 to 2048
 };
+// Throws InputError for options that do not go together (a method the back end cannot draw) or a
+// table size outside [2, 8192]: before a frame starts, never in the middle of one.
+void check_options(const ProjectionOptions& options);
 
 struct ProjectionStats {
   ProjectionCounters counters;
@@ -37,32 +40,29 @@ struct ProjectionStats {
   std::int64_t problem_cells = 0;      // mesh cells with a face folded in this view (problem and none modes)
   std::int64_t cells_split = 0;        // mesh cells split into tetrahedra for this frame
   std::int64_t cycle_splits = 0;       // of which split because they were in a visibility cycle
-  std::vector<std::pair<std::string, double>> phase_seconds;  // project points, sort, project+composite
+  std::vector<std::pair<std::string, double>> phase_seconds;  // project points, sort, project and composite
   std::string gl_renderer;             // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;
 };
 
 class ProjectionRenderer {
  public:
-  // Prepared once per mesh and field (the mesh's arrays must outlive the renderer). Cells other
-  // than tetrahedra are projected whole, except those `mode` splits into their canonical
-  // tetrahedra (grid/face_split): per view the ones a ray may cross more than twice (problem), all of them once
-  // (all), or none.
+  // Prepared once per mesh (its arrays must outlive the renderer): face topology, boundary hull,
+  // the sorter's planes. Cells other than tetrahedra are projected whole, except those `mode`
+  // splits into their canonical tetrahedra (grid/face_split): per view the ones a ray may cross
+  // more than twice (problem), all of them once (all), or none.
   explicit ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode = Tetrahedralize::problem);
   ~ProjectionRenderer();
 
-  // Threads: those of the task arena it is called from.
-  Image render(const TransferFunction& tf, const Camera& camera, int width, int height,
+  // One frame of the point field `scalar` (n_points values). Threads: those of the task arena it
+  // is called from.
+  Image render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
                const ProjectionOptions& options = {}, ProjectionStats* stats = nullptr) const;
 
   bool convex_boundary() const;
+  Tetrahedralize mode() const { return sorter_.mode(); }
 
  private:
-  // The OpenGL back ends: triangles made by parallel workers, drawn in visibility order.
-  Image render_gl(const CellFragments& project, const MeshView& cells, const std::vector<std::int64_t>& order,
-                  const OpacityTable* table, int width, int height, const ProjectionOptions& options,
-                  ProjectionStats& st) const;
-
   MeshView mesh_;
   SplittingSorter sorter_;
   double max_diameter_ = 0.0;  // the longest distance between two vertices of a cell: no ray segment in a cell is longer

@@ -84,7 +84,7 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
 CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                            const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
                            const PointOptics* optics)
-    : screen_(screen), rays_(rays), points_(points), tf_(tf), method_(method), table_(table), optics_(optics) {
+    : screen_(screen), rays_(rays), points_(points), tf_(tf), method_(traits(method)), table_(table), optics_(optics) {
   // Which way a triangle facing the eye turns in this image: (c, c + r, c + u) with r x u towards
   // the eye, ahead of it on the view axis.
   const Camera& cam = rays.camera();
@@ -163,7 +163,7 @@ GouraudCorner CellFragments::shade(const ThickVertex& t) const {
   // Corner values from the transfer function, Gouraud-interpolated across each triangle (MWSC sec. 2).
   const double kavg = 0.5 * (tf_.extinction(t.sf) + tf_.extinction(t.sb));
   const double l = (t.zb - t.zf) * rays_.length_per_depth(t.x, t.y);
-  return {method_ == ProjectionMethod::pt_table ? kavg : -std::expm1(-kavg * l), l, 0.5 * (tf_.color(t.sf) + tf_.color(t.sb))};
+  return {method_.opacity_table ? kavg : -std::expm1(-kavg * l), l, 0.5 * (tf_.color(t.sf) + tf_.color(t.sb))};
 }
 
 CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters) const {
@@ -174,9 +174,9 @@ CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p,
   p.smin = std::min({v[0].s, v[1].s, v[2].s, v[3].s}), p.smax = std::max({v[0].s, v[1].s, v[2].s, v[3].s});
   p.tri.resize(static_cast<std::size_t>(pt.hull_size));
   for (int a = 0; a < pt.hull_size; ++a) p.tri[a] = {{pt.thick, pt.hull[a], pt.hull[(a + 1) % pt.hull_size]}};
-  if (method_ != ProjectionMethod::pt_linear && method_ != ProjectionMethod::pt_table) return seen;
+  if (!method_.gouraud) return seen;
   // The outline's corners are zero thick: their values per point, computed once per frame.
-  const bool table = method_ == ProjectionMethod::pt_table;
+  const bool table = method_.opacity_table;
   const GouraudCorner thick = shade(pt.thick);
   GouraudCorner hull[4];
   for (int k = 0; k < pt.hull_size; ++k) {
@@ -211,7 +211,7 @@ CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellT
     ++counters.empty;
     return Seen::empty;
   }
-  if (method_ == ProjectionMethod::pt_linear || method_ == ProjectionMethod::pt_table) {
+  if (method_.gouraud) {
     p.corner.resize(3 * p.tri.size());
     for (std::size_t t = 0; t < p.tri.size(); ++t)
       for (int k = 0; k < 3; ++k) p.corner[3 * t + k] = shade(p.tri[t].v[k]);
@@ -228,7 +228,7 @@ CellFragments::Seen CellFragments::triangles_of(const std::int64_t* ids, CellTyp
 void CellFragments::triangles(const std::int64_t* ids, CellType type, std::int64_t cell, std::vector<GLCorner>& out,
                               CellScratch& p, ProjectionCounters& counters) const {
   if (triangles_of(ids, type, p, counters) != Seen::projected) return;
-  const bool table = method_ == ProjectionMethod::pt_table;
+  const bool table = method_.opacity_table;
   // Texel centres: node i of n sits at (i + 0.5) / n, so GL_LINEAR reads the table as OpacityTable does.
   const double n = table ? table_->size() : 1.0;
   // A whole-pixel shift of the noise tile per cell (a 64-bit mix of its id).
@@ -286,8 +286,8 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
     }
   };
 
-  if (method_ == ProjectionMethod::pt_linear || method_ == ProjectionMethod::pt_table) {
-    const bool table = method_ == ProjectionMethod::pt_table;
+  if (method_.gouraud) {
+    const bool table = method_.opacity_table;
     each_triangle([&](int i, int j, std::size_t t, double w0, double w1, double w2) {
       const GouraudCorner* g = &p.corner[3 * t];
       const glm::dvec3 c = w0 * g[0].c + w1 * g[1].c + w2 * g[2].c;
@@ -307,7 +307,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
     piece.s0 = smin, piece.ds = smax > smin ? 1.0 / (smax - smin) : 0.0;
     piece.k0 = e.ka, piece.dk = e.kb - e.ka, piece.c0 = e.ca, piece.dc = e.cb - e.ca;
   }
-  const bool cut = has_breakpoint && method_ == ProjectionMethod::pt_breakpoints;
+  const bool cut = has_breakpoint && method_.cuts_at_breakpoints;
   each_triangle([&](int i, int j, std::size_t t, double w0, double w1, double w2) {
     const ThickVertex* V = p.tri[t].v;
     double zf, zb, sf, sb;

@@ -6,21 +6,16 @@
 #include <cstdint>
 #include <vector>
 
+#include "composite/fragment.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "optics/transfer_function.hpp"
 #include "projection/method.hpp"
 #include "projection/projected_cell.hpp"
 #include "projection/projected_tet.hpp"
-#include "projection/screen.hpp"
+#include "view/screen.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {
-
-// A pixel's premultiplied light and opacity from one cell.
-struct Fragment {
-  std::uint32_t pixel;  // j * width + i
-  float rgba[4];
-};
 
 struct ProjectionCounters {
   std::int64_t tets = 0;              // tetrahedra projected
@@ -116,26 +111,10 @@ class CellFragments {
   const PixelRays& rays_;
   const RecentredPoints& points_;
   const TransferFunction& tf_;
-  ProjectionMethod method_;
+  MethodTraits method_;
   const OpacityTable* table_;
   const PointOptics* optics_;
   int front_sign_;  // exact_sign of a face turned towards the eye
 };
-
-// Back-to-front "over" of one premultiplied RGBA value onto a pixel.
-inline void over(float* dst, const float src[4]) {
-  const float t = 1.0f - src[3];
-  for (int c = 0; c < 4; ++c) dst[c] = src[c] + t * dst[c];
-}
-
-// Back-to-front "over" of fragments onto a premultiplied image.
-inline void composite_over(Image& image, const Fragment* f, std::size_t n) {
-  float* px = image.rgba.data();
-  constexpr std::size_t kAhead = 16;  // the framebuffer is far larger than the caches: fetch ahead
-  for (std::size_t k = 0; k < n; ++k) {
-    if (k + kAhead < n) __builtin_prefetch(px + std::size_t(f[k + kAhead].pixel) * 4, 1);
-    over(px + std::size_t(f[k].pixel) * 4, f[k].rgba);
-  }
-}
 
 }  // namespace cellproj

@@ -1,5 +1,7 @@
 #include "projection/gl_compositor.hpp"
 
+#include "base/error.hpp"
+
 #include <random>
 #include <stdexcept>
 
@@ -35,7 +37,7 @@ struct GLCompositor::Context {
     const bool f = target == GLTarget::float32;
     if (!OSMesaMakeCurrent(ctx, f ? static_cast<void*>(color32.data()) : static_cast<void*>(color8.data()),
                            f ? GL_FLOAT : GL_UNSIGNED_BYTE, width, height))
-      throw std::runtime_error("OSMesa: cannot bind a " + std::string(f ? "float" : "8-bit") + " framebuffer");
+      throw ResourceError("OSMesa: cannot bind a " + std::string(f ? "float" : "8-bit") + " framebuffer");
     OSMesaPixelStore(OSMESA_Y_UP, 0);  // row 0 at the top, as Image
   }
 };
@@ -43,7 +45,7 @@ struct GLCompositor::Context {
 GLCompositor::GLCompositor(int width, int height, GLTarget target) : gl_(std::make_unique<Context>()) {
   gl_->width = width, gl_->height = height, gl_->target = target;
   gl_->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
-  if (!gl_->ctx) throw std::runtime_error("OSMesa: cannot create an OpenGL context");
+  if (!gl_->ctx) throw ResourceError("OSMesa: cannot create an OpenGL context");
   if (target == GLTarget::float32) gl_->color32.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
   else gl_->color8.assign(static_cast<std::size_t>(width) * height * 4, 0);
   gl_->make_current();

@@ -2,38 +2,19 @@
 
 #include <cmath>
 
-#include "grid/error.hpp"
-#include "grid/name_table.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
 
 namespace {
-constexpr std::pair<ProjectionMethod, const char*> kNames[] = {
-    {ProjectionMethod::pt_linear, "pt-linear"},
-    {ProjectionMethod::pt_table, "pt-table"},
-    {ProjectionMethod::pt_analytic, "pt-analytic"},
-    {ProjectionMethod::pt_breakpoints, "pt-breakpoints"},
-};
-constexpr std::pair<ProjectionBackend, const char*> kBackends[] = {
-    {ProjectionBackend::software, "software"},
-    {ProjectionBackend::opengl, "opengl"},
-    {ProjectionBackend::opengl_8bit, "opengl-8bit"},
-    {ProjectionBackend::opengl_8bit_dithered, "opengl-8bit-dither"},
-};
-
+constexpr bool listed_in_enum_order() {
+  int i = 0;
+  for (const MethodTraits& t : kProjectionMethods)
+    if (static_cast<int>(t.method) != i++) return false;
+  return true;
+}
+static_assert(listed_in_enum_order(), "traits() indexes kProjectionMethods by the enum's value");
 }  // namespace
-
-ProjectionBackend projection_backend_from_name(const std::string& name) {
-  return from_name(kBackends, name, "back end");
-}
-const char* name_of(ProjectionBackend backend) { return name_in(kBackends, backend); }
-std::string projection_backend_names() { return names(kBackends); }
-
-ProjectionMethod projection_method_from_name(const std::string& name) {
-  return from_name(kNames, name, "projection method");
-}
-const char* name_of(ProjectionMethod method) { return name_in(kNames, method); }
-std::string projection_method_names() { return names(kNames); }
 
 OpacityTable::OpacityTable(int size, double kappa_max, double l_max) : size_(size) {
   if (size < 2 || size > 8192) throw InputError("opacity table size " + std::to_string(size) + " is outside [2, 8192]");

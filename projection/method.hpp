@@ -1,6 +1,7 @@
 #pragma once
 // The cell-projection methods: a ladder from fastest to exact (docs/methods.md measures each rung
-// against the exact reference renderer).
+// against the exact reference renderer). What a method does is decided by its traits alone: code
+// asks traits(method), never which method it is (docs/architecture.md, "Adding a method").
 #include <algorithm>
 #include <cstdint>
 #include <string>
@@ -14,9 +15,26 @@ enum class ProjectionMethod {
   pt_analytic,     // per pixel, the exact integral for kappa and colour linear along the segment
   pt_breakpoints,  // pt_analytic, the segment cut at the transfer function's breakpoints: exact
 };
-ProjectionMethod projection_method_from_name(const std::string& name);  // throws InputError listing the names
-const char* name_of(ProjectionMethod method);
-std::string projection_method_names();
+
+// The closed set of what distinguishes the methods.
+struct MethodTraits {
+  ProjectionMethod method;
+  const char* name;          // on the command line, in files and messages
+  bool gouraud;              // corner values Gouraud-interpolated across each triangle (MWSC sec. 2);
+                             // otherwise each pixel's segment is integrated in closed form
+  bool opacity_table;        // opacity read from the 2D alpha texture (OpacityTable) at (kappa_avg, l)
+  bool point_optics;         // kappa and colour evaluated once per point and frame (PointOptics)
+  bool cuts_at_breakpoints;  // per pixel: the segment cut at the transfer function's breakpoints
+  bool opengl;               // the OpenGL back ends can draw it (Gouraud triangles, the alpha texture)
+};
+inline constexpr MethodTraits kProjectionMethods[] = {
+    {ProjectionMethod::pt_linear, "pt-linear", true, false, true, false, true},
+    {ProjectionMethod::pt_table, "pt-table", true, true, true, false, true},
+    {ProjectionMethod::pt_analytic, "pt-analytic", false, false, false, false, false},
+    {ProjectionMethod::pt_breakpoints, "pt-breakpoints", false, false, false, true, false},
+};
+constexpr const MethodTraits& traits(ProjectionMethod method) { return kProjectionMethods[static_cast<int>(method)]; }
+constexpr const char* name_of(ProjectionMethod method) { return traits(method).name; }
 
 // Where the projected triangles are rasterized and composited.
 enum class ProjectionBackend {
@@ -25,9 +43,7 @@ enum class ProjectionBackend {
   opengl_8bit,          // the same into 8-bit RGBA, as 1990s hardware
   opengl_8bit_dithered, // 8-bit with alpha dithering (Williams, Frank and LaMar)
 };
-ProjectionBackend projection_backend_from_name(const std::string& name);  // throws InputError listing the names
-const char* name_of(ProjectionBackend backend);
-std::string projection_backend_names();
+constexpr bool is_opengl(ProjectionBackend backend) { return backend != ProjectionBackend::software; }
 
 // 1 - exp(-kappa l) tabulated on [0, kappa_max] x [0, l_max] at size x size nodes, read bilinearly:
 // the paper's 2D alpha texture. Arguments beyond the table are clamped to its edge.

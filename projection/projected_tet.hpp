@@ -7,6 +7,8 @@
 // scalar interpolate exactly (perspective-correctly in perspective).
 #include <cstdint>
 
+#include "view/screen.hpp"
+
 namespace cellproj {
 
 // One corner of the projected triangles: pixel position, and view depth and scalar where the ray
@@ -21,11 +23,6 @@ struct ProjectedTet {
   ThickVertex thick;      // the triangles are (thick, hull[k], hull[k+1]), k cyclic
   ThickVertex hull[4];    // tetrahedron vertices (zero thickness) around the projected outline
   int hull_vertex[4] = {};  // which of the four input vertices each hull corner is
-};
-
-// A tetrahedron vertex in the image: pixel position, view depth, scalar.
-struct ScreenVertex {
-  double x, y, z, s;
 };
 
 // A screen vertex as a corner of zero thickness.

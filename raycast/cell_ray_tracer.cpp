@@ -92,8 +92,6 @@ struct TetPlanes {
 }  // namespace
 
 CellRayTracer::CellRayTracer(const MeshView& mesh) : points_(recentre(mesh)) {
-  scalar_.assign(static_cast<std::size_t>(mesh.n_points), 0.0);
-  if (mesh.scalar) std::copy(mesh.scalar, mesh.scalar + mesh.n_points, scalar_.begin());
 
   const RecentredPoints& P = points_;
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
@@ -115,7 +113,7 @@ CellRayTracer::CellRayTracer(const MeshView& mesh) : points_(recentre(mesh)) {
   }
 }
 
-void CellRayTracer::trace(const Camera& camera, int width, int height, const Visitor& visit,
+void CellRayTracer::trace(const Camera& camera, int width, int height, const double* scalar, const Visitor& visit,
                           const std::function<void(double)>& progress) const {
   const PixelRays rays(recentred(camera, points_.centre), width, height);
   const RecentredPoints& P = points_;
@@ -177,7 +175,7 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const Vis
       const Tet& tet = tets_[t];
       TetPlanes tp;
       glm::dvec3 p[4];
-      for (int k = 0; k < 4; ++k) p[k] = P(tet[k]), tp.s[k] = scalar_[tet[k]];
+      for (int k = 0; k < 4; ++k) p[k] = P(tet[k]), tp.s[k] = scalar ? scalar[tet[k]] : 0.0;
       for (int k = 0; k < 4; ++k) tp.set_face(k, tet, points_.xyz.data());
       tp.volume6 = tet_volume6(p[0], p[1], p[2], p[3]);
       const PixelBox& bx = box[t];

@@ -21,25 +21,24 @@ struct RaySegment {
 
 class CellRayTracer {
  public:
-  // Copies the points (recentred on the bounding box, so huge offsets lose no precision) and the
-  // scalar; drops zero-volume tetrahedra and orients the rest positively.
+  // Copies the points (recentred on the bounding box, so huge offsets lose no precision); drops
+  // zero-volume tetrahedra and orients the rest positively. The field comes with each trace.
   explicit CellRayTracer(const MeshView& mesh);
 
   // Calls visit(i, j, ray, segments, n) for every pixel with the segments sorted front to back; the
-  // ray is in the recentred frame of points(). Pixels are visited concurrently from the calling
-  // task arena's threads, each pixel once.
+  // ray is in the recentred frame of points(). The segments' s0, s1 interpolate the point field
+  // `scalar` (zeros when null). Pixels are visited concurrently from the calling task arena's
+  // threads, each pixel once.
   using Visitor = std::function<void(int i, int j, const Ray& ray, const RaySegment* segments, std::size_t n)>;
-  void trace(const Camera& camera, int width, int height, const Visitor& visit,
+  void trace(const Camera& camera, int width, int height, const double* scalar, const Visitor& visit,
              const std::function<void(double done)>& progress = {}) const;
 
   std::int64_t tetrahedra() const { return static_cast<std::int64_t>(tets_.size()); }
   std::int64_t dropped_degenerate() const { return dropped_; }
   const double* points() const { return points_.xyz.data(); }  // recentred on the bounding box
-  const double* scalar() const { return scalar_.data(); }
 
  private:
   RecentredPoints points_;
-  std::vector<double> scalar_;
   std::vector<Tet> tets_;            // positively oriented
   std::vector<std::int64_t> parent_; // the mesh cell of each tetrahedron
   std::int64_t dropped_ = 0;

@@ -52,8 +52,8 @@ int shape_functions(CellType type, const glm::dvec3& xi, double* w, glm::dvec3* 
   }
 }
 
-IsoparametricField::IsoparametricField(const MeshView& mesh, const double* recentred_points, const double* scalar)
-    : points_(recentred_points), scalar_(scalar), first_(static_cast<std::size_t>(mesh.n_cells), -1) {
+IsoparametricField::IsoparametricField(const MeshView& mesh, const double* recentred_points)
+    : points_(recentred_points), first_(static_cast<std::size_t>(mesh.n_cells), -1) {
   types_.assign(mesh.types, mesh.types + mesh.n_cells);
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
     if (mesh.type(c) == CellType::Tetra) continue;
@@ -76,7 +76,7 @@ glm::dvec3 IsoparametricField::centre_guess(std::int64_t cell) const {
   }
 }
 
-bool IsoparametricField::value(std::int64_t cell, const glm::dvec3& p, glm::dvec3& xi, double& value) const {
+bool IsoparametricField::value(const double* scalar, std::int64_t cell, const glm::dvec3& p, glm::dvec3& xi, double& value) const {
   const CellType type = static_cast<CellType>(types_[cell]);
   const std::int64_t* id = ids_.data() + first_[cell];
   double w[8];
@@ -100,7 +100,7 @@ bool IsoparametricField::value(std::int64_t cell, const glm::dvec3& p, glm::dvec
     if (glm::length(step) < 1e-7) {
       value = 0.0;
       glm::dvec3 grad(0.0);
-      for (int k = 0; k < n; ++k) value += w[k] * scalar_[id[k]], grad += dw[k] * scalar_[id[k]];
+      for (int k = 0; k < n; ++k) value += w[k] * scalar[id[k]], grad += dw[k] * scalar[id[k]];
       value += glm::dot(grad, step);
       return std::isfinite(value);
     }

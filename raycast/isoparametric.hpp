@@ -16,21 +16,21 @@ namespace cellproj {
 // Writes n weights (8, 6 or 5) and, if dw is given, their derivatives d/dr, d/ds, d/dt.
 int shape_functions(CellType type, const glm::dvec3& xi, double* w, glm::dvec3* dw = nullptr);
 
-// The field of the mesh's non-tetrahedral cells, over recentred points (so huge coordinate offsets
-// lose nothing). Keeps its own copy of those cells' vertex ids.
+// The shape of the mesh's non-tetrahedral cells, over recentred points (so huge coordinate offsets
+// lose nothing), for any point field. Keeps its own copy of those cells' vertex ids.
 class IsoparametricField {
  public:
-  IsoparametricField(const MeshView& mesh, const double* recentred_points, const double* scalar);
+  IsoparametricField(const MeshView& mesh, const double* recentred_points);
 
   bool linear(std::int64_t cell) const { return first_[cell] < 0; }  // a tetrahedron
-  // The field at point p of `cell`; xi is the starting guess for Newton and receives the natural
-  // coordinates. Returns false when Newton does not converge (a degenerate cell), leaving value as is.
-  bool value(std::int64_t cell, const glm::dvec3& p, glm::dvec3& xi, double& value) const;
+  // The point field `scalar` at point p of `cell`; xi is the starting guess for Newton and receives
+  // the natural coordinates. Returns false when Newton does not converge (a degenerate cell), leaving
+  // value as is.
+  bool value(const double* scalar, std::int64_t cell, const glm::dvec3& p, glm::dvec3& xi, double& value) const;
   glm::dvec3 centre_guess(std::int64_t cell) const;
 
  private:
   const double* points_;
-  const double* scalar_;
   std::vector<std::int64_t> first_;  // per cell: start in ids_, -1 for a tetrahedron
   std::vector<std::int64_t> ids_;
   std::vector<std::uint8_t> types_;

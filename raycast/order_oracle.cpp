@@ -49,7 +49,7 @@ OrderCheck check_order(const CellRayTracer& tracer, std::int64_t n_cells, const 
   std::atomic<std::int64_t> violations{0}, pixels{0}, covered{0}, overlapping{0}, clear{0};
   std::mutex first;
   tbb::enumerable_thread_specific<std::pair<std::vector<std::int64_t>, std::vector<std::int64_t>>> scratch;
-  tracer.trace(camera, width, height, [&](int i, int j, const Ray&, const RaySegment* seg, std::size_t n) {
+  tracer.trace(camera, width, height, nullptr, [&](int i, int j, const Ray&, const RaySegment* seg, std::size_t n) {
     // The positions in the order of the cells along the ray, front to back; a cell crossed in
     // several consecutive tetrahedra counts once. Back to front, each must come after the next.
     // Segments shorter than kContact of their distance are rounding-level contacts (the ray

@@ -5,8 +5,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "grid/error.hpp"
-#include "grid/name_table.hpp"
+#include "base/error.hpp"
 #include "optics/polynomial_segment.hpp"
 
 namespace cellproj {
@@ -16,6 +15,7 @@ namespace {
 // its canonical tetrahedra; falls back to their linear value where Newton fails.
 struct IsoparametricRun {
   const IsoparametricField& field;
+  const double* scalar;
   const Ray& ray;
   const RaySegment* first;
   const RaySegment* last;
@@ -24,9 +24,9 @@ struct IsoparametricRun {
 
   double at(double t) {
     double s;
-    if (field.value(first->cell, ray.origin + t * ray.dir, xi, s)) return s;
+    if (field.value(scalar, first->cell, ray.origin + t * ray.dir, xi, s)) return s;
     xi = field.centre_guess(first->cell);
-    if (field.value(first->cell, ray.origin + t * ray.dir, xi, s)) return s;
+    if (field.value(scalar, first->cell, ray.origin + t * ray.dir, xi, s)) return s;
     ++failures;
     xi = field.centre_guess(first->cell);
     const RaySegment* g = first;
@@ -53,43 +53,41 @@ void integrate_run(const TransferFunction& tf, IsoparametricRun& run, double ta,
   integrate_run(tf, run, mid, tb, tol, depth + 1, acc);
 }
 
-constexpr std::pair<CellInterpolation, const char*> kInterpolations[] = {
-    {CellInterpolation::isoparametric, "isoparametric"}, {CellInterpolation::canonical_tets, "canonical-tets"}};
 
 }  // namespace
 
-CellInterpolation cell_interpolation_from_name(const std::string& name) {
-  return from_name(kInterpolations, name, "cell interpolation");
-}
-const char* name_of(CellInterpolation interpolation) { return name_in(kInterpolations, interpolation); }
 
-ExactRenderer::ExactRenderer(const MeshView& mesh, CellInterpolation interpolation) : tracer_(mesh) {
+ExactRenderer::ExactRenderer(const MeshView& mesh) : tracer_(mesh), n_points_(mesh.n_points) {
   const bool all_tets = std::all_of(mesh.types, mesh.types + mesh.n_cells,
                                     [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); });
-  if (interpolation != CellInterpolation::isoparametric || all_tets || !mesh.scalar) return;
-  iso_ = std::make_unique<IsoparametricField>(mesh, tracer_.points(), tracer_.scalar());
-  const auto [lo, hi] = std::minmax_element(mesh.scalar, mesh.scalar + mesh.n_points);
-  scalar_tolerance_ = 1e-9 * (*hi - *lo);
+  if (!all_tets) iso_ = std::make_unique<IsoparametricField>(mesh, tracer_.points());
 }
 
-Image ExactRenderer::render(const TransferFunction& tf, const Camera& camera, int width, int height, ExactStats* stats,
+Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
+                            CellInterpolation interpolation, ExactStats* stats,
                             const std::function<void(double)>& progress) const {
   const auto start = std::chrono::steady_clock::now();
   Image img(width, height);
+  const IsoparametricField* iso = interpolation == CellInterpolation::isoparametric && scalar ? iso_.get() : nullptr;
+  double scalar_tolerance = 0.0;  // largest error of the polynomial s(t) along a ray
+  if (iso) {
+    const auto [lo, hi] = std::minmax_element(scalar, scalar + n_points_);
+    scalar_tolerance = 1e-9 * (*hi - *lo);
+  }
   std::atomic<std::int64_t> segments{0}, failures{0};
-  tracer_.trace(camera, width, height, [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t n) {
+  tracer_.trace(camera, width, height, scalar, [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t n) {
     SegmentLight acc;
     for (std::size_t k = 0; k < n && acc.depth < kOpaqueDepth;) {
-      if (!iso_ || iso_->linear(seg[k].cell)) {
+      if (!iso || iso->linear(seg[k].cell)) {
         acc = under(acc, integrate_segment_reference(tf, seg[k].t1 - seg[k].t0, seg[k].s0, seg[k].s1));
         ++k;
         continue;
       }
       std::size_t end = k + 1;  // the adjoining segments of this cell's tetrahedra
       while (end < n && seg[end].cell == seg[k].cell && seg[end].t0 <= seg[end - 1].t1 * (1 + 1e-12) + 1e-300) ++end;
-      IsoparametricRun run{*iso_, ray, seg + k, seg + end, iso_->centre_guess(seg[k].cell)};
+      IsoparametricRun run{*iso, scalar, ray, seg + k, seg + end, iso->centre_guess(seg[k].cell)};
       const double ta = seg[k].t0, tb = seg[end - 1].t1;
-      integrate_run(tf, run, ta, tb, scalar_tolerance_, 0, acc);
+      integrate_run(tf, run, ta, tb, scalar_tolerance, 0, acc);
       failures.fetch_add(run.failures, std::memory_order_relaxed);
       k = end;
     }

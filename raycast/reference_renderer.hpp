@@ -21,8 +21,6 @@ enum class CellInterpolation {
   isoparametric,   // the cell's shape functions, followed along the ray by a polynomial to 1e-9 of the field's range
   canonical_tets,  // linear in each tetrahedron of the canonical split (what projection assumes)
 };
-CellInterpolation cell_interpolation_from_name(const std::string& name);  // throws InputError
-const char* name_of(CellInterpolation interpolation);
 
 struct ExactStats {
   double trace_seconds = 0.0;        // traversal and integration of one frame
@@ -30,19 +28,22 @@ struct ExactStats {
   std::int64_t newton_failures = 0;  // isoparametric points that fell back to the linear value
 };
 
-// Prepared once per mesh and field, then renders any number of frames. Threads: those of the task
-// arena it is called from (oneTBB); the image splits into tiles among them.
+// Prepared once per mesh (its canonical tetrahedra and, for the other cells, their shape), then
+// renders any number of frames of any point field. Threads: those of the task arena it is called
+// from (oneTBB); the image splits into tiles among them.
 class ExactRenderer {
  public:
-  explicit ExactRenderer(const MeshView& mesh, CellInterpolation interpolation = CellInterpolation::isoparametric);
-  Image render(const TransferFunction& tf, const Camera& camera, int width, int height, ExactStats* stats = nullptr,
+  explicit ExactRenderer(const MeshView& mesh);
+  // One frame of the point field `scalar` (n_points values).
+  Image render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
+               CellInterpolation interpolation = CellInterpolation::isoparametric, ExactStats* stats = nullptr,
                const std::function<void(double)>& progress = {}) const;
   const CellRayTracer& tracer() const { return tracer_; }
 
  private:
   CellRayTracer tracer_;
-  std::unique_ptr<IsoparametricField> iso_;  // null when every cell is linear or canonical_tets was asked for
-  double scalar_tolerance_ = 0.0;            // largest error of the polynomial s(t) along a ray
+  std::int64_t n_points_ = 0;
+  std::unique_ptr<IsoparametricField> iso_;  // null when every cell is a tetrahedron
 };
 
 }  // namespace cellproj

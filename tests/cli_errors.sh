@@ -75,11 +75,11 @@ expect 0 "warning: the visibility sort met 1 visibility cycle \(3 cells\) .* --m
 expect 0 "overlapping cells: none" -- info "$tmp/box.vtu" --overlaps
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n0 0 0 1 0 0 0 1 0 0.2 0.2 1 0 0 0.5 1 0 0.5 0 1 0.5 0.3 0.3 -0.5\nCELLS 2 10\n4 0 1 2 3\n4 4 6 5 7\nCELL_TYPES 2\n10 10\n' > "$tmp/overlap.vtk"
 expect 0 "WARNING: cells overlap in 1 pair \(first: cells 0 and 1\)" -- info "$tmp/overlap.vtk" --overlaps
-expect 1 "--method exact is a ray integrator" -- render "$tmp/ok.json" --method exact --backend opengl
-expect 1 "--interpolation chooses the field inside cells for --method exact" -- render "$tmp/ok.json" --interpolation canonical-tets
+expect 1 "--backend does not apply to --method exact, which reads --method, --interpolation" -- render "$tmp/ok.json" --method exact --backend opengl
+expect 1 "--interpolation does not apply to --method pt-breakpoints, which reads .*--tetrahedralize" -- render "$tmp/ok.json" --interpolation canonical-tets
 expect 1 "unknown --tetrahedralize 'some' \(known: problem, all, none\)" -- render "$tmp/ok.json" --tetrahedralize some
-expect 1 "--tetrahedralize chooses the cells the projection methods split" -- render "$tmp/ok.json" --method exact --tetrahedralize all
-expect 1 "opengl back end draws pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
+expect 1 "--tetrahedralize does not apply to --method exact" -- render "$tmp/ok.json" --method exact --tetrahedralize all
+expect 1 "OpenGL back ends draw pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
 expect 0 "wrote .*gl.png" -- render "$tmp/ok.json" --size 40x30 --method pt-table --backend opengl-8bit-dither -o "$tmp/gl.png" --stats
 grep -q '"gl_renderer":' "$tmp/err" || { echo "FAIL: --stats lacks gl_renderer"; failed=$((failed+1)); }
 expect 2 "table-size" -- render "$tmp/ok.json" --method pt-table --table-size 1

@@ -3,7 +3,8 @@
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
+#include "scene/camera_json.hpp"
 #include "view/camera.hpp"
 
 using namespace cellproj;

@@ -11,15 +11,10 @@ using namespace cellproj;
 
 namespace {
 
-Camera looking_down(double height) {  // orthographic, from +z, image `height` units tall
-  Camera c;
-  c.eye = {0, 0, 5};
-  c.height = height;
-  return c;
-}
+using test::looking_down;
 
 Image render(const Mesh& m, const TransferFunction& tf, const Camera& c, int w, int h) {
-  return ExactRenderer(m.view(m.fields.front().name)).render(tf, c, w, h);
+  return test::exact(m, "", tf, c, w, h);
 }
 
 }  // namespace
@@ -145,9 +140,9 @@ TEST(ExactRenderer, ZeroVolumeCellsAddNothing) {
                      d = m.add_point({0.5, 0.5, 0});  // a flat tetrahedron inside
   m.fields[0].values.resize(static_cast<std::size_t>(m.n_points()), 0.0);
   m.add_cell(CellType::Tetra, {a, b, c, d});
-  const ExactRenderer r(m.view("s"));
+  const ExactRenderer r(m.view());
   EXPECT_EQ(r.tracer().dropped_degenerate(), 1);
-  const Image img = r.render(test::constant_tf(1.0, {1, 1, 1}), looking_down(4.0), 8, 8);
+  const Image img = r.render(test::field_values(m, "s"), test::constant_tf(1.0, {1, 1, 1}), looking_down(4.0), 8, 8);
   EXPECT_NEAR(img.pixel(4, 4)[3], 1 - std::exp(-2.0), 1e-6);
 }
 

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "parallel/projection_renderer.hpp"
+#include "scene/names.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
@@ -16,7 +17,7 @@ Image render(const Mesh& m, const TransferFunction& tf, const Camera& c, int siz
   ProjectionOptions o;
   o.method = method;
   o.backend = backend;
-  return ProjectionRenderer(m.view("s")).render(tf, c, size, size, o);
+  return test::project(m, "s", tf, c, size, o);
 }
 
 double mean_alpha(const Image& img) {

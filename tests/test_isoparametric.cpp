@@ -45,10 +45,11 @@ TEST(IsoparametricField, NewtonFindsTheNaturalCoordinatesOfAWarpedHexahedron) {
     return glm::dvec3(u.x + 0.3 * u.y * u.z, u.y + 0.2 * u.x * u.z, u.z * (1 + 0.25 * u.x * u.y));
   }, false);
   set_field(m, "s", [](const glm::dvec3& x) { return x.x; });
-  const MeshView v = m.view("s");
+  const MeshView v = m.view();
   std::vector<double> sxi(8);  // a field equal to the natural coordinate r at the vertices
   for (int k = 0; k < 8; ++k) sxi[v.cell(0)[k]] = (k == 1 || k == 2 || k == 5 || k == 6) ? 1.0 : 0.0;
-  const IsoparametricField field(v, v.points, sxi.data());
+  const std::vector<double> xyz(m.points);
+  const IsoparametricField field(v, xyz.data());
   const glm::dvec3 target{0.3, 0.7, 0.6};
   double w[8];
   shape_functions(CellType::Hexahedron, target, w);
@@ -56,7 +57,7 @@ TEST(IsoparametricField, NewtonFindsTheNaturalCoordinatesOfAWarpedHexahedron) {
   for (int k = 0; k < 8; ++k) p += w[k] * v.point(v.cell(0)[k]);
   glm::dvec3 xi = field.centre_guess(0);
   double s = -1;
-  ASSERT_TRUE(field.value(0, p, xi, s));
+  ASSERT_TRUE(field.value(sxi.data(), 0, p, xi, s));
   EXPECT_NEAR(xi.x, target.x, 1e-12);
   EXPECT_NEAR(xi.y, target.y, 1e-12);
   EXPECT_NEAR(xi.z, target.z, 1e-12);
@@ -70,8 +71,8 @@ TEST(ExactRendererIsoparametric, TrilinearFieldInHexahedraMatchesTheClosedForm) 
   set_field(m, "s", [](const glm::dvec3& x) { return x.x * x.y * x.z; });
   const glm::dvec3 C{0.9, 0.5, 0.1};
   const TransferFunction tf({{0.0, C}}, {{0.0, 0.0}, {1.0, 3.0}});
-  const Image iso = ExactRenderer(m.view("s")).render(tf, down_on_unit_square(), 8, 8);
-  const Image tets = ExactRenderer(m.view("s"), CellInterpolation::canonical_tets).render(tf, down_on_unit_square(), 8, 8);
+  const Image iso = test::exact(m, "s", tf, down_on_unit_square(), 8, 8);
+  const Image tets = test::exact(m, "s", tf, down_on_unit_square(), 8, 8, CellInterpolation::canonical_tets);
   double largest_tet_difference = 0.0;
   for (int j = 0; j < 8; ++j)
     for (int i = 0; i < 8; ++i) {
@@ -98,8 +99,8 @@ TEST(ExactRendererIsoparametric, LinearFieldOnATwistedMixedMeshAgreesWithTheTetr
   c.up = {0, 0, 1};
   c.fov_y = 40;
   ExactStats st;
-  const Image iso = ExactRenderer(m.view("s")).render(tf, c, 48, 48, &st);
-  const Image tets = ExactRenderer(m.view("s"), CellInterpolation::canonical_tets).render(tf, c, 48, 48);
+  const Image iso = test::exact(m, "s", tf, c, 48, 48, CellInterpolation::isoparametric, &st);
+  const Image tets = test::exact(m, "s", tf, c, 48, 48, CellInterpolation::canonical_tets);
   EXPECT_EQ(st.newton_failures, 0);
   const ImageDifference d = compare(iso, tets);
   EXPECT_LT(d.max_abs, 1e-6);

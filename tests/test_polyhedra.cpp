@@ -18,9 +18,10 @@
 #include "grid/tetrahedralize.hpp"
 #include "parallel/projection_renderer.hpp"
 #include "projection/projected_cell.hpp"
-#include "projection/screen.hpp"
+#include "view/screen.hpp"
 #include "raycast/order_oracle.hpp"
 #include "raycast/reference_renderer.hpp"
+#include "scene/names.hpp"
 #include "test_util.hpp"
 #include "visibility/split_sorter.hpp"
 
@@ -64,35 +65,13 @@ TransferFunction tf() {  // breakpoints inside cells, a wide range of extinction
                           {{-0.3, 0.3}, {0.2, 3.0}, {0.5, 0.6}, {1.1, 4.0}});
 }
 
-std::vector<Camera> views(int n) {
-  std::vector<Camera> out;
-  for (const Projection projection : {Projection::Orthographic, Projection::Perspective})
-    for (const glm::dvec3& d : sphere_directions(n)) {
-      Camera c;
-      c.projection = projection;
-      c.eye = (projection == Projection::Perspective ? 4.5 : 6.0) * d;
-      c.up = up_for(d);
-      c.height = 3.6;
-      c.fov_y = 45;
-      out.push_back(c);
-    }
-  return out;
-}
+std::vector<Camera> views(int n) { return test::sphere_views(n, 6.0, 4.5, 3.6, 45); }
 
-Camera perspective(const glm::dvec3& eye, const glm::dvec3& target, double fov_y) {
-  Camera c;
-  c.projection = Projection::Perspective;
-  c.eye = eye;
-  c.target = target;
-  c.up = {0, 0, 1};
-  c.fov_y = fov_y;
-  return c;
-}
+using test::perspective;
 
-Image project(const MeshView& mesh, const Camera& c, int size, Tetrahedralize mode, ProjectionStats* st = nullptr) {
-  ProjectionOptions o;
-  o.method = ProjectionMethod::pt_breakpoints;
-  return ProjectionRenderer(mesh, mode).render(tf(), c, size, size, o, st);
+Image project(const Mesh& m, const std::string& field, const Camera& c, int size, Tetrahedralize mode,
+              ProjectionStats* st = nullptr) {
+  return test::project(m, field, tf(), c, size, test::with_method(ProjectionMethod::pt_breakpoints), mode, st);
 }
 
 }  // namespace
@@ -103,11 +82,11 @@ TEST(Polyhedra, ACubeIsOneHexagonOfPolygonsAndExact) {
   affine_field(m);
   for (const Camera& c : views(3)) {
     ProjectionStats st;
-    const Image img = project(m.view("s"), c, 64, Tetrahedralize::problem, &st);
+    const Image img = project(m, "s", c, 64, Tetrahedralize::problem, &st);
     EXPECT_EQ(st.counters.polyhedra, 1);
     EXPECT_EQ(st.tets, 0);
     EXPECT_GE(st.counters.polygons, 3);
-    const Image ref = ExactRenderer(m.view("s"), CellInterpolation::isoparametric).render(tf(), c, 64, 64);
+    const Image ref = test::exact(m, "s", tf(), c, 64, 64, CellInterpolation::isoparametric);
     EXPECT_LT(compare(img, ref).max_abs, 2e-5);
   }
 }
@@ -116,12 +95,11 @@ TEST(Polyhedra, WarpedGridsMatchExactAndSplitOnlyProblemCells) {
   for (int kind = 0; kind < 2; ++kind) {
     Mesh m = kind == 0 ? warped_hexahedra(6) : twisted_mixed(4);
     affine_field(m);
-    const MeshView mesh = m.view("s");
     std::int64_t problem_views = 0;
     for (const Camera& c : views(4)) {
       ProjectionStats st;
-      const Image img = project(mesh, c, 72, Tetrahedralize::problem, &st);
-      const Image ref = ExactRenderer(mesh, CellInterpolation::canonical_tets).render(tf(), c, 72, 72);
+      const Image img = project(m, "s", c, 72, Tetrahedralize::problem, &st);
+      const Image ref = test::exact(m, "s", tf(), c, 72, 72, CellInterpolation::canonical_tets);
       // A pixel centre on an edge seen edge-on may differ by a few 1e-4 (as with every cell split: the
       // tracer and the coverage rule break the tie differently); everywhere else float precision.
       const ImageDifference d = compare(img, ref);
@@ -143,11 +121,11 @@ TEST(Polyhedra, WholeCellsWhereFacesFoldAreWrong) {
   double worst_none = 0, worst_problem = 0;
   for (const Camera& c : views(4)) {
     ProjectionStats st;
-    const Image none = project(m.view("s"), c, 72, Tetrahedralize::none, &st);
+    const Image none = project(m, "s", c, 72, Tetrahedralize::none, &st);
     if (st.problem_cells == 0) continue;
-    const Image ref = ExactRenderer(m.view("s"), CellInterpolation::canonical_tets).render(tf(), c, 72, 72);
+    const Image ref = test::exact(m, "s", tf(), c, 72, 72, CellInterpolation::canonical_tets);
     worst_none = std::max(worst_none, compare(none, ref).max_abs);
-    worst_problem = std::max(worst_problem, compare(project(m.view("s"), c, 72, Tetrahedralize::problem), ref).max_abs);
+    worst_problem = std::max(worst_problem, compare(project(m, "s", c, 72, Tetrahedralize::problem), ref).max_abs);
   }
   EXPECT_GT(worst_none, 20 * worst_problem);
 }
@@ -180,8 +158,8 @@ TEST(Polyhedra, SeamedMeshRendersAsIfStoredWhole) {
   Mesh seamed = test::with_seam(whole, 0.0);
   for (const Camera& c : views(2)) {
     ProjectionStats a, b;
-    const Image wi = project(whole.view("s"), c, 64, Tetrahedralize::problem, &a);
-    const Image si = project(seamed.view("s"), c, 64, Tetrahedralize::problem, &b);
+    const Image wi = project(whole, "s", c, 64, Tetrahedralize::problem, &a);
+    const Image si = project(seamed, "s", c, 64, Tetrahedralize::problem, &b);
     EXPECT_EQ(si.rgba, wi.rgba);
     EXPECT_EQ(b.sort.gap_relations, a.sort.gap_relations);
     EXPECT_EQ(b.cells_split, a.cells_split);
@@ -191,13 +169,14 @@ TEST(Polyhedra, SeamedMeshRendersAsIfStoredWhole) {
 TEST(Polyhedra, OneAndManyThreadsGiveTheSameBits) {
   Mesh m = twisted_mixed(4);
   affine_field(m);
-  const ProjectionRenderer r(m.view("s"));
+  const ProjectionRenderer r(m.view());
+  const double* s = test::field_values(m, "s");
   const Camera c = views(2).back();
   ProjectionOptions o;
   o.batch_cells = 16;
   Image one, many;
-  tbb::task_arena(1).execute([&] { one = r.render(tf(), c, 80, 80, o); });
-  tbb::task_arena(4).execute([&] { many = r.render(tf(), c, 80, 80, o); });
+  tbb::task_arena(1).execute([&] { one = r.render(s, tf(), c, 80, 80, o); });
+  tbb::task_arena(4).execute([&] { many = r.render(s, tf(), c, 80, 80, o); });
   EXPECT_EQ(one.rgba, many.rgba);
 }
 
@@ -210,16 +189,14 @@ TEST(Polyhedra, ExodusHexahedraMatchExact) {
   Mesh m = read_mesh(path);
   const Camera c = perspective({24, -30, 14}, {0, 0, 0}, 40);
   set_field(m, "affine", [](const glm::dvec3& x) { return 0.03 * x.x - 0.02 * x.y + 0.04 * x.z + 0.4; });
-  const Image img = project(m.view("affine"), c, 96, Tetrahedralize::problem);
-  EXPECT_LT(compare(img, ExactRenderer(m.view("affine"), CellInterpolation::canonical_tets).render(tf(), c, 96, 96)).max_abs,
+  const Image img = project(m, "affine", c, 96, Tetrahedralize::problem);
+  EXPECT_LT(compare(img, test::exact(m, "affine", tf(), c, 96, 96, CellInterpolation::canonical_tets)).max_abs,
             5e-5);
   const TransferFunction temp({{293, {0.1, 0.2, 0.9}}, {600, {0.9, 0.9, 0.2}}, {913, {1, 0.2, 0.1}}},
                               {{293, 0.02}, {500, 0.3}, {913, 0.1}});
-  ProjectionOptions o;
-  const MeshView v = m.view("Temp");
-  const Image iso = ExactRenderer(v, CellInterpolation::isoparametric).render(temp, c, 96, 96);
-  const double whole = compare(ProjectionRenderer(v, Tetrahedralize::problem).render(temp, c, 96, 96, o), iso).rmse;
-  const double tets = compare(ProjectionRenderer(v, Tetrahedralize::all).render(temp, c, 96, 96, o), iso).rmse;
+  const Image iso = test::exact(m, "Temp", temp, c, 96, 96, CellInterpolation::isoparametric);
+  const double whole = compare(test::project(m, "Temp", temp, c, 96, {}, Tetrahedralize::problem), iso).rmse;
+  const double tets = compare(test::project(m, "Temp", temp, c, 96, {}, Tetrahedralize::all), iso).rmse;
   EXPECT_LE(whole, 1.05 * tets);
   EXPECT_LT(whole, 0.02);
 }
@@ -231,11 +208,11 @@ TEST(Polyhedra, LookedUpSubdivisionsGiveTheGeneralPathsBits) {
   for (int kind = 0; kind < 2; ++kind) {
     Mesh m = kind == 0 ? warped_hexahedra(6) : generate("swirl", 6);
     affine_field(m);
-    const MeshView mesh = m.view("s");
+    const MeshView mesh = m.view();
     const RecentredPoints pts = recentre(mesh);
     for (const Camera& c : views(2)) {
       const PixelRays rays(recentred(c, pts.centre), 200, 200);
-      const ScreenPoints screen = project_points(pts, mesh.scalar, rays);
+      const ScreenPoints screen = project_points(pts, test::field_values(m, "s"), rays);
       SubdivisionCache cache;
       std::int64_t cells = 0;
       for (std::int64_t cell = 0; cell < mesh.n_cells; ++cell) {
@@ -261,10 +238,10 @@ TEST(Polyhedra, CameraInsideAWarpedGridRayCastsTheSplitCellsAroundTheEye) {
   affine_field(m);
   const Camera c = perspective({0.05, -0.1, 0.02}, {0.6, 0.9, 0.3}, 70);
   ProjectionStats st;
-  const Image img = project(m.view("s"), c, 64, Tetrahedralize::problem, &st);
+  const Image img = project(m, "s", c, 64, Tetrahedralize::problem, &st);
   EXPECT_GT(st.counters.behind_eye, 0);
   EXPECT_GT(st.cells_split, 0);
-  const Image ref = ExactRenderer(m.view("s"), CellInterpolation::canonical_tets).render(tf(), c, 64, 64);
+  const Image ref = test::exact(m, "s", tf(), c, 64, 64, CellInterpolation::canonical_tets);
   const ImageDifference d = compare(img, ref);
   EXPECT_LT(d.rmse, 2e-5);
   EXPECT_LT(d.max_abs, 1e-3);

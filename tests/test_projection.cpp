@@ -10,33 +10,22 @@
 #include "parallel/projection_renderer.hpp"
 #include "projection/projected_tet.hpp"
 #include "raycast/reference_renderer.hpp"
+#include "scene/names.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
 
 namespace {
 
-Camera view_from(const glm::dvec3& eye, Projection projection, double height = 3.0) {
-  Camera c;
-  c.projection = projection;
-  c.eye = eye;
-  c.target = {0, 0, 0};
-  c.up = std::abs(glm::normalize(eye).z) > 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
-  c.height = height;
-  c.fov_y = 40;
-  return c;
-}
+using test::view_from;
 
 Image project(const Mesh& m, const TransferFunction& tf, const Camera& c, int size, ProjectionMethod method,
               ProjectionStats* stats = nullptr, SortMethod sort = SortMethod::automatic) {
-  ProjectionOptions o;
-  o.method = method;
-  o.sort = sort;
-  return ProjectionRenderer(m.view(m.fields.front().name)).render(tf, c, size, size, o, stats);
+  return test::project(m, "", tf, c, size, test::with_method(method, sort), Tetrahedralize::problem, stats);
 }
 
 Image exact(const Mesh& m, const TransferFunction& tf, const Camera& c, int size) {
-  return ExactRenderer(m.view(m.fields.front().name), CellInterpolation::canonical_tets).render(tf, c, size, size);
+  return test::exact(m, "", tf, c, size, size, CellInterpolation::canonical_tets);
 }
 
 // A transfer function with a step, kinks and a wide range of extinction.
@@ -135,7 +124,7 @@ TEST(Projection, UniformSlabHasNoSeams) {
     // The same pixel-cell pairs as the exact renderer's ray traversal, which counts every cell a
     // centre's ray crosses exactly once, rays along faces and edges included.
     ExactStats es;
-    ExactRenderer(m.view("s"), CellInterpolation::canonical_tets).render(tf, down, 36, 36, &es);
+    test::exact(m, "s", tf, down, 36, 36, CellInterpolation::canonical_tets, &es);
     EXPECT_EQ(st.counters.fragments, es.segments);
     int inside = 0;
     for (int j = 0; j < 36; ++j)
@@ -160,10 +149,11 @@ TEST(Projection, OneAndManyThreadsGiveTheSameBits) {
     ProjectionOptions o;
     o.method = method;
     o.batch_cells = 64;  // many tokens in flight
-    const ProjectionRenderer r(m.view("s"));
+    const ProjectionRenderer r(m.view());
+    const double* s = test::field_values(m, "s");
     Image one, many;
-    tbb::task_arena(1).execute([&] { one = r.render(tf, c, 100, 100, o); });
-    tbb::task_arena(4).execute([&] { many = r.render(tf, c, 100, 100, o); });
+    tbb::task_arena(1).execute([&] { one = r.render(s, tf, c, 100, 100, o); });
+    tbb::task_arena(4).execute([&] { many = r.render(s, tf, c, 100, 100, o); });
     ASSERT_EQ(one.rgba.size(), many.rgba.size());
     EXPECT_EQ(one.rgba, many.rgba) << name_of(method);
   }
@@ -179,7 +169,7 @@ TEST(Projection, HexahedraAreSplitCanonically) {
   const TransferFunction tf = hard_tf();
   const Camera c = view_from({2.5, -2, 1.8}, Projection::Perspective);
   ProjectionStats st;
-  const Image img = ProjectionRenderer(m.view("s"), Tetrahedralize::all).render(tf, c, 80, 80, {}, &st);
+  const Image img = test::project(m, "s", tf, c, 80, {}, Tetrahedralize::all, &st);
   EXPECT_EQ(st.cells_split, 64);
   EXPECT_EQ(st.tets, 64 * 6);
   EXPECT_LT(compare(img, exact(m, tf, c, 80)).max_abs, 2e-5);
@@ -316,11 +306,12 @@ TEST(Projection, HugeCellsAreCompositedDirectlyInOrder) {
   const Camera c = view_from({0.9, -1.7, 1.2}, Projection::Perspective);  // close: the box fills the image
   ProjectionOptions o;
   o.method = ProjectionMethod::pt_breakpoints;
-  const ProjectionRenderer r(m.view("s"));
+  const ProjectionRenderer r(m.view());
+  const double* s = test::field_values(m, "s");
   Image one, many;
   ProjectionStats st;
-  tbb::task_arena(1).execute([&] { one = r.render(tf, c, 1200, 1200, o, &st); });
-  tbb::task_arena(3).execute([&] { many = r.render(tf, c, 1200, 1200, o); });
+  tbb::task_arena(1).execute([&] { one = r.render(s, tf, c, 1200, 1200, o, &st); });
+  tbb::task_arena(3).execute([&] { many = r.render(s, tf, c, 1200, 1200, o); });
   EXPECT_GT(st.counters.direct_cells, 0);
   EXPECT_LT(st.counters.direct_cells, st.tets);  // and the others buffered, interleaved in order
   EXPECT_EQ(one.rgba, many.rgba);

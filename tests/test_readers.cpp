@@ -5,7 +5,7 @@
 
 #include <gtest/gtest.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
 #include "grid/write_mesh.hpp"

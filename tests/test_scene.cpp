@@ -3,12 +3,12 @@
 
 #include <gtest/gtest.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/write_mesh.hpp"
 #include "test_util.hpp"
 #include "tools/memory_budget.hpp"
-#include "tools/scene.hpp"
-#include "tools/scene_setup.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/prepare.hpp"
 
 using namespace cellproj;
 

@@ -3,8 +3,9 @@
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "optics/transfer_function.hpp"
+#include "scene/transfer_function_json.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;

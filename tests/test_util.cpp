@@ -49,4 +49,69 @@ Mesh with_seam(const Mesh& m, double x) {
   return s;
 }
 
+Camera looking_down(double height, const glm::dvec3& target) {
+  Camera c;
+  c.eye = target + glm::dvec3(0, 0, 5);
+  c.target = target;
+  c.height = height;
+  return c;
+}
+
+Camera view_from(const glm::dvec3& eye, Projection projection, double height, double fov_y) {
+  Camera c;
+  c.projection = projection;
+  c.eye = eye;
+  c.target = {0, 0, 0};
+  c.up = std::abs(glm::normalize(eye).z) > 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
+  c.height = height;
+  c.fov_y = fov_y;
+  return c;
+}
+
+Camera perspective(const glm::dvec3& eye, const glm::dvec3& target, double fov_y) {
+  Camera c;
+  c.projection = Projection::Perspective;
+  c.eye = eye;
+  c.target = target;
+  c.up = {0, 0, 1};
+  c.fov_y = fov_y;
+  return c;
+}
+
+std::vector<Camera> sphere_views(int n, double ortho_distance, double persp_distance, double height, double fov_y) {
+  std::vector<Camera> out;
+  for (const Projection projection : {Projection::Orthographic, Projection::Perspective})
+    for (const glm::dvec3& d : sphere_directions(n)) {
+      Camera c;
+      c.projection = projection;
+      c.eye = (projection == Projection::Perspective ? persp_distance : ortho_distance) * d;
+      c.up = up_for(d);
+      c.height = height;
+      c.fov_y = fov_y;
+      out.push_back(c);
+    }
+  return out;
+}
+
+const double* field_values(const Mesh& m, const std::string& field) {
+  return (field.empty() ? m.fields.at(0) : m.field(field)).values.data();
+}
+
+Image project(const Mesh& m, const std::string& field, const TransferFunction& tf, const Camera& c, int size,
+              const ProjectionOptions& options, Tetrahedralize mode, ProjectionStats* stats) {
+  return ProjectionRenderer(m.view(), mode).render(field_values(m, field), tf, c, size, size, options, stats);
+}
+
+Image exact(const Mesh& m, const std::string& field, const TransferFunction& tf, const Camera& c, int width, int height,
+            CellInterpolation interpolation, ExactStats* stats) {
+  return ExactRenderer(m.view()).render(field_values(m, field), tf, c, width, height, interpolation, stats);
+}
+
+ProjectionOptions with_method(ProjectionMethod method, SortMethod sort) {
+  ProjectionOptions o;
+  o.method = method;
+  o.sort = sort;
+  return o;
+}
+
 }  // namespace cellproj::test

@@ -1,11 +1,16 @@
 #pragma once
-// Helpers shared by the tests: small meshes with analytic answers, temporary folders.
+// Helpers shared by the tests: small meshes with analytic answers, temporary folders, cameras,
+// and one call per renderer over a Mesh's field.
 #include <cmath>
 #include <filesystem>
 #include <string>
+#include <vector>
 
 #include "grid/generate.hpp"
 #include "optics/transfer_function.hpp"
+#include "parallel/projection_renderer.hpp"
+#include "raycast/reference_renderer.hpp"
+#include "view/camera.hpp"
 
 namespace cellproj::test {
 
@@ -26,6 +31,24 @@ inline TransferFunction constant_tf(double kappa, glm::dvec3 rgb) {
 }
 
 inline std::string shared_data(const std::string& rel) { return std::string(CELLPROJ_SHARED_DATA) + "/" + rel; }
+
+// Orthographic from +z onto `target`, the image `height` units tall (x to the right, y up).
+Camera looking_down(double height, const glm::dvec3& target = {0, 0, 0});
+// From `eye` at the origin, up along z (x when looking nearly vertically).
+Camera view_from(const glm::dvec3& eye, Projection projection, double height = 3.0, double fov_y = 40.0);
+Camera perspective(const glm::dvec3& eye, const glm::dvec3& target, double fov_y);  // up along z
+// n directions over the sphere, each orthographic from `ortho_distance` and perspective from
+// `persp_distance` (height and fov_y as given).
+std::vector<Camera> sphere_views(int n, double ortho_distance, double persp_distance, double height, double fov_y);
+
+// The mesh's point field `field` (its only one when empty), rendered by the stage's renderer.
+const double* field_values(const Mesh& m, const std::string& field = "");
+Image project(const Mesh& m, const std::string& field, const TransferFunction& tf, const Camera& c, int size,
+              const ProjectionOptions& options = {}, Tetrahedralize mode = Tetrahedralize::problem,
+              ProjectionStats* stats = nullptr);
+Image exact(const Mesh& m, const std::string& field, const TransferFunction& tf, const Camera& c, int width, int height,
+            CellInterpolation interpolation = CellInterpolation::isoparametric, ExactStats* stats = nullptr);
+ProjectionOptions with_method(ProjectionMethod method, SortMethod sort = SortMethod::automatic);
 
 }  // namespace cellproj::test
 

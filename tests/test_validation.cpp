@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/geometry.hpp"
 #include "grid/overlaps.hpp"
 #include "grid/tetrahedralize.hpp"
@@ -43,7 +43,12 @@ TEST(Validation, ErrorsNameTheFileAndTheElement) {
   EXPECT_NE(error_of(m.view()).find("point 1 has a non-finite coordinate (y"), std::string::npos);
   m = unit_tet();
   m.fields[0].values[2] = INFINITY;
-  EXPECT_NE(error_of(m.view("s")).find("field 's' is not finite at point 2"), std::string::npos);
+  try {
+    check_finite(m.source, m.fields[0]);
+    ADD_FAILURE() << "a non-finite field value passed";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("t.vtu: field 's' is not finite at point 2"), std::string::npos) << e.what();
+  }
   m = unit_tet();
   m.types[0] = 24;  // quadratic tetra
   EXPECT_NE(error_of(m.view()).find("quadratic_tetra (24): 1 cells (first: cell 0)"), std::string::npos);

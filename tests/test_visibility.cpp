@@ -17,6 +17,7 @@
 #include "grid/topology.hpp"
 #include "grid/validate.hpp"
 #include "raycast/order_oracle.hpp"
+#include "scene/names.hpp"
 #include "test_util.hpp"
 #include "visibility/sort.hpp"
 
@@ -405,7 +406,7 @@ TEST(Visibility, CombTetsViolationsAllCrossItsInvertedCells) {
     std::vector<std::int64_t> position(r.order.size());
     for (std::size_t k = 0; k < r.order.size(); ++k) position[r.order[k]] = static_cast<std::int64_t>(k);
     std::atomic<std::int64_t> bad{0}, explained{0};
-    s.tracer->trace(c, 256, 256, [&](int, int, const Ray&, const RaySegment* seg, std::size_t n) {
+    s.tracer->trace(c, 256, 256, nullptr, [&](int, int, const Ray&, const RaySegment* seg, std::size_t n) {
       bool wrong = false, near_folded = false;
       for (std::size_t a = 0; a < n; ++a)
         for (std::size_t b = a + 1; b < n; ++b)

@@ -2,7 +2,7 @@
 #include <cstdio>
 #include <filesystem>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/generate.hpp"
 #include "grid/write_mesh.hpp"
 #include "tools/commands.hpp"

@@ -11,7 +11,7 @@
 #include "grid/overlaps.hpp"
 #include "grid/topology.hpp"
 #include "tools/commands.hpp"
-#include "tools/scene_setup.hpp"
+#include "scene/prepare.hpp"
 
 namespace cellproj {
 namespace {

@@ -11,13 +11,14 @@
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/read_mesh.hpp"
 #include "raycast/order_oracle.hpp"
 #include "tools/commands.hpp"
 #include "tools/timing.hpp"
-#include "tools/scene.hpp"
-#include "tools/scene_setup.hpp"
+#include "scene/names.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/prepare.hpp"
 #include "visibility/sort.hpp"
 #include "visibility/split_sorter.hpp"
 
@@ -86,7 +87,7 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
       if (v.mesh->cells.connectivity != mesh.view().connectivity) split_tracer = std::make_unique<CellRayTracer>(v.mesh->cells);
       const OrderCheck k = check_order(split_tracer ? *split_tracer : *tracer, v.mesh->cells.n_cells, r.order, camera, w, h);
       if (k.missing_cells || k.repeated_cells)
-        throw std::logic_error(std::string(name_of(method)) + " dropped or repeated cells");  // a bug, exit 3
+        throw InternalError(std::string(name_of(method)) + " dropped or repeated cells");  // a bug, exit 3
       violations += k.violations, violating_pixels += k.violating_pixels, overlapping_pixels += k.overlapping_pixels;
       violating_clear += k.violating_pixels_without_overlap;
     }
@@ -165,10 +166,10 @@ int run_sortbench(const SortbenchArgs& a) {
   int w = 0, h = 0;
   parse_size(a.size, w, h);
   std::vector<SortMethod> methods;
-  for (const auto& s : split(a.sorts)) methods.push_back(sort_method_from_name(s));
+  for (const auto& s : split(a.sorts)) methods.push_back(parse_sort_method(s));
   if (methods.empty()) throw InputError("--sorts: no sort named; known: " + sort_method_names());
-  const Tetrahedralize tetrahedralize = tetrahedralize_from_name(a.tetrahedralize);
-  const GapMethod gaps = gap_method_from_name(a.gaps);
+  const Tetrahedralize tetrahedralize = parse_tetrahedralize(a.tetrahedralize);
+  const GapMethod gaps = parse_gap_method(a.gaps);
   std::vector<Projection> projections;
   if (a.projection == "ortho" || a.projection == "both") projections.push_back(Projection::Orthographic);
   if (a.projection == "persp" || a.projection == "both") projections.push_back(Projection::Perspective);

@@ -4,7 +4,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "tools/commands.hpp"
 
 int main(int argc, char** argv) {

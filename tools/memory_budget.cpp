@@ -6,23 +6,9 @@
 #include <fstream>
 #include <sstream>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
-
-std::uint64_t estimate_render_bytes(const RenderFootprint& f) {
-  const std::uint64_t pixels = static_cast<std::uint64_t>(f.width) * static_cast<std::uint64_t>(f.height);
-  // Image: float RGBA, plus the copy kept for output; 8-bit PNG rows.
-  std::uint64_t bytes = pixels * (16 * 2 + 4);
-  // Per point: coordinates (twice: recentred), screen positions, optics or isoparametric data.
-  bytes += static_cast<std::uint64_t>(f.points) * 120;
-  // Per tetrahedron: connectivity, faces and neighbours, sorter planes and centroids (projection),
-  // or the tracer's planes and tile bins (exact).
-  bytes += static_cast<std::uint64_t>(f.tets) * (f.exact ? 400 : 320);
-  // Fragment buffers: up to two tokens per thread of ~6M fragments of 20 bytes (parallel/), on
-  // 2 cores; triangle buffers and thread stacks.
-  return bytes + (576ull << 20);
-}
 
 namespace {
 // The integers of attribute `name` (e.g. NumberOfPoints="12") at every occurrence in `xml`.

@@ -1,21 +1,11 @@
 #pragma once
 // Memory a render will need, estimated before anything large is allocated, so that a request
-// beyond the machine is refused with a message instead of the process being killed.
+// beyond the machine is refused with a message instead of the process being killed. Each renderer
+// estimates its own frame (Renderer::estimate_bytes); this adds reading the mesh.
 #include <cstdint>
 #include <string>
 
 namespace cellproj {
-
-struct RenderFootprint {
-  std::int64_t width = 0, height = 0;
-  std::int64_t points = 0, cells = 0;
-  std::int64_t tets = 0;  // cells after the canonical split (an upper bound: 6 per hexahedron)
-  bool exact = false;
-};
-
-// Bytes: the float image (and its copy), per-point and per-tetrahedron working arrays of the
-// chosen renderer, and a fixed allowance for fragment buffers. Deliberately generous.
-std::uint64_t estimate_render_bytes(const RenderFootprint& f);
 
 // Points and cells of a VTK XML file (.vtu, .vts) read from its header alone, before the file is
 // loaded; {0, 0} for other formats or when the header does not say.

@@ -4,9 +4,8 @@
 #include <cmath>
 
 #include <glm/geometric.hpp>
-#include <nlohmann/json.hpp>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
 namespace {
@@ -14,12 +13,6 @@ namespace {
 constexpr double kPi = 3.14159265358979323846;
 
 bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z); }
-
-glm::dvec3 vec3(const nlohmann::json& j, const std::string& at) {
-  if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
-    throw InputError(at + ": expected [x, y, z], got " + j.dump());
-  return {j[0].get<double>(), j[1].get<double>(), j[2].get<double>()};
-}
 
 }  // namespace
 
@@ -35,16 +28,6 @@ void check_camera(const Camera& c, const std::string& source) {
     throw InputError(at + ": height must be positive for an orthographic camera, got " + std::to_string(c.height));
   if (c.projection == Projection::Perspective && !(c.fov_y > 0.0 && c.fov_y < 180.0))
     throw InputError(at + ": fov_y must be in (0, 180) degrees, got " + std::to_string(c.fov_y));
-}
-
-Camera orbit(const Camera& c, double degrees) {
-  const glm::dvec3 axis = glm::normalize(c.up);
-  const double a = degrees * kPi / 180.0;
-  const glm::dvec3 v = c.eye - c.target;  // Rodrigues' rotation about the up axis
-  const glm::dvec3 r = v * std::cos(a) + glm::cross(axis, v) * std::sin(a) + axis * glm::dot(axis, v) * (1 - std::cos(a));
-  Camera out = c;
-  out.eye = c.target + r;
-  return out;
 }
 
 Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, Projection projection, const glm::dvec3& from,
@@ -74,30 +57,6 @@ std::vector<glm::dvec3> sphere_directions(int n) {
 
 glm::dvec3 up_for(const glm::dvec3& from) {
   return std::abs(glm::normalize(from).z) > 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
-}
-
-Camera camera_from_json(const nlohmann::json& j, const std::string& source) {
-  const std::string at = source + ": camera";
-  if (!j.is_object()) throw InputError(at + ": expected an object");
-  Camera c;
-  for (const auto& [k, v] : j.items()) {
-    if (k == "projection") {
-      const std::string p = v.is_string() ? v.get<std::string>() : "";
-      if (p == "orthographic") c.projection = Projection::Orthographic;
-      else if (p == "perspective") c.projection = Projection::Perspective;
-      else throw InputError(at + ".projection: expected \"orthographic\" or \"perspective\", got " + v.dump());
-    } else if (k == "eye") c.eye = vec3(v, at + ".eye");
-    else if (k == "target") c.target = vec3(v, at + ".target");
-    else if (k == "up") c.up = vec3(v, at + ".up");
-    else if (k == "height" || k == "fov_y") {
-      if (!v.is_number()) throw InputError(at + "." + k + ": expected a number, got " + v.dump());
-      (k == "height" ? c.height : c.fov_y) = v.get<double>();
-    } else {
-      throw InputError(at + ": unknown key '" + k + "' (known: projection, eye, target, up, height, fov_y)");
-    }
-  }
-  check_camera(c, source);
-  return c;
 }
 
 PixelRays::PixelRays(const Camera& c, int width, int height) : camera_(c), width_(width), height_(height) {

@@ -6,7 +6,6 @@
 #include <vector>
 
 #include <glm/vec3.hpp>
-#include <nlohmann/json_fwd.hpp>
 
 namespace cellproj {
 
@@ -23,9 +22,6 @@ struct Camera {
 // direction or zero, a non-positive height, a field of view outside (0, 180), non-finite values.
 void check_camera(const Camera& camera, const std::string& source);
 
-// The camera turned by `degrees` about the up axis through the target (for --frames).
-Camera orbit(const Camera& camera, double degrees);
-
 // The same camera in a frame whose origin is `centre` (the frame of RecentredPoints).
 inline Camera recentred(Camera camera, const glm::dvec3& centre) {
   camera.eye -= centre;
@@ -41,8 +37,6 @@ Camera frame_box(const glm::dvec3& lo, const glm::dvec3& hi, Projection projecti
 std::vector<glm::dvec3> sphere_directions(int n);
 // An up vector not parallel to `from` (z, or x when `from` is nearly vertical).
 glm::dvec3 up_for(const glm::dvec3& from);
-
-Camera camera_from_json(const nlohmann::json& j, const std::string& source);
 
 struct Ray {
   glm::dvec3 origin, dir;  // dir has unit length; t along it is world distance from the origin

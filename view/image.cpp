@@ -9,7 +9,7 @@
 
 #include <png.h>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
 

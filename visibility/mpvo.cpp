@@ -1,6 +1,8 @@
 // Williams' MPVO (MWSC section 3.1): a relation across every shared face from the side the
 // viewpoint is on, then Kahn's topological sort; visibility cycles found and broken.
 #include <algorithm>
+
+#include "base/error.hpp"
 #include <cmath>
 #include <limits>
 #include <stdexcept>
@@ -121,7 +123,7 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
   std::vector<char> inside(gaps ? static_cast<std::size_t>(n) : 0, 0);  // the cells of the cycle at hand
   while (static_cast<std::int64_t>(order.size()) < n) {
     const std::vector<std::int64_t> cells = breaker.next_cycle(emitted);
-    if (cells.empty()) throw std::logic_error("topological sort stalled without a visibility cycle");
+    if (cells.empty()) throw InternalError("topological sort stalled without a visibility cycle");
     VisibilityCycle cycle;
     cycle.size = static_cast<std::int64_t>(cells.size());
     double farthest = -std::numeric_limits<double>::infinity();

@@ -22,9 +22,6 @@ enum class SortMethod {
   pairwise,      // Newell-Newell-Sancha for polyhedra: exact occlusion tests between all overlapping cells
   automatic,     // mpvo on a convex boundary, mpvo-abuffer otherwise
 };
-SortMethod sort_method_from_name(const std::string& name);  // throws InputError listing the names
-const char* name_of(SortMethod method);
-std::string sort_method_names();
 
 // A visibility cycle met by the topological sort: the cells of one strongly connected component
 // (at most kMaxCycleCells listed), and the cell whose remaining relations were dropped to go on.
@@ -44,9 +41,6 @@ enum class GapMethod : std::uint8_t {
   overlaps,   // from the boundary faces' overlaps in the image, per pair of faces (visibility/overlap_gaps.cpp)
   abuffer,    // from the software A-buffer at the pixel centres (visibility/abuffer.cpp)
 };
-GapMethod gap_method_from_name(const std::string& name);  // throws InputError listing the names
-const char* name_of(GapMethod method);
-std::string gap_method_names();
 
 struct SortStats {
   SortMethod method = SortMethod::centroid;  // the method that ran (auto resolved)

@@ -11,21 +11,13 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
-#include "grid/error.hpp"
-#include "grid/name_table.hpp"
+#include "base/error.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "visibility/image_faces.hpp"
 
 namespace cellproj {
 namespace {
 
-constexpr std::pair<SortMethod, const char*> kNames[] = {{SortMethod::automatic, "auto"},
-                                 {SortMethod::centroid, "centroid"},
-                                 {SortMethod::mpvo, "mpvo"},
-                                 {SortMethod::mpvo_abuffer, "mpvo-abuffer"},
-                                 {SortMethod::pairwise, "pairwise"}};
-constexpr std::pair<GapMethod, const char*> kGapNames[] = {
-    {GapMethod::automatic, "auto"}, {GapMethod::overlaps, "overlaps"}, {GapMethod::abuffer, "abuffer"}};
 
 // A face's normal (outward for the cell listing it in this order) and a point of its plane.
 // Triangles take their normal from the vertices in increasing id and their centroid, so both cells
@@ -124,12 +116,6 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
 
 }  // namespace
 
-SortMethod sort_method_from_name(const std::string& name) { return from_name(kNames, name, "sort"); }
-const char* name_of(SortMethod method) { return name_in(kNames, method); }
-std::string sort_method_names() { return names(kNames); }
-GapMethod gap_method_from_name(const std::string& name) { return from_name(kGapNames, name, "gap method"); }
-const char* name_of(GapMethod method) { return name_in(kGapNames, method); }
-std::string gap_method_names() { return names(kGapNames); }
 
 VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& topo, const HullReport& hull,
                                    std::shared_ptr<const RecentredPoints> points, const VisibilitySorter* whole,

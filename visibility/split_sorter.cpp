@@ -4,16 +4,9 @@
 
 #include <glm/geometric.hpp>
 
-#include "grid/name_table.hpp"
 #include "grid/split_topology.hpp"
 
 namespace cellproj {
-namespace {
-
-constexpr std::pair<Tetrahedralize, const char*> kModes[] = {
-    {Tetrahedralize::problem, "problem"}, {Tetrahedralize::all, "all"}, {Tetrahedralize::none, "none"}};
-
-}  // namespace
 
 Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre) {
   const Camera c = recentred(camera, centre);
@@ -24,9 +17,6 @@ Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre) {
   return v;
 }
 
-Tetrahedralize tetrahedralize_from_name(const std::string& name) { return from_name(kModes, name, "--tetrahedralize"); }
-const char* name_of(Tetrahedralize mode) { return name_in(kModes, mode); }
-std::string tetrahedralize_names() { return names(kModes); }
 
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points,

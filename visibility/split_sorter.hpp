@@ -21,9 +21,6 @@ enum class Tetrahedralize {
   all,      // every cell that is not a tetrahedron, once per mesh
   none,     // never: whole cells even where a ray crosses one twice (order and picture may be wrong there)
 };
-Tetrahedralize tetrahedralize_from_name(const std::string& name);  // throws InputError listing the names
-const char* name_of(Tetrahedralize mode);
-std::string tetrahedralize_names();
 
 // Where a camera looks from, in the frame of points recentred on `centre` (RecentredPoints): what
 // CellFolds::problem_cells takes.

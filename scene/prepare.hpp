@@ -6,7 +6,7 @@
 
 #include "grid/read_mesh.hpp"
 #include "optics/transfer_function.hpp"
-#include "tools/scene.hpp"
+#include "scene/scene_file.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {

@@ -1,9 +1,9 @@
-#include "tools/scene.hpp"
+#include "scene/scene_file.hpp"
 
 #include <filesystem>
 #include <fstream>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace fs = std::filesystem;
 

@@ -5,7 +5,7 @@
 #include <string>
 #include <utility>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 
 namespace cellproj {
 

@@ -7,6 +7,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grid/read_mesh.hpp"
+#include "scene/camera_json.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {

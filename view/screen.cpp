@@ -1,4 +1,4 @@
-#include "projection/screen.hpp"
+#include "view/screen.hpp"
 
 #include <atomic>
 

@@ -6,10 +6,14 @@
 #include <vector>
 
 #include "grid/geometry.hpp"
-#include "projection/projected_tet.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {
+
+// A point (a cell's vertex) in the image: pixel position x, y, view depth z, scalar s.
+struct ScreenVertex {
+  double x, y, z, s;
+};
 
 // One 32-byte record per point, since a tetrahedron gathers all four values of each of its vertices.
 struct ScreenPoints {

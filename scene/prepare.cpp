@@ -1,12 +1,13 @@
-#include "tools/scene_setup.hpp"
+#include "scene/prepare.hpp"
 
 #include <algorithm>
 
 #include <glm/common.hpp>
 #include <limits>
 
-#include "grid/error.hpp"
+#include "base/error.hpp"
 #include "grid/validate.hpp"
+#include "scene/transfer_function_json.hpp"
 
 namespace cellproj {
 

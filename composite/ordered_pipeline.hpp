@@ -1,0 +1,106 @@
+#pragma once
+// The ordered batch pipeline (MWSC section 7, on oneTBB): items already in visibility order (cells,
+// slice polygons, splats) are cut into batches; worker threads turn batches into fragments in
+// parallel, and one compositor blends the batches in order, "over", onto the image. Compositing
+// runs in the order alone, so 1 and N threads give the same image bit for bit.
+#include <algorithm>
+#include <cstddef>
+#include <utility>
+#include <vector>
+
+#include <tbb/concurrent_queue.h>
+#include <tbb/parallel_pipeline.h>
+#include <tbb/task_arena.h>
+
+#include "composite/fragment.hpp"
+#include "view/image.hpp"
+
+namespace cellproj {
+
+// What turns the k-th item of the order into fragments. A Source provides
+//   Scratch   per-token working memory, kept from batch to batch (default-constructible);
+//   Counters  per-batch counts, value-initialised, merged with `void add(const Counters&)`;
+//   void fragments(std::size_t k, std::vector<Fragment>& out, Scratch&, Counters&) const
+//             appends item k's fragments (called from many threads at once);
+//   void composite(std::size_t k, Image& image, Scratch&, Counters&) const
+//             draws item k straight onto the image, "over" (called in order from the compositor).
+struct PipelineLimits {
+  std::size_t batch_items = 0;      // items per token; 0: about 16 tokens per thread, 64 to 2048
+  double batch_pixels = 5e6;        // a token also closes once its items' footprints add up to this
+  double direct_pixels = 1e6;       // an item covering more is not buffered: the compositor draws it
+};
+
+// Items per token: the limit, or enough tokens to keep every thread busy on small inputs (a few
+// large cells cover most pixels there) without per-token overhead on large ones.
+inline std::size_t batch_size(std::size_t option, std::size_t items) {
+  if (option > 0) return option;
+  const std::size_t per = items / (16 * static_cast<std::size_t>(tbb::this_task_arena::max_concurrency()));
+  return std::clamp<std::size_t>(per, 64, 2048);
+}
+
+// Composites items [0, n) of the order onto `image`; footprint(k) is the number of pixels item k
+// may cover (its image bounding box). Threads: those of the calling task arena. Returns the sum of
+// the batches' counters.
+template <class Source, class Footprint>
+typename Source::Counters composite_in_order(Image& image, std::size_t n, const Footprint& footprint,
+                                             const PipelineLimits& limits, const Source& source) {
+  struct Batch {
+    std::size_t begin = 0, end = 0;
+    std::vector<Fragment> fragments;
+    // The items left to the compositor: (position in the order, fragments emitted before it).
+    std::vector<std::pair<std::size_t, std::size_t>> direct;
+    typename Source::Counters counters{};
+    typename Source::Scratch scratch{};
+  };
+  typename Source::Counters total{};
+  const std::size_t batch = batch_size(limits.batch_items, n);
+  const int tokens = 2 * tbb::this_task_arena::max_concurrency();
+  std::vector<Batch> batches(static_cast<std::size_t>(tokens));
+  tbb::concurrent_bounded_queue<Batch*> free;  // batches are reused, keeping their fragment buffers
+  for (auto& b : batches) free.push(&b);
+  std::size_t next = 0;
+  auto cut = [&](tbb::flow_control& fc) -> Batch* {
+    if (next >= n) {
+      fc.stop();
+      return nullptr;
+    }
+    Batch* b = nullptr;
+    free.pop(b);
+    b->begin = next;
+    double pixels = 0;
+    for (const std::size_t last = std::min(n, next + batch); next < last && pixels < limits.batch_pixels; ++next) {
+      const double a = footprint(next);
+      if (a <= limits.direct_pixels) pixels += a;
+    }
+    b->end = next;
+    return b;
+  };
+  auto project = [&](Batch* b) {
+    b->fragments.clear();
+    b->direct.clear();
+    b->counters = {};
+    for (std::size_t k = b->begin; k < b->end; ++k) {
+      if (footprint(k) > limits.direct_pixels) b->direct.emplace_back(k, b->fragments.size());
+      else source.fragments(k, b->fragments, b->scratch, b->counters);
+    }
+    return b;
+  };
+  auto blend = [&](Batch* b) {
+    std::size_t done = 0;  // fragments composited; the direct items go in between, in order
+    for (const auto& [k, at] : b->direct) {
+      composite_over(image, b->fragments.data() + done, at - done);
+      done = at;
+      source.composite(k, image, b->scratch, b->counters);
+    }
+    composite_over(image, b->fragments.data() + done, b->fragments.size() - done);
+    total.add(b->counters);
+    free.push(b);
+  };
+  tbb::parallel_pipeline(static_cast<std::size_t>(tokens),
+                         tbb::make_filter<void, Batch*>(tbb::filter_mode::serial_in_order, cut) &
+                             tbb::make_filter<Batch*, Batch*>(tbb::filter_mode::parallel, project) &
+                             tbb::make_filter<Batch*, void>(tbb::filter_mode::serial_in_order, blend));
+  return total;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,17 @@
+#pragma once
+// The OpenGL back ends' frame: triangles made by parallel workers, drawn in visibility order by the
+// one thread that owns the context (projection/gl_compositor).
+#include <cstdint>
+#include <vector>
+
+#include "grid/mesh.hpp"
+#include "parallel/projection_renderer.hpp"
+
+namespace cellproj {
+
+// Counts into st.counters and names the GL renderer in st.gl_renderer.
+Image draw_with_opengl(const CellFragments& project, const MeshView& cells, const std::vector<std::int64_t>& order,
+                       const OpacityTable* table, int width, int height, const ProjectionOptions& options,
+                       ProjectionStats& st);
+
+}  // namespace cellproj

@@ -1,0 +1,173 @@
+#include "render/renderer.hpp"
+
+#include <chrono>
+
+#include "base/error.hpp"
+#include "grid/tetrahedralize.hpp"
+
+namespace cellproj {
+namespace {
+
+double since(std::chrono::steady_clock::time_point t) {
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+
+// Bytes every renderer needs: the float image and its copy kept for output, 8-bit PNG rows, and
+// a fixed allowance for triangle and fragment buffers and thread stacks.
+std::uint64_t common_bytes(ImageSize size) {
+  const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
+  return pixels * (16 * 2 + 4) + (576ull << 20);
+}
+
+// Runs `prepare` and adds its time to the report when it made a preparation.
+template <class Prepare>
+void timed_preparation(const Volume& volume, RenderReport* report, Prepare&& prepare) {
+  const int before = volume.preparations();
+  const auto t = std::chrono::steady_clock::now();
+  prepare();
+  if (report && volume.preparations() != before) report->prepare_seconds += since(t);
+}
+
+class ProjectionMode final : public Renderer {
+ public:
+  ProjectionMode(const ProjectionOptions& options, Tetrahedralize mode) : options_(options), mode_(mode) {
+    check_options(options);
+  }
+  std::string name() const override { return name_of(options_.method); }
+  std::vector<std::string> settings_used() const override {
+    return {"method", "backend", "sort", "gaps", "table-size", "tetrahedralize"};
+  }
+  void prepare(const Volume& volume) const override { volume.projection(mode_); }
+
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera, ImageSize size,
+               RenderReport* report, const Progress&) const override {
+    volume.check(field);
+    timed_preparation(volume, report, [&] { prepare(volume); });
+    ProjectionStats st;
+    Image image = volume.projection(mode_).render(field.values, tf, camera, size.width, size.height, options_, &st);
+    if (report) fill(*report, st);
+    return image;
+  }
+
+  std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
+    // Per point: coordinates (twice: recentred), screen positions, optics. Per tetrahedron:
+    // connectivity, faces and neighbours, sorter planes and centroids.
+    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 120 + static_cast<std::uint64_t>(v.tets) * 320;
+  }
+
+ private:
+  void fill(RenderReport& r, const ProjectionStats& p) const {
+    r.seconds = p.seconds;
+    r.phase_seconds = p.phase_seconds;
+    const ProjectionCounters& c = p.counters;
+    const SortStats& s = p.sort;
+    r.add("backend", options_.backend);
+    r.add("sort", s.method);
+    r.add("tetrahedralize", p.tetrahedralize);
+    for (const auto& [name, value] : {std::pair<const char*, std::int64_t>{"cells_projected", p.cells},
+                                      {"tets", p.tets},
+                                      {"problem_cells", p.problem_cells},
+                                      {"cells_split", p.cells_split},
+                                      {"cycle_splits", p.cycle_splits},
+                                      {"polyhedra", c.polyhedra},
+                                      {"polygons", c.polygons},
+                                      {"subdivisions_looked_up", c.subdivisions_looked_up},
+                                      {"class1_tets", c.class1},
+                                      {"class2_tets", c.class2},
+                                      {"empty_tets", c.empty},
+                                      {"behind_eye_tets", c.behind_eye},
+                                      {"fragments", c.fragments},
+                                      {"breakpoint_cells", c.breakpoint_cells},
+                                      {"direct_cells", c.direct_cells},
+                                      {"face_relations", s.face_relations},
+                                      {"gap_relations", s.gap_relations},
+                                      {"gap_pair_tests", s.gap_pair_tests},
+                                      {"abuffer_runs", s.abuffer_runs},
+                                      {"cycles", static_cast<std::int64_t>(s.cycles.size())}})
+      r.add(name, value);
+    r.add("gaps_from", s.method == SortMethod::mpvo_abuffer ? ReportValue(s.gaps_from) : ReportValue());
+    if (!p.gl_renderer.empty()) r.add("gl_renderer", p.gl_renderer);
+    warn(r, p);
+  }
+
+  void warn(RenderReport& r, const ProjectionStats& p) const {
+    // The software back end ray casts the tetrahedra reaching behind the eye; OpenGL cannot draw
+    // them, nor can whole cells be projected there.
+    if (p.counters.behind_eye > 0 && (is_opengl(options_.backend) || mode_ == Tetrahedralize::none))
+      r.warnings.push_back(std::to_string(p.counters.behind_eye) +
+                           " cells reach behind the eye and were not drawn (the camera is inside or too close to the "
+                           "mesh); use --backend software with --tetrahedralize problem or all, which ray casts them");
+    if (mode_ == Tetrahedralize::none && p.problem_cells > 0)
+      r.warnings.push_back(std::to_string(p.problem_cells) +
+                           " cells have a face folded in this view and were projected whole (--tetrahedralize none): "
+                           "the order and the picture may be wrong there");
+    if (p.sort.cycles.empty()) return;
+    std::int64_t cells = 0;
+    for (const VisibilityCycle& c : p.sort.cycles) cells += c.size;
+    const std::size_t n = p.sort.cycles.size();
+    r.warnings.push_back("the visibility sort met " + std::to_string(n) + " visibility cycle" + (n == 1 ? "" : "s") + " (" +
+                         std::to_string(cells) +
+                         " cells) and broke each at one relation: those cells have no back-to-front order (cells that "
+                         "overlap, or warped faces), so the picture may be wrong where they cover each other; --method "
+                         "exact is exact there, and `cellproj info --overlaps` tells whether cells overlap");
+  }
+
+  ProjectionOptions options_;
+  Tetrahedralize mode_;
+};
+
+class ExactMode final : public Renderer {
+ public:
+  explicit ExactMode(CellInterpolation interpolation) : interpolation_(interpolation) {}
+  std::string name() const override { return "exact"; }
+  std::vector<std::string> settings_used() const override { return {"method", "interpolation"}; }
+  void prepare(const Volume& volume) const override { volume.exact(); }
+
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera, ImageSize size,
+               RenderReport* report, const Progress& progress) const override {
+    volume.check(field);
+    timed_preparation(volume, report, [&] { prepare(volume); });
+    ExactStats st;
+    Image image = volume.exact().render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress);
+    if (report) {
+      report->seconds = st.trace_seconds;
+      report->phase_seconds = {{"trace and integrate", st.trace_seconds}};
+      report->add("segments", st.segments);
+      report->add("interpolation", interpolation_);
+      report->add("newton_failures", st.newton_failures);
+    }
+    return image;
+  }
+
+  std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
+    // Per point: coordinates (twice: recentred), isoparametric data. Per tetrahedron: the
+    // tracer's planes and tile bins.
+    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 120 + static_cast<std::uint64_t>(v.tets) * 400;
+  }
+
+ private:
+  CellInterpolation interpolation_;
+};
+
+}  // namespace
+
+VolumeSize size_of(const MeshView& mesh) {
+  VolumeSize v{mesh.n_points, mesh.n_cells, 0};
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c) v.tets += mesh.type(c) == CellType::Tetra ? 1 : kMaxTetsPerCell;
+  return v;
+}
+
+std::unique_ptr<Renderer> make_renderer(const RenderSettings& s) {
+  switch (s.mode) {
+    case RenderMode::projection: return std::make_unique<ProjectionMode>(s.projection, s.tetrahedralize);
+    case RenderMode::exact: return std::make_unique<ExactMode>(s.interpolation);
+  }
+  throw InputError("unknown render mode " + std::to_string(static_cast<int>(s.mode)));
+}
+
+Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const RenderSettings& settings,
+             const Camera& camera, ImageSize size, RenderReport* report) {
+  return make_renderer(settings)->render(volume, field, tf, camera, size, report);
+}
+
+}  // namespace cellproj

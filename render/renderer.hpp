@@ -1,0 +1,52 @@
+#pragma once
+// One interface for every way of making a picture of a Volume (docs/architecture.md, "Adding a
+// renderer"): cell projection and the exact ray integrator today; slicing, splatting and the MPI
+// compositor are further implementations behind the same call.
+#include <cstdint>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "optics/transfer_function.hpp"
+#include "render/report.hpp"
+#include "render/settings.hpp"
+#include "render/volume.hpp"
+#include "view/camera.hpp"
+#include "view/image.hpp"
+
+namespace cellproj {
+
+// The sizes a memory estimate is made from, before the mesh is read (from a file's header) or after.
+struct VolumeSize {
+  std::int64_t points = 0, cells = 0;
+  std::int64_t tets = 0;  // cells after the canonical split (an upper bound: 6 per hexahedron)
+};
+VolumeSize size_of(const MeshView& mesh);
+
+using Progress = std::function<void(double done)>;  // 0 to 1, from any thread
+
+class Renderer {
+ public:
+  virtual ~Renderer() = default;
+  virtual std::string name() const = 0;  // "pt-breakpoints", "exact", ...
+  // The RenderSettings fields this renderer reads, by their command-line names ("sort",
+  // "interpolation", ...): a front end refuses the others when given explicitly.
+  virtual std::vector<std::string> settings_used() const = 0;
+  // Makes the volume's preparation for this renderer now (render() makes it when missing).
+  virtual void prepare(const Volume& volume) const = 0;
+  // One frame of `field` (Volume::check'ed). Threads: those of the calling task arena.
+  virtual Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+                       ImageSize size, RenderReport* report = nullptr, const Progress& progress = {}) const = 0;
+  // Bytes a frame needs at most (images, per-point and per-tetrahedron arrays, buffers): generous.
+  virtual std::uint64_t estimate_bytes(const VolumeSize& volume, ImageSize size) const = 0;
+};
+
+// The renderer for `settings`, checked once (InputError for settings that do not go together).
+std::unique_ptr<Renderer> make_renderer(const RenderSettings& settings);
+
+// make_renderer(settings)->render(...): one call for one picture.
+Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const RenderSettings& settings,
+             const Camera& camera, ImageSize size, RenderReport* report = nullptr);
+
+}  // namespace cellproj

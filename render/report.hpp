@@ -1,0 +1,32 @@
+#pragma once
+// What a render call measured and what the user should know about its picture, in a form any
+// front end can print without knowing the renderer (the CLI's --stats JSON, Python's dict).
+#include <cstdint>
+#include <string>
+#include <utility>
+#include <variant>
+#include <vector>
+
+#include "projection/method.hpp"
+#include "raycast/reference_renderer.hpp"
+#include "visibility/sort.hpp"
+#include "visibility/split_sorter.hpp"
+
+namespace cellproj {
+
+// A counter, a time, a text, or a choice the renderer made (printed by its name, scene/names.hpp);
+// monostate where a value does not apply to this frame (JSON null).
+using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, ProjectionBackend, SortMethod,
+                                 GapMethod, Tetrahedralize, CellInterpolation>;
+
+struct RenderReport {
+  double seconds = 0.0;          // the frame, preparation excluded
+  double prepare_seconds = 0.0;  // the preparations this call made (0 when the volume had them)
+  std::vector<std::pair<std::string, double>> phase_seconds;
+  std::vector<std::pair<std::string, ReportValue>> values;  // by name, as --stats prints them
+  std::vector<std::string> warnings;  // where the picture may be wrong, and what to do about it
+
+  void add(std::string name, ReportValue value) { values.emplace_back(std::move(name), std::move(value)); }
+};
+
+}  // namespace cellproj

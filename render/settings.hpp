@@ -1,0 +1,26 @@
+#pragma once
+// What to render with: the mode (a renderer) and its settings, as named fields. Every field has
+// the default a user gets from `cellproj render` without options.
+#include "parallel/projection_renderer.hpp"
+#include "raycast/reference_renderer.hpp"
+#include "visibility/split_sorter.hpp"
+
+namespace cellproj {
+
+enum class RenderMode {
+  projection,  // cell projection (parallel/, projection/): `projection.method` picks the rung of the ladder
+  exact,       // the reference ray integrator (raycast/)
+};
+
+struct RenderSettings {
+  RenderMode mode = RenderMode::projection;
+  ProjectionOptions projection;                           // method, back end, sort, gaps, table size
+  Tetrahedralize tetrahedralize = Tetrahedralize::problem;  // projection: which cells are split
+  CellInterpolation interpolation = CellInterpolation::isoparametric;  // exact: the field inside cells
+};
+
+struct ImageSize {
+  int width = 512, height = 512;
+};
+
+}  // namespace cellproj

@@ -1,0 +1,119 @@
+#include "render/volume.hpp"
+
+#include <atomic>
+#include <cmath>
+#include <mutex>
+
+#include "base/error.hpp"
+#include "parallel/projection_renderer.hpp"
+#include "raycast/reference_renderer.hpp"
+
+namespace cellproj {
+
+struct Volume::State {
+  MeshView mesh;
+  ValidationReport validation;
+  std::vector<std::int64_t> connectivity, offsets;  // copies, where the caller's could not serve
+  std::vector<std::string> copies;
+  std::mutex mutex;
+  std::unique_ptr<ProjectionRenderer> projection[3];  // by Tetrahedralize
+  std::unique_ptr<ExactRenderer> exact;
+  std::atomic<int> preparations{0};
+};
+
+namespace {
+
+std::string megabytes(std::size_t bytes) { return std::to_string((bytes + 500'000) / 1'000'000) + " MB"; }
+
+}  // namespace
+
+Field field_of(const Mesh& mesh, const std::string& name) {
+  const PointField& f = mesh.field(name);
+  return {f.values.data(), static_cast<std::int64_t>(f.values.size()), f.name};
+}
+
+Volume::Volume(const MeshView& mesh, const VolumeOptions& options) : state_(std::make_unique<State>()) {
+  commit(mesh, options);
+}
+
+Volume::Volume(const PointArray& points, std::int64_t n_points, const CellArrays& cells, std::string source,
+               const VolumeOptions& options)
+    : state_(std::make_unique<State>()) {
+  if (cells.n_cells < 0 || !cells.offsets || !cells.types || !cells.connectivity || points.empty())
+    throw InputError(where(source, "a null array or a negative cell count"));
+  MeshView v;
+  v.points = points;
+  v.n_points = n_points;
+  v.types = cells.types;
+  v.n_cells = cells.n_cells;
+  v.source = std::move(source);
+  if (!cells.ids_32bit) {
+    v.connectivity = static_cast<const std::int64_t*>(cells.connectivity);
+    v.offsets = static_cast<const std::int64_t*>(cells.offsets);
+  } else {
+    State& s = *state_;
+    const auto* off = static_cast<const std::int32_t*>(cells.offsets);
+    const auto* conn = static_cast<const std::int32_t*>(cells.connectivity);
+    s.offsets.assign(off, off + cells.n_cells + 1);
+    if (s.offsets.front() != 0 || s.offsets.back() < 0) throw InputError(where(v.source, "offsets[0] must be 0"));
+    s.connectivity.assign(conn, conn + s.offsets.back());
+    v.connectivity = s.connectivity.data();
+    v.offsets = s.offsets.data();
+    s.copies.push_back("connectivity and offsets: 32-bit ids widened to 64 bits, " +
+                       megabytes((s.connectivity.size() + s.offsets.size()) * sizeof(std::int64_t)));
+  }
+  commit(v, options);
+}
+
+void Volume::commit(const MeshView& mesh, const VolumeOptions& options) {
+  State& s = *state_;
+  s.mesh = mesh;
+  if (options.trusted) return;
+  s.validation = validate(mesh);
+  if (s.validation.inverted.empty()) return;
+  // Inverted cells are re-oriented in a copy of the connectivity: the caller's arrays are read-only.
+  if (s.connectivity.empty()) s.connectivity.assign(mesh.connectivity, mesh.connectivity + mesh.offsets[mesh.n_cells]);
+  reorient_inverted(s.connectivity.data(), mesh.offsets, mesh.types, s.validation);
+  s.mesh.connectivity = s.connectivity.data();
+  s.copies.push_back("connectivity: " + std::to_string(s.validation.inverted_cells) + " inverted cells re-oriented in a copy, " +
+                     megabytes(s.connectivity.size() * sizeof(std::int64_t)));
+}
+
+Volume::Volume(Volume&&) noexcept = default;
+Volume& Volume::operator=(Volume&&) noexcept = default;
+Volume::~Volume() = default;
+
+const MeshView& Volume::mesh() const { return state_->mesh; }
+const ValidationReport& Volume::validation() const { return state_->validation; }
+const std::vector<std::string>& Volume::copies() const { return state_->copies; }
+int Volume::preparations() const { return state_->preparations; }
+
+void Volume::check(const Field& f) const {
+  const MeshView& m = state_->mesh;
+  const std::string name = f.name.empty() ? "the field" : "field '" + f.name + "'";
+  if (!f.values) throw InputError(where(m.source, "no field given: " + name + " has no values"));
+  if (f.size != m.n_points)
+    throw InputError(where(m.source, name + " has " + std::to_string(f.size) + " values for " +
+                                         std::to_string(m.n_points) + " points"));
+  for (std::int64_t p = 0; p < f.size; ++p)
+    if (!std::isfinite(f.values[p]))
+      throw InputError(where(m.source, name + " is not finite at point " + std::to_string(p) + " (" +
+                                           std::to_string(f.values[p]) + ")"));
+}
+
+const ProjectionRenderer& Volume::projection(Tetrahedralize mode) const {
+  State& s = *state_;
+  std::lock_guard<std::mutex> lock(s.mutex);
+  auto& p = s.projection[static_cast<int>(mode)];
+  if (!p) p = std::make_unique<ProjectionRenderer>(s.mesh, mode), ++s.preparations;
+  return *p;
+}
+
+const ExactRenderer& Volume::exact() const {
+  State& s = *state_;
+  std::lock_guard<std::mutex> lock(s.mutex);
+  if (!s.exact) s.exact = std::make_unique<ExactRenderer>(s.mesh), ++s.preparations;
+  return *s.exact;
+}
+
+}  // namespace cellproj

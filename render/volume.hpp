@@ -1,0 +1,77 @@
+#pragma once
+// A volume to render: a mesh committed once (checked, its face topology, boundary hull and sorter
+// planes prepared on first use and kept), rendered with any number of fields, transfer functions,
+// cameras and settings. A solver's new time step is a new Field, and costs no preparation.
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "grid/mesh.hpp"
+#include "grid/validate.hpp"
+#include "visibility/split_sorter.hpp"
+
+namespace cellproj {
+
+class ExactRenderer;
+class ProjectionRenderer;
+
+// A caller's cell arrays with 32- or 64-bit ids (connectivity and offsets alike).
+struct CellArrays {
+  const void* connectivity = nullptr;
+  const void* offsets = nullptr;  // n_cells + 1 entries
+  const std::uint8_t* types = nullptr;
+  std::int64_t n_cells = 0;
+  bool ids_32bit = false;  // int32 ids (widened once when the volume is committed), else int64
+};
+
+// One value per point: a span over the caller's array, read during the render call only.
+struct Field {
+  const double* values = nullptr;
+  std::int64_t size = 0;
+  std::string name;  // for messages
+};
+Field field_of(const Mesh& mesh, const std::string& name);  // the mesh's field `name` (InputError listing them)
+
+struct VolumeOptions {
+  // The caller vouches for the mesh (ids in range, finite points, supported cells): validation is
+  // skipped. A bad mesh then gives undefined results, not an error.
+  bool trusted = false;
+};
+
+class Volume {
+ public:
+  // Validates the mesh (InputError naming source and element) unless `options.trusted`. Its arrays
+  // are not copied and must outlive the volume, except where copies() says so: inverted cells are
+  // re-oriented in a copy of the connectivity.
+  explicit Volume(const MeshView& mesh, const VolumeOptions& options = {});
+  // The same from 32- or 64-bit id arrays; 32-bit ids are widened into a copy.
+  Volume(const PointArray& points, std::int64_t n_points, const CellArrays& cells, std::string source,
+         const VolumeOptions& options = {});
+  Volume(Volume&&) noexcept;
+  Volume& operator=(Volume&&) noexcept;
+  ~Volume();
+
+  const MeshView& mesh() const;
+  const ValidationReport& validation() const;  // empty when trusted
+  // What the volume copied of the caller's arrays, one line each ("connectivity: 32-bit ids widened,
+  // 1.2 MB"); the renderers' own working copies (recentred points, split cells) are not listed.
+  const std::vector<std::string>& copies() const;
+
+  // Throws InputError unless `field` has one finite value per point.
+  void check(const Field& field) const;
+
+  // The preparations, each made on the first call that needs it (thread-safe) and kept.
+  const ProjectionRenderer& projection(Tetrahedralize mode) const;
+  const ExactRenderer& exact() const;
+  // How many preparations were made so far: rendering a second field, view or transfer function
+  // makes none.
+  int preparations() const;
+
+ private:
+  struct State;
+  void commit(const MeshView& mesh, const VolumeOptions& options);
+  std::unique_ptr<State> state_;
+};
+
+}  // namespace cellproj

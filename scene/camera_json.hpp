@@ -1,0 +1,18 @@
+#pragma once
+// The camera of a scene file (docs/scene.md), and the camera path of `render --frames`.
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "view/camera.hpp"
+
+namespace cellproj {
+
+// {"projection": "orthographic" | "perspective", "eye", "target", "up", "height", "fov_y"}; throws
+// InputError naming `source` and the key, and check_camera's errors.
+Camera camera_from_json(const nlohmann::json& j, const std::string& source);
+
+// The camera turned by `degrees` about the up axis through the target (frame f of --frames: f degrees).
+Camera orbit(const Camera& camera, double degrees);
+
+}  // namespace cellproj

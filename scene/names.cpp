@@ -1,0 +1,97 @@
+#include "scene/names.hpp"
+
+#include <type_traits>
+#include <variant>
+
+#include <nlohmann/json.hpp>
+
+#include "base/error.hpp"
+#include "base/name_table.hpp"
+
+namespace cellproj {
+namespace {
+
+constexpr std::pair<ProjectionMethod, const char*> kMethods[] = {
+    {ProjectionMethod::pt_linear, name_of(ProjectionMethod::pt_linear)},
+    {ProjectionMethod::pt_table, name_of(ProjectionMethod::pt_table)},
+    {ProjectionMethod::pt_analytic, name_of(ProjectionMethod::pt_analytic)},
+    {ProjectionMethod::pt_breakpoints, name_of(ProjectionMethod::pt_breakpoints)},
+};
+static_assert(std::size(kMethods) == std::size(kProjectionMethods), "every projection method has its name here");
+constexpr std::pair<ProjectionBackend, const char*> kBackends[] = {
+    {ProjectionBackend::software, "software"},
+    {ProjectionBackend::opengl, "opengl"},
+    {ProjectionBackend::opengl_8bit, "opengl-8bit"},
+    {ProjectionBackend::opengl_8bit_dithered, "opengl-8bit-dither"},
+};
+constexpr std::pair<SortMethod, const char*> kSorts[] = {{SortMethod::automatic, "auto"},
+                                                         {SortMethod::centroid, "centroid"},
+                                                         {SortMethod::mpvo, "mpvo"},
+                                                         {SortMethod::mpvo_abuffer, "mpvo-abuffer"},
+                                                         {SortMethod::pairwise, "pairwise"}};
+constexpr std::pair<GapMethod, const char*> kGaps[] = {
+    {GapMethod::automatic, "auto"}, {GapMethod::overlaps, "overlaps"}, {GapMethod::abuffer, "abuffer"}};
+constexpr std::pair<Tetrahedralize, const char*> kModes[] = {
+    {Tetrahedralize::problem, "problem"}, {Tetrahedralize::all, "all"}, {Tetrahedralize::none, "none"}};
+constexpr std::pair<CellInterpolation, const char*> kInterpolations[] = {
+    {CellInterpolation::isoparametric, "isoparametric"}, {CellInterpolation::canonical_tets, "canonical-tets"}};
+
+}  // namespace
+
+ProjectionMethod parse_projection_method(const std::string& n) { return from_name(kMethods, n, "projection method"); }
+std::string projection_method_names() { return names(kMethods); }
+
+ProjectionBackend parse_backend(const std::string& n) { return from_name(kBackends, n, "back end"); }
+const char* name_of(ProjectionBackend backend) { return name_in(kBackends, backend); }
+std::string backend_names() { return names(kBackends); }
+
+SortMethod parse_sort_method(const std::string& n) { return from_name(kSorts, n, "sort"); }
+const char* name_of(SortMethod method) { return name_in(kSorts, method); }
+std::string sort_method_names() { return names(kSorts); }
+
+GapMethod parse_gap_method(const std::string& n) { return from_name(kGaps, n, "gap method"); }
+const char* name_of(GapMethod method) { return name_in(kGaps, method); }
+std::string gap_method_names() { return names(kGaps); }
+
+Tetrahedralize parse_tetrahedralize(const std::string& n) { return from_name(kModes, n, "--tetrahedralize"); }
+const char* name_of(Tetrahedralize mode) { return name_in(kModes, mode); }
+std::string tetrahedralize_names() { return names(kModes); }
+
+CellInterpolation parse_cell_interpolation(const std::string& n) { return from_name(kInterpolations, n, "cell interpolation"); }
+const char* name_of(CellInterpolation interpolation) { return name_in(kInterpolations, interpolation); }
+std::string cell_interpolation_names() { return names(kInterpolations); }
+
+void parse_render_method(const std::string& name, RenderSettings& settings) {
+  if (name == "exact") {
+    settings.mode = RenderMode::exact;
+    return;
+  }
+  for (const auto& [method, n] : kMethods)
+    if (name == n) {
+      settings.mode = RenderMode::projection;
+      settings.projection.method = method;
+      return;
+    }
+  throw InputError("unknown method '" + name + "' (known: " + render_method_names() + ")");
+}
+
+std::string render_method_names() { return "exact, " + projection_method_names(); }
+
+nlohmann::json report_json(const RenderReport& report) {
+  nlohmann::json j = nlohmann::json::object();
+  for (const auto& [name, value] : report.values)
+    j[name] = std::visit(
+        [](const auto& v) -> nlohmann::json {
+          using T = std::decay_t<decltype(v)>;
+          if constexpr (std::is_same_v<T, std::monostate>) return nullptr;
+          else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) return v;
+          else return name_of(v);
+        },
+        value);
+  nlohmann::json phases = nlohmann::json::object();
+  for (const auto& [name, seconds] : report.phase_seconds) phases[name] = seconds;
+  j["phase_seconds"] = phases;
+  return j;
+}
+
+}  // namespace cellproj

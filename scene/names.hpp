@@ -1,0 +1,50 @@
+#pragma once
+// The names of the render settings' values on the command line and in files: for each enum,
+// parsing (an InputError listing the known names), printing, and the list for help texts.
+#include <string>
+
+#include <nlohmann/json_fwd.hpp>
+
+#include "projection/method.hpp"
+#include "raycast/reference_renderer.hpp"
+#include "render/report.hpp"
+#include "render/settings.hpp"
+#include "visibility/sort.hpp"
+#include "visibility/split_sorter.hpp"
+
+namespace cellproj {
+
+// Each parse_* throws InputError "unknown WHAT 'name' (known: a, b, c)".
+ProjectionMethod parse_projection_method(const std::string& name);
+std::string projection_method_names();  // name_of(ProjectionMethod) is the method's trait
+
+ProjectionBackend parse_backend(const std::string& name);
+const char* name_of(ProjectionBackend backend);
+std::string backend_names();
+
+SortMethod parse_sort_method(const std::string& name);
+const char* name_of(SortMethod method);
+std::string sort_method_names();
+
+GapMethod parse_gap_method(const std::string& name);
+const char* name_of(GapMethod method);
+std::string gap_method_names();
+
+Tetrahedralize parse_tetrahedralize(const std::string& name);
+const char* name_of(Tetrahedralize mode);
+std::string tetrahedralize_names();
+
+CellInterpolation parse_cell_interpolation(const std::string& name);
+const char* name_of(CellInterpolation interpolation);
+std::string cell_interpolation_names();
+
+
+// "exact" or a projection method's name into settings.mode (and settings.projection.method).
+void parse_render_method(const std::string& name, RenderSettings& settings);
+std::string render_method_names();  // "exact, pt-linear, ..."
+
+// The report's values and phases as one JSON object (choices by their names, monostate as null),
+// with "phase_seconds" an object.
+nlohmann::json report_json(const RenderReport& report);
+
+}  // namespace cellproj

@@ -1,0 +1,166 @@
+// The façade (render/): a Volume committed once from a solver's arrays as they are, a Field per
+// call, one Renderer interface over projection and the exact integrator, errors before a frame.
+#include <cmath>
+#include <cstring>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "base/error.hpp"
+#include "render/renderer.hpp"
+#include "test_util.hpp"
+
+using namespace cellproj;
+
+namespace {
+
+// A 4^3 box of tetrahedra on coordinates a float holds exactly, with two fields.
+Mesh box() {
+  Mesh m = make_box(4, 4, 4, glm::dvec3(-1), glm::dvec3(1), true);
+  set_field(m, "a", [](const glm::dvec3& x) { return 0.4 * x.x - 0.3 * x.y + 0.5; });
+  set_field(m, "b", [](const glm::dvec3& x) { return 0.5 + 0.4 * x.z * x.x; });
+  return m;
+}
+
+TransferFunction tf() {
+  return TransferFunction({{0.0, {0.1, 0.2, 0.9}}, {0.5, {0.9, 0.9, 0.2}}, {1.0, {1, 0.2, 0.1}}},
+                          {{0.0, 0.5}, {0.4, 3.0}, {1.0, 1.0}});
+}
+
+std::string error_of(const std::function<void()>& f) {
+  try {
+    f();
+  } catch (const Error& e) {
+    return e.what();
+  }
+  return "";
+}
+
+const Camera kView = test::view_from({2.5, -2, 1.8}, Projection::Perspective);
+
+}  // namespace
+
+TEST(RenderApi, ANewFieldRendersWithoutPreparingAgain) {
+  const Mesh m = box();
+  const Volume volume(m.view());
+  EXPECT_EQ(volume.preparations(), 0);
+  const auto renderer = make_renderer({});
+  RenderReport first, second;
+  const Image a = renderer->render(volume, field_of(m, "a"), tf(), kView, {64, 64}, &first);
+  EXPECT_EQ(volume.preparations(), 1);
+  EXPECT_GT(first.prepare_seconds, 0.0);
+  const Image b = renderer->render(volume, field_of(m, "b"), tf(), test::view_from({-2, 1, 2}, Projection::Orthographic),
+                                   {64, 64}, &second);
+  EXPECT_EQ(volume.preparations(), 1) << "a new time step, view and field must not rebuild topology, hull or sorter";
+  EXPECT_EQ(second.prepare_seconds, 0.0);
+  EXPECT_NE(a.rgba, b.rgba);
+  // The façade's picture is the stage's, bit for bit.
+  EXPECT_EQ(a.rgba, test::project(m, "a", tf(), kView, 64).rgba);
+}
+
+TEST(RenderApi, ProjectionAndExactBehindOneInterface) {
+  const Mesh m = box();
+  const Volume volume(m.view());
+  RenderSettings exact;
+  exact.mode = RenderMode::exact;
+  RenderReport pr, er;
+  const Image p = render(volume, field_of(m, "a"), tf(), {}, kView, {48, 48}, &pr);
+  const Image e = render(volume, field_of(m, "a"), tf(), exact, kView, {48, 48}, &er);
+  EXPECT_LT(compare(p, e).max_abs, 2e-5);  // pt-breakpoints is exact for tetrahedra
+  EXPECT_EQ(volume.preparations(), 2);     // one for each renderer
+  auto has = [](const RenderReport& r, const std::string& name) {
+    for (const auto& [n, v] : r.values)
+      if (n == name) return true;
+    return false;
+  };
+  EXPECT_TRUE(has(pr, "fragments"));
+  EXPECT_TRUE(has(er, "segments"));
+  EXPECT_FALSE(has(er, "fragments"));
+  EXPECT_EQ(make_renderer(exact)->name(), "exact");
+  EXPECT_EQ(make_renderer({})->name(), "pt-breakpoints");
+  // Each renderer estimates its own frame; more pixels need more.
+  const VolumeSize size = size_of(m.view());
+  EXPECT_GT(make_renderer(exact)->estimate_bytes(size, {1024, 1024}), make_renderer(exact)->estimate_bytes(size, {64, 64}));
+}
+
+TEST(RenderApi, SolverArraysAsTheyAreGiveTheSamePicture) {
+  const Mesh m = box();
+  const Field a = field_of(m, "a");
+  const Image reference = render(Volume(m.view()), a, tf(), {}, kView, {48, 48});
+  // 32-bit ids: widened once, and the volume says so.
+  const std::vector<std::int32_t> conn(m.connectivity.begin(), m.connectivity.end()), off(m.offsets.begin(), m.offsets.end());
+  CellArrays cells{conn.data(), off.data(), m.types.data(), m.n_cells(), true};
+  const Volume v32(m.points.data(), m.n_points(), cells, "solver arrays");
+  ASSERT_EQ(v32.copies().size(), 1u);
+  EXPECT_NE(v32.copies()[0].find("32-bit ids widened"), std::string::npos);
+  EXPECT_EQ(render(v32, a, tf(), {}, kView, {48, 48}).rgba, reference.rgba);
+  // Float points (exact here) and a strided array of {x, y, z, temperature} records: read in place.
+  const std::vector<float> xyz_f(m.points.begin(), m.points.end());
+  CellArrays cells64{m.connectivity.data(), m.offsets.data(), m.types.data(), m.n_cells(), false};
+  const Volume vf(xyz_f.data(), m.n_points(), cells64, "float points");
+  EXPECT_TRUE(vf.copies().empty());
+  EXPECT_EQ(render(vf, a, tf(), {}, kView, {48, 48}).rgba, reference.rgba);
+  std::vector<double> records;
+  for (std::int64_t p = 0; p < m.n_points(); ++p)
+    records.insert(records.end(), {m.points[3 * p], m.points[3 * p + 1], m.points[3 * p + 2], -1.0});
+  const Volume vs(PointArray::strided(records.data(), 4 * sizeof(double)), m.n_points(), cells64, "records");
+  EXPECT_EQ(render(vs, a, tf(), {}, kView, {48, 48}).rgba, reference.rgba);
+}
+
+TEST(RenderApi, AMissingOrBadFieldIsAnError) {
+  const Mesh m = box();
+  const Volume volume(m.view());
+  const auto r = make_renderer({});
+  EXPECT_NE(error_of([&] { r->render(volume, Field{}, tf(), kView, {8, 8}); }).find("no field given"), std::string::npos);
+  std::vector<double> short_field(5, 0.0);
+  EXPECT_NE(error_of([&] { r->render(volume, {short_field.data(), 5, "t"}, tf(), kView, {8, 8}); })
+                .find("field 't' has 5 values for " + std::to_string(m.n_points()) + " points"),
+            std::string::npos);
+  std::vector<double> nan_field(static_cast<std::size_t>(m.n_points()), 0.0);
+  nan_field[7] = NAN;
+  EXPECT_NE(error_of([&] { r->render(volume, {nan_field.data(), m.n_points(), "t"}, tf(), kView, {8, 8}); })
+                .find("field 't' is not finite at point 7"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { field_of(m, "c"); }).find("c"), std::string::npos);
+}
+
+TEST(RenderApi, ValidationRunsUnlessTheMeshIsTrusted) {
+  Mesh m = box();
+  m.connectivity[5] = 100000;
+  EXPECT_NE(error_of([&] { Volume v(m.view()); }).find("refers to point 100000"), std::string::npos);
+  EXPECT_EQ(error_of([&] { Volume v(m.view(), {true}); }), "");  // the caller vouched for it
+}
+
+TEST(RenderApi, InvertedCellsAreReorientedInACopy) {
+  const Mesh m = box();
+  Mesh flipped = m;
+  std::swap(flipped.connectivity[1], flipped.connectivity[2]);  // cell 0 inverted
+  const std::vector<std::int64_t> before = flipped.connectivity;
+  const Volume volume(flipped.view());
+  EXPECT_EQ(volume.validation().inverted_cells, 1);
+  EXPECT_EQ(flipped.connectivity, before) << "the caller's arrays are read-only";
+  ASSERT_EQ(volume.copies().size(), 1u);
+  EXPECT_NE(volume.copies()[0].find("1 inverted cells re-oriented"), std::string::npos);
+  EXPECT_EQ(render(volume, field_of(flipped, "a"), tf(), {}, kView, {48, 48}).rgba,
+            render(Volume(m.view()), field_of(m, "a"), tf(), {}, kView, {48, 48}).rgba);
+}
+
+TEST(RenderApi, SettingsThatDoNotGoTogetherAreRefusedBeforeAFrame) {
+  RenderSettings s;
+  s.projection.backend = ProjectionBackend::opengl;
+  s.projection.method = ProjectionMethod::pt_breakpoints;
+  EXPECT_NE(error_of([&] { make_renderer(s); }).find("not pt-breakpoints"), std::string::npos);
+  s.projection.method = ProjectionMethod::pt_table;
+  s.projection.table_size = 1;
+  EXPECT_NE(error_of([&] { make_renderer(s); }).find("opacity table size 1"), std::string::npos);
+}
+
+TEST(RenderApi, EveryMethodIsDecidedByItsTraits) {
+  // The closed set: each method's traits are consistent with what it computes.
+  for (const MethodTraits& t : kProjectionMethods) {
+    EXPECT_EQ(&traits(t.method), &t);
+    EXPECT_EQ(t.opacity_table || t.point_optics, t.gouraud) << t.name;  // Gouraud corners come from point optics
+    EXPECT_EQ(t.opengl, t.gouraud) << t.name;                           // OpenGL draws Gouraud triangles only
+    EXPECT_FALSE(t.gouraud && t.cuts_at_breakpoints) << t.name;
+  }
+}
