@@ -2,6 +2,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
+#include <mutex>
 #include <fstream>
 #include <iterator>
 #include <sstream>
@@ -43,7 +44,7 @@ namespace cellproj {
 namespace {
 
 // Collects VTK's error and warning text while a file is read, so that a failure becomes one
-// InputError instead of text on stderr. VTK's output window is process-wide: reads are serial.
+// InputError instead of text on stderr.
 class CaptureWindow : public vtkOutputWindow {
  public:
   static CaptureWindow* New();
@@ -65,16 +66,29 @@ class CaptureWindow : public vtkOutputWindow {
 };
 vtkStandardNewMacro(CaptureWindow);
 
+// VTK's output window and logger are process-wide, so the reads that swap them take turns: this
+// lock is the one piece of process state cellproj keeps, and only for VTK's own.
+std::mutex& vtk_output_lock() {
+  static std::mutex m;
+  return m;
+}
+
+// While it lives, VTK's messages go to a CaptureWindow; the caller's output window and logger
+// verbosity come back afterwards.
 class VtkMessages {
  public:
-  VtkMessages() : previous_(vtkOutputWindow::GetInstance()), window_(vtkSmartPointer<CaptureWindow>::New()) {
+  VtkMessages()
+      : lock_(vtk_output_lock()),
+        previous_(vtkOutputWindow::GetInstance()),
+        window_(vtkSmartPointer<CaptureWindow>::New()),
+        verbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {  // stderr's, the only sink unless the caller added one
     vtkOutputWindow::SetInstance(window_);
     // Some readers (CGNS) also log through vtkLogger straight to stderr.
     vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
   }
   ~VtkMessages() {
     vtkOutputWindow::SetInstance(previous_);
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_WARNING);
+    vtkLogger::SetStderrVerbosity(verbosity_);
   }
   VtkMessages(const VtkMessages&) = delete;
   VtkMessages& operator=(const VtkMessages&) = delete;
@@ -87,8 +101,10 @@ class VtkMessages {
   }
 
  private:
+  std::lock_guard<std::mutex> lock_;
   vtkSmartPointer<vtkOutputWindow> previous_;
   vtkSmartPointer<CaptureWindow> window_;
+  vtkLogger::Verbosity verbosity_;
 };
 
 struct Leaf {

@@ -4,10 +4,23 @@
 
 #include <tbb/parallel_for.h>
 
+#include "base/error.hpp"
 #include "composite/ordered_pipeline.hpp"
+#ifdef CELLPROJ_HAVE_OPENGL
 #include "projection/gl_compositor.hpp"
+#endif
 
 namespace cellproj {
+
+#ifndef CELLPROJ_HAVE_OPENGL
+bool opengl_built() { return false; }
+
+Image draw_with_opengl(const CellFragments&, const MeshView&, const std::vector<std::int64_t>&, const OpacityTable*, int,
+                       int, const ProjectionOptions&, ProjectionStats&) {
+  throw ResourceError("this cellproj was built without the OpenGL back ends (OSMesa was not found)");
+}
+#else
+bool opengl_built() { return true; }
 
 Image draw_with_opengl(const CellFragments& project, const MeshView& cells, const std::vector<std::int64_t>& order,
                        const OpacityTable* table, int width, int height, const ProjectionOptions& options,
@@ -38,5 +51,7 @@ Image draw_with_opengl(const CellFragments& project, const MeshView& cells, cons
   }
   return gl.finish();
 }
+
+#endif
 
 }  // namespace cellproj

@@ -9,6 +9,9 @@
 
 namespace cellproj {
 
+// Whether this build has the OpenGL back ends (OSMesa was found when it was configured).
+bool opengl_built();
+
 // Counts into st.counters and names the GL renderer in st.gl_renderer.
 Image draw_with_opengl(const CellFragments& project, const MeshView& cells, const std::vector<std::int64_t>& order,
                        const OpacityTable* table, int width, int height, const ProjectionOptions& options,

@@ -69,6 +69,9 @@ OpacityTable opacity_table(const TransferFunction& tf, int size, double max_diam
 }  // namespace
 
 void check_options(const ProjectionOptions& o) {
+  if (is_opengl(o.backend) && !opengl_built())
+    throw ResourceError("the OpenGL back ends were not built (OSMesa, libosmesa6-dev, was not found when cellproj was "
+                        "configured); use the software back end");
   if (o.table_size < 2 || o.table_size > 8192)
     throw InputError("opacity table size " + std::to_string(o.table_size) + " is outside [2, 8192]");
   if (is_opengl(o.backend) && !traits(o.method).opengl) {

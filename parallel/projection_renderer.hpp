@@ -11,6 +11,7 @@
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
 #include "projection/cell_fragments.hpp"
+#include "parallel/projection_options.hpp"
 #include "projection/method.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
@@ -19,17 +20,6 @@
 
 namespace cellproj {
 
-struct ProjectionOptions {
-  ProjectionMethod method = ProjectionMethod::pt_breakpoints;
-  ProjectionBackend backend = ProjectionBackend::software;  // the OpenGL ones draw the Gouraud methods
-  SortMethod sort = SortMethod::automatic;
-  GapMethod gaps = GapMethod::automatic;  // how mpvo-abuffer finds the relations across gaps
-  int table_size = 256;                   // pt-table: nodes per axis of the opacity table
-  int batch_cells = 0;                    // cells per pipeline token; 0: about 16 tokens per thread, 64 to 2048
-};
-// Throws InputError for options that do not go together (a method the back end cannot draw) or a
-// table size outside [2, 8192]: before a frame starts, never in the middle of one.
-void check_options(const ProjectionOptions& options);
 
 struct ProjectionStats {
   ProjectionCounters counters;

@@ -10,17 +10,13 @@
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
 #include "raycast/cell_ray_tracer.hpp"
+#include "raycast/interpolation.hpp"
 #include "raycast/isoparametric.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {
 
-// How the field varies inside hexahedra, wedges and pyramids (tetrahedra are always linear).
-enum class CellInterpolation {
-  isoparametric,   // the cell's shape functions, followed along the ray by a polynomial to 1e-9 of the field's range
-  canonical_tets,  // linear in each tetrahedron of the canonical split (what projection assumes)
-};
 
 struct ExactStats {
   double trace_seconds = 0.0;        // traversal and integration of one frame

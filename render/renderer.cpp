@@ -4,6 +4,8 @@
 
 #include "base/error.hpp"
 #include "grid/tetrahedralize.hpp"
+#include "parallel/projection_renderer.hpp"
+#include "raycast/reference_renderer.hpp"
 
 namespace cellproj {
 namespace {

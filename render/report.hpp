@@ -8,9 +8,8 @@
 #include <vector>
 
 #include "projection/method.hpp"
-#include "raycast/reference_renderer.hpp"
-#include "visibility/sort.hpp"
-#include "visibility/split_sorter.hpp"
+#include "raycast/interpolation.hpp"
+#include "visibility/methods.hpp"
 
 namespace cellproj {
 

@@ -1,9 +1,9 @@
 #pragma once
 // What to render with: the mode (a renderer) and its settings, as named fields. Every field has
 // the default a user gets from `cellproj render` without options.
-#include "parallel/projection_renderer.hpp"
-#include "raycast/reference_renderer.hpp"
-#include "visibility/split_sorter.hpp"
+#include "parallel/projection_options.hpp"
+#include "raycast/interpolation.hpp"
+#include "visibility/methods.hpp"
 
 namespace cellproj {
 

@@ -9,7 +9,7 @@
 
 #include "grid/mesh.hpp"
 #include "grid/validate.hpp"
-#include "visibility/split_sorter.hpp"
+#include "visibility/methods.hpp"
 
 namespace cellproj {
 

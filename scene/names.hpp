@@ -5,12 +5,8 @@
 
 #include <nlohmann/json_fwd.hpp>
 
-#include "projection/method.hpp"
-#include "raycast/reference_renderer.hpp"
 #include "render/report.hpp"
 #include "render/settings.hpp"
-#include "visibility/sort.hpp"
-#include "visibility/split_sorter.hpp"
 
 namespace cellproj {
 

@@ -2,8 +2,10 @@
 #include <filesystem>
 #include <fstream>
 #include <iterator>
+#include <thread>
 
 #include <gtest/gtest.h>
+#include <vtkLogger.h>
 
 #include "base/error.hpp"
 #include "grid/read_mesh.hpp"
@@ -69,6 +71,41 @@ TEST(Readers, VtuRoundTrip) {
   EXPECT_EQ(r.n_cells(), 8);
   EXPECT_EQ(r.points, m.points);
   EXPECT_EQ(r.field("f").values, m.fields[0].values);
+}
+
+// VTK's output window and logger are process-wide: a read leaves the caller's logger verbosity
+// as it found it, and reads on two threads (one of a broken file) each get their own result.
+TEST(Readers, ReadsRestoreVtksLoggingAndAreSafeFromTwoThreads) {
+  test::TempDir dir;
+  Mesh m = make_box(6, 6, 6, glm::dvec3(0), glm::dvec3(1), true);
+  set_field(m, "f", [](const glm::dvec3& x) { return x.x; });
+  write_vtu(m, dir.file("box.vtu"));
+  spit(dir.file("broken.vtu"), slurp(dir.file("box.vtu")).substr(0, 400));
+  const vtkLogger::Verbosity before = vtkLogger::GetCurrentVerbosityCutoff();
+  vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_INFO);
+  read_mesh(dir.file("box.vtu"));
+  EXPECT_EQ(vtkLogger::GetCurrentVerbosityCutoff(), vtkLogger::VERBOSITY_INFO);
+  vtkLogger::SetStderrVerbosity(before);
+  std::vector<std::int64_t> cells(8, -1);
+  std::vector<std::string> errors(8);
+  std::vector<std::thread> threads;
+  for (int t = 0; t < 8; ++t)
+    threads.emplace_back([&, t] {
+      try {
+        cells[t] = read_mesh(dir.file(t % 2 ? "broken.vtu" : "box.vtu")).n_cells();
+      } catch (const InputError& e) {
+        errors[t] = e.what();
+      }
+    });
+  for (auto& t : threads) t.join();
+  for (int t = 0; t < 8; ++t) {
+    if (t % 2) {
+      EXPECT_EQ(cells[t], -1);
+      EXPECT_NE(errors[t].find("broken.vtu"), std::string::npos) << errors[t];
+    } else {
+      EXPECT_EQ(cells[t], m.n_cells()) << errors[t];
+    }
+  }
 }
 
 TEST(Readers, LegacyVtkCellDataIsVolumeWeightedAndLineCellsSkipped) {

@@ -29,6 +29,9 @@ int main(int argc, char** argv) {
   } catch (const InputError& e) {
     std::fprintf(stderr, "cellproj: error: %s\n", e.what());
     return kExitInput;
+  } catch (const ResourceError& e) {
+    std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    return kExitInternal;
   } catch (const nlohmann::json::exception& e) {
     std::fprintf(stderr, "cellproj: error: %s\n", e.what());
     return kExitInput;

@@ -12,16 +12,10 @@
 #include "grid/mesh.hpp"
 #include "grid/topology.hpp"
 #include "view/camera.hpp"
+#include "visibility/methods.hpp"
 
 namespace cellproj {
 
-enum class SortMethod {
-  centroid,      // by centroid depth, a radix sort: what common tools do; the baseline
-  mpvo,          // Williams' MPVO: a relation across every shared face, then a topological sort
-  mpvo_abuffer,  // MPVO plus the relations across the gaps of a non-convex mesh (software A-buffer)
-  pairwise,      // Newell-Newell-Sancha for polyhedra: exact occlusion tests between all overlapping cells
-  automatic,     // mpvo on a convex boundary, mpvo-abuffer otherwise
-};
 
 // A visibility cycle met by the topological sort: the cells of one strongly connected component
 // (at most kMaxCycleCells listed), and the cell whose remaining relations were dropped to go on.
@@ -34,13 +28,6 @@ struct VisibilityCycle {
   bool across_gap = false;          // a relation across a gap lies inside it (not only face relations)
 };
 
-// How mpvo-abuffer finds the relations across gaps.
-enum class GapMethod : std::uint8_t {
-  automatic,  // overlaps; the A-buffer for a view where a visibility cycle holds a relation from them,
-              // or where two of the faces pass through each other (which makes such a cycle)
-  overlaps,   // from the boundary faces' overlaps in the image, per pair of faces (visibility/overlap_gaps.cpp)
-  abuffer,    // from the software A-buffer at the pixel centres (visibility/abuffer.cpp)
-};
 
 struct SortStats {
   SortMethod method = SortMethod::centroid;  // the method that ran (auto resolved)

@@ -12,15 +12,11 @@
 
 #include "grid/face_split.hpp"
 #include "grid/topology.hpp"
+#include "visibility/methods.hpp"
 #include "visibility/sort.hpp"
 
 namespace cellproj {
 
-enum class Tetrahedralize {
-  problem,  // per view, only the cells a ray may cross more than twice (grid/face_split; the default)
-  all,      // every cell that is not a tetrahedron, once per mesh
-  none,     // never: whole cells even where a ray crosses one twice (order and picture may be wrong there)
-};
 
 // Where a camera looks from, in the frame of points recentred on `centre` (RecentredPoints): what
 // CellFolds::problem_cells takes.
