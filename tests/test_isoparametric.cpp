@@ -11,13 +11,7 @@ using namespace cellproj;
 
 namespace {
 
-Camera down_on_unit_square() {  // orthographic from +z onto [0,1]^2, x to the right, y up
-  Camera c;
-  c.eye = {0.5, 0.5, 5};
-  c.target = {0.5, 0.5, 0};
-  c.height = 1.0;
-  return c;
-}
+Camera down_on_unit_square() { return test::looking_down(1.0, {0.5, 0.5, 0}); }  // x to the right, y up
 
 }  // namespace
 

@@ -50,6 +50,11 @@ Image exact(const Mesh& m, const std::string& field, const TransferFunction& tf,
             CellInterpolation interpolation = CellInterpolation::isoparametric, ExactStats* stats = nullptr);
 ProjectionOptions with_method(ProjectionMethod method, SortMethod sort = SortMethod::automatic);
 
+// A twisted, jittered curvilinear grid of n^3 hexahedra: strongly warped faces, a non-convex boundary.
+Mesh warped_hexahedra(int n);
+// A twisted mixed mesh of n^3 blocks (hexahedra, wedges, pyramids and tetrahedra).
+Mesh twisted_mixed(int n);
+
 }  // namespace cellproj::test
 
 namespace cellproj::test {
