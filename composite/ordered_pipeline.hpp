@@ -25,9 +25,9 @@ namespace cellproj {
 //   void composite(std::size_t k, Image& image, Scratch&, Counters&) const
 //             draws item k straight onto the image, "over" (called in order from the compositor).
 struct PipelineLimits {
-  std::size_t batch_items = 0;      // items per token; 0: about 16 tokens per thread, 64 to 2048
-  double batch_pixels = 5e6;        // a token also closes once its items' footprints add up to this
-  double direct_pixels = 1e6;       // an item covering more is not buffered: the compositor draws it
+  std::size_t batch_items = 0;  // items per token; 0: about 16 tokens per thread, 64 to 2048
+  double batch_pixels = 5e6;    // a token also closes once its items' footprints add up to this
+  double direct_pixels = 1e6;   // an item covering more is not buffered: the compositor draws it
 };
 
 // Items per token: the limit, or enough tokens to keep every thread busy on small inputs (a few
@@ -80,8 +80,10 @@ typename Source::Counters composite_in_order(Image& image, std::size_t n, const 
     b->direct.clear();
     b->counters = {};
     for (std::size_t k = b->begin; k < b->end; ++k) {
-      if (footprint(k) > limits.direct_pixels) b->direct.emplace_back(k, b->fragments.size());
-      else source.fragments(k, b->fragments, b->scratch, b->counters);
+      if (footprint(k) > limits.direct_pixels)
+        b->direct.emplace_back(k, b->fragments.size());
+      else
+        source.fragments(k, b->fragments, b->scratch, b->counters);
     }
     return b;
   };

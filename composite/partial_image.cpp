@@ -19,7 +19,8 @@ ScreenBox covered_box(const Image& image) {
 
 namespace {
 ScreenBox clip(const ScreenBox& b, int width, int height) {
-  return {std::clamp(b.x0, 0, width), std::clamp(b.y0, 0, height), std::clamp(b.x1, 0, width), std::clamp(b.y1, 0, height)};
+  return {std::clamp(b.x0, 0, width), std::clamp(b.y0, 0, height), std::clamp(b.x1, 0, width),
+          std::clamp(b.y1, 0, height)};
 }
 }  // namespace
 
@@ -31,7 +32,8 @@ PartialImage crop(const Image& image, const ScreenBox& box, double depth) {
 }
 
 void composite_partials(Image& image, std::vector<const PartialImage*> pieces) {
-  std::stable_sort(pieces.begin(), pieces.end(), [](const PartialImage* a, const PartialImage* b) { return a->depth > b->depth; });
+  std::stable_sort(pieces.begin(), pieces.end(),
+                   [](const PartialImage* a, const PartialImage* b) { return a->depth > b->depth; });
   for (const PartialImage* p : pieces) {
     const ScreenBox b = clip(p->box, image.width, image.height);
     for (int j = b.y0; j < b.y1; ++j)

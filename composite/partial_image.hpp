@@ -27,7 +27,9 @@ struct PartialImage {
   PartialImage(const ScreenBox& b, double d)
       : box(b), depth(d), rgba(b.empty() ? 0 : static_cast<std::size_t>(b.width()) * b.height() * 4, 0.0f) {}
   // Pixel (i, j) of the whole image, which must lie in the box.
-  float* pixel(int i, int j) { return rgba.data() + (static_cast<std::size_t>(j - box.y0) * box.width() + (i - box.x0)) * 4; }
+  float* pixel(int i, int j) {
+    return rgba.data() + (static_cast<std::size_t>(j - box.y0) * box.width() + (i - box.x0)) * 4;
+  }
   const float* pixel(int i, int j) const {
     return rgba.data() + (static_cast<std::size_t>(j - box.y0) * box.width() + (i - box.x0)) * 4;
   }

@@ -16,15 +16,17 @@ int main(int argc, char** argv) {
   std::vector<double> xyz;
   for (int k = 0; k <= n; ++k)
     for (int j = 0; j <= n; ++j)
-      for (int i = 0; i <= n; ++i) xyz.insert(xyz.end(), {double(i) / n - 0.5, double(j) / n - 0.5, double(k) / n - 0.5});
+      for (int i = 0; i <= n; ++i)
+        xyz.insert(xyz.end(), {double(i) / n - 0.5, double(j) / n - 0.5, double(k) / n - 0.5});
   std::vector<std::int32_t> connectivity, offsets{0};
   std::vector<std::uint8_t> types;
   auto id = [&](int i, int j, int k) { return std::int32_t((k * (n + 1) + j) * (n + 1) + i); };
   for (int k = 0; k < n; ++k)
     for (int j = 0; j < n; ++j)
       for (int i = 0; i < n; ++i) {
-        connectivity.insert(connectivity.end(), {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-                                                 id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
+        connectivity.insert(connectivity.end(),
+                            {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                             id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
         offsets.push_back(static_cast<std::int32_t>(connectivity.size()));
         types.push_back(12);  // VTK_HEXAHEDRON
       }

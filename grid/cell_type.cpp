@@ -2,8 +2,6 @@
 
 #include "base/error.hpp"
 
-#include <stdexcept>
-
 namespace cellproj {
 namespace {
 
@@ -14,10 +12,9 @@ constexpr FaceDef kHexFaces[] = {{4, {0, 4, 7, 3}}, {4, {1, 2, 6, 5}}, {4, {0, 1
 // Voxel vertex i sits at (i&1, i>>1&1, i>>2&1): the hexahedron faces with 2<->3 and 6<->7 swapped.
 constexpr FaceDef kVoxelFaces[] = {{4, {0, 4, 6, 2}}, {4, {1, 3, 7, 5}}, {4, {0, 1, 5, 4}},
                                    {4, {2, 6, 7, 3}}, {4, {0, 2, 3, 1}}, {4, {4, 5, 7, 6}}};
-constexpr FaceDef kWedgeFaces[] = {{3, {0, 1, 2}}, {3, {3, 5, 4}}, {4, {0, 3, 4, 1}}, {4, {1, 4, 5, 2}},
-                                   {4, {2, 5, 3, 0}}};
-constexpr FaceDef kPyramidFaces[] = {{4, {0, 3, 2, 1}}, {3, {0, 1, 4}}, {3, {1, 2, 4}}, {3, {2, 3, 4}},
-                                     {3, {3, 0, 4}}};
+constexpr FaceDef kWedgeFaces[] = {
+    {3, {0, 1, 2}}, {3, {3, 5, 4}}, {4, {0, 3, 4, 1}}, {4, {1, 4, 5, 2}}, {4, {2, 5, 3, 0}}};
+constexpr FaceDef kPyramidFaces[] = {{4, {0, 3, 2, 1}}, {3, {0, 1, 4}}, {3, {1, 2, 4}}, {3, {2, 3, 4}}, {3, {3, 0, 4}}};
 
 constexpr CellDef kTetra{"tetra", 4, 4, kTetraFaces};
 constexpr CellDef kVoxel{"voxel", 8, 6, kVoxelFaces};
@@ -31,23 +28,40 @@ struct VtkName {
   int dim;
 };
 constexpr VtkName kVtkNames[] = {
-    {0, "empty_cell", 0},        {1, "vertex", 0},
-    {2, "poly_vertex", 0},        {3, "line", 1},
-    {4, "poly_line", 1},          {5, "triangle", 2},
-    {6, "triangle_strip", 2},     {7, "polygon", 2},
-    {8, "pixel", 2},              {9, "quad", 2},
-    {10, "tetra", 3},             {11, "voxel", 3},
-    {12, "hexahedron", 3},        {13, "wedge", 3},
-    {14, "pyramid", 3},           {15, "pentagonal_prism", 3},
-    {16, "hexagonal_prism", 3},   {21, "quadratic_edge", 1},
-    {22, "quadratic_triangle", 2}, {23, "quadratic_quad", 2},
-    {24, "quadratic_tetra", 3},   {25, "quadratic_hexahedron", 3},
-    {26, "quadratic_wedge", 3},   {27, "quadratic_pyramid", 3},
-    {28, "biquadratic_quad", 2},  {29, "triquadratic_hexahedron", 3},
-    {42, "polyhedron", 3},        {68, "lagrange_curve", 1},
-    {69, "lagrange_triangle", 2}, {70, "lagrange_quadrilateral", 2},
-    {71, "lagrange_tetrahedron", 3}, {72, "lagrange_hexahedron", 3},
-    {73, "lagrange_wedge", 3},    {74, "lagrange_pyramid", 3},
+    {0, "empty_cell", 0},
+    {1, "vertex", 0},
+    {2, "poly_vertex", 0},
+    {3, "line", 1},
+    {4, "poly_line", 1},
+    {5, "triangle", 2},
+    {6, "triangle_strip", 2},
+    {7, "polygon", 2},
+    {8, "pixel", 2},
+    {9, "quad", 2},
+    {10, "tetra", 3},
+    {11, "voxel", 3},
+    {12, "hexahedron", 3},
+    {13, "wedge", 3},
+    {14, "pyramid", 3},
+    {15, "pentagonal_prism", 3},
+    {16, "hexagonal_prism", 3},
+    {21, "quadratic_edge", 1},
+    {22, "quadratic_triangle", 2},
+    {23, "quadratic_quad", 2},
+    {24, "quadratic_tetra", 3},
+    {25, "quadratic_hexahedron", 3},
+    {26, "quadratic_wedge", 3},
+    {27, "quadratic_pyramid", 3},
+    {28, "biquadratic_quad", 2},
+    {29, "triquadratic_hexahedron", 3},
+    {42, "polyhedron", 3},
+    {68, "lagrange_curve", 1},
+    {69, "lagrange_triangle", 2},
+    {70, "lagrange_quadrilateral", 2},
+    {71, "lagrange_tetrahedron", 3},
+    {72, "lagrange_hexahedron", 3},
+    {73, "lagrange_wedge", 3},
+    {74, "lagrange_pyramid", 3},
 };
 
 }  // namespace
@@ -62,8 +76,7 @@ const CellDef& cell_def(CellType type) {
     case CellType::Wedge: return kWedge;
     case CellType::Pyramid: return kPyramid;
   }
-  throw InputError("not a supported cell type code " +
-                              std::to_string(static_cast<int>(type)));
+  throw InputError("not a supported cell type code " + std::to_string(static_cast<int>(type)));
 }
 
 std::string vtk_type_name(int vtk_type) {

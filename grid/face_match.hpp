@@ -17,7 +17,7 @@ namespace cellproj {
 // `same(p)` names point p as faces are matched (p itself, or the first point at its place).
 // Returns how many quads were matched.
 std::int64_t match_quads_to_triangles(const MeshView& m, FaceTopology& t, const std::vector<std::int64_t>& open,
-                                                   const std::function<std::int64_t(std::int64_t)>& same,
-                                                   const std::function<bool(std::int64_t, std::int64_t)>& accept);
+                                      const std::function<std::int64_t(std::int64_t)>& same,
+                                      const std::function<bool(std::int64_t, std::int64_t)>& accept);
 
 }  // namespace cellproj

@@ -3,9 +3,9 @@
 #include <algorithm>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <glm/geometric.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
 
 #include "grid/tetrahedralize.hpp"
 
@@ -28,7 +28,10 @@ int facing(const RecentredPoints& pts, const Viewpoint& view, std::int64_t a, st
 
 int reflex(const RecentredPoints& pts, std::int64_t a, std::int64_t b, std::int64_t c, std::int64_t d) {
   // d beyond the outward side of triangle (a, b, c): the edge the two triangles share folds inward.
-  auto P = [&](std::int64_t i) { const glm::dvec3 x = pts(i); return K::Point_3(x.x, x.y, x.z); };
+  auto P = [&](std::int64_t i) {
+    const glm::dvec3 x = pts(i);
+    return K::Point_3(x.x, x.y, x.z);
+  };
   return CGAL::orientation(P(a), P(b), P(c), P(d)) == CGAL::POSITIVE;
 }
 
@@ -52,7 +55,8 @@ int surface_triangles(const MeshView& mesh, std::int64_t c, std::uint8_t tri[kMa
   std::int64_t global[kMaxSurfaceTriangles][3];
   const int n = surface_triangles(mesh, c, global);
   for (int t = 0; t < n; ++t)
-    for (int k = 0; k < 3; ++k) tri[t][k] = static_cast<std::uint8_t>(std::find(ids, ids + mesh.cell_size(c), global[t][k]) - ids);
+    for (int k = 0; k < 3; ++k)
+      tri[t][k] = static_cast<std::uint8_t>(std::find(ids, ids + mesh.cell_size(c), global[t][k]) - ids);
   return n;
 }
 
@@ -75,7 +79,7 @@ void cell_folds(const MeshView& mesh, const RecentredPoints& pts, std::int64_t c
     for (int e = 0; e < 3 && !flat(t); ++e) {
       const int u = owner[tri[t][(e + 1) % 3]][tri[t][e]];
       if (u <= t) continue;  // each pair once, from its lower triangle
-      int far = 0;  // u's vertex off the shared edge (u has three distinct vertices)
+      int far = 0;           // u's vertex off the shared edge (u has three distinct vertices)
       while (tri[u][far] == tri[t][e] || tri[u][far] == tri[t][(e + 1) % 3]) ++far;
       const int sure = surely_reflex(pts, ids[tri[t][0]], ids[tri[t][1]], ids[tri[t][2]], ids[tri[u][far]]);
       if (sure != 0)
@@ -106,23 +110,26 @@ CellFolds::CellFolds(const MeshView& mesh, std::shared_ptr<const RecentredPoints
 std::vector<char> CellFolds::problem_cells(const Viewpoint& view, std::int64_t* count) const {
   const RecentredPoints& pts = *points_;
   std::vector<char> problem(static_cast<std::size_t>(mesh_.n_cells), 0);
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, mesh_.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-    for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-      if (mesh_.type(c) == CellType::Tetra) continue;
-      const std::int64_t* ids = mesh_.cell(c);
-      bool behind = false;
-      if (view.perspective)
-        for (int k = 0; k < mesh_.cell_size(c) && !behind; ++k) behind = !(glm::dot(pts(ids[k]) - view.eye, view.dir) > 0.0);
-      bool folded = false;
-      for (std::int64_t f = start_[c]; f < start_[c + 1] && !behind && !folded; ++f) {
-        const Fold& fold = folds_[f];
-        folded = facing(pts, view, ids[fold.t[0]], ids[fold.t[1]], ids[fold.t[2]]) *
-                     facing(pts, view, ids[fold.u[0]], ids[fold.u[1]], ids[fold.u[2]]) < 0 &&
-                 (!fold.unsure || reflex(pts, ids[fold.t[0]], ids[fold.t[1]], ids[fold.t[2]], ids[fold.far]));
-      }
-      problem[c] = behind || folded;
-    }
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<std::int64_t>(0, mesh_.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
+        for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+          if (mesh_.type(c) == CellType::Tetra) continue;
+          const std::int64_t* ids = mesh_.cell(c);
+          bool behind = false;
+          if (view.perspective)
+            for (int k = 0; k < mesh_.cell_size(c) && !behind; ++k)
+              behind = !(glm::dot(pts(ids[k]) - view.eye, view.dir) > 0.0);
+          bool folded = false;
+          for (std::int64_t f = start_[c]; f < start_[c + 1] && !behind && !folded; ++f) {
+            const Fold& fold = folds_[f];
+            folded = facing(pts, view, ids[fold.t[0]], ids[fold.t[1]], ids[fold.t[2]]) *
+                             facing(pts, view, ids[fold.u[0]], ids[fold.u[1]], ids[fold.u[2]]) <
+                         0 &&
+                     (!fold.unsure || reflex(pts, ids[fold.t[0]], ids[fold.t[1]], ids[fold.t[2]], ids[fold.far]));
+          }
+          problem[c] = behind || folded;
+        }
+      });
   if (count) *count = std::count(problem.begin(), problem.end(), char(1));
   return problem;
 }

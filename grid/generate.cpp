@@ -20,9 +20,9 @@ Mesh make_curvilinear(int nx, int ny, int nz, const std::function<glm::dvec3(con
   for (int k = 0; k < nz; ++k)
     for (int j = 0; j < ny; ++j)
       for (int i = 0; i < nx; ++i)
-        m.add_cell(CellType::Hexahedron, {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k),
-                                          id(i, j, k + 1), id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1),
-                                          id(i, j + 1, k + 1)});
+        m.add_cell(CellType::Hexahedron,
+                   {id(i, j, k), id(i + 1, j, k), id(i + 1, j + 1, k), id(i, j + 1, k), id(i, j, k + 1),
+                    id(i + 1, j, k + 1), id(i + 1, j + 1, k + 1), id(i, j + 1, k + 1)});
   if (!tetrahedra) return m;
   Mesh t;
   t.points = m.points;
@@ -72,7 +72,8 @@ Mesh make_mixed(int nx, int ny, int nz, const std::function<glm::dvec3(const glm
 }
 
 Mesh make_box(int nx, int ny, int nz, const glm::dvec3& lo, const glm::dvec3& hi, bool tetrahedra) {
-  return make_curvilinear(nx, ny, nz, [&](const glm::dvec3& u) { return lo + u * (hi - lo); }, tetrahedra);
+  return make_curvilinear(
+      nx, ny, nz, [&](const glm::dvec3& u) { return lo + u * (hi - lo); }, tetrahedra);
 }
 
 void set_field(Mesh& mesh, const std::string& name, const std::function<double(const glm::dvec3&)>& f) {
@@ -92,15 +93,18 @@ constexpr double kPi = 3.14159265358979323846;
 // Three quarters of a thick ring: a curvilinear grid with a hole and a cut, so its boundary is
 // not convex, carrying a field with two hot filaments that wind around the ring.
 Mesh swirl(int n, bool tets) {
-  Mesh m = make_curvilinear(3 * n, n, n, [](const glm::dvec3& u) {
-    const double theta = 1.5 * kPi * (1.0 - u.x), r = 0.45 + 0.55 * u.y, z = 0.7 * (u.z - 0.5);
-    const double twist = 0.25 * std::sin(theta);  // gently warped faces: a curvilinear grid
-    return glm::dvec3(r * std::cos(theta), r * std::sin(theta), z + twist * (r - 0.7));
-  }, tets);
+  Mesh m = make_curvilinear(
+      3 * n, n, n,
+      [](const glm::dvec3& u) {
+        const double theta = 1.5 * kPi * (1.0 - u.x), r = 0.45 + 0.55 * u.y, z = 0.7 * (u.z - 0.5);
+        const double twist = 0.25 * std::sin(theta);  // gently warped faces: a curvilinear grid
+        return glm::dvec3(r * std::cos(theta), r * std::sin(theta), z + twist * (r - 0.7));
+      },
+      tets);
   set_field(m, "temperature", [](const glm::dvec3& x) {
     const double r = std::hypot(x.x, x.y), theta = std::atan2(x.y, x.x);
     double t = 0.25 * (r - 0.45) / 0.55;  // a gentle outward gradient
-    for (int f = 0; f < 2; ++f) {  // two filaments winding about the ring's core
+    for (int f = 0; f < 2; ++f) {         // two filaments winding about the ring's core
       const double phase = theta * 2.0 + f * kPi;
       const double rc = 0.72 + 0.13 * std::cos(phase), zc = 0.13 * std::sin(phase);
       t += std::exp(-((r - rc) * (r - rc) + (x.z - zc) * (x.z - zc)) / 0.004);

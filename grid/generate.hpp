@@ -12,8 +12,7 @@ namespace cellproj {
 
 // An nx x ny x nz grid of cells over the unit cube mapped through `map`; hexahedra, or each
 // hexahedron split into its canonical tetrahedra (conforming, 6 per hexahedron).
-Mesh make_curvilinear(int nx, int ny, int nz, const std::function<glm::dvec3(const glm::dvec3&)>& map,
-                      bool tetrahedra);
+Mesh make_curvilinear(int nx, int ny, int nz, const std::function<glm::dvec3(const glm::dvec3&)>& map, bool tetrahedra);
 // The same grid with a conforming mix of cell types, by column of cells ((i + j) mod 3): hexahedra;
 // two wedges per cell; four pyramids on the side faces and four tetrahedra on the top and bottom
 // faces around a point added at the cell's centre.

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include <glm/common.hpp>
 #include <cmath>
+#include <glm/common.hpp>
 
 namespace cellproj {
 

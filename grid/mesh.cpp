@@ -30,8 +30,8 @@ const PointField& Mesh::field(const std::string& name) const {
   if (const auto* f = find_field(name)) return *f;
   std::string known;
   for (const auto& f : fields) known += (known.empty() ? "" : ", ") + f.name;
-  throw InputError(where(source, "no point field named '" + name + "'; the fields are: " +
-                                     (known.empty() ? "(none)" : known)));
+  throw InputError(
+      where(source, "no point field named '" + name + "'; the fields are: " + (known.empty() ? "(none)" : known)));
 }
 
 PointField& Mesh::add_field(std::string name, std::string origin) {
@@ -70,9 +70,8 @@ std::int64_t merge_coincident_points(Mesh& mesh) {
   auto coords = [&](std::int64_t p) {
     return std::tie(mesh.points[3 * p], mesh.points[3 * p + 1], mesh.points[3 * p + 2]);
   };
-  std::sort(order.begin(), order.end(), [&](std::int64_t a, std::int64_t b) {
-    return coords(a) < coords(b) || (coords(a) == coords(b) && a < b);
-  });
+  std::sort(order.begin(), order.end(),
+            [&](std::int64_t a, std::int64_t b) { return coords(a) < coords(b) || (coords(a) == coords(b) && a < b); });
   std::vector<std::int64_t> keep_as(static_cast<std::size_t>(n));  // point -> the first of its coincident group
   for (std::size_t i = 0; i < order.size(); ++i)
     keep_as[order[i]] = i > 0 && coords(order[i]) == coords(order[i - 1]) ? keep_as[order[i - 1]] : order[i];

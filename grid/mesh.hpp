@@ -44,13 +44,13 @@ class PointArray {
 // A non-owning view over a caller's arrays. Nothing is copied; the arrays must outlive the view.
 // Point ids are 64-bit here; render/volume.hpp takes 32-bit ones too (widening them once).
 struct MeshView {
-  PointArray points;                        // x y z per point
+  PointArray points;  // x y z per point
   std::int64_t n_points = 0;
   const std::int64_t* connectivity = nullptr;
-  const std::int64_t* offsets = nullptr;    // n_cells + 1 entries; cell c is [offsets[c], offsets[c+1])
-  const std::uint8_t* types = nullptr;      // VTK codes: 10 tetra, 11 voxel, 12 hexahedron, 13 wedge, 14 pyramid
+  const std::int64_t* offsets = nullptr;  // n_cells + 1 entries; cell c is [offsets[c], offsets[c+1])
+  const std::uint8_t* types = nullptr;    // VTK codes: 10 tetra, 11 voxel, 12 hexahedron, 13 wedge, 14 pyramid
   std::int64_t n_cells = 0;
-  std::string source;                       // named in error messages (a file, or "solver arrays")
+  std::string source;  // named in error messages (a file, or "solver arrays")
 
   CellType type(std::int64_t c) const { return static_cast<CellType>(types[c]); }
   const std::int64_t* cell(std::int64_t c) const { return connectivity + offsets[c]; }
@@ -66,13 +66,13 @@ struct PointField {
 
 class Mesh {
  public:
-  std::string source;                 // the file it came from
-  std::vector<double> points;         // x y z per point
+  std::string source;          // the file it came from
+  std::vector<double> points;  // x y z per point
   std::vector<std::int64_t> connectivity;
   std::vector<std::int64_t> offsets{0};
   std::vector<std::uint8_t> types;
   std::vector<PointField> fields;
-  std::vector<std::string> notes;     // what reading did to the data (conversions, skipped cells)
+  std::vector<std::string> notes;  // what reading did to the data (conversions, skipped cells)
 
   std::int64_t n_points() const { return static_cast<std::int64_t>(points.size() / 3); }
   std::int64_t n_cells() const { return static_cast<std::int64_t>(types.size()); }

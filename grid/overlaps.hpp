@@ -11,9 +11,9 @@
 namespace cellproj {
 
 struct OverlapReport {
-  std::int64_t cell_pairs = 0;  // pairs of cells whose interiors overlap beyond rounding
+  std::int64_t cell_pairs = 0;              // pairs of cells whose interiors overlap beyond rounding
   std::int64_t first_a = -1, first_b = -1;  // the pair with the lowest ids, for messages
-  std::int64_t candidates = 0;  // tetrahedron pairs whose boxes meet (the test's work)
+  std::int64_t candidates = 0;              // tetrahedron pairs whose boxes meet (the test's work)
 };
 
 // Two tetrahedra overlap when no plane separates them: none of their 4 + 4 face normals and 6 x 6

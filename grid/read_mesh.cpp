@@ -99,10 +99,14 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options) {
   if (fs::is_directory(path)) throw InputError(where(path, "is a folder, not a mesh file"));
   const std::string format = options.format.empty() ? format_for(path) : options.format;
   Mesh m;
-  if (format == "tetgen") m = read_tetgen(path);
-  else if (format == "off") m = read_off(path);
-  else if (format == "points") m = read_point_cloud(path);
-  else if (format == "vtk-xml" || format == "vtk-legacy" || format == "exodus" || format == "cgns" || format == "plot3d")
+  if (format == "tetgen")
+    m = read_tetgen(path);
+  else if (format == "off")
+    m = read_off(path);
+  else if (format == "points")
+    m = read_point_cloud(path);
+  else if (format == "vtk-xml" || format == "vtk-legacy" || format == "exodus" || format == "cgns" ||
+           format == "plot3d")
     m = read_vtk_family(path, format, options);
   else
     throw InputError(where(path, "unknown --format '" + format + "'"));

@@ -10,10 +10,10 @@
 namespace cellproj {
 
 struct ReadOptions {
-  std::string format;     // "" = by extension; else one of known_formats()
-  std::string q_file;     // PLOT3D solution; default: the grid's name with "xyz" replaced by "q"
-  std::string zone;       // CGNS: read this zone only (default: all zones)
-  int time_step = 0;      // Exodus II: which time step's fields
+  std::string format;  // "" = by extension; else one of known_formats()
+  std::string q_file;  // PLOT3D solution; default: the grid's name with "xyz" replaced by "q"
+  std::string zone;    // CGNS: read this zone only (default: all zones)
+  int time_step = 0;   // Exodus II: which time step's fields
 };
 
 // The format names accepted in ReadOptions::format, with the extensions that select them.

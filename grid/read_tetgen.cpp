@@ -48,15 +48,17 @@ void check_records(const std::string& file, bool node) {
   const std::int64_t n = in.integer("the record count in the header");
   if (n <= 0) throw InputError(where(file, "header record count " + std::to_string(n) + " must be positive"));
   std::int64_t fields = 0;  // numbers per record, its index included
-  if (node) {  // <#points> <dimension> <#attributes> <boundary markers 0|1>
+  if (node) {               // <#points> <dimension> <#attributes> <boundary markers 0|1>
     const std::int64_t dim = in.integer("the dimension"), attrs = in.integer("the attribute count"),
                        markers = in.integer("the boundary-marker flag");
-    if (dim != 3) throw InputError(where(file, "dimension " + std::to_string(dim) + " in the header; only 3D nodes are read"));
+    if (dim != 3)
+      throw InputError(where(file, "dimension " + std::to_string(dim) + " in the header; only 3D nodes are read"));
     fields = 1 + 3 + attrs + (markers ? 1 : 0);
   } else {  // <#tetrahedra> <nodes per tetrahedron> <region attribute 0|1>
     const std::int64_t corners = in.integer("the nodes per tetrahedron"), region = in.integer("the region flag");
     if (corners != 4 && corners != 10)
-      throw InputError(where(file, "header says " + std::to_string(corners) + " nodes per tetrahedron; expected 4 (or 10)"));
+      throw InputError(
+          where(file, "header says " + std::to_string(corners) + " nodes per tetrahedron; expected 4 (or 10)"));
     fields = 1 + corners + (region ? 1 : 0);
   }
   for (std::int64_t r = 0; r < n; ++r)
@@ -69,7 +71,8 @@ Mesh read_tetgen(const std::string& path) {
   const fs::path base = fs::path(path).replace_extension();
   const std::string node = base.string() + ".node", ele = base.string() + ".ele";
   for (const auto& f : {node, ele})
-    if (!fs::exists(f)) throw InputError(where(f, "not found (a TetGen mesh is a .node and an .ele of the same base name)"));
+    if (!fs::exists(f))
+      throw InputError(where(f, "not found (a TetGen mesh is a .node and an .ele of the same base name)"));
   check_records(node, true);
   check_records(ele, false);
 
@@ -94,7 +97,8 @@ Mesh read_tetgen(const std::string& path) {
     for (int k = 0; k < 4; ++k) ids[k] = io.tetrahedronlist[t * io.numberofcorners + k] - io.firstnumber;
     m.add_cell(CellType::Tetra, ids);
   }
-  if (io.numberofcorners == 10) m.notes.push_back("quadratic (10-node) tetrahedra read as linear: mid-edge nodes ignored");
+  if (io.numberofcorners == 10)
+    m.notes.push_back("quadratic (10-node) tetrahedra read as linear: mid-edge nodes ignored");
   if (io.numberofpointattributes == 0) m.notes.push_back("the .node file has no point attributes: no fields");
   return m;
 }

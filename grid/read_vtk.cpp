@@ -2,14 +2,15 @@
 #include <cmath>
 #include <cstdlib>
 #include <filesystem>
-#include <mutex>
 #include <fstream>
 #include <iterator>
-#include <sstream>
 #include <map>
+#include <mutex>
+#include <sstream>
 #include <unordered_map>
 
 #include <vtkCGNSReader.h>
+#include <vtkCellArray.h>
 #include <vtkCellData.h>
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
@@ -24,13 +25,12 @@
 #include <vtkMultiBlockPLOT3DReader.h>
 #include <vtkObjectFactory.h>
 #include <vtkOutputWindow.h>
-#include <vtkCellArray.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
-#include <vtkUnstructuredGrid.h>
+#include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
-#include <vtkPoints.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
 #include "base/error.hpp"
@@ -48,10 +48,11 @@ namespace {
 class CaptureWindow : public vtkOutputWindow {
  public:
   static CaptureWindow* New();
-  vtkTypeMacro(CaptureWindow, vtkOutputWindow)
-  void DisplayText(const char* text) override {
-    if (GetCurrentMessageType() == MESSAGE_TYPE_ERROR) errors.push_back(clean(text));
-    else if (GetCurrentMessageType() != MESSAGE_TYPE_TEXT) warnings.push_back(clean(text));
+  vtkTypeMacro(CaptureWindow, vtkOutputWindow) void DisplayText(const char* text) override {
+    if (GetCurrentMessageType() == MESSAGE_TYPE_ERROR)
+      errors.push_back(clean(text));
+    else if (GetCurrentMessageType() != MESSAGE_TYPE_TEXT)
+      warnings.push_back(clean(text));
   }
   std::vector<std::string> errors, warnings;
 
@@ -180,8 +181,9 @@ std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& me
       for (std::size_t k = 0; k < v.size(); ++k) {
         const vtkIdType id = ids->GetId(static_cast<vtkIdType>(k));
         if (id < 0 || id >= ds->GetNumberOfPoints())  // VTK's legacy reader lets these through
-          throw InputError("cell " + std::to_string(mesh.n_cells()) + " (" + vtk_type_name(type) + ") refers to point " +
-                           std::to_string(id) + ", out of range [0, " + std::to_string(ds->GetNumberOfPoints()) + ")");
+          throw InputError("cell " + std::to_string(mesh.n_cells()) + " (" + vtk_type_name(type) +
+                           ") refers to point " + std::to_string(id) + ", out of range [0, " +
+                           std::to_string(ds->GetNumberOfPoints()) + ")");
         v[k] = map.point[id];
       }
       std::uint8_t stored = static_cast<std::uint8_t>(type);
@@ -251,9 +253,11 @@ void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>
       continue;
     }
     if (!s.cell) {
-      PointField& f = mesh.add_field(name, s.per_leaf[0]->GetNumberOfComponents() > 1 ? "point data, magnitude of " +
-                                               std::to_string(s.per_leaf[0]->GetNumberOfComponents()) + " components"
-                                                                                          : "point data");
+      PointField& f =
+          mesh.add_field(name, s.per_leaf[0]->GetNumberOfComponents() > 1
+                                   ? "point data, magnitude of " +
+                                         std::to_string(s.per_leaf[0]->GetNumberOfComponents()) + " components"
+                                   : "point data");
       for (std::size_t b = 0; b < leaves.size(); ++b)
         for (std::size_t p = 0; p < maps[b].point.size(); ++p)
           f.values[maps[b].point[p]] = tuple_value(s.per_leaf[b], static_cast<vtkIdType>(p));
@@ -331,7 +335,8 @@ void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
   if (!ds) return;
   std::ifstream in(path);
   std::string line;
-  for (int i = 0; i < 3 && std::getline(in, line); ++i) {}
+  for (int i = 0; i < 3 && std::getline(in, line); ++i) {
+  }
   if (line.rfind("ASCII", 0) != 0) return;
   std::uintmax_t numbers = 0;
   while (std::getline(in, line)) {
@@ -346,7 +351,8 @@ void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
   if (vtkPointSet::SafeDownCast(ds)) needed += 3 * static_cast<std::uintmax_t>(ds->GetNumberOfPoints());
   if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds); ug && ug->GetCells())
     needed += static_cast<std::uintmax_t>(ug->GetCells()->GetNumberOfConnectivityIds() + 2 * ug->GetNumberOfCells());
-  for (vtkFieldData* fd : {static_cast<vtkFieldData*>(ds->GetPointData()), static_cast<vtkFieldData*>(ds->GetCellData())})
+  for (vtkFieldData* fd :
+       {static_cast<vtkFieldData*>(ds->GetPointData()), static_cast<vtkFieldData*>(ds->GetCellData())})
     for (int i = 0; i < fd->GetNumberOfArrays(); ++i)
       if (auto* a = fd->GetAbstractArray(i)) needed += static_cast<std::uintmax_t>(a->GetNumberOfValues());
   if (numbers < needed)
@@ -367,11 +373,13 @@ void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
   double version = 0.0;
   for (int i = 0; i < 4 && std::getline(in, line); ++i) {
     needed += line.size() + 1;
-    if (i == 0 && line.find("Version") != std::string::npos) version = std::atof(line.substr(line.find("Version") + 7).c_str());
+    if (i == 0 && line.find("Version") != std::string::npos)
+      version = std::atof(line.substr(line.find("Version") + 7).c_str());
     if (i == 2 && line.rfind("BINARY", 0) != 0) return;
   }
   auto bytes = [](vtkAbstractArray* a) {
-    return a ? static_cast<std::uintmax_t>(a->GetNumberOfValues()) * static_cast<std::uintmax_t>(a->GetDataTypeSize()) : 0;
+    return a ? static_cast<std::uintmax_t>(a->GetNumberOfValues()) * static_cast<std::uintmax_t>(a->GetDataTypeSize())
+             : 0;
   };
   if (auto* ps = vtkPointSet::SafeDownCast(ds); ps && ps->GetPoints()) needed += bytes(ps->GetPoints()->GetData());
   if (auto* ug = vtkUnstructuredGrid::SafeDownCast(ds); ug && ug->GetCells()) {
@@ -392,9 +400,10 @@ void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
   in.seekg(0);
   const std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   const auto size = static_cast<std::uintmax_t>(text.size());
-  std::vector<std::string> starts = {"POINTS ", "CELLS ", "OFFSETS ", "CONNECTIVITY ", "CELL_TYPES ", "POINT_DATA ",
-                                     "CELL_DATA ", "SCALARS ", "LOOKUP_TABLE ", "VECTORS ", "NORMALS ", "TENSORS ",
-                                     "FIELD ", "METADATA", "INFORMATION ", "NAME ", "DATA "};
+  std::vector<std::string> starts = {"POINTS ",     "CELLS ",     "OFFSETS ", "CONNECTIVITY ", "CELL_TYPES ",
+                                     "POINT_DATA ", "CELL_DATA ", "SCALARS ", "LOOKUP_TABLE ", "VECTORS ",
+                                     "NORMALS ",    "TENSORS ",   "FIELD ",   "METADATA",      "INFORMATION ",
+                                     "NAME ",       "DATA "};
   for (vtkFieldData* fd : {ds->GetFieldData(), static_cast<vtkFieldData*>(ds->GetPointData()),
                            static_cast<vtkFieldData*>(ds->GetCellData())})
     for (int i = 0; fd && i < fd->GetNumberOfArrays(); ++i)
@@ -411,8 +420,8 @@ void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
       if (end != std::string::npos && end - at < 256) needed += end - at;
     }
   if (size < needed)
-    throw InputError(where(path, "truncated: its arrays need at least " + std::to_string(needed) + " bytes, the file has " +
-                                     std::to_string(size)));
+    throw InputError(where(path, "truncated: its arrays need at least " + std::to_string(needed) +
+                                     " bytes, the file has " + std::to_string(size)));
 }
 
 template <class Reader>
@@ -517,11 +526,14 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     }
     Mesh m = run(r.Get(), path, messages);
     if (m.n_cells() == 0) throw InputError(where(path, "PLOT3D grid has no 3D cells (wrong format or dimensions?)"));
-    if (q.empty()) m.notes.push_back("PLOT3D grid read without a solution (q) file: no fields");
-    else m.notes.push_back("PLOT3D solution from " + q);
+    if (q.empty())
+      m.notes.push_back("PLOT3D grid read without a solution (q) file: no fields");
+    else
+      m.notes.push_back("PLOT3D solution from " + q);
     if (all_zero(m, "StagnationEnergy")) {  // pressure from zero energy is meaningless
-      m.fields.erase(std::remove_if(m.fields.begin(), m.fields.end(), [](const PointField& f) { return f.name == "Pressure"; }),
-                     m.fields.end());
+      m.fields.erase(
+          std::remove_if(m.fields.begin(), m.fields.end(), [](const PointField& f) { return f.name == "Pressure"; }),
+          m.fields.end());
       m.notes.push_back("StagnationEnergy is zero everywhere: derived Pressure omitted");
     }
     return m;

@@ -52,9 +52,8 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
     const glm::dvec3 x = m.point(p);
     return std::make_tuple(x.x, x.y, x.z);
   };
-  std::sort(pts.begin(), pts.end(), [&](std::int64_t a, std::int64_t b) {
-    return coords(a) < coords(b) || (coords(a) == coords(b) && a < b);
-  });
+  std::sort(pts.begin(), pts.end(),
+            [&](std::int64_t a, std::int64_t b) { return coords(a) < coords(b) || (coords(a) == coords(b) && a < b); });
   std::unordered_map<std::int64_t, std::int64_t> first_id;  // only the points of groups of two or more
   for (std::size_t s = 0, e; s < pts.size(); s = e) {
     for (e = s + 1; e < pts.size() && coords(pts[e]) == coords(pts[s]);) ++e;
@@ -72,7 +71,8 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
       if (const auto it = first_id.find(ids[i]); it != first_id.end()) ids[i] = it->second, repeated = true;
     if (repeated) open.push_back({face_key_of(ids, n), cf, t.cell_of(cf)});
   }
-  std::sort(open.begin(), open.end(), [](const Open& a, const Open& b) { return std::tie(a.key, a.cf) < std::tie(b.key, b.cf); });
+  std::sort(open.begin(), open.end(),
+            [](const Open& a, const Open& b) { return std::tie(a.key, a.cf) < std::tie(b.key, b.cf); });
   auto normal = [&](std::int64_t cf) {
     std::int64_t ids[4];
     const int n = ids_of(cf, ids);
@@ -108,7 +108,8 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
   for (std::size_t k = before; k < t.split_faces.size(); ++k)
     t.seam.insert(t.seam.end(), t.split_faces[k].begin(), t.split_faces[k].end());
   t.seam_faces += glued;
-  t.boundary.erase(std::remove_if(t.boundary.begin(), t.boundary.end(), [&](std::int64_t cf) { return t.neighbor[cf] != kBoundary; }),
+  t.boundary.erase(std::remove_if(t.boundary.begin(), t.boundary.end(),
+                                  [&](std::int64_t cf) { return t.neighbor[cf] != kBoundary; }),
                    t.boundary.end());
 }
 

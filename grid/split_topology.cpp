@@ -59,8 +59,10 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
     for (std::int64_t cf = base.face_offsets[c]; cf < base.face_offsets[c + 1]; ++cf) {
       if (on_seam(cf)) continue;
       const std::int64_t m = base.neighbor[cf];
-      if (m >= 0 && !is_split(m)) t.neighbor[t.face_offsets[first[c]] + (cf - base.face_offsets[c])] = first[m];
-      else if (m == kNonManifold) t.neighbor[t.face_offsets[first[c]] + (cf - base.face_offsets[c])] = kNonManifold;
+      if (m >= 0 && !is_split(m))
+        t.neighbor[t.face_offsets[first[c]] + (cf - base.face_offsets[c])] = first[m];
+      else if (m == kNonManifold)
+        t.neighbor[t.face_offsets[first[c]] + (cf - base.face_offsets[c])] = kNonManifold;
     }
   }
   // Quads matched to two triangles in the mesh itself stay so while the quad's cell is whole.
@@ -103,9 +105,12 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
       const int size = def.face[f].size, ntri = size == 4 ? 2 : 1;
       std::int64_t q[4], tri[2][3];
       for (int k = 0; k < size; ++k) q[k] = mesh.cell(c)[def.face[f].v[k]];
-      if (size == 4) split_quad(q, tri);
-      else std::copy(q, q + 3, tri[0]);
-      const TetFace* on[2] = {find(mine, face_key_of(tri[0], 3)), ntri == 2 ? find(mine, face_key_of(tri[1], 3)) : nullptr};
+      if (size == 4)
+        split_quad(q, tri);
+      else
+        std::copy(q, q + 3, tri[0]);
+      const TetFace* on[2] = {find(mine, face_key_of(tri[0], 3)),
+                              ntri == 2 ? find(mine, face_key_of(tri[1], 3)) : nullptr};
       if (!on[0] || (ntri == 2 && !on[1])) return build_topology(s);  // not a face of the tetrahedra
       if (m == kSplitFace) {  // the mesh's own triangles across this quad (of tetrahedra: never split)
         for (const auto& [quad, t0, t1] : base.split_faces) {
@@ -148,7 +153,7 @@ FaceTopology split_topology(const MeshView& mesh, const FaceTopology& base, cons
     if (t.neighbor[f] == kBoundary) t.boundary.push_back(f);
     across += t.neighbor[f] >= 0;
   }
-  t.shared_faces = across / 2;  // a pair of faces, or a split quad's two triangles, each
+  t.shared_faces = across / 2;               // a pair of faces, or a split quad's two triangles, each
   if (!base.seam.empty()) glue_seams(s, t);  // none can appear where the mesh had none
   t.nonmanifold_faces = base.nonmanifold_faces;
   t.first_nonmanifold_cell = base.first_nonmanifold_cell < 0 ? -1 : first[base.first_nonmanifold_cell];

@@ -7,8 +7,12 @@ namespace cellproj {
 void split_quad(const std::int64_t q[4], std::int64_t tri[2][3]) {
   const int k = static_cast<int>(std::min_element(q, q + 4) - q);
   const std::int64_t a = q[k], b = q[(k + 1) % 4], c = q[(k + 2) % 4], d = q[(k + 3) % 4];
-  tri[0][0] = a; tri[0][1] = b; tri[0][2] = c;
-  tri[1][0] = a; tri[1][1] = c; tri[1][2] = d;
+  tri[0][0] = a;
+  tri[0][1] = b;
+  tri[0][2] = c;
+  tri[1][0] = a;
+  tri[1][1] = c;
+  tri[1][2] = d;
 }
 
 int surface_triangles(const MeshView& mesh, std::int64_t c, std::int64_t out[kMaxSurfaceTriangles][3]) {

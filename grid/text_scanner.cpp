@@ -28,7 +28,9 @@ bool TextScanner::next_token(std::string& tok) {
 
 double TextScanner::number(const char* what) {
   std::string tok;
-  if (!next_token(tok)) throw InputError(where(path_, "file ends (after line " + std::to_string(line_) + ") where " + what + " was expected: truncated?"));
+  if (!next_token(tok))
+    throw InputError(where(
+        path_, "file ends (after line " + std::to_string(line_) + ") where " + what + " was expected: truncated?"));
   char* end = nullptr;
   errno = 0;
   const double v = std::strtod(tok.c_str(), &end);
@@ -40,7 +42,8 @@ double TextScanner::number(const char* what) {
 std::int64_t TextScanner::integer(const char* what) {
   const double v = number(what);
   if (v != std::floor(v) || std::abs(v) > 9.0e15)
-    throw InputError(where(path_, "line " + std::to_string(line_) + ": " + std::to_string(v) + " is not an integer (" + what + ")"));
+    throw InputError(
+        where(path_, "line " + std::to_string(line_) + ": " + std::to_string(v) + " is not an integer (" + what + ")"));
   return static_cast<std::int64_t>(v);
 }
 

@@ -2,8 +2,8 @@
 
 #include <algorithm>
 
-#include <glm/common.hpp>
 #include <array>
+#include <glm/common.hpp>
 #include <limits>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
@@ -43,12 +43,13 @@ int face_points(const MeshView& m, std::int64_t cell, int local, glm::dvec3 p[4]
 
 std::int64_t FaceTopology::cell_of(std::int64_t cf) const {
   return static_cast<std::int64_t>(std::upper_bound(face_offsets.begin(), face_offsets.end(), cf) -
-                                   face_offsets.begin()) - 1;
+                                   face_offsets.begin()) -
+         1;
 }
 
 std::int64_t match_quads_to_triangles(const MeshView& m, FaceTopology& t, const std::vector<std::int64_t>& open,
-                                                   const std::function<std::int64_t(std::int64_t)>& same,
-                                                   const std::function<bool(std::int64_t, std::int64_t)>& accept) {
+                                      const std::function<std::int64_t(std::int64_t)>& same,
+                                      const std::function<bool(std::int64_t, std::int64_t)>& accept) {
   auto key_of = [&](std::int64_t* ids, int n) {
     for (int i = 0; i < n; ++i) ids[i] = same(ids[i]);
     return face_key_of(ids, n);
@@ -65,8 +66,10 @@ std::int64_t match_quads_to_triangles(const MeshView& m, FaceTopology& t, const 
   for (const std::int64_t cf : open) {
     std::int64_t ids[4];
     const int n = ids_of(cf, ids);
-    if (n == 3) tris.emplace_back(key_of(ids, 3), cf);
-    else quads.push_back(cf);
+    if (n == 3)
+      tris.emplace_back(key_of(ids, 3), cf);
+    else
+      quads.push_back(cf);
   }
   if (tris.empty() || quads.empty()) return matched;
   std::sort(tris.begin(), tris.end());
@@ -151,7 +154,8 @@ FaceTopology build_topology(const MeshView& m) {
   std::vector<std::int64_t> open;
   for (std::int64_t f = 0; f < n_faces; ++f)
     if (t.neighbor[f] == kBoundary) open.push_back(f);
-  match_quads_to_triangles(m, t, open, [](std::int64_t p) { return p; }, [](std::int64_t, std::int64_t) { return true; });
+  match_quads_to_triangles(
+      m, t, open, [](std::int64_t p) { return p; }, [](std::int64_t, std::int64_t) { return true; });
   for (const std::int64_t f : open)
     if (t.neighbor[f] == kBoundary) t.boundary.push_back(f);
   glue_seams(m, t);
@@ -215,7 +219,9 @@ bool BoundaryHull::supports(const glm::dvec3& dir, const glm::dvec3* p, int n, i
   return support(dir, up) <= fmax + tol_ || -support(-dir, down) >= fmin - tol_;
 }
 
-HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) { return boundary_convexity(m, t, BoundaryHull(m, t)); }
+HullReport boundary_convexity(const MeshView& m, const FaceTopology& t) {
+  return boundary_convexity(m, t, BoundaryHull(m, t));
+}
 
 HullReport boundary_convexity(const MeshView& m, const FaceTopology& t, const BoundaryHull& hull) {
   HullReport r;

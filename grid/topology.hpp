@@ -23,18 +23,18 @@ struct FaceTopology {
   // CellDef; neighbor[cf] is the cell across cell face cf, kBoundary or kNonManifold.
   std::vector<std::int64_t> face_offsets;
   std::vector<std::int64_t> neighbor;
-  std::vector<std::int64_t> boundary;   // the cell faces with no cell across them
+  std::vector<std::int64_t> boundary;  // the cell faces with no cell across them
   // Quads matched to the two triangles of their canonical split: (quad's cell face, the triangles'
   // cell faces). The triangles' neighbor is the quad's cell; the quad's is kSplitFace.
   std::vector<std::array<std::int64_t, 3>> split_faces;
   // Seams glued by glue_seams: the cell faces matched by position, not by ids (both sides listed).
   std::vector<std::int64_t> seam;
-  std::int64_t seam_faces = 0;          // shared faces among those (counted once)
-  std::int64_t shared_faces = 0;        // faces (counted once) between exactly two cells
-  std::int64_t nonmanifold_faces = 0;   // faces (counted once) used by three or more cells
+  std::int64_t seam_faces = 0;         // shared faces among those (counted once)
+  std::int64_t shared_faces = 0;       // faces (counted once) between exactly two cells
+  std::int64_t nonmanifold_faces = 0;  // faces (counted once) used by three or more cells
   std::int64_t first_nonmanifold_cell = -1;
-  std::int64_t nonplanar_faces = 0;     // quads (counted once) warped beyond kNonPlanarRelative
-  double max_nonplanarity = 0.0;        // largest distance between a quad's diagonals (world units)
+  std::int64_t nonplanar_faces = 0;        // quads (counted once) warped beyond kNonPlanarRelative
+  double max_nonplanarity = 0.0;           // largest distance between a quad's diagonals (world units)
   double max_relative_nonplanarity = 0.0;  // the same over the quad's mean diagonal length
 
   std::int64_t cell_of(std::int64_t cell_face) const;  // the cell a cell face belongs to

@@ -10,9 +10,9 @@
 namespace cellproj {
 
 struct ValidationReport {
-  std::int64_t inverted_cells = 0;     // negative volume: re-oriented by reorient_inverted()
-  std::int64_t degenerate_cells = 0;   // zero volume (round-off level): they contribute nothing
-  std::int64_t duplicate_points = 0;   // points at the same coordinates as an earlier point
+  std::int64_t inverted_cells = 0;    // negative volume: re-oriented by reorient_inverted()
+  std::int64_t degenerate_cells = 0;  // zero volume (round-off level): they contribute nothing
+  std::int64_t duplicate_points = 0;  // points at the same coordinates as an earlier point
   std::int64_t first_inverted = -1, first_degenerate = -1, first_duplicate = -1;
   std::vector<double> volumes;         // signed volume per cell, as read
   std::vector<std::int64_t> inverted;  // the inverted cells, in order

@@ -55,11 +55,13 @@ void write_off(const Mesh& mesh, const std::string& field, const std::string& pa
   out.precision(17);
   out << mesh.n_points() << ' ' << mesh.n_cells() << '\n';
   for (std::int64_t p = 0; p < mesh.n_points(); ++p)
-    out << mesh.points[3 * p] << ' ' << mesh.points[3 * p + 1] << ' ' << mesh.points[3 * p + 2] << ' ' << f.values[p] << '\n';
+    out << mesh.points[3 * p] << ' ' << mesh.points[3 * p + 1] << ' ' << mesh.points[3 * p + 2] << ' ' << f.values[p]
+        << '\n';
   for (std::int64_t c = 0; c < mesh.n_cells(); ++c) {
     if (mesh.types[c] != static_cast<std::uint8_t>(CellType::Tetra))
       throw InputError(where(path, "the .off format holds tetrahedra only; cell " + std::to_string(c) + " is not one"));
-    for (std::int64_t k = mesh.offsets[c]; k < mesh.offsets[c + 1]; ++k) out << mesh.connectivity[k] << (k + 1 < mesh.offsets[c + 1] ? ' ' : '\n');
+    for (std::int64_t k = mesh.offsets[c]; k < mesh.offsets[c + 1]; ++k)
+      out << mesh.connectivity[k] << (k + 1 < mesh.offsets[c + 1] ? ' ' : '\n');
   }
   if (!out) throw InputError(where(path, "write failed"));
 }

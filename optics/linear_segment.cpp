@@ -40,7 +40,7 @@ void exponential_moments(double a, int kmax, double* m) {
 
 // F(a, b) = int_0^1 exp(-a u - b u^2) du for a >= 0 and a + 2b >= 0 (kappa >= 0 at both ends).
 double mean_transmittance(double a, double b, double depth) {
-  if (b == 0.0) return -std::expm1(-a) / a;  // constant kappa (a > 0 here: depth >= kTinyDepth)
+  if (b == 0.0) return -std::expm1(-a) / a;   // constant kappa (a > 0 here: depth >= kTinyDepth)
   if (std::abs(b) <= kSeriesB * (1.0 + a)) {  // sum_n (-b)^n / n! M_2n(a), M_2n <= 1
     double coef[kSeriesTerms];
     int n = 0;

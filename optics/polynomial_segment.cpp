@@ -39,8 +39,8 @@ double crossing(const ScalarPolynomial& s, double b, double xa, double xb) {
 }  // namespace
 
 double chebyshev_node(int k) {
-  static constexpr double kNodes[kN] = {0.98078528040323043, 0.83146961230254524,  0.55557023301960218,
-                                        0.19509032201612825, -0.19509032201612825, -0.55557023301960218,
+  static constexpr double kNodes[kN] = {0.98078528040323043,  0.83146961230254524,  0.55557023301960218,
+                                        0.19509032201612825,  -0.19509032201612825, -0.55557023301960218,
                                         -0.83146961230254524, -0.98078528040323043};  // cos((2k + 1) pi / 16)
   return kNodes[k];
 }

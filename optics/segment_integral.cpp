@@ -10,7 +10,7 @@ namespace {
 constexpr double kNode[4] = {0.1834346424956498, 0.5255324099163290, 0.7966664774136267, 0.9602898564975363};
 constexpr double kWeight[4] = {0.3626837833783620, 0.3137066458778873, 0.2223810344533745, 0.1012285362903763};
 
-constexpr double kDepthStep = 0.25;   // optical depth per quadrature piece
+constexpr double kDepthStep = 0.25;  // optical depth per quadrature piece
 
 }  // namespace
 

@@ -30,7 +30,8 @@ inline SegmentLight under(const SegmentLight& front, const SegmentLight& back) {
 // Reference quality: the segment is cut where the optical depth grows by 1/4 and each piece is
 // integrated with 8-point Gauss-Legendre, relative error below 1e-12; light behind an optical depth
 // of 60 is dropped (below 1e-26).
-SegmentLight integrate_linear_reference(double length, double k0, double k1, const glm::dvec3& c0, const glm::dvec3& c1);
+SegmentLight integrate_linear_reference(double length, double k0, double k1, const glm::dvec3& c0,
+                                        const glm::dvec3& c1);
 
 // Calls piece(ends, fraction) for each piece of a segment along which the scalar runs linearly from
 // s0 (front) to s1 (back), cut at the transfer function's breakpoints, front to back: `ends` holds

@@ -50,8 +50,8 @@ TransferFunction::TransferFunction(std::vector<ColorPoint> color, std::vector<Ex
                          std::to_string(color_[i].rgb[k]) + " is outside [0, 1]");
   for (std::size_t i = 0; i < extinction_.size(); ++i)
     if (!(extinction_[i].kappa >= 0.0) || !std::isfinite(extinction_[i].kappa))
-      throw InputError(source + ": extinction[" + std::to_string(i) + "]: kappa = " +
-                       std::to_string(extinction_[i].kappa) + " must be finite and >= 0");
+      throw InputError(source + ": extinction[" + std::to_string(i) +
+                       "]: kappa = " + std::to_string(extinction_[i].kappa) + " must be finite and >= 0");
   for (const auto& p : color_) breakpoints_.push_back(p.s);
   for (const auto& p : extinction_) breakpoints_.push_back(p.s);
   std::sort(breakpoints_.begin(), breakpoints_.end());
@@ -59,7 +59,8 @@ TransferFunction::TransferFunction(std::vector<ColorPoint> color, std::vector<Ex
 }
 
 glm::dvec3 TransferFunction::color(double s) const {
-  return eval_on_segment<ColorPoint, glm::dvec3>(color_, segment_at(color_, s), s, [](const ColorPoint& p) { return p.rgb; });
+  return eval_on_segment<ColorPoint, glm::dvec3>(color_, segment_at(color_, s), s,
+                                                 [](const ColorPoint& p) { return p.rgb; });
 }
 
 double TransferFunction::extinction(double s) const {

@@ -15,8 +15,8 @@ namespace cellproj {
 #ifndef CELLPROJ_HAVE_OPENGL
 bool opengl_built() { return false; }
 
-Image draw_with_opengl(const CellFragments&, const MeshView&, const std::vector<std::int64_t>&, const OpacityTable*, int,
-                       int, const ProjectionOptions&, ProjectionStats&) {
+Image draw_with_opengl(const CellFragments&, const MeshView&, const std::vector<std::int64_t>&, const OpacityTable*,
+                       int, int, const ProjectionOptions&, ProjectionStats&) {
   throw ResourceError("this cellproj was built without the OpenGL back ends (OSMesa was not found)");
 }
 #else
@@ -33,7 +33,7 @@ Image draw_with_opengl(const CellFragments& project, const MeshView& cells, cons
   gl.begin(table);
   const std::size_t batch = batch_size(static_cast<std::size_t>(std::max(options.batch_cells, 0)), order.size());
   const std::size_t window = 64;  // batches made at once, then drawn in order
-  std::vector<std::vector<GLCorner>> corners(window);
+  std::vector<std::vector<GLCorner> > corners(window);
   std::vector<ProjectionCounters> counters(window);
   std::vector<CellScratch> scratch(window);
   for (std::size_t first = 0; first < order.size(); first += window * batch) {

@@ -25,20 +25,23 @@ double since(std::chrono::steady_clock::time_point t) {
 std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
   std::vector<float> area(static_cast<std::size_t>(cells.n_cells));
   const double w = rays.width(), h = rays.height();
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-    for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-      const std::int64_t* id = cells.cell(c);
-      double x0 = w, x1 = 0, y0 = h, y1 = 0;
-      bool behind = false;
-      for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
-        const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
-        behind = behind || (rays.perspective() && !(v.z > 0.0));
-        x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
-      }
-      const double dx = std::clamp(x1, 0.0, w) - std::clamp(x0, 0.0, w), dy = std::clamp(y1, 0.0, h) - std::clamp(y0, 0.0, h);
-      area[static_cast<std::size_t>(c)] = behind ? static_cast<float>(w * h) : static_cast<float>((dx + 1) * (dy + 1));
-    }
-  });
+  tbb::parallel_for(
+      tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
+        for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+          const std::int64_t* id = cells.cell(c);
+          double x0 = w, x1 = 0, y0 = h, y1 = 0;
+          bool behind = false;
+          for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
+            const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
+            behind = behind || (rays.perspective() && !(v.z > 0.0));
+            x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+          }
+          const double dx = std::clamp(x1, 0.0, w) - std::clamp(x0, 0.0, w),
+                       dy = std::clamp(y1, 0.0, h) - std::clamp(y0, 0.0, h);
+          area[static_cast<std::size_t>(c)] =
+              behind ? static_cast<float>(w * h) : static_cast<float>((dx + 1) * (dy + 1));
+        }
+      });
   return area;
 }
 
@@ -70,8 +73,9 @@ OpacityTable opacity_table(const TransferFunction& tf, int size, double max_diam
 
 void check_options(const ProjectionOptions& o) {
   if (is_opengl(o.backend) && !opengl_built())
-    throw ResourceError("the OpenGL back ends were not built (OSMesa, libosmesa6-dev, was not found when cellproj was "
-                        "configured); use the software back end");
+    throw ResourceError(
+        "the OpenGL back ends were not built (OSMesa, libosmesa6-dev, was not found when cellproj was "
+        "configured); use the software back end");
   if (o.table_size < 2 || o.table_size > 8192)
     throw InputError("opacity table size " + std::to_string(o.table_size) + " is outside [2, 8192]");
   if (is_opengl(o.backend) && !traits(o.method).opengl) {

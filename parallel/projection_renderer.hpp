@@ -10,8 +10,8 @@
 
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
-#include "projection/cell_fragments.hpp"
 #include "parallel/projection_options.hpp"
+#include "projection/cell_fragments.hpp"
 #include "projection/method.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
@@ -20,18 +20,17 @@
 
 namespace cellproj {
 
-
 struct ProjectionStats {
   ProjectionCounters counters;
   SortStats sort;
   Tetrahedralize tetrahedralize = Tetrahedralize::problem;  // the mode that ran (none for a mesh of tetrahedra)
-  std::int64_t cells = 0;              // cells sorted and projected this frame (after splitting)
-  std::int64_t tets = 0;               // of which tetrahedra
-  std::int64_t problem_cells = 0;      // mesh cells with a face folded in this view (problem and none modes)
-  std::int64_t cells_split = 0;        // mesh cells split into tetrahedra for this frame
-  std::int64_t cycle_splits = 0;       // of which split because they were in a visibility cycle
+  std::int64_t cells = 0;                                   // cells sorted and projected this frame (after splitting)
+  std::int64_t tets = 0;                                    // of which tetrahedra
+  std::int64_t problem_cells = 0;  // mesh cells with a face folded in this view (problem and none modes)
+  std::int64_t cells_split = 0;    // mesh cells split into tetrahedra for this frame
+  std::int64_t cycle_splits = 0;   // of which split because they were in a visibility cycle
   std::vector<std::pair<std::string, double>> phase_seconds;  // project points, sort, project and composite
-  std::string gl_renderer;             // the OpenGL back ends: GL_RENDERER
+  std::string gl_renderer;                                    // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;
 };
 
@@ -55,7 +54,8 @@ class ProjectionRenderer {
  private:
   MeshView mesh_;
   SplittingSorter sorter_;
-  double max_diameter_ = 0.0;  // the longest distance between two vertices of a cell: no ray segment in a cell is longer
+  double max_diameter_ =
+      0.0;  // the longest distance between two vertices of a cell: no ray segment in a cell is longer
 };
 
 }  // namespace cellproj

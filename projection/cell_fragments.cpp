@@ -4,10 +4,10 @@
 #include <cmath>
 #include <limits>
 
-#include <glm/geometric.hpp>
-#include <glm/vec2.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
+#include <glm/vec2.hpp>
 
 #include "optics/linear_segment.hpp"
 #include "projection/projected_tet.hpp"
@@ -72,18 +72,19 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
   PointOptics o;
   o.kappa.resize(static_cast<std::size_t>(n_points));
   o.color.resize(static_cast<std::size_t>(n_points));
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, n_points, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-    for (std::int64_t p = r.begin(); p < r.end(); ++p) {
-      const double s = scalar ? scalar[p] : 0.0;  // as ScreenPoints
-      o.kappa[p] = tf.extinction(s), o.color[p] = tf.color(s);
-    }
-  });
+  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, n_points, 4096),
+                    [&](const tbb::blocked_range<std::int64_t>& r) {
+                      for (std::int64_t p = r.begin(); p < r.end(); ++p) {
+                        const double s = scalar ? scalar[p] : 0.0;  // as ScreenPoints
+                        o.kappa[p] = tf.extinction(s), o.color[p] = tf.color(s);
+                      }
+                    });
   return o;
 }
 
 CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
-                           const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
-                           const PointOptics* optics)
+                             const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
+                             const PointOptics* optics)
     : screen_(screen), rays_(rays), points_(points), tf_(tf), method_(traits(method)), table_(table), optics_(optics) {
   // Which way a triangle facing the eye turns in this image: (c, c + r, c + u) with r x u towards
   // the eye, ahead of it on the view axis.
@@ -108,8 +109,9 @@ void CellFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& cou
   const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
   const double det = glm::dot(e1, glm::cross(e2, e3));
   if (!(std::abs(det) > 0.0)) return;  // zero volume: nothing to see
-  const glm::dvec3 g = (glm::cross(e2, e3) * (s[1] - s[0]) + glm::cross(e3, e1) * (s[2] - s[0]) +
-                        glm::cross(e1, e2) * (s[3] - s[0])) / det;
+  const glm::dvec3 g =
+      (glm::cross(e2, e3) * (s[1] - s[0]) + glm::cross(e3, e1) * (s[2] - s[0]) + glm::cross(e1, e2) * (s[3] - s[0])) /
+      det;
   // Face planes n . x <= c inside, n outward (away from the opposite vertex).
   glm::dvec3 n[4];
   double c[4];
@@ -124,13 +126,16 @@ void CellFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& cou
   std::int64_t emitted = 0;
   for (int j = 0; j < rays_.height(); ++j)
     for (int i = 0; i < rays_.width(); ++i) {
-      const glm::dvec3 d = rays_.ray(i + 0.5, j + 0.5).dir;  // from the eye
+      const glm::dvec3 d = rays_.ray(i + 0.5, j + 0.5).dir;           // from the eye
       double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();  // from the eye on
       for (int f = 0; f < 4 && t0 < t1; ++f) {
         const double den = glm::dot(n[f], d), num = c[f] - glm::dot(n[f], eye);
-        if (den > 0) t1 = std::min(t1, num / den);
-        else if (den < 0) t0 = std::max(t0, num / den);
-        else if (num < 0) t1 = -1.0;  // parallel and outside
+        if (den > 0)
+          t1 = std::min(t1, num / den);
+        else if (den < 0)
+          t0 = std::max(t0, num / den);
+        else if (num < 0)
+          t1 = -1.0;  // parallel and outside
       }
       if (!(t1 > t0)) continue;
       const double sf = s[0] + glm::dot(g, eye + t0 * d - p[0]), sb = s[0] + glm::dot(g, eye + t1 * d - p[0]);
@@ -281,8 +286,9 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
   auto each_triangle = [&](auto&& shade_pixel) {
     for (std::size_t t = 0; t < p.tri.size(); ++t) {
       const ThickVertex* V = p.tri[t].v;
-      rasterize_triangle_weights(glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width,
-                                 height, [&](int i, int j, double w0, double w1, double w2) { shade_pixel(i, j, t, w0, w1, w2); });
+      rasterize_triangle_weights(
+          glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
+          [&](int i, int j, double w0, double w1, double w2) { shade_pixel(i, j, t, w0, w1, w2); });
     }
   };
 
@@ -319,15 +325,18 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
       const double b0 = w0 / V[0].zb, b1 = w1 / V[1].zb, b2 = w2 / V[2].zb;
       const double inv_f = 1.0 / (f0 + f1 + f2), inv_b = 1.0 / (b0 + b1 + b2);
       zf = inv_f, zb = inv_b;
-      sf = (f0 * V[0].sf + f1 * V[1].sf + f2 * V[2].sf) * inv_f, sb = (b0 * V[0].sb + b1 * V[1].sb + b2 * V[2].sb) * inv_b;
+      sf = (f0 * V[0].sf + f1 * V[1].sf + f2 * V[2].sf) * inv_f,
+      sb = (b0 * V[0].sb + b1 * V[1].sb + b2 * V[2].sb) * inv_b;
     }
     sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
     const double l = std::max(0.0, zb - zf) * rays_.length_per_depth(i + 0.5, j + 0.5);
     SegmentLight light;
-    if (cut) light = integrate_segment_closed_form(tf_, l, sf, sb);
+    if (cut)
+      light = integrate_segment_closed_form(tf_, l, sf, sb);
     else if (has_breakpoint)  // pt-analytic across a breakpoint: kappa and C linear between the ends' values
       light = integrate_linear_closed_form(l, tf_.extinction(sf), tf_.extinction(sb), tf_.color(sf), tf_.color(sb));
-    else light = integrate_linear_closed_form(l, piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb));
+    else
+      light = integrate_linear_closed_form(l, piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb));
     emitted += emit(i, j, light.rgb, light.opacity());
   });
   counters.fragments += emitted;

@@ -12,20 +12,20 @@
 #include "projection/method.hpp"
 #include "projection/projected_cell.hpp"
 #include "projection/projected_tet.hpp"
-#include "view/screen.hpp"
 #include "view/image.hpp"
+#include "view/screen.hpp"
 
 namespace cellproj {
 
 struct ProjectionCounters {
-  std::int64_t tets = 0;              // tetrahedra projected
-  std::int64_t polyhedra = 0;         // other cells projected whole (image-plane subdivision)
-  std::int64_t polygons = 0;          // their front ∩ back polygons
+  std::int64_t tets = 0;                    // tetrahedra projected
+  std::int64_t polyhedra = 0;               // other cells projected whole (image-plane subdivision)
+  std::int64_t polygons = 0;                // their front ∩ back polygons
   std::int64_t subdivisions_looked_up = 0;  // cells whose projection topology was known (the fast path)
   std::int64_t class1 = 0, class2 = 0;
-  std::int64_t empty = 0;             // zero projected area (slivers seen edge-on, zero-volume cells)
-  std::int64_t behind_eye = 0;        // perspective: a vertex at or behind the eye: ray cast per pixel (GL, and whole
-                                      // cells other than tetrahedra: not drawn)
+  std::int64_t empty = 0;       // zero projected area (slivers seen edge-on, zero-volume cells)
+  std::int64_t behind_eye = 0;  // perspective: a vertex at or behind the eye: ray cast per pixel (GL, and whole
+                                // cells other than tetrahedra: not drawn)
   std::int64_t fragments = 0;
   std::int64_t breakpoint_cells = 0;  // cells whose scalar range holds a breakpoint (cut by pt-breakpoints)
   std::int64_t direct_cells = 0;      // cells too large to buffer, drawn by the compositor itself
@@ -72,8 +72,9 @@ class CellFragments {
   // `points` (the recentred points the screen positions came from) serves the cells that reach
   // behind the eye in perspective, which are ray cast instead of projected.
   // `rays` is the frame's PixelRays on the recentred camera, the one `screen` was made with.
-  CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points, const TransferFunction& tf,
-               ProjectionMethod method, const OpacityTable* table, const PointOptics* optics);
+  CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
+                const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
+                const PointOptics* optics);
   // Appends the fragments of the cell (point ids `ids`, of `type`) to out.
   void project(const std::int64_t* ids, CellType type, std::vector<Fragment>& out, CellScratch& scratch,
                ProjectionCounters& counters) const;
@@ -98,7 +99,8 @@ class CellFragments {
   void ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const;
   // project()'s body; emit(i, j, rgb, alpha) stores or composites a fragment, true if it did.
   template <class Emit>
-  void project_with(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p, ProjectionCounters& counters) const;
+  void project_with(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
+                    ProjectionCounters& counters) const;
   // The tetrahedron's or cell's triangles into p (counted); the tetrahedra and cells not projected
   // say why.
   Seen triangles_of(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters) const;

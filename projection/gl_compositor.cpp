@@ -1,14 +1,13 @@
 #include "projection/gl_compositor.hpp"
 
-#include "base/error.hpp"
-
 #include <random>
-#include <stdexcept>
 
 #define GL_GLEXT_PROTOTYPES
-#include <GL/osmesa.h>
 #include <GL/gl.h>
 #include <GL/glext.h>
+#include <GL/osmesa.h>
+
+#include "base/error.hpp"
 
 namespace cellproj {
 
@@ -46,8 +45,10 @@ GLCompositor::GLCompositor(int width, int height, GLTarget target) : gl_(std::ma
   gl_->width = width, gl_->height = height, gl_->target = target;
   gl_->ctx = OSMesaCreateContextExt(OSMESA_RGBA, 0, 0, 0, nullptr);
   if (!gl_->ctx) throw ResourceError("OSMesa: cannot create an OpenGL context");
-  if (target == GLTarget::float32) gl_->color32.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
-  else gl_->color8.assign(static_cast<std::size_t>(width) * height * 4, 0);
+  if (target == GLTarget::float32)
+    gl_->color32.assign(static_cast<std::size_t>(width) * height * 4, 0.0f);
+  else
+    gl_->color8.assign(static_cast<std::size_t>(width) * height * 4, 0);
   gl_->make_current();
   glGenTextures(2, gl_->textures);
 }
@@ -77,8 +78,10 @@ void GLCompositor::begin(const OpacityTable* table) {
   glEnable(GL_BLEND);
   // Back-to-front "over" on premultiplied colour: pt-table's fragment is (C a, a) from the texture;
   // pt-linear's is (C, a) interpolated, premultiplied by the blend.
-  if (table) glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
-  else glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  if (table)
+    glBlendFunc(GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
+  else
+    glBlendFuncSeparate(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA, GL_ONE, GL_ONE_MINUS_SRC_ALPHA);
 
   glActiveTexture(GL_TEXTURE0);
   if (table) {  // the 2D alpha texture, every channel alpha, modulating (C, 1)
@@ -135,7 +138,8 @@ void GLCompositor::draw(const std::vector<GLCorner>& corners) {
 Image GLCompositor::finish() {
   glFinish();
   Image img(gl_->width, gl_->height);
-  if (gl_->target == GLTarget::float32) img.rgba = gl_->color32;
+  if (gl_->target == GLTarget::float32)
+    img.rgba = gl_->color32;
   else
     for (std::size_t k = 0; k < img.rgba.size(); ++k) img.rgba[k] = gl_->color8[k] / 255.0f;
   return img;

@@ -8,22 +8,22 @@
 #include <string>
 #include <vector>
 
-#include "projection/method.hpp"
 #include "projection/cell_fragments.hpp"
+#include "projection/method.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {
 
 enum class GLTarget {
-  float32,        // a float RGBA framebuffer: the same picture as the software back end
-  rgba8,          // 8 bits per channel: faint layers are lost to rounding
-  rgba8_dithered, // 8 bits, each fragment's value offset by a fixed pseudo-random +-1/2 step first
+  float32,         // a float RGBA framebuffer: the same picture as the software back end
+  rgba8,           // 8 bits per channel: faint layers are lost to rounding
+  rgba8_dithered,  // 8 bits, each fragment's value offset by a fixed pseudo-random +-1/2 step first
 };
 
 // One OpenGL context (OSMesa) with its framebuffer; every call must come from the same thread.
 class GLCompositor {
  public:
-  // Throws std::runtime_error when OSMesa cannot make the context.
+  // Throws ResourceError when OSMesa cannot make the context.
   GLCompositor(int width, int height, GLTarget target);
   ~GLCompositor();
   GLCompositor(const GLCompositor&) = delete;

@@ -25,8 +25,7 @@ OpacityTable::OpacityTable(int size, double kappa_max, double l_max) : size_(siz
   alpha_.resize(static_cast<std::size_t>(size) * size);
   for (int j = 0; j < size; ++j)
     for (int i = 0; i < size; ++i)
-      alpha_[static_cast<std::size_t>(j) * size + i] =
-          static_cast<float>(-std::expm1(-(i / kscale_) * (j / lscale_)));
+      alpha_[static_cast<std::size_t>(j) * size + i] = static_cast<float>(-std::expm1(-(i / kscale_) * (j / lscale_)));
 }
 
 }  // namespace cellproj

@@ -38,10 +38,10 @@ constexpr const char* name_of(ProjectionMethod method) { return traits(method).n
 
 // Where the projected triangles are rasterized and composited.
 enum class ProjectionBackend {
-  software,             // our rasterizer and a float framebuffer, every method (the default)
-  opengl,               // OpenGL through OSMesa into a float framebuffer (pt-linear, pt-table)
-  opengl_8bit,          // the same into 8-bit RGBA, as 1990s hardware
-  opengl_8bit_dithered, // 8-bit with alpha dithering (Williams, Frank and LaMar)
+  software,              // our rasterizer and a float framebuffer, every method (the default)
+  opengl,                // OpenGL through OSMesa into a float framebuffer (pt-linear, pt-table)
+  opengl_8bit,           // the same into 8-bit RGBA, as 1990s hardware
+  opengl_8bit_dithered,  // 8-bit with alpha dithering (Williams, Frank and LaMar)
 };
 constexpr bool is_opengl(ProjectionBackend backend) { return backend != ProjectionBackend::software; }
 

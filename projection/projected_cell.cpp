@@ -89,12 +89,15 @@ int overlay(const Orientations& orient, const FaceTriangle& F, int fturn, const 
   };
   for (int k = 0; k < 3; ++k) {  // front vertices inside the back triangle (or shared with it)
     const int p = F.v[k];
-    if (has_vertex(B, p)) set(out[n++], CornerRecipe::shared, p, 0, 0, 0, 0);
-    else if (inside(orient, B, bturn, p)) set(out[n++], CornerRecipe::front_vertex, p, 0, B.v[0], B.v[1], B.v[2]);
+    if (has_vertex(B, p))
+      set(out[n++], CornerRecipe::shared, p, 0, 0, 0, 0);
+    else if (inside(orient, B, bturn, p))
+      set(out[n++], CornerRecipe::front_vertex, p, 0, B.v[0], B.v[1], B.v[2]);
   }
   for (int k = 0; k < 3; ++k) {  // back vertices inside the front triangle
     const int p = B.v[k];
-    if (!has_vertex(F, p) && inside(orient, F, fturn, p)) set(out[n++], CornerRecipe::back_vertex, p, 0, F.v[0], F.v[1], F.v[2]);
+    if (!has_vertex(F, p) && inside(orient, F, fturn, p))
+      set(out[n++], CornerRecipe::back_vertex, p, 0, F.v[0], F.v[1], F.v[2]);
   }
   for (int i = 0; i < 3; ++i)  // proper crossings of a front edge with a back edge
     for (int j = 0; j < 3; ++j) {
@@ -116,9 +119,7 @@ Corner make_corner(const ScreenVertex* v, const CornerRecipe& r, bool persp) {
   const int a = r.v[0];
   const int tri[3] = {r.v[2], r.v[3], r.v[4]};
   switch (r.kind) {
-    case CornerRecipe::shared:
-      c = {v[a].x, v[a].y, v[a].z, v[a].s, v[a].z, v[a].s};
-      break;
+    case CornerRecipe::shared: c = {v[a].x, v[a].y, v[a].z, v[a].s, v[a].z, v[a].s}; break;
     case CornerRecipe::front_vertex:
       c.x = v[a].x, c.y = v[a].y, c.zf = v[a].z, c.sf = v[a].s;
       on_triangle(v, tri, c.x, c.y, persp, c.zb, c.sb);
@@ -193,10 +194,15 @@ CellFaces cell_faces(const ScreenVertex* v, const std::int64_t* ids, const CellD
   auto add = [&](int a, int b, int c) {
     const int turn = orient(a, b, c);
     if (turn == 0) return;  // edge-on: covers no pixel
-    FaceTriangle t{{a, b, c}, std::min({v[a].x, v[b].x, v[c].x}), std::max({v[a].x, v[b].x, v[c].x}),
-                   std::min({v[a].y, v[b].y, v[c].y}), std::max({v[a].y, v[b].y, v[c].y})};
-    if (turn == front_sign) cf.front[cf.n_front++] = t;
-    else cf.back[cf.n_back++] = t;
+    FaceTriangle t{{a, b, c},
+                   std::min({v[a].x, v[b].x, v[c].x}),
+                   std::max({v[a].x, v[b].x, v[c].x}),
+                   std::min({v[a].y, v[b].y, v[c].y}),
+                   std::max({v[a].y, v[b].y, v[c].y})};
+    if (turn == front_sign)
+      cf.front[cf.n_front++] = t;
+    else
+      cf.back[cf.n_back++] = t;
   };
   for (int f = 0; f < def.faces; ++f) {
     const FaceDef& face = def.face[f];

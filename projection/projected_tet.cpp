@@ -10,10 +10,12 @@ namespace cellproj {
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 int exact_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
-  return static_cast<int>(CGAL::orientation(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y)));
+  return static_cast<int>(
+      CGAL::orientation(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y)));
 }
 
-void interpolate(const ScreenVertex* v, const int* ids, const double* w, int n, bool perspective, double& z, double& s) {
+void interpolate(const ScreenVertex* v, const int* ids, const double* w, int n, bool perspective, double& z,
+                 double& s) {
   double sz = 0, ss = 0;
   if (!perspective) {
     for (int k = 0; k < n; ++k) sz += w[k] * v[ids[k]].z, ss += w[k] * v[ids[k]].s;
@@ -30,8 +32,10 @@ void interpolate(const ScreenVertex* v, const int* ids, const double* w, int n, 
 namespace {
 
 void set_ends(ThickVertex& t, double za, double sa, double zb, double sb) {
-  if (za <= zb) t.zf = za, t.sf = sa, t.zb = zb, t.sb = sb;
-  else t.zf = zb, t.sf = sb, t.zb = za, t.sb = sa;
+  if (za <= zb)
+    t.zf = za, t.sf = sa, t.zb = zb, t.sb = sb;
+  else
+    t.zf = zb, t.sf = sb, t.zb = za, t.sb = sa;
 }
 
 }  // namespace
@@ -75,8 +79,10 @@ ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
   // class 2: the edge joining the two positive vertices crosses the edge joining the negative ones
   int a = -1, c = -1, b = -1, d = -1;
   for (int i = 0; i < 4; ++i) {
-    if (sign[i] > 0) (a < 0 ? a : c) = i;
-    else (b < 0 ? b : d) = i;
+    if (sign[i] > 0)
+      (a < 0 ? a : c) = i;
+    else
+      (b < 0 ? b : d) = i;
   }
   const auto weights = [&](int i, int j, double w[2]) {
     const double si = std::max(0.0, sign[i] * sigma[i]), sj = std::max(0.0, sign[j] * sigma[j]);

@@ -19,9 +19,9 @@ struct ThickVertex {
 };
 
 struct ProjectedTet {
-  int hull_size = 0;      // 3 (class 1), 4 (class 2), 0 (zero projected area: nothing to draw)
-  ThickVertex thick;      // the triangles are (thick, hull[k], hull[k+1]), k cyclic
-  ThickVertex hull[4];    // tetrahedron vertices (zero thickness) around the projected outline
+  int hull_size = 0;        // 3 (class 1), 4 (class 2), 0 (zero projected area: nothing to draw)
+  ThickVertex thick;        // the triangles are (thick, hull[k], hull[k+1]), k cyclic
+  ThickVertex hull[4];      // tetrahedron vertices (zero thickness) around the projected outline
   int hull_vertex[4] = {};  // which of the four input vertices each hull corner is
 };
 

@@ -2,15 +2,15 @@
 
 #include <algorithm>
 
-#include <glm/common.hpp>
 #include <atomic>
 #include <cmath>
+#include <glm/common.hpp>
 #include <limits>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
-#include <glm/geometric.hpp>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
 
 #include "grid/geometry.hpp"
 
@@ -47,8 +47,10 @@ struct TetPlanes {
         continue;
       }
       const double gap = d[k] - glm::dot(n[k], r.origin);
-      if (nd > 0) t1 = std::min(t1, gap / nd);
-      else t0 = std::max(t0, gap / nd);
+      if (nd > 0)
+        t1 = std::min(t1, gap / nd);
+      else
+        t0 = std::max(t0, gap / nd);
     }
     return t1 > t0;
   }
@@ -92,7 +94,6 @@ struct TetPlanes {
 }  // namespace
 
 CellRayTracer::CellRayTracer(const MeshView& mesh) : points_(recentre(mesh)) {
-
   const RecentredPoints& P = points_;
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
     Tet tets[kMaxTetsPerCell];
@@ -137,7 +138,9 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const dou
       return;
     }
     auto lo = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - 0.5) - 1.0, 0.0, double(n))); };
-    auto hi = [](double v, int n) { return static_cast<int>(std::clamp(std::floor(v - 0.5) + 1.0, -1.0, double(n - 1))); };
+    auto hi = [](double v, int n) {
+      return static_cast<int>(std::clamp(std::floor(v - 0.5) + 1.0, -1.0, double(n - 1)));
+    };
     box[t] = {lo(x0, width), hi(x1, width), lo(y0, height), hi(y1, height)};
   });
 

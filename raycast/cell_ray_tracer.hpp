@@ -39,8 +39,8 @@ class CellRayTracer {
 
  private:
   RecentredPoints points_;
-  std::vector<Tet> tets_;            // positively oriented
-  std::vector<std::int64_t> parent_; // the mesh cell of each tetrahedron
+  std::vector<Tet> tets_;             // positively oriented
+  std::vector<std::int64_t> parent_;  // the mesh cell of each tetrahedron
   std::int64_t dropped_ = 0;
 };
 

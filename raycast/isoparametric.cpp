@@ -76,7 +76,8 @@ glm::dvec3 IsoparametricField::centre_guess(std::int64_t cell) const {
   }
 }
 
-bool IsoparametricField::value(const double* scalar, std::int64_t cell, const glm::dvec3& p, glm::dvec3& xi, double& value) const {
+bool IsoparametricField::value(const double* scalar, std::int64_t cell, const glm::dvec3& p, glm::dvec3& xi,
+                               double& value) const {
   const CellType type = static_cast<CellType>(types_[cell]);
   const std::int64_t* id = ids_.data() + first_[cell];
   double w[8];

@@ -13,13 +13,15 @@ namespace {
 constexpr double kContact = 1e-10;
 
 // Pairs a < b with v[a] < v[b] (merge sort into decreasing order, counting as it merges).
-std::int64_t ascending_pairs(std::vector<std::int64_t>& v, std::vector<std::int64_t>& tmp, std::size_t lo, std::size_t hi) {
+std::int64_t ascending_pairs(std::vector<std::int64_t>& v, std::vector<std::int64_t>& tmp, std::size_t lo,
+                             std::size_t hi) {
   if (hi - lo < 2) return 0;
   const std::size_t mid = (lo + hi) / 2;
   std::int64_t count = ascending_pairs(v, tmp, lo, mid) + ascending_pairs(v, tmp, mid, hi);
   std::size_t i = lo, j = mid, k = lo;
   while (i < mid && j < hi) {
-    if (v[i] >= v[j]) tmp[k++] = v[i++];
+    if (v[i] >= v[j])
+      tmp[k++] = v[i++];
     else {  // v[j] is larger than every v[i..mid): each of those pairs ascends
       count += static_cast<std::int64_t>(mid - i);
       tmp[k++] = v[j++];
@@ -41,8 +43,10 @@ OrderCheck check_order(const CellRayTracer& tracer, std::int64_t n_cells, const 
   for (std::size_t k = 0; k < order.size(); ++k) {
     const std::int64_t c = order[k];
     if (c < 0 || c >= n_cells) continue;
-    if (position[c] != kAbsent) ++out.repeated_cells;
-    else position[c] = static_cast<std::int64_t>(k);
+    if (position[c] != kAbsent)
+      ++out.repeated_cells;
+    else
+      position[c] = static_cast<std::int64_t>(k);
   }
   for (std::int64_t p : position) out.missing_cells += p == kAbsent;
 

@@ -53,9 +53,7 @@ void integrate_run(const TransferFunction& tf, IsoparametricRun& run, double ta,
   integrate_run(tf, run, mid, tb, tol, depth + 1, acc);
 }
 
-
 }  // namespace
-
 
 ExactRenderer::ExactRenderer(const MeshView& mesh) : tracer_(mesh), n_points_(mesh.n_points) {
   const bool all_tets = std::all_of(mesh.types, mesh.types + mesh.n_cells,
@@ -63,8 +61,8 @@ ExactRenderer::ExactRenderer(const MeshView& mesh) : tracer_(mesh), n_points_(me
   if (!all_tets) iso_ = std::make_unique<IsoparametricField>(mesh, tracer_.points());
 }
 
-Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
-                            CellInterpolation interpolation, ExactStats* stats,
+Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,
+                            int height, CellInterpolation interpolation, ExactStats* stats,
                             const std::function<void(double)>& progress) const {
   const auto start = std::chrono::steady_clock::now();
   Image img(width, height);
@@ -75,29 +73,33 @@ Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, co
     scalar_tolerance = 1e-9 * (*hi - *lo);
   }
   std::atomic<std::int64_t> segments{0}, failures{0};
-  tracer_.trace(camera, width, height, scalar, [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t n) {
-    SegmentLight acc;
-    for (std::size_t k = 0; k < n && acc.depth < kOpaqueDepth;) {
-      if (!iso || iso->linear(seg[k].cell)) {
-        acc = under(acc, integrate_segment_reference(tf, seg[k].t1 - seg[k].t0, seg[k].s0, seg[k].s1));
-        ++k;
-        continue;
-      }
-      std::size_t end = k + 1;  // the adjoining segments of this cell's tetrahedra
-      while (end < n && seg[end].cell == seg[k].cell && seg[end].t0 <= seg[end - 1].t1 * (1 + 1e-12) + 1e-300) ++end;
-      IsoparametricRun run{*iso, scalar, ray, seg + k, seg + end, iso->centre_guess(seg[k].cell)};
-      const double ta = seg[k].t0, tb = seg[end - 1].t1;
-      integrate_run(tf, run, ta, tb, scalar_tolerance, 0, acc);
-      failures.fetch_add(run.failures, std::memory_order_relaxed);
-      k = end;
-    }
-    float* px = img.pixel(i, j);
-    px[0] = static_cast<float>(acc.rgb.r);
-    px[1] = static_cast<float>(acc.rgb.g);
-    px[2] = static_cast<float>(acc.rgb.b);
-    px[3] = static_cast<float>(acc.opacity());
-    segments.fetch_add(static_cast<std::int64_t>(n), std::memory_order_relaxed);
-  }, progress);
+  tracer_.trace(
+      camera, width, height, scalar,
+      [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t n) {
+        SegmentLight acc;
+        for (std::size_t k = 0; k < n && acc.depth < kOpaqueDepth;) {
+          if (!iso || iso->linear(seg[k].cell)) {
+            acc = under(acc, integrate_segment_reference(tf, seg[k].t1 - seg[k].t0, seg[k].s0, seg[k].s1));
+            ++k;
+            continue;
+          }
+          std::size_t end = k + 1;  // the adjoining segments of this cell's tetrahedra
+          while (end < n && seg[end].cell == seg[k].cell && seg[end].t0 <= seg[end - 1].t1 * (1 + 1e-12) + 1e-300)
+            ++end;
+          IsoparametricRun run{*iso, scalar, ray, seg + k, seg + end, iso->centre_guess(seg[k].cell)};
+          const double ta = seg[k].t0, tb = seg[end - 1].t1;
+          integrate_run(tf, run, ta, tb, scalar_tolerance, 0, acc);
+          failures.fetch_add(run.failures, std::memory_order_relaxed);
+          k = end;
+        }
+        float* px = img.pixel(i, j);
+        px[0] = static_cast<float>(acc.rgb.r);
+        px[1] = static_cast<float>(acc.rgb.g);
+        px[2] = static_cast<float>(acc.rgb.b);
+        px[3] = static_cast<float>(acc.opacity());
+        segments.fetch_add(static_cast<std::int64_t>(n), std::memory_order_relaxed);
+      },
+      progress);
   if (stats) {
     stats->trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     stats->segments = segments;

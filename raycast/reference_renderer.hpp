@@ -17,7 +17,6 @@
 
 namespace cellproj {
 
-
 struct ExactStats {
   double trace_seconds = 0.0;        // traversal and integration of one frame
   std::int64_t segments = 0;         // ray-tetrahedron segments integrated

@@ -41,8 +41,8 @@ class ProjectionMode final : public Renderer {
   }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 
-  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera, ImageSize size,
-               RenderReport* report, const Progress&) const override {
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+               ImageSize size, RenderReport* report, const Progress&) const override {
     volume.check(field);
     timed_preparation(volume, report, [&] { prepare(volume); });
     ProjectionStats st;
@@ -107,8 +107,8 @@ class ProjectionMode final : public Renderer {
     std::int64_t cells = 0;
     for (const VisibilityCycle& c : p.sort.cycles) cells += c.size;
     const std::size_t n = p.sort.cycles.size();
-    r.warnings.push_back("the visibility sort met " + std::to_string(n) + " visibility cycle" + (n == 1 ? "" : "s") + " (" +
-                         std::to_string(cells) +
+    r.warnings.push_back("the visibility sort met " + std::to_string(n) + " visibility cycle" + (n == 1 ? "" : "s") +
+                         " (" + std::to_string(cells) +
                          " cells) and broke each at one relation: those cells have no back-to-front order (cells that "
                          "overlap, or warped faces), so the picture may be wrong where they cover each other; --method "
                          "exact is exact there, and `cellproj info --overlaps` tells whether cells overlap");
@@ -125,12 +125,13 @@ class ExactMode final : public Renderer {
   std::vector<std::string> settings_used() const override { return {"method", "interpolation"}; }
   void prepare(const Volume& volume) const override { volume.exact(); }
 
-  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera, ImageSize size,
-               RenderReport* report, const Progress& progress) const override {
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+               ImageSize size, RenderReport* report, const Progress& progress) const override {
     volume.check(field);
     timed_preparation(volume, report, [&] { prepare(volume); });
     ExactStats st;
-    Image image = volume.exact().render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress);
+    Image image =
+        volume.exact().render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress);
     if (report) {
       report->seconds = st.trace_seconds;
       report->phase_seconds = {{"trace and integrate", st.trace_seconds}};

@@ -23,7 +23,7 @@ struct RenderReport {
   double prepare_seconds = 0.0;  // the preparations this call made (0 when the volume had them)
   std::vector<std::pair<std::string, double>> phase_seconds;
   std::vector<std::pair<std::string, ReportValue>> values;  // by name, as --stats prints them
-  std::vector<std::string> warnings;  // where the picture may be wrong, and what to do about it
+  std::vector<std::string> warnings;                        // where the picture may be wrong, and what to do about it
 
   void add(std::string name, ReportValue value) { values.emplace_back(std::move(name), std::move(value)); }
 };

@@ -14,8 +14,8 @@ enum class RenderMode {
 
 struct RenderSettings {
   RenderMode mode = RenderMode::projection;
-  ProjectionOptions projection;                           // method, back end, sort, gaps, table size
-  Tetrahedralize tetrahedralize = Tetrahedralize::problem;  // projection: which cells are split
+  ProjectionOptions projection;                                        // method, back end, sort, gaps, table size
+  Tetrahedralize tetrahedralize = Tetrahedralize::problem;             // projection: which cells are split
   CellInterpolation interpolation = CellInterpolation::isoparametric;  // exact: the field inside cells
 };
 

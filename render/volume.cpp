@@ -75,7 +75,8 @@ void Volume::commit(const MeshView& mesh, const VolumeOptions& options) {
   if (s.connectivity.empty()) s.connectivity.assign(mesh.connectivity, mesh.connectivity + mesh.offsets[mesh.n_cells]);
   reorient_inverted(s.connectivity.data(), mesh.offsets, mesh.types, s.validation);
   s.mesh.connectivity = s.connectivity.data();
-  s.copies.push_back("connectivity: " + std::to_string(s.validation.inverted_cells) + " inverted cells re-oriented in a copy, " +
+  s.copies.push_back("connectivity: " + std::to_string(s.validation.inverted_cells) +
+                     " inverted cells re-oriented in a copy, " +
                      megabytes(s.connectivity.size() * sizeof(std::int64_t)));
 }
 
@@ -93,12 +94,12 @@ void Volume::check(const Field& f) const {
   const std::string name = f.name.empty() ? "the field" : "field '" + f.name + "'";
   if (!f.values) throw InputError(where(m.source, "no field given: " + name + " has no values"));
   if (f.size != m.n_points)
-    throw InputError(where(m.source, name + " has " + std::to_string(f.size) + " values for " +
-                                         std::to_string(m.n_points) + " points"));
+    throw InputError(where(
+        m.source, name + " has " + std::to_string(f.size) + " values for " + std::to_string(m.n_points) + " points"));
   for (std::int64_t p = 0; p < f.size; ++p)
     if (!std::isfinite(f.values[p]))
-      throw InputError(where(m.source, name + " is not finite at point " + std::to_string(p) + " (" +
-                                           std::to_string(f.values[p]) + ")"));
+      throw InputError(where(
+          m.source, name + " is not finite at point " + std::to_string(p) + " (" + std::to_string(f.values[p]) + ")"));
 }
 
 const ProjectionRenderer& Volume::projection(Tetrahedralize mode) const {

@@ -27,12 +27,18 @@ Camera camera_from_json(const nlohmann::json& j, const std::string& source) {
   for (const auto& [k, v] : j.items()) {
     if (k == "projection") {
       const std::string p = v.is_string() ? v.get<std::string>() : "";
-      if (p == "orthographic") c.projection = Projection::Orthographic;
-      else if (p == "perspective") c.projection = Projection::Perspective;
-      else throw InputError(at + ".projection: expected \"orthographic\" or \"perspective\", got " + v.dump());
-    } else if (k == "eye") c.eye = vec3(v, at + ".eye");
-    else if (k == "target") c.target = vec3(v, at + ".target");
-    else if (k == "up") c.up = vec3(v, at + ".up");
+      if (p == "orthographic")
+        c.projection = Projection::Orthographic;
+      else if (p == "perspective")
+        c.projection = Projection::Perspective;
+      else
+        throw InputError(at + ".projection: expected \"orthographic\" or \"perspective\", got " + v.dump());
+    } else if (k == "eye")
+      c.eye = vec3(v, at + ".eye");
+    else if (k == "target")
+      c.target = vec3(v, at + ".target");
+    else if (k == "up")
+      c.up = vec3(v, at + ".up");
     else if (k == "height" || k == "fov_y") {
       if (!v.is_number()) throw InputError(at + "." + k + ": expected a number, got " + v.dump());
       (k == "height" ? c.height : c.fov_y) = v.get<double>();
@@ -48,7 +54,8 @@ Camera orbit(const Camera& c, double degrees) {
   const glm::dvec3 axis = glm::normalize(c.up);
   const double a = degrees * kPi / 180.0;
   const glm::dvec3 v = c.eye - c.target;  // Rodrigues' rotation about the up axis
-  const glm::dvec3 r = v * std::cos(a) + glm::cross(axis, v) * std::sin(a) + axis * glm::dot(axis, v) * (1 - std::cos(a));
+  const glm::dvec3 r =
+      v * std::cos(a) + glm::cross(axis, v) * std::sin(a) + axis * glm::dot(axis, v) * (1 - std::cos(a));
   Camera out = c;
   out.eye = c.target + r;
   return out;

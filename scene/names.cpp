@@ -57,7 +57,9 @@ Tetrahedralize parse_tetrahedralize(const std::string& n) { return from_name(kMo
 const char* name_of(Tetrahedralize mode) { return name_in(kModes, mode); }
 std::string tetrahedralize_names() { return names(kModes); }
 
-CellInterpolation parse_cell_interpolation(const std::string& n) { return from_name(kInterpolations, n, "cell interpolation"); }
+CellInterpolation parse_cell_interpolation(const std::string& n) {
+  return from_name(kInterpolations, n, "cell interpolation");
+}
 const char* name_of(CellInterpolation interpolation) { return name_in(kInterpolations, interpolation); }
 std::string cell_interpolation_names() { return names(kInterpolations); }
 
@@ -83,9 +85,12 @@ nlohmann::json report_json(const RenderReport& report) {
     j[name] = std::visit(
         [](const auto& v) -> nlohmann::json {
           using T = std::decay_t<decltype(v)>;
-          if constexpr (std::is_same_v<T, std::monostate>) return nullptr;
-          else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>) return v;
-          else return name_of(v);
+          if constexpr (std::is_same_v<T, std::monostate>)
+            return nullptr;
+          else if constexpr (std::is_arithmetic_v<T> || std::is_same_v<T, std::string>)
+            return v;
+          else
+            return name_of(v);
         },
         value);
   nlohmann::json phases = nlohmann::json::object();

@@ -34,7 +34,6 @@ CellInterpolation parse_cell_interpolation(const std::string& name);
 const char* name_of(CellInterpolation interpolation);
 std::string cell_interpolation_names();
 
-
 // "exact" or a projection method's name into settings.mode (and settings.projection.method).
 void parse_render_method(const std::string& name, RenderSettings& settings);
 std::string render_method_names();  // "exact, pt-linear, ..."

@@ -44,12 +44,13 @@ PreparedScene prepare_scene(const Scene& s) {
   TransferFunction tf = transfer_function_from_json(s.transfer_function, s.source, s.base_dir, *lo, *hi);
   PreparedScene p{std::move(loaded), field, *lo, *hi, std::move(tf), Camera{}, {}};
   const auto [blo, bhi] = bounds(p.loaded.mesh);
-  p.camera = s.camera ? *s.camera
-                      : frame_box(blo, bhi, Projection::Orthographic, {0.6, 0.5, 1.0}, {0, 1, 0},
-                                  double(s.width) / s.height);
+  p.camera =
+      s.camera ? *s.camera
+               : frame_box(blo, bhi, Projection::Orthographic, {0.6, 0.5, 1.0}, {0, 1, 0}, double(s.width) / s.height);
   p.warnings = p.loaded.report.warnings(s.mesh);
   for (const auto& n : p.loaded.mesh.notes) p.warnings.push_back(s.mesh + ": " + n);
-  if (p.field_min == p.field_max) p.warnings.push_back(s.mesh + ": field '" + field + "' is constant (" + std::to_string(p.field_min) + ")");
+  if (p.field_min == p.field_max)
+    p.warnings.push_back(s.mesh + ": field '" + field + "' is constant (" + std::to_string(p.field_min) + ")");
   return p;
 }
 

@@ -43,7 +43,8 @@ void parse_size(const std::string& t, int& w, int& h) {
     if (x == std::string::npos) throw std::invalid_argument("no x");
     w = std::stoi(t.substr(0, x), &a);
     h = std::stoi(t.substr(x + 1), &b);
-    if (a != x || b != t.size() - x - 1 || w < 1 || h < 1 || w > 16384 || h > 16384) throw std::invalid_argument("range");
+    if (a != x || b != t.size() - x - 1 || w < 1 || h < 1 || w > 16384 || h > 16384)
+      throw std::invalid_argument("range");
   } catch (const std::exception&) {
     throw InputError("--size: expected WxH with W and H in [1, 16384], e.g. 512x512; got '" + t + "'");
   }

@@ -13,15 +13,15 @@
 namespace cellproj {
 
 struct Scene {
-  std::string source;           // the scene file, for messages
-  std::string mesh;             // resolved against the scene file's folder
+  std::string source;  // the scene file, for messages
+  std::string mesh;    // resolved against the scene file's folder
   ReadOptions reader;
-  std::string field;            // empty: the mesh's only field
+  std::string field;                 // empty: the mesh's only field
   nlohmann::json transfer_function;  // parsed once the field's range is known
-  std::optional<Camera> camera; // absent: frame the mesh
+  std::optional<Camera> camera;      // absent: frame the mesh
   int width = 512, height = 512;
   glm::dvec3 background{0.0};
-  std::string base_dir;         // the scene file's folder
+  std::string base_dir;  // the scene file's folder
 };
 
 // Throws InputError naming the file and the key for unknown keys, wrong types and missing keys.

@@ -20,7 +20,8 @@ std::vector<ColorPoint> color_points(const nlohmann::json& arr, const std::strin
   std::vector<ColorPoint> out;
   for (std::size_t i = 0; i < arr.size(); ++i) {
     const std::string at = key + "[" + std::to_string(i) + "]";
-    if (!arr[i].is_array() || arr[i].size() != 4) throw InputError(at + ": expected [s, r, g, b], got " + arr[i].dump());
+    if (!arr[i].is_array() || arr[i].size() != 4)
+      throw InputError(at + ": expected [s, r, g, b], got " + arr[i].dump());
     out.push_back({number(arr[i][0], at), {number(arr[i][1], at), number(arr[i][2], at), number(arr[i][3], at)}});
   }
   return out;
@@ -44,7 +45,8 @@ std::vector<ColorPoint> paraview_preset(const nlohmann::json& spec, const std::s
     throw InputError(file.string() + ": not valid JSON (" + e.what() + ")");
   }
   if (doc.is_object()) doc = nlohmann::json::array({doc});
-  if (spec.contains("name") && !spec["name"].is_string()) throw InputError(key + ".name: expected a string, got " + spec["name"].dump());
+  if (spec.contains("name") && !spec["name"].is_string())
+    throw InputError(key + ".name: expected a string, got " + spec["name"].dump());
   const std::string name = spec.value("name", "");
   const nlohmann::json* map = nullptr;
   std::string names;
@@ -54,8 +56,9 @@ std::vector<ColorPoint> paraview_preset(const nlohmann::json& spec, const std::s
     names += (names.empty() ? "" : ", ") + n;
     if (!map && (name.empty() || n == name)) map = &m;
   }
-  if (!map) throw InputError(file.string() + ": no colour map " + (name.empty() ? "with RGBPoints" : "named '" + name + "'") +
-                             "; the maps are: " + (names.empty() ? "(none)" : names));
+  if (!map)
+    throw InputError(file.string() + ": no colour map " + (name.empty() ? "with RGBPoints" : "named '" + name + "'") +
+                     "; the maps are: " + (names.empty() ? "(none)" : names));
   const auto& pts = (*map)["RGBPoints"];
   if (!pts.is_array() || pts.size() < 4 || pts.size() % 4)
     throw InputError(file.string() + ": RGBPoints must hold x, r, g, b quadruples");
@@ -87,9 +90,9 @@ TransferFunction transfer_function_from_json(const nlohmann::json& j, const std:
   if (j.contains("color") == j.contains("color_preset"))
     throw InputError(key + ": give exactly one of \"color\" and \"color_preset\"");
   if (!j.contains("extinction")) throw InputError(key + ": missing \"extinction\"");
-  std::vector<ColorPoint> color = j.contains("color")
-                                      ? color_points(j["color"], key + ".color")
-                                      : paraview_preset(j["color_preset"], key + ".color_preset", base_dir, field_min, field_max);
+  std::vector<ColorPoint> color =
+      j.contains("color") ? color_points(j["color"], key + ".color")
+                          : paraview_preset(j["color_preset"], key + ".color_preset", base_dir, field_min, field_max);
   const auto& e = j["extinction"];
   if (!e.is_array()) throw InputError(key + ".extinction: expected an array of [s, kappa]");
   std::vector<ExtinctionPoint> ext;

@@ -12,7 +12,7 @@ using namespace cellproj;
 TEST(Camera, OrthographicRaysPassThroughPixelCentres) {
   Camera c;  // looks down -z from (0, 0, 5), up +y, 2 units tall
   c.height = 4.0;
-  const PixelRays rays(c, 8, 4);  // 4 units tall, 8 wide: a pixel is one unit square
+  const PixelRays rays(c, 8, 4);     // 4 units tall, 8 wide: a pixel is one unit square
   const Ray r = rays.ray(0.5, 0.5);  // the top-left pixel's centre
   EXPECT_NEAR(r.origin.x, -3.5, 1e-12);
   EXPECT_NEAR(r.origin.y, 1.5, 1e-12);

@@ -23,7 +23,8 @@ Image layer(int w, int h, const ScreenBox& box, float r, float a) {
 }  // namespace
 
 TEST(Composite, UnderFrontToBackEqualsOverBackToFront) {
-  const float back[4] = {0.1f, 0.2f, 0.3f, 0.5f}, mid[4] = {0.2f, 0.0f, 0.1f, 0.4f}, front[4] = {0.05f, 0.3f, 0.0f, 0.6f};
+  const float back[4] = {0.1f, 0.2f, 0.3f, 0.5f}, mid[4] = {0.2f, 0.0f, 0.1f, 0.4f},
+              front[4] = {0.05f, 0.3f, 0.0f, 0.6f};
   float o[4] = {0, 0, 0, 0}, u[4] = {0, 0, 0, 0};
   for (const float* f : {back, mid, front}) over(o, f);
   for (const float* f : {front, mid, back}) under(u, f);

@@ -39,8 +39,10 @@ Graph random_graph(std::mt19937& rng, int n) {
     int a = cell(rng), b = cell(rng);
     if (a == b) continue;
     if (a > b) std::swap(a, b);
-    if (coin(rng) < 85) g[a].push_back(b);
-    else if (b - a < 12) g[b].push_back(a);  // a short cycle back
+    if (coin(rng) < 85)
+      g[a].push_back(b);
+    else if (b - a < 12)
+      g[b].push_back(a);  // a short cycle back
   }
   return g;
 }
@@ -92,7 +94,8 @@ TEST(CycleBreaker, BreaksExactlyTheSourceComponentsOfWhatIsLeft) {
       for (std::int64_t c : cells) {
         EXPECT_FALSE(emitted[c]);
         const std::set<std::int64_t> r = reach(g, c, emitted);
-        for (std::int64_t d : cells) EXPECT_TRUE(r.count(d)) << "trial " << trial << ": " << d << " not reached from " << c;
+        for (std::int64_t d : cells)
+          EXPECT_TRUE(r.count(d)) << "trial " << trial << ": " << d << " not reached from " << c;
       }
       EXPECT_GE(cells.size(), 2u);
       // ... and nothing left outside it has a relation into it, nor is reached from it and back.

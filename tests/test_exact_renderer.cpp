@@ -41,8 +41,8 @@ TEST(ExactRenderer, LinearKappaAndColourAlongTheRay) {
   const Image img = render(m, tf, looking_down(4.0), 16, 16);
   // The ray enters at z = 1 (kappa 3, blue) and leaves at z = -1 (kappa 0.5, red).
   const double depth = 2.0 * (3.0 + 0.5) / 2;
-  const glm::dvec3 light = test::simpson_light(2.0, [](double t) { return 3.0 - 1.25 * t; },
-                                               [](double t) { return glm::dvec3(t / 2, 0, 1 - t / 2); });
+  const glm::dvec3 light = test::simpson_light(
+      2.0, [](double t) { return 3.0 - 1.25 * t; }, [](double t) { return glm::dvec3(t / 2, 0, 1 - t / 2); });
   for (int j = 4; j < 12; ++j)
     for (int i = 4; i < 12; ++i) {
       const float* p = img.pixel(i, j);
@@ -63,9 +63,9 @@ TEST(ExactRenderer, TwoCubesWithAGapAddNothingInTheGap) {
   const Image img = render(a, tf, looking_down(4.0), 16, 16);
   const double A = 1 - std::exp(-0.8);
   const float* p = img.pixel(8, 8);
-  EXPECT_NEAR(p[0], A, 1e-6);                  // the red front cube
-  EXPECT_NEAR(p[2], (1 - A) * A, 1e-6);        // the blue back cube seen through it
-  EXPECT_NEAR(p[3], 1 - std::exp(-1.6), 1e-6); // the gap absorbs nothing
+  EXPECT_NEAR(p[0], A, 1e-6);                   // the red front cube
+  EXPECT_NEAR(p[2], (1 - A) * A, 1e-6);         // the blue back cube seen through it
+  EXPECT_NEAR(p[3], 1 - std::exp(-1.6), 1e-6);  // the gap absorbs nothing
 }
 
 TEST(ExactRenderer, TransferFunctionBreakpointsInsideACell) {
@@ -74,8 +74,14 @@ TEST(ExactRenderer, TransferFunctionBreakpointsInsideACell) {
   // A tent of kappa peaking at s = 0.3, and a colour breakpoint at s = -0.2.
   const TransferFunction tf({{-0.2, {1, 1, 1}}, {1, {0, 1, 0}}}, {{-1, 0.0}, {0.3, 4.0}, {1, 0.0}});
   const Image img = render(m, tf, looking_down(4.0), 8, 8);
-  auto kappa = [](double t) { const double z = 1 - t; return z > 0.3 ? 4 * (1 - z) / 0.7 : 4 * (z + 1) / 1.3; };
-  auto colour = [](double t) { const double z = 1 - t; return z < -0.2 ? glm::dvec3(1) : glm::dvec3((1 - z) / 1.2, 1, (1 - z) / 1.2); };
+  auto kappa = [](double t) {
+    const double z = 1 - t;
+    return z > 0.3 ? 4 * (1 - z) / 0.7 : 4 * (z + 1) / 1.3;
+  };
+  auto colour = [](double t) {
+    const double z = 1 - t;
+    return z < -0.2 ? glm::dvec3(1) : glm::dvec3((1 - z) / 1.2, 1, (1 - z) / 1.2);
+  };
   const glm::dvec3 light = test::simpson_light(2.0, kappa, colour);
   const float* p = img.pixel(4, 4);
   EXPECT_NEAR(p[3], 1 - std::exp(-4.0), 1e-6);  // area of the tent: 2 * 4 / 2

@@ -41,7 +41,8 @@ int problem_by_definition(const MeshView& mesh, const RecentredPoints& pts, cons
       if (!(glm::dot(pts(ids[k]) - view.eye, view.dir) > 0.0)) return 1;
   std::int64_t surface[kMaxSurfaceTriangles][3];
   std::vector<std::array<std::int64_t, 3>> tri;
-  for (int t = 0, n = surface_triangles(mesh, c, surface); t < n; ++t) tri.push_back({surface[t][0], surface[t][1], surface[t][2]});
+  for (int t = 0, n = surface_triangles(mesh, c, surface); t < n; ++t)
+    tri.push_back({surface[t][0], surface[t][1], surface[t][2]});
   bool unsure = false;
   // The sign of (b - a) x (c - a) . w, or 0 when it is within rounding of zero.
   auto sign = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& w) {
@@ -59,7 +60,8 @@ int problem_by_definition(const MeshView& mesh, const RecentredPoints& pts, cons
     for (std::size_t u = t + 1; u < tri.size(); ++u)
       for (int e = 0; e < 3; ++e)
         for (int g = 0; g < 3; ++g)
-          if (tri[t][e] == tri[u][(g + 1) % 3] && tri[t][(e + 1) % 3] == tri[u][g] && facing(tri[t]) * facing(tri[u]) < 0) {
+          if (tri[t][e] == tri[u][(g + 1) % 3] && tri[t][(e + 1) % 3] == tri[u][g] &&
+              facing(tri[t]) * facing(tri[u]) < 0) {
             const glm::dvec3 a = pts(tri[t][0]), b = pts(tri[t][1]), c2 = pts(tri[t][2]);
             problem = problem || sign(a, b, c2, pts(tri[u][(g + 2) % 3]) - a) > 0;  // beyond the outward side
           }
@@ -81,8 +83,10 @@ TEST(Folds, FoundOnceGiveEachViewsProblemCells) {
       const std::vector<char> got = folds.problem_cells(v, &count);
       for (std::int64_t cell = 0; cell < m.n_cells(); ++cell) {
         const int want = problem_by_definition(m.view(), *pts, v, cell);
-        if (want < 0) ++unsure;
-        else EXPECT_EQ(got[cell], want) << "cell " << cell;
+        if (want < 0)
+          ++unsure;
+        else
+          EXPECT_EQ(got[cell], want) << "cell " << cell;
       }
       EXPECT_EQ(count, std::count(got.begin(), got.end(), char(1)));
       problems += count;

@@ -31,22 +31,22 @@ double mean_alpha(const Image& img) {
 TEST(GLBackend, FloatTargetMatchesSoftware) {
   // Tetrahedra, and a twisted mixed mesh whose hexahedra, wedges and pyramids are projected whole.
   for (int kind = 0; kind < 2; ++kind) {
-  Mesh m = kind == 0 ? make_box(6, 6, 6, glm::dvec3(-1), glm::dvec3(1), true) : generate("mixed", 4);
-  set_field(m, "s", [](const glm::dvec3& x) { return std::sin(2 * x.x) * std::cos(1.5 * x.y) + 0.4 * x.z; });
-  const TransferFunction tf({{-1, {0.1, 0.2, 0.9}}, {0.0, {0.9, 0.9, 0.2}}, {1, {1, 1, 1}}},
-                            {{-1, 0.2}, {-0.3, 3.0}, {0.6, 6.0}, {1, 1.0}});
-  Camera c;
-  c.projection = Projection::Perspective;
-  c.eye = {1.5, -3.5, 2.2};
-  c.up = {0, 0, 1};
-  c.fov_y = 40;
-  for (ProjectionMethod method : {ProjectionMethod::pt_table, ProjectionMethod::pt_linear}) {
-    const ImageDifference d = compare(render(m, tf, c, 96, method, ProjectionBackend::opengl),
-                                      render(m, tf, c, 96, method, ProjectionBackend::software));
-    // Mesa snaps vertices to 1/256 pixel and interpolates in float: edge pixels differ slightly.
-    EXPECT_LT(d.max_abs, 5e-3) << name_of(method) << " mesh " << kind;
-    EXPECT_LT(d.rmse, 1e-4) << name_of(method) << " mesh " << kind;
-  }
+    Mesh m = kind == 0 ? make_box(6, 6, 6, glm::dvec3(-1), glm::dvec3(1), true) : generate("mixed", 4);
+    set_field(m, "s", [](const glm::dvec3& x) { return std::sin(2 * x.x) * std::cos(1.5 * x.y) + 0.4 * x.z; });
+    const TransferFunction tf({{-1, {0.1, 0.2, 0.9}}, {0.0, {0.9, 0.9, 0.2}}, {1, {1, 1, 1}}},
+                              {{-1, 0.2}, {-0.3, 3.0}, {0.6, 6.0}, {1, 1.0}});
+    Camera c;
+    c.projection = Projection::Perspective;
+    c.eye = {1.5, -3.5, 2.2};
+    c.up = {0, 0, 1};
+    c.fov_y = 40;
+    for (ProjectionMethod method : {ProjectionMethod::pt_table, ProjectionMethod::pt_linear}) {
+      const ImageDifference d = compare(render(m, tf, c, 96, method, ProjectionBackend::opengl),
+                                        render(m, tf, c, 96, method, ProjectionBackend::software));
+      // Mesa snaps vertices to 1/256 pixel and interpolates in float: edge pixels differ slightly.
+      EXPECT_LT(d.max_abs, 5e-3) << name_of(method) << " mesh " << kind;
+      EXPECT_LT(d.rmse, 1e-4) << name_of(method) << " mesh " << kind;
+    }
   }
 }
 

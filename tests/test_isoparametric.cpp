@@ -35,9 +35,12 @@ TEST(ShapeFunctions, PartitionOfUnityAndDerivatives) {
 }
 
 TEST(IsoparametricField, NewtonFindsTheNaturalCoordinatesOfAWarpedHexahedron) {
-  Mesh m = make_curvilinear(1, 1, 1, [](const glm::dvec3& u) {
-    return glm::dvec3(u.x + 0.3 * u.y * u.z, u.y + 0.2 * u.x * u.z, u.z * (1 + 0.25 * u.x * u.y));
-  }, false);
+  Mesh m = make_curvilinear(
+      1, 1, 1,
+      [](const glm::dvec3& u) {
+        return glm::dvec3(u.x + 0.3 * u.y * u.z, u.y + 0.2 * u.x * u.z, u.z * (1 + 0.25 * u.x * u.y));
+      },
+      false);
   set_field(m, "s", [](const glm::dvec3& x) { return x.x; });
   const MeshView v = m.view();
   std::vector<double> sxi(8);  // a field equal to the natural coordinate r at the vertices
@@ -86,7 +89,8 @@ TEST(ExactRendererIsoparametric, LinearFieldOnATwistedMixedMeshAgreesWithTheTetr
   Mesh m = generate("mixed", 4);
   EXPECT_EQ(validate(m.view()).inverted.size(), 0u);
   set_field(m, "s", [](const glm::dvec3& x) { return 0.5 + 0.2 * x.x - 0.15 * x.y + 0.1 * x.z; });
-  const TransferFunction tf({{0.0, {1, 0, 0}}, {0.5, {0, 1, 0}}, {1.0, {0, 0, 1}}}, {{0.0, 0.2}, {0.6, 2.0}, {1.0, 0.5}});
+  const TransferFunction tf({{0.0, {1, 0, 0}}, {0.5, {0, 1, 0}}, {1.0, {0, 0, 1}}},
+                            {{0.0, 0.2}, {0.6, 2.0}, {1.0, 0.5}});
   Camera c;
   c.projection = Projection::Perspective;
   c.eye = {2.5, -3.0, 2.0};

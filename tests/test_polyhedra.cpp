@@ -19,11 +19,11 @@
 #include "grid/tetrahedralize.hpp"
 #include "parallel/projection_renderer.hpp"
 #include "projection/projected_cell.hpp"
-#include "view/screen.hpp"
 #include "raycast/order_oracle.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "scene/names.hpp"
 #include "test_util.hpp"
+#include "view/screen.hpp"
 #include "visibility/split_sorter.hpp"
 
 using namespace cellproj;
@@ -148,8 +148,7 @@ TEST(Polyhedra, ExodusHexahedraMatchExact) {
   const Camera c = perspective({24, -30, 14}, {0, 0, 0}, 40);
   set_field(m, "affine", [](const glm::dvec3& x) { return 0.03 * x.x - 0.02 * x.y + 0.04 * x.z + 0.4; });
   const Image img = project(m, "affine", c, 96, Tetrahedralize::problem);
-  EXPECT_LT(compare(img, test::exact(m, "affine", tf(), c, 96, 96, CellInterpolation::canonical_tets)).max_abs,
-            5e-5);
+  EXPECT_LT(compare(img, test::exact(m, "affine", tf(), c, 96, 96, CellInterpolation::canonical_tets)).max_abs, 5e-5);
   const TransferFunction temp({{293, {0.1, 0.2, 0.9}}, {600, {0.9, 0.9, 0.2}}, {913, {1, 0.2, 0.1}}},
                               {{293, 0.02}, {500, 0.3}, {913, 0.1}});
   const Image iso = test::exact(m, "Temp", temp, c, 96, 96, CellInterpolation::isoparametric);
@@ -181,7 +180,8 @@ TEST(Polyhedra, LookedUpSubdivisionsGiveTheGeneralPathsBits) {
         project_cell(v, mesh.cell(cell), mesh.type(cell), rays.perspective(), 1, general);
         project_cell(v, mesh.cell(cell), mesh.type(cell), rays.perspective(), 1, fast, &cache);
         ASSERT_EQ(general.size(), fast.size()) << "cell " << cell;
-        EXPECT_EQ(std::memcmp(general.data(), fast.data(), general.size() * sizeof(ProjectedTriangle)), 0) << "cell " << cell;
+        EXPECT_EQ(std::memcmp(general.data(), fast.data(), general.size() * sizeof(ProjectedTriangle)), 0)
+            << "cell " << cell;
         ++cells;
       }
       EXPECT_EQ(cache.hits + cache.misses, cells);

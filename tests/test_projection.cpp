@@ -71,7 +71,8 @@ TEST(Projection, BreakpointsEqualExactOrthographicAndPerspective) {
     for (const glm::dvec3& eye : {glm::dvec3(0.3, -4, 2.5), glm::dvec3(-3, 1.2, -2)}) {
       const Camera c = view_from(eye, p);
       ProjectionStats st;
-      const ImageDifference d = compare(project(m, tf, c, 96, ProjectionMethod::pt_breakpoints, &st), exact(m, tf, c, 96));
+      const ImageDifference d =
+          compare(project(m, tf, c, 96, ProjectionMethod::pt_breakpoints, &st), exact(m, tf, c, 96));
       EXPECT_LT(d.max_abs, 2e-5) << (p == Projection::Perspective ? "perspective" : "orthographic");
       EXPECT_LT(d.rmse, 2e-6);
       EXPECT_GT(st.counters.breakpoint_cells, 0);
@@ -138,7 +139,8 @@ TEST(Projection, UniformSlabHasNoSeams) {
   }
   // Oblique: against the exact renderer, pixel by pixel.
   const Camera oblique = view_from({1.1, -2.3, 3.7}, Projection::Perspective);
-  EXPECT_LT(compare(project(m, tf, oblique, 64, ProjectionMethod::pt_analytic), exact(m, tf, oblique, 64)).max_abs, 2e-6);
+  EXPECT_LT(compare(project(m, tf, oblique, 64, ProjectionMethod::pt_analytic), exact(m, tf, oblique, 64)).max_abs,
+            2e-6);
 }
 
 TEST(Projection, OneAndManyThreadsGiveTheSameBits) {
@@ -162,9 +164,12 @@ TEST(Projection, OneAndManyThreadsGiveTheSameBits) {
 TEST(Projection, HexahedraAreSplitCanonically) {
   // A curvilinear hexahedral grid: projected through its canonical tetrahedra (--tetrahedralize
   // all), it matches the exact renderer in canonical-tets mode.
-  Mesh m = make_curvilinear(4, 4, 4, [](const glm::dvec3& u) {
-    return glm::dvec3(2 * u.x - 1 + 0.15 * std::sin(3 * u.y), 2 * u.y - 1, 2 * u.z - 1 + 0.2 * u.x * u.y);
-  }, false);
+  Mesh m = make_curvilinear(
+      4, 4, 4,
+      [](const glm::dvec3& u) {
+        return glm::dvec3(2 * u.x - 1 + 0.15 * std::sin(3 * u.y), 2 * u.y - 1, 2 * u.z - 1 + 0.2 * u.x * u.y);
+      },
+      false);
   set_field(m, "s", [](const glm::dvec3& x) { return x.x * x.y + 0.5 * x.z; });
   const TransferFunction tf = hard_tf();
   const Camera c = view_from({2.5, -2, 1.8}, Projection::Perspective);
@@ -227,7 +232,8 @@ TEST(Projection, SliversAndTinyCellsStayFinite) {
   EXPECT_LT(compare(a, b).max_abs, 2e-5);
 
   Mesh sliver;
-  for (const glm::dvec3& p : {glm::dvec3(0, 0, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0.3, 0.3, 1e-12)})
+  for (const glm::dvec3& p :
+       {glm::dvec3(0, 0, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 1, 0), glm::dvec3(0.3, 0.3, 1e-12)})
     sliver.add_point(p);
   sliver.add_cell(CellType::Tetra, {0, 1, 2, 3});
   set_field(sliver, "s", [](const glm::dvec3& x) { return x.x; });

@@ -54,7 +54,8 @@ Pixels covered_by_runs(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, i
 // digits) the weights interpolate the vertices to each centre.
 Pixels covered_with_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height) {
   Pixels out;
-  const bool near = std::max({std::abs(p0.x), std::abs(p0.y), std::abs(p1.x), std::abs(p1.y), std::abs(p2.x), std::abs(p2.y)}) < 1e3;
+  const bool near =
+      std::max({std::abs(p0.x), std::abs(p0.y), std::abs(p1.x), std::abs(p1.y), std::abs(p2.x), std::abs(p2.y)}) < 1e3;
   rasterize_triangle_weights(p0, p1, p2, width, height, [&](int i, int j, double w0, double w1, double w2) {
     out.insert({i, j});
     if (!near) return;
@@ -82,10 +83,10 @@ TEST(Raster, RunsAreThePixelRuleOnRandomTriangles) {
     glm::dvec2 p[3];
     for (auto& q : p) {
       switch (n % 4) {
-        case 0: q = {pos(rng), pos(rng)}; break;                                   // anywhere
-        case 1: q = {grid(rng) * 0.5, grid(rng) * 0.5}; break;                     // on centres and edges of pixels
+        case 0: q = {pos(rng), pos(rng)}; break;                                       // anywhere
+        case 1: q = {grid(rng) * 0.5, grid(rng) * 0.5}; break;                         // on centres and edges of pixels
         case 2: q = glm::dvec2(20.3, 17.8) + glm::dvec2(tiny(rng), tiny(rng)); break;  // smaller than a pixel
-        default: q = {pos(rng), 17.5 + 1e-9 * tiny(rng)}; break;                   // slivers along a row of centres
+        default: q = {pos(rng), 17.5 + 1e-9 * tiny(rng)}; break;                       // slivers along a row of centres
       }
     }
     expect_same_coverage(p[0], p[1], p[2], 40, 32);
@@ -120,7 +121,8 @@ TEST(Raster, RunsAreThePixelRuleWithHugeCoordinates) {
   for (int n = 0; n < 2000; ++n) {
     // One or two vertices far out in any direction, the rest on the image: the long edges cross it.
     const double r = std::pow(10.0, exponent(rng)), a = angle(rng);
-    const glm::dvec2 far1(r * std::cos(a), r * std::sin(a)), far2(-r * std::cos(a) + on(rng), -r * std::sin(a) + on(rng));
+    const glm::dvec2 far1(r * std::cos(a), r * std::sin(a)),
+        far2(-r * std::cos(a) + on(rng), -r * std::sin(a) + on(rng));
     const glm::dvec2 p(on(rng), on(rng)), q(on(rng), on(rng));
     expect_same_coverage(far1, p, q, 40, 32);
     expect_same_coverage(far1, far2, p, 40, 32);
@@ -137,7 +139,8 @@ TEST(Raster, SharedEdgesCoverEachCentreOnce) {
   for (int b = 0; b <= n; ++b)
     for (int a = 0; a <= n; ++a) {
       const bool inner = a > 0 && a < n && b > 0 && b < n;
-      v[b * (n + 1) + a] = {4.0 + 6.5 * a + (inner ? jitter(rng) * 0.5 : 0.0), 3.0 + 5.5 * b + (inner ? jitter(rng) * 0.5 : 0.0)};
+      v[b * (n + 1) + a] = {4.0 + 6.5 * a + (inner ? jitter(rng) * 0.5 : 0.0),
+                            3.0 + 5.5 * b + (inner ? jitter(rng) * 0.5 : 0.0)};
     }
   std::vector<int> runs(w * h, 0), weighted(w * h, 0);
   for (int b = 0; b < n; ++b)
@@ -149,7 +152,8 @@ TEST(Raster, SharedEdgesCoverEachCentreOnce) {
         rasterize_triangle_runs(t[0], t[1], t[2], w, h, [&](int j, int begin, int end) {
           for (int i = begin; i < end; ++i) ++runs[j * w + i];
         });
-        rasterize_triangle_weights(t[2], t[0], t[1], w, h, [&](int i, int j, double, double, double) { ++weighted[j * w + i]; });
+        rasterize_triangle_weights(t[2], t[0], t[1], w, h,
+                                   [&](int i, int j, double, double, double) { ++weighted[j * w + i]; });
       }
     }
   for (int j = 0; j < h; ++j)

@@ -174,10 +174,10 @@ TEST(Readers, TruncatedAndCorruptedFilesAreErrors) {
   write_vtu(m, dir.file("gen.vtu"));
   spit(dir.file("legacy.vtk"), kLegacy);
   std::vector<std::string> files = {dir.file("gen.vtu"), dir.file("legacy.vtk")};
-  for (const char* rel : {"exodus_disk_out_ref/disk_out_ref.ex2", "cgns_static_mixer/StaticMixer.cgns.gz",
-                          "nasa_bluntfin/bluntfinxyz.bin", "vtkdata_hexa/hexa.vtk", "vtkdata_post_tets/post_tets.vtu",
-                          "nasa_bluntfin/bluntfin.vts", "vtkdata_post_tets/post.vtk",
-                          "vtkdata_notch_stress/notch_stress_fixed.vtk"})
+  for (const char* rel :
+       {"exodus_disk_out_ref/disk_out_ref.ex2", "cgns_static_mixer/StaticMixer.cgns.gz",
+        "nasa_bluntfin/bluntfinxyz.bin", "vtkdata_hexa/hexa.vtk", "vtkdata_post_tets/post_tets.vtu",
+        "nasa_bluntfin/bluntfin.vts", "vtkdata_post_tets/post.vtk", "vtkdata_notch_stress/notch_stress_fixed.vtk"})
     if (fs::exists(test::shared_data(rel))) files.push_back(test::shared_data(rel));
   for (const auto& f : files) {
     const std::string bytes = slurp(f), name = fs::path(f).filename().string();
@@ -189,7 +189,8 @@ TEST(Readers, TruncatedAndCorruptedFilesAreErrors) {
       if (!err.empty()) EXPECT_NE(err.find(cut), std::string::npos) << err;
     }
     std::string garbled = bytes;  // a stretch of the middle overwritten
-    for (std::size_t i = garbled.size() / 3; i < garbled.size() / 3 + 64 && i < garbled.size(); ++i) garbled[i] = '\x7f';
+    for (std::size_t i = garbled.size() / 3; i < garbled.size() / 3 + 64 && i < garbled.size(); ++i)
+      garbled[i] = '\x7f';
     const std::string bad = dir.file("garbled_" + name);
     spit(bad, garbled);
     try {
@@ -247,8 +248,8 @@ TEST(Readers, ParallelVtuPiecesAreMergedAtTheirInterface) {
   const FaceTopology topo = build_topology(m.view());
   EXPECT_EQ(topo.boundary.size(), build_topology(whole.view()).boundary.size());
   const auto& f = m.field("f").values;
-  for (std::int64_t p = 0; p < m.n_points(); ++p)
-    ASSERT_DOUBLE_EQ(f[p], m.points[3 * p] + 2 * m.points[3 * p + 1]);
-  spit(dir.file("missing.pvtu"), slurp(dir.file("box.pvtu")).replace(slurp(dir.file("box.pvtu")).find("b.vtu"), 5, "c.vtu"));
+  for (std::int64_t p = 0; p < m.n_points(); ++p) ASSERT_DOUBLE_EQ(f[p], m.points[3 * p] + 2 * m.points[3 * p + 1]);
+  spit(dir.file("missing.pvtu"),
+       slurp(dir.file("box.pvtu")).replace(slurp(dir.file("box.pvtu")).find("b.vtu"), 5, "c.vtu"));
   EXPECT_FALSE(read_error(dir.file("missing.pvtu")).empty());
 }

@@ -49,8 +49,8 @@ TEST(RenderApi, ANewFieldRendersWithoutPreparingAgain) {
   const Image a = renderer->render(volume, field_of(m, "a"), tf(), kView, {64, 64}, &first);
   EXPECT_EQ(volume.preparations(), 1);
   EXPECT_GT(first.prepare_seconds, 0.0);
-  const Image b = renderer->render(volume, field_of(m, "b"), tf(), test::view_from({-2, 1, 2}, Projection::Orthographic),
-                                   {64, 64}, &second);
+  const Image b = renderer->render(volume, field_of(m, "b"), tf(),
+                                   test::view_from({-2, 1, 2}, Projection::Orthographic), {64, 64}, &second);
   EXPECT_EQ(volume.preparations(), 1) << "a new time step, view and field must not rebuild topology, hull or sorter";
   EXPECT_EQ(second.prepare_seconds, 0.0);
   EXPECT_NE(a.rgba, b.rgba);
@@ -80,7 +80,8 @@ TEST(RenderApi, ProjectionAndExactBehindOneInterface) {
   EXPECT_EQ(make_renderer({})->name(), "pt-breakpoints");
   // Each renderer estimates its own frame; more pixels need more.
   const VolumeSize size = size_of(m.view());
-  EXPECT_GT(make_renderer(exact)->estimate_bytes(size, {1024, 1024}), make_renderer(exact)->estimate_bytes(size, {64, 64}));
+  EXPECT_GT(make_renderer(exact)->estimate_bytes(size, {1024, 1024}),
+            make_renderer(exact)->estimate_bytes(size, {64, 64}));
 }
 
 TEST(RenderApi, SolverArraysAsTheyAreGiveTheSamePicture) {
@@ -88,7 +89,8 @@ TEST(RenderApi, SolverArraysAsTheyAreGiveTheSamePicture) {
   const Field a = field_of(m, "a");
   const Image reference = render(Volume(m.view()), a, tf(), {}, kView, {48, 48});
   // 32-bit ids: widened once, and the volume says so.
-  const std::vector<std::int32_t> conn(m.connectivity.begin(), m.connectivity.end()), off(m.offsets.begin(), m.offsets.end());
+  const std::vector<std::int32_t> conn(m.connectivity.begin(), m.connectivity.end()),
+      off(m.offsets.begin(), m.offsets.end());
   CellArrays cells{conn.data(), off.data(), m.types.data(), m.n_cells(), true};
   const Volume v32(m.points.data(), m.n_points(), cells, "solver arrays");
   ASSERT_EQ(v32.copies().size(), 1u);
@@ -111,15 +113,20 @@ TEST(RenderApi, AMissingOrBadFieldIsAnError) {
   const Mesh m = box();
   const Volume volume(m.view());
   const auto r = make_renderer({});
-  EXPECT_NE(error_of([&] { r->render(volume, Field{}, tf(), kView, {8, 8}); }).find("no field given"), std::string::npos);
+  EXPECT_NE(error_of([&] {
+              r->render(volume, Field{}, tf(), kView, {8, 8});
+            }).find("no field given"),
+            std::string::npos);
   std::vector<double> short_field(5, 0.0);
-  EXPECT_NE(error_of([&] { r->render(volume, {short_field.data(), 5, "t"}, tf(), kView, {8, 8}); })
-                .find("field 't' has 5 values for " + std::to_string(m.n_points()) + " points"),
+  EXPECT_NE(error_of([&] {
+              r->render(volume, {short_field.data(), 5, "t"}, tf(), kView, {8, 8});
+            }).find("field 't' has 5 values for " + std::to_string(m.n_points()) + " points"),
             std::string::npos);
   std::vector<double> nan_field(static_cast<std::size_t>(m.n_points()), 0.0);
   nan_field[7] = NAN;
-  EXPECT_NE(error_of([&] { r->render(volume, {nan_field.data(), m.n_points(), "t"}, tf(), kView, {8, 8}); })
-                .find("field 't' is not finite at point 7"),
+  EXPECT_NE(error_of([&] {
+              r->render(volume, {nan_field.data(), m.n_points(), "t"}, tf(), kView, {8, 8});
+            }).find("field 't' is not finite at point 7"),
             std::string::npos);
   EXPECT_NE(error_of([&] { field_of(m, "c"); }).find("c"), std::string::npos);
 }

@@ -5,10 +5,10 @@
 
 #include "base/error.hpp"
 #include "grid/write_mesh.hpp"
+#include "scene/prepare.hpp"
+#include "scene/scene_file.hpp"
 #include "test_util.hpp"
 #include "tools/memory_budget.hpp"
-#include "scene/scene_file.hpp"
-#include "scene/prepare.hpp"
 
 using namespace cellproj;
 
@@ -48,11 +48,13 @@ TEST(Scene, RelativeMeshPathAndErrorsNamingTheKey) {
             std::string::npos);
   EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "feild": "a", )" + tf + "}")).find("unknown key 'feild'"),
             std::string::npos);
-  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "a", "camera": {"eye": [0, 0, 1], "target": [0, 0, 1]}, )" + tf + "}"))
+  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "a", "camera": {"eye": [0, 0, 1], "target": [0, 0, 1]}, )" +
+                              tf + "}"))
                 .find("eye and target are the same point"),
             std::string::npos);
-  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "a", "image": {"width": 0}, )" + tf + "}")).find("image.width"),
-            std::string::npos);
+  EXPECT_NE(
+      scene_error(write(R"({"mesh": "m.vtu", "field": "a", "image": {"width": 0}, )" + tf + "}")).find("image.width"),
+      std::string::npos);
   EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "a" )")).find("not valid JSON"), std::string::npos);
   EXPECT_NE(scene_error(write(R"({"mesh": "gone.vtu", "field": "a", )" + tf + "}")).find("gone.vtu: no such file"),
             std::string::npos);

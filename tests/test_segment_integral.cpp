@@ -55,7 +55,8 @@ TEST(SegmentIntegral, LinearKappaConstantColour) {
 
 TEST(SegmentIntegral, LinearKappaLinearColourMatchesGaussianClosedForm) {
   const glm::dvec3 c0{1.0, 0.2, 0.0}, c1{0.0, 0.6, 1.0};
-  for (auto [L, k0, k1] : {std::tuple{1.0, 0.5, 3.0}, {1.0, 3.0, 0.5}, {0.1, 0.0, 50.0}, {2.0, 5.0, 0.1}, {1e-3, 2.0, 7.0}}) {
+  for (auto [L, k0, k1] :
+       {std::tuple{1.0, 0.5, 3.0}, {1.0, 3.0, 0.5}, {0.1, 0.0, 50.0}, {2.0, 5.0, 0.1}, {1e-3, 2.0, 7.0}}) {
     const auto s = integrate_linear_reference(L, k0, k1, c0, c1);
     const auto ref = closed_form_rgb(L, k0, k1, c0, c1);
     for (int i = 0; i < 3; ++i) EXPECT_NEAR(s.rgb[i], ref[i], 1e-11) << L << " " << k0 << " " << k1;
@@ -113,8 +114,8 @@ TEST(PolynomialSegment, QuadraticScalarCrossingABreakpointTwice) {
   const double L = 2.0;
   auto s_at = [&](double t) { return s(t - 1.0); };  // x = t - 1 for L = 2
   const SegmentLight got = integrate_polynomial_reference(tf, L, s);
-  const glm::dvec3 want = test::simpson_light(L, [&](double t) { return tf.extinction(s_at(t)); },
-                                              [&](double t) { return tf.color(s_at(t)); });
+  const glm::dvec3 want = test::simpson_light(
+      L, [&](double t) { return tf.extinction(s_at(t)); }, [&](double t) { return tf.color(s_at(t)); });
   double depth = 0.0;  // Simpson on kappa
   const int n = 200000;
   for (int i = 0; i <= n; ++i) depth += (i == 0 || i == n ? 1 : i % 2 ? 4 : 2) * tf.extinction(s_at(L * i / n));

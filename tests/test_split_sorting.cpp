@@ -39,7 +39,8 @@ TEST(SplitSorting, SplittingSorterHasNoOrderViolations) {
         ASSERT_EQ(static_cast<std::int64_t>(v.sorted.order.size()), cells.n_cells);
         const CellRayTracer tracer(cells);
         const OrderCheck k = check_order(tracer, cells.n_cells, v.sorted.order, c, 64, 64);
-        EXPECT_EQ(k.violations, 0) << "mesh " << kind << ", " << name_of(method) << ", " << v.problem_cells << " problem cells";
+        EXPECT_EQ(k.violations, 0) << "mesh " << kind << ", " << name_of(method) << ", " << v.problem_cells
+                                   << " problem cells";
         EXPECT_EQ(k.missing_cells + k.repeated_cells, 0);
       }
   }
@@ -68,4 +69,3 @@ TEST(SplitSorting, SplitSorterCopyingWholeCellsPlanesSortsTheSame) {
       }
   }
 }
-

@@ -157,12 +157,13 @@ TEST(Topology, CoincidentFacesOfOverlappingCellsAreNotGlued) {
     for (const double z : apex_z) {  // each tetrahedron on its own copy of the triangle
       const std::int64_t a = m.add_point(tri[0]), b = m.add_point(tri[1]), c = m.add_point(tri[2]);
       const std::int64_t d = m.add_point({0.2, 0.2, z});
-      m.add_cell(CellType::Tetra, z > 0 ? std::initializer_list<std::int64_t>{a, b, c, d} : std::initializer_list<std::int64_t>{a, c, b, d});
+      m.add_cell(CellType::Tetra, z > 0 ? std::initializer_list<std::int64_t>{a, b, c, d}
+                                        : std::initializer_list<std::int64_t>{a, c, b, d});
     }
     return m;
   };
   EXPECT_EQ(build_topology(mesh_with({1.0, -1.0}).view()).seam_faces, 1);
-  EXPECT_EQ(build_topology(mesh_with({1.0, 0.5}).view()).seam_faces, 0);       // same side: overlapping
+  EXPECT_EQ(build_topology(mesh_with({1.0, 0.5}).view()).seam_faces, 0);         // same side: overlapping
   EXPECT_EQ(build_topology(mesh_with({1.0, -1.0, -0.5}).view()).seam_faces, 0);  // three faces at one place
   // Solver arrays handed over unvalidated: a NaN point is never at the same place as another.
   Mesh nan = mesh_with({1.0, -1.0});

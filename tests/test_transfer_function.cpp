@@ -41,26 +41,33 @@ TEST(TransferFunction, BadInputIsRejectedWithContext) {
   EXPECT_NE(msg([] { TransferFunction({}, {{0, 1}}); }).find("at least one"), std::string::npos);
   EXPECT_NE(msg([] { TransferFunction({{0, {1.5, 0, 0}}}, {{0, 1}}); }).find("outside [0, 1]"), std::string::npos);
   EXPECT_NE(msg([] { TransferFunction({{0, {1, 0, 0}}}, {{0, -1}}); }).find(">= 0"), std::string::npos);
-  EXPECT_NE(msg([] { TransferFunction({{1, {1, 0, 0}}, {0, {1, 0, 0}}}, {{0, 1}}); }).find("increasing"), std::string::npos);
+  EXPECT_NE(msg([] {
+              TransferFunction({{1, {1, 0, 0}}, {0, {1, 0, 0}}}, {{0, 1}});
+            }).find("increasing"),
+            std::string::npos);
   EXPECT_NE(msg([] { TransferFunction({{0, {1, 0, 0}}}, {{0, NAN}}); }).find("finite"), std::string::npos);
   const auto j = nlohmann::json::parse(R"({"color": [[0, 1, 0]], "extinction": [[0, 1]]})");
-  EXPECT_NE(msg([&] { transfer_function_from_json(j, "s.json", ".", 0, 1); }).find("s.json: transfer_function.color[0]"),
-            std::string::npos);
+  EXPECT_NE(
+      msg([&] { transfer_function_from_json(j, "s.json", ".", 0, 1); }).find("s.json: transfer_function.color[0]"),
+      std::string::npos);
   const auto k = nlohmann::json::parse(R"({"color": [[0, 1, 0, 0]], "extinction": [[0, 1]], "opacity": 1})");
-  EXPECT_NE(msg([&] { transfer_function_from_json(k, "s.json", ".", 0, 1); }).find("unknown key 'opacity'"), std::string::npos);
+  EXPECT_NE(msg([&] { transfer_function_from_json(k, "s.json", ".", 0, 1); }).find("unknown key 'opacity'"),
+            std::string::npos);
 }
 
 TEST(TransferFunction, ParaViewPresetIsStretchedOverTheRange) {
   test::TempDir dir;
   std::ofstream(dir.file("preset.json")) << R"([{"Name": "Other", "RGBPoints": [0, 0, 0, 0, 1, 1, 1, 1]},
       {"Name": "Cool", "ColorSpace": "RGB", "RGBPoints": [-1, 0, 0, 1, 1, 1, 0, 0]}])";
-  const auto j = nlohmann::json::parse(R"({"color_preset": {"file": "preset.json", "name": "Cool"}, "extinction": [[0, 1]]})");
+  const auto j =
+      nlohmann::json::parse(R"({"color_preset": {"file": "preset.json", "name": "Cool"}, "extinction": [[0, 1]]})");
   const auto file_dir = std::filesystem::path(dir.file("preset.json")).parent_path().string();
   const TransferFunction tf = transfer_function_from_json(j, "s.json", file_dir, 10.0, 20.0);
   EXPECT_DOUBLE_EQ(tf.color(10.0).b, 1.0);
   EXPECT_DOUBLE_EQ(tf.color(15.0).r, 0.5);
   EXPECT_DOUBLE_EQ(tf.color(20.0).r, 1.0);
-  const auto bad = nlohmann::json::parse(R"({"color_preset": {"file": "preset.json", "name": "Nope"}, "extinction": [[0, 1]]})");
+  const auto bad =
+      nlohmann::json::parse(R"({"color_preset": {"file": "preset.json", "name": "Nope"}, "extinction": [[0, 1]]})");
   try {
     transfer_function_from_json(bad, "s.json", file_dir, 0, 1);
     FAIL();

@@ -118,7 +118,10 @@ namespace {
 
 // A deterministic jitter in [-1, 1]^3 per grid point.
 glm::dvec3 jitter(const glm::dvec3& u) {
-  auto h = [](double x) { const double s = std::sin(x) * 43758.5453; return 2.0 * (s - std::floor(s)) - 1.0; };
+  auto h = [](double x) {
+    const double s = std::sin(x) * 43758.5453;
+    return 2.0 * (s - std::floor(s)) - 1.0;
+  };
   return {h(12.9898 * u.x + 78.233 * u.y + 37.719 * u.z), h(39.3468 * u.x + 11.135 * u.y + 83.155 * u.z),
           h(73.156 * u.x + 52.235 * u.y + 9.151 * u.z)};
 }
@@ -127,12 +130,15 @@ glm::dvec3 jitter(const glm::dvec3& u) {
 
 Mesh warped_hexahedra(int n) {
   const double cell = 2.0 / n;
-  Mesh m = make_curvilinear(n, n, n, [cell](const glm::dvec3& u) {
-    const double a = 1.2 * (u.z - 0.5);
-    const glm::dvec3 p(2 * u.x - 1, 2 * u.y - 1, 2 * u.z - 1);
-    return glm::dvec3(std::cos(a) * p.x - std::sin(a) * p.y, std::sin(a) * p.x + std::cos(a) * p.y, p.z) +
-           0.15 * cell * jitter(u);
-  }, false);
+  Mesh m = make_curvilinear(
+      n, n, n,
+      [cell](const glm::dvec3& u) {
+        const double a = 1.2 * (u.z - 0.5);
+        const glm::dvec3 p(2 * u.x - 1, 2 * u.y - 1, 2 * u.z - 1);
+        return glm::dvec3(std::cos(a) * p.x - std::sin(a) * p.y, std::sin(a) * p.x + std::cos(a) * p.y, p.z) +
+               0.15 * cell * jitter(u);
+      },
+      false);
   return m;
 }
 
@@ -140,7 +146,8 @@ Mesh twisted_mixed(int n) {
   return make_mixed(n, n, n, [](const glm::dvec3& u) {
     const double a = 1.0 * (u.z - 0.5);
     const glm::dvec3 p(2 * u.x - 1, 2 * u.y - 1, 2 * u.z - 1);
-    return glm::dvec3(std::cos(a) * p.x - std::sin(a) * p.y, std::sin(a) * p.x + std::cos(a) * p.y, p.z + 0.1 * p.x * p.y);
+    return glm::dvec3(std::cos(a) * p.x - std::sin(a) * p.y, std::sin(a) * p.x + std::cos(a) * p.y,
+                      p.z + 0.1 * p.x * p.y);
   });
 }
 

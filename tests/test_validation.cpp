@@ -62,7 +62,7 @@ TEST(Validation, ErrorsNameTheFileAndTheElement) {
 
 TEST(Validation, InvertedDegenerateAndDuplicateAreCounted) {
   Mesh m = unit_tet();
-  m.add_point({0, 0, 0});          // a duplicate of point 0
+  m.add_point({0, 0, 0});  // a duplicate of point 0
   m.add_point({2, 0, 0});
   m.add_point({0, 2, 0});
   m.add_point({3, 0, 0});
@@ -119,7 +119,8 @@ TEST(Tetrahedralize, CanonicalSplitConservesVolumeAndConforms) {
     const int n = canonical_tetrahedra(hex.view(), c, out);
     for (int k = 0; k < n; ++k)
       vh += tet_volume6(hex.view().point(out[k][0]), hex.view().point(out[k][1]), hex.view().point(out[k][2]),
-                        hex.view().point(out[k][3])) / 6;
+                        hex.view().point(out[k][3])) /
+            6;
   }
   EXPECT_NEAR(vt, vh, 1e-12);
 }
@@ -132,7 +133,7 @@ TEST(Overlaps, OverlappingCellsAreFoundTouchingOnesAreNot) {
     EXPECT_EQ(r.cell_pairs, 0) << kind;
     EXPECT_GT(r.candidates, 0) << kind;  // neighbours' boxes meet: the test did run
   }
-  Mesh m = generate("box", 3);  // 27 hexahedra over [-1, 1]^3
+  Mesh m = generate("box", 3);          // 27 hexahedra over [-1, 1]^3
   test::append(m, generate("box", 1));  // one hexahedron over all of them
   const OverlapReport all = overlapping_cells(m.view());
   EXPECT_EQ(all.cell_pairs, 27);
@@ -149,9 +150,9 @@ TEST(Overlaps, OverlappingCellsAreFoundTouchingOnesAreNot) {
     t.add_cell(CellType::Tetra, {a2, c2, b2, down});
     return overlapping_cells(t.view()).cell_pairs;
   };
-  EXPECT_EQ(pair_with(0.0), 0);     // sharing a face's place
-  EXPECT_EQ(pair_with(-0.1), 0);    // apart
-  EXPECT_EQ(pair_with(1e-12), 0);   // into each other by 1e-12 of their size: a contact
-  EXPECT_EQ(pair_with(1e-3), 1);    // into each other
+  EXPECT_EQ(pair_with(0.0), 0);    // sharing a face's place
+  EXPECT_EQ(pair_with(-0.1), 0);   // apart
+  EXPECT_EQ(pair_with(1e-12), 0);  // into each other by 1e-12 of their size: a contact
+  EXPECT_EQ(pair_with(1e-3), 1);   // into each other
   EXPECT_EQ(pair_with(0.5), 1);
 }

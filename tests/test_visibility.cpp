@@ -3,9 +3,9 @@
 #include <cmath>
 #include <numeric>
 
+#include <gtest/gtest.h>
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
-#include <gtest/gtest.h>
 
 #include <atomic>
 #include <filesystem>
@@ -77,7 +77,8 @@ Mesh tetrahedra_mesh(Mesh m) {
   for (std::int64_t c = 0; c < m.n_cells(); ++c) {
     const MeshView v = m.view();
     const auto* id = v.cell(c);
-    if (glm::dot(glm::cross(v.point(id[1]) - v.point(id[0]), v.point(id[2]) - v.point(id[0])), v.point(id[3]) - v.point(id[0])) < 0)
+    if (glm::dot(glm::cross(v.point(id[1]) - v.point(id[0]), v.point(id[2]) - v.point(id[0])),
+                 v.point(id[3]) - v.point(id[0])) < 0)
       std::swap(m.connectivity[4 * c + 1], m.connectivity[4 * c + 2]);
   }
   return m;
@@ -296,9 +297,9 @@ TEST(Visibility, PairwiseAgreesOnSmallMeshes) {
 // A graded grid whose cells shrink a hundredfold towards one face, seen obliquely: big cells'
 // centroids lie behind small cells they cover. Measured here: 53,713 violating pairs over 8 views.
 TEST(Visibility, CentroidSortIsDefeatedByGradedCells) {
-  Mesh m = make_curvilinear(6, 6, 6, [](const glm::dvec3& u) {
-    return glm::dvec3(2 * u.x - 1, 2 * u.y - 1, 2 * std::pow(u.z, 3.0) - 1);
-  }, true);
+  Mesh m = make_curvilinear(
+      6, 6, 6, [](const glm::dvec3& u) { return glm::dvec3(2 * u.x - 1, 2 * u.y - 1, 2 * std::pow(u.z, 3.0) - 1); },
+      true);
   const Scene s(std::move(m));
   std::int64_t centroid = 0, mpvo = 0;
   for (const Camera& c : both_projections(4)) {
@@ -307,7 +308,8 @@ TEST(Visibility, CentroidSortIsDefeatedByGradedCells) {
   }
   EXPECT_EQ(mpvo, 0);
   EXPECT_GE(centroid, 10000);
-  std::printf("centroid sort on the graded grid: %lld order violations over 8 views\n", static_cast<long long>(centroid));
+  std::printf("centroid sort on the graded grid: %lld order violations over 8 views\n",
+              static_cast<long long>(centroid));
 }
 
 // Where two cells overlap no order of whole cells is right: the oracle counts those pixels apart.

@@ -12,7 +12,8 @@ Action add_compare(CLI::App& app) {
     double scale = 10.0;
   };
   auto args = std::make_shared<Args>();
-  CLI::App* cmd = app.add_subcommand("compare", "Largest and RMS difference of two .npy images written by render --npy");
+  CLI::App* cmd =
+      app.add_subcommand("compare", "Largest and RMS difference of two .npy images written by render --npy");
   cmd->add_option("a", args->a, "First image (.npy)")->required();
   cmd->add_option("b", args->b, "Second image (.npy), e.g. the exact reference")->required();
   cmd->add_option("--diff", args->diff, "Also write |a - b| as a PNG, multiplied by --scale");

@@ -21,8 +21,10 @@ Action add_generate(CLI::App& app) {
   cmd->add_option("-o,--output", args->out, "Output mesh: .vtu, or .off (tetrahedra only)")->required();
   return [args] {
     const Mesh m = generate(args->kind, args->n);
-    if (std::filesystem::path(args->out).extension() == ".off") write_off(m, m.fields.front().name, args->out);
-    else write_vtu(m, args->out);
+    if (std::filesystem::path(args->out).extension() == ".off")
+      write_off(m, m.fields.front().name, args->out);
+    else
+      write_vtu(m, args->out);
     std::printf("wrote %s (%lld points, %lld cells)\n", args->out.c_str(), static_cast<long long>(m.n_points()),
                 static_cast<long long>(m.n_cells()));
     return kExitOk;

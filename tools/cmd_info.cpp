@@ -7,11 +7,11 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grid/read_mesh.hpp"
 #include "grid/overlaps.hpp"
+#include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
-#include "tools/commands.hpp"
 #include "scene/prepare.hpp"
+#include "tools/commands.hpp"
 
 namespace cellproj {
 namespace {
@@ -33,17 +33,21 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
   std::map<std::string, std::int64_t> by_type = {{"tetra", 0}, {"hexahedron", 0}, {"wedge", 0}, {"pyramid", 0}};
   for (auto t : m.types) ++by_type[cell_name(static_cast<CellType>(t))];
   const auto [lo, hi] = bounds(m);
-  nlohmann::json fields = nlohmann::json::object(), constant = nlohmann::json::array(), nonfinite = nlohmann::json::object();
+  nlohmann::json fields = nlohmann::json::object(), constant = nlohmann::json::array(),
+                 nonfinite = nlohmann::json::object();
   for (const auto& f : m.fields) {
     double fmin = std::numeric_limits<double>::infinity(), fmax = -fmin;
     std::int64_t bad = 0;
     for (double v : f.values) {
-      if (!std::isfinite(v)) { ++bad; continue; }
+      if (!std::isfinite(v)) {
+        ++bad;
+        continue;
+      }
       fmin = std::min(fmin, v);
       fmax = std::max(fmax, v);
     }
     fields[f.name] = bad == static_cast<std::int64_t>(f.values.size()) ? nlohmann::json::array({nullptr, nullptr})
-                                                                        : nlohmann::json::array({fmin, fmax});
+                                                                       : nlohmann::json::array({fmin, fmax});
     if (bad) nonfinite[f.name] = bad;
     if (fmin == fmax) constant.push_back(f.name);
   }
@@ -88,9 +92,11 @@ void print_text(const nlohmann::json& j) {
   for (const auto& [k, v] : j["fields"].items())
     std::printf("    %-28s [%s, %s]  (%s)\n", k.c_str(), v[0].dump().c_str(), v[1].dump().c_str(),
                 j["field_origins"][k].get<std::string>().c_str());
-  std::printf("  boundary faces %lld, shared faces %lld", j["boundary_faces"].get<long long>(), j["shared_faces"].get<long long>());
+  std::printf("  boundary faces %lld, shared faces %lld", j["boundary_faces"].get<long long>(),
+              j["shared_faces"].get<long long>());
   if (j["seam_faces"].get<long long>())
-    std::printf(" (%lld of them seams: faces at repeated points, matched by position)", j["seam_faces"].get<long long>());
+    std::printf(" (%lld of them seams: faces at repeated points, matched by position)",
+                j["seam_faces"].get<long long>());
   std::printf("; boundary %s", j["convex"].get<bool>() ? "convex" : "NOT convex");
   if (!j["convex"].get<bool>())
     std::printf(" (%lld boundary faces, %.1f%% of the boundary area, off the convex hull)",
@@ -98,19 +104,23 @@ void print_text(const nlohmann::json& j) {
   std::printf("\n  non-planar quadrilateral faces %lld (largest warp %g, %.3g of the face's size)\n",
               j["nonplanar_faces"].get<long long>(), j["max_nonplanarity"].get<double>(),
               j["max_relative_nonplanarity"].get<double>());
-  std::printf("  degenerate cells %lld, inverted cells %lld (re-oriented), duplicate points %lld, non-manifold faces %lld\n",
-              j["degenerate_cells"].get<long long>(), j["inverted_cells"].get<long long>(),
-              j["duplicate_points"].get<long long>(), j["nonmanifold_faces"].get<long long>());
-  for (const auto& c : j["constant_fields"]) std::printf("  note: field '%s' is constant\n", c.get<std::string>().c_str());
+  std::printf(
+      "  degenerate cells %lld, inverted cells %lld (re-oriented), duplicate points %lld, non-manifold faces %lld\n",
+      j["degenerate_cells"].get<long long>(), j["inverted_cells"].get<long long>(),
+      j["duplicate_points"].get<long long>(), j["nonmanifold_faces"].get<long long>());
+  for (const auto& c : j["constant_fields"])
+    std::printf("  note: field '%s' is constant\n", c.get<std::string>().c_str());
   for (const auto& [k, v] : j["nonfinite_values"].items())
-    std::printf("  WARNING: field '%s' has %lld non-finite values: it cannot be rendered\n", k.c_str(), v.get<long long>());
+    std::printf("  WARNING: field '%s' has %lld non-finite values: it cannot be rendered\n", k.c_str(),
+                v.get<long long>());
   for (const auto& n : j["notes"]) std::printf("  note: %s\n", n.get<std::string>().c_str());
   if (!j["overlapping_cell_pairs"].is_null()) {
     if (const auto pairs = j["overlapping_cell_pairs"].get<long long>())
-      std::printf("  WARNING: cells overlap in %lld pair%s (first: cells %lld and %lld): no back-to-front order of "
-                  "whole cells is right there, so the projection methods are not; --method exact is\n",
-                  pairs, pairs == 1 ? "" : "s", j["first_overlapping_cells"][0].get<long long>(),
-                  j["first_overlapping_cells"][1].get<long long>());
+      std::printf(
+          "  WARNING: cells overlap in %lld pair%s (first: cells %lld and %lld): no back-to-front order of "
+          "whole cells is right there, so the projection methods are not; --method exact is\n",
+          pairs, pairs == 1 ? "" : "s", j["first_overlapping_cells"][0].get<long long>(),
+          j["first_overlapping_cells"][1].get<long long>());
     else
       std::printf("  overlapping cells: none\n");
   }
@@ -126,11 +136,14 @@ int run_info(const InfoArgs& a) {
     const auto t1 = std::chrono::steady_clock::now();
     const OverlapReport o = overlapping_cells(loaded.mesh.view());
     j["overlapping_cell_pairs"] = o.cell_pairs;
-    j["first_overlapping_cells"] = o.cell_pairs ? nlohmann::json::array({o.first_a, o.first_b}) : nlohmann::json(nullptr);
+    j["first_overlapping_cells"] =
+        o.cell_pairs ? nlohmann::json::array({o.first_a, o.first_b}) : nlohmann::json(nullptr);
     j["overlap_seconds"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t1).count();
   }
-  if (a.json) std::printf("%s\n", j.dump().c_str());
-  else print_text(j);
+  if (a.json)
+    std::printf("%s\n", j.dump().c_str());
+  else
+    print_text(j);
   return kExitOk;
 }
 
@@ -139,13 +152,16 @@ int run_info(const InfoArgs& a) {
 Action add_info(CLI::App& app) {
   auto args = std::make_shared<InfoArgs>();
   CLI::App* cmd = app.add_subcommand("info", "Describe a mesh: cells, bounds, fields, boundary, defects");
-  cmd->add_option("mesh", args->mesh, "Mesh file (.vtu .pvtu .vts .vtk .exo/.ex2/.e .cgns[.gz] PLOT3D .node/.ele .off .xyzs .vtp)")
+  cmd->add_option("mesh", args->mesh,
+                  "Mesh file (.vtu .pvtu .vts .vtk .exo/.ex2/.e .cgns[.gz] PLOT3D .node/.ele .off .xyzs .vtp)")
       ->required();
-  cmd->add_option("--format", args->reader.format, "Override the format chosen by extension: vtk-xml, vtk-legacy, "
-                                                   "exodus, cgns, plot3d, tetgen, off, points");
+  cmd->add_option("--format", args->reader.format,
+                  "Override the format chosen by extension: vtk-xml, vtk-legacy, "
+                  "exodus, cgns, plot3d, tetgen, off, points");
   cmd->add_option("--q", args->reader.q_file, "PLOT3D solution (q) file");
   cmd->add_option("--zone", args->reader.zone, "CGNS: read only this zone");
-  cmd->add_option("--time-step", args->reader.time_step, "Exodus II: time step of the fields (from 0)")->check(CLI::NonNegativeNumber);
+  cmd->add_option("--time-step", args->reader.time_step, "Exodus II: time step of the fields (from 0)")
+      ->check(CLI::NonNegativeNumber);
   cmd->add_flag("--json", args->json, "Print one JSON object instead of text");
   cmd->add_flag("--overlaps", args->overlaps,
                 "Also look for cells whose interiors overlap (over their tetrahedra; seconds per million cells)");

@@ -5,9 +5,9 @@
 #include <filesystem>
 #include <memory>
 
-#include <nlohmann/json.hpp>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
+#include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
 #include "render/renderer.hpp"
@@ -25,7 +25,7 @@ namespace {
 
 struct RenderArgs {
   std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto",
-              gaps = "auto", backend = "software", tetrahedralize = "problem";
+                               gaps = "auto", backend = "software", tetrahedralize = "problem";
   int threads = 0, frames = 1, table_size = 256;
   std::vector<std::string> given;  // the render settings given on the command line, by name
   double max_memory_gib = 0.0;     // 0: the machine's available memory
@@ -71,10 +71,9 @@ int run_render(const RenderArgs& a) {
   // and again from the mesh as read.
   const auto size_text = std::to_string(scene.width) + "x" + std::to_string(scene.height);
   if (const HeaderCounts h = vtk_xml_header_counts(scene.mesh); h.cells > 0)
-    refuse_beyond_memory(estimate_mesh_bytes(h) + renderer->estimate_bytes({h.points, h.cells, h.cells}, size),
-                         a.max_memory_gib,
-                         "reading " + scene.mesh + " (" + std::to_string(h.cells) + " cells) and rendering " + size_text,
-                         a.scene);
+    refuse_beyond_memory(
+        estimate_mesh_bytes(h) + renderer->estimate_bytes({h.points, h.cells, h.cells}, size), a.max_memory_gib,
+        "reading " + scene.mesh + " (" + std::to_string(h.cells) + " cells) and rendering " + size_text, a.scene);
   const PreparedScene prepared = prepare_scene(scene);
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
   const double load_seconds = seconds_since(t_load);
@@ -153,28 +152,44 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--npy", args->npy, "Also write the premultiplied float RGBA image as .npy (H, W, 4)");
   // The render settings, by the names Renderer::settings_used() gives.
   std::vector<std::pair<std::string, CLI::Option*>> settings;
-  settings.emplace_back("method", cmd->add_option("--method", args->method,
-                  "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
-                  "pt-table, pt-linear (fastest), or exact (the reference ray integrator); see docs/methods.md"));
-  settings.emplace_back("sort", cmd->add_option("--sort", args->sort, "Visibility sort for the projection methods: " + sort_method_names()));
-  settings.emplace_back("gaps", cmd->add_option("--gaps", args->gaps,
-                  "How mpvo-abuffer finds the relations across gaps: " + gap_method_names() + " (as sortbench's)"));
-  settings.emplace_back("backend", cmd->add_option("--backend", args->backend,
-                  "Where the projection methods rasterize: software (default), or for pt-linear and pt-table "
-                  "opengl (OSMesa, float target), opengl-8bit, opengl-8bit-dither"));
-  settings.emplace_back("tetrahedralize", cmd->add_option("--tetrahedralize", args->tetrahedralize,
-                  "Which cells other than tetrahedra the projection methods split into tetrahedra: problem (default; "
-                  "per view, those with a folded non-planar face), all, or none (every cell whole)"));
+  settings.emplace_back(
+      "method",
+      cmd->add_option("--method", args->method,
+                      "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
+                      "pt-table, pt-linear (fastest), or exact (the reference ray integrator); see docs/methods.md"));
+  settings.emplace_back("sort", cmd->add_option("--sort", args->sort,
+                                                "Visibility sort for the projection methods: " + sort_method_names()));
+  settings.emplace_back(
+      "gaps",
+      cmd->add_option("--gaps", args->gaps,
+                      "How mpvo-abuffer finds the relations across gaps: " + gap_method_names() + " (as sortbench's)"));
+  settings.emplace_back(
+      "backend",
+      cmd->add_option("--backend", args->backend,
+                      "Where the projection methods rasterize: software (default), or for pt-linear and pt-table "
+                      "opengl (OSMesa, float target), opengl-8bit, opengl-8bit-dither"));
+  settings.emplace_back(
+      "tetrahedralize",
+      cmd->add_option(
+          "--tetrahedralize", args->tetrahedralize,
+          "Which cells other than tetrahedra the projection methods split into tetrahedra: problem (default; "
+          "per view, those with a folded non-planar face), all, or none (every cell whole)"));
   settings.emplace_back("table-size", cmd->add_option("--table-size", args->table_size,
-                  "pt-table: nodes per axis of the opacity table (default 256)")->check(CLI::Range(2, 8192)));
-  settings.emplace_back("interpolation", cmd->add_option("--interpolation", args->interpolation,
-                  "Field inside hexahedra, wedges and pyramids for exact: isoparametric (default) or canonical-tets")
-      ->check(CLI::IsMember({"isoparametric", "canonical-tets"})));
+                                                      "pt-table: nodes per axis of the opacity table (default 256)")
+                                          ->check(CLI::Range(2, 8192)));
+  settings.emplace_back(
+      "interpolation",
+      cmd->add_option(
+             "--interpolation", args->interpolation,
+             "Field inside hexahedra, wedges and pyramids for exact: isoparametric (default) or canonical-tets")
+          ->check(CLI::IsMember({"isoparametric", "canonical-tets"})));
   cmd->add_option("--size", args->size, "Image size WxH, overriding the scene");
   cmd->add_option("--field", args->field, "Point field to render, overriding the scene");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-  cmd->add_option("--frames", args->frames, "Render N frames, turning the camera 1 degree about its up axis each frame; "
-                                            "report the median frame time")->check(CLI::Range(1, 100000));
+  cmd->add_option("--frames", args->frames,
+                  "Render N frames, turning the camera 1 degree about its up axis each frame; "
+                  "report the median frame time")
+      ->check(CLI::Range(1, 100000));
   cmd->add_option("--max-memory", args->max_memory_gib,
                   "Refuse renders estimated to need more than this many GiB (default: the memory available now)")
       ->check(CLI::PositiveNumber);

@@ -7,18 +7,18 @@
 #include <map>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
+#include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
 #include "grid/read_mesh.hpp"
 #include "raycast/order_oracle.hpp"
+#include "scene/names.hpp"
+#include "scene/prepare.hpp"
+#include "scene/scene_file.hpp"
 #include "tools/commands.hpp"
 #include "tools/timing.hpp"
-#include "scene/names.hpp"
-#include "scene/scene_file.hpp"
-#include "scene/prepare.hpp"
 #include "visibility/sort.hpp"
 #include "visibility/split_sorter.hpp"
 
@@ -46,20 +46,21 @@ std::vector<std::string> split(const std::string& list) {
 std::vector<Camera> sphere_views(const Mesh& mesh, Projection projection, int n, double aspect) {
   const auto [lo, hi] = bounds(mesh);
   std::vector<Camera> cameras;
-  for (const glm::dvec3& d : sphere_directions(n)) cameras.push_back(frame_box(lo, hi, projection, d, up_for(d), aspect));
+  for (const glm::dvec3& d : sphere_directions(n))
+    cameras.push_back(frame_box(lo, hi, projection, d, up_for(d), aspect));
   return cameras;
 }
 
 // One (mesh, sort, projection) row over the given views.
 nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const SplittingSorter& sorter,
-                         const CellRayTracer* tracer, SortMethod method, const std::vector<Camera>& cameras, int w, int h,
-                         bool abuffer_every_pixel, GapMethod gaps) {
+                         const CellRayTracer* tracer, SortMethod method, const std::vector<Camera>& cameras, int w,
+                         int h, bool abuffer_every_pixel, GapMethod gaps) {
   const int views = static_cast<int>(cameras.size());
   const Projection projection = cameras.front().projection;
   std::vector<double> times;
   std::map<std::string, std::vector<double>> phases;
-  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0, overlapping_pixels = 0, violating_clear = 0,
-               problem = 0, split = 0;
+  std::int64_t face = 0, gap = 0, pair = 0, cycles = 0, violations = 0, violating_pixels = 0, overlapping_pixels = 0,
+               violating_clear = 0, problem = 0, split = 0;
   std::int64_t fragments = 0, runs = 0, crossings = 0, pair_tests = 0, abuffer_views = 0;
   std::vector<double> split_times;
   std::string ran;
@@ -84,8 +85,10 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
     if (tracer) {
       // The oracle traces the cells the order lists: the mesh, or its cells split for this view.
       std::unique_ptr<CellRayTracer> split_tracer;
-      if (v.mesh->cells.connectivity != mesh.view().connectivity) split_tracer = std::make_unique<CellRayTracer>(v.mesh->cells);
-      const OrderCheck k = check_order(split_tracer ? *split_tracer : *tracer, v.mesh->cells.n_cells, r.order, camera, w, h);
+      if (v.mesh->cells.connectivity != mesh.view().connectivity)
+        split_tracer = std::make_unique<CellRayTracer>(v.mesh->cells);
+      const OrderCheck k =
+          check_order(split_tracer ? *split_tracer : *tracer, v.mesh->cells.n_cells, r.order, camera, w, h);
       if (k.missing_cells || k.repeated_cells)
         throw InternalError(std::string(name_of(method)) + " dropped or repeated cells");  // a bug, exit 3
       violations += k.violations, violating_pixels += k.violating_pixels, overlapping_pixels += k.overlapping_pixels;
@@ -132,18 +135,22 @@ nlohmann::json bench_row(const std::string& mesh_name, const Mesh& mesh, const S
 std::string cell(const nlohmann::json& v) {
   if (v.is_null()) return "-";
   char b[64];
-  if (v.is_number_float()) std::snprintf(b, sizeof b, "%.4g", v.get<double>());
-  else return v.is_string() ? v.get<std::string>() : v.dump();
+  if (v.is_number_float())
+    std::snprintf(b, sizeof b, "%.4g", v.get<double>());
+  else
+    return v.is_string() ? v.get<std::string>() : v.dump();
   return b;
 }
 
 // One row as the text table's two lines.
 void print_row(const nlohmann::json& row, bool checked, bool every_pixel) {
-  std::printf("  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  cycles %lld",
-              cell(row["sort"]).c_str(), cell(row["projection"]).c_str(), row["median_seconds"].get<double>(),
-              row["min_seconds"].get<double>(), row["max_seconds"].get<double>(), row["cells_per_second"].get<double>(),
-              row["face_relations"].get<long long>(), row["gap_relations"].get<long long>(),
-              row["pair_relations"].get<long long>(), row["cycles"].get<long long>());
+  std::printf(
+      "  %-13s %-5s median %9.5f s (min %.5f, max %.5f)  %10.3g cells/s  relations: faces %lld, gaps %lld, pairs %lld  "
+      "cycles %lld",
+      cell(row["sort"]).c_str(), cell(row["projection"]).c_str(), row["median_seconds"].get<double>(),
+      row["min_seconds"].get<double>(), row["max_seconds"].get<double>(), row["cells_per_second"].get<double>(),
+      row["face_relations"].get<long long>(), row["gap_relations"].get<long long>(),
+      row["pair_relations"].get<long long>(), row["cycles"].get<long long>());
   if (row["problem_cells"].get<long long>() > 0)
     std::printf("  problem cells %lld (split %lld, %.5f s)", row["problem_cells"].get<long long>(),
                 row["cells_split"].get<long long>(), row["split_seconds"].get<double>());
@@ -174,12 +181,32 @@ int run_sortbench(const SortbenchArgs& a) {
   if (a.projection == "ortho" || a.projection == "both") projections.push_back(Projection::Orthographic);
   if (a.projection == "persp" || a.projection == "both") projections.push_back(Projection::Perspective);
 
-  static const char* kColumns[] = {"mesh", "sort", "projection", "views", "cells", "median_seconds", "min_seconds",
-                                   "max_seconds", "cells_per_second", "face_relations", "gap_relations",
-                                   "pair_relations", "cycles", "tetrahedralize", "problem_cells", "cells_split",
-                                   "abuffer_every_pixel", "gaps", "gap_pair_tests", "abuffer_views",
-                                   "abuffer_fragments", "abuffer_runs", "abuffer_crossings",
-                                   "violations", "violating_pixels", "overlapping_pixels",
+  static const char* kColumns[] = {"mesh",
+                                   "sort",
+                                   "projection",
+                                   "views",
+                                   "cells",
+                                   "median_seconds",
+                                   "min_seconds",
+                                   "max_seconds",
+                                   "cells_per_second",
+                                   "face_relations",
+                                   "gap_relations",
+                                   "pair_relations",
+                                   "cycles",
+                                   "tetrahedralize",
+                                   "problem_cells",
+                                   "cells_split",
+                                   "abuffer_every_pixel",
+                                   "gaps",
+                                   "gap_pair_tests",
+                                   "abuffer_views",
+                                   "abuffer_fragments",
+                                   "abuffer_runs",
+                                   "abuffer_crossings",
+                                   "violations",
+                                   "violating_pixels",
+                                   "overlapping_pixels",
                                    "violating_pixels_without_overlap"};
   const char* const last = kColumns[std::size(kColumns) - 1];
   std::ofstream csv;
@@ -206,8 +233,8 @@ int run_sortbench(const SortbenchArgs& a) {
       for (Projection projection : projections) views.push_back(sphere_views(mesh, projection, a.views, double(w) / h));
       if (!a.json)
         std::printf("%s: %lld cells, boundary %s; read %.3f s, topology and sort preparation %.3f s; %d views, %dx%d\n",
-                    path.c_str(), static_cast<long long>(mesh.n_cells()), convex ? "convex" : "not convex", load_seconds,
-                    prepare_seconds, a.views, w, h);
+                    path.c_str(), static_cast<long long>(mesh.n_cells()), convex ? "convex" : "not convex",
+                    load_seconds, prepare_seconds, a.views, w, h);
       for (SortMethod method : methods) {
         if (method == SortMethod::pairwise && mesh.n_cells() > a.pairwise_limit) {
           if (!a.json)
@@ -216,10 +243,13 @@ int run_sortbench(const SortbenchArgs& a) {
           continue;
         }
         for (const auto& cameras : views) {
-          nlohmann::json row = bench_row(path, mesh, sorter, tracer.get(), method, cameras, w, h, a.abuffer_every_pixel, gaps);
+          nlohmann::json row =
+              bench_row(path, mesh, sorter, tracer.get(), method, cameras, w, h, a.abuffer_every_pixel, gaps);
           row["threads"] = threads;
-          if (a.json) std::printf("%s\n", row.dump().c_str());
-          else print_row(row, a.check, a.abuffer_every_pixel);
+          if (a.json)
+            std::printf("%s\n", row.dump().c_str());
+          else
+            print_row(row, a.check, a.abuffer_every_pixel);
           if (csv.is_open())
             for (const char* c : kColumns) csv << cell(row[c]) << (c == last ? "\n" : ",");
           std::fflush(stdout);
@@ -234,17 +264,22 @@ int run_sortbench(const SortbenchArgs& a) {
 
 Action add_sortbench(CLI::App& app) {
   auto args = std::make_shared<SortbenchArgs>();
-  CLI::App* cmd = app.add_subcommand("sortbench", "Time the visibility sorts from views spread over a sphere, and check them");
+  CLI::App* cmd =
+      app.add_subcommand("sortbench", "Time the visibility sorts from views spread over a sphere, and check them");
   cmd->add_option("meshes", args->meshes, "Mesh files (any format `info` reads)")->required();
   cmd->add_option("--sorts", args->sorts, "Comma-separated sorts: " + sort_method_names())->capture_default_str();
   cmd->add_option("--views", args->views, "Viewpoints, spread evenly over a sphere around the mesh")
-      ->check(CLI::Range(1, 100000))->capture_default_str();
-  cmd->add_option("--size", args->size, "Image size WxH (the A-buffer samples its pixel centres)")->capture_default_str();
+      ->check(CLI::Range(1, 100000))
+      ->capture_default_str();
+  cmd->add_option("--size", args->size, "Image size WxH (the A-buffer samples its pixel centres)")
+      ->capture_default_str();
   cmd->add_option("--projection", args->projection, "ortho, persp or both")
-      ->check(CLI::IsMember({"ortho", "persp", "both"}))->capture_default_str();
+      ->check(CLI::IsMember({"ortho", "persp", "both"}))
+      ->capture_default_str();
   cmd->add_option("--tetrahedralize", args->tetrahedralize,
                   "Cells other than tetrahedra split into tetrahedra: problem (per view, those a ray may cross more "
-                  "than twice), all, or none")->capture_default_str();
+                  "than twice), all, or none")
+      ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads for the sorts' parallel phases (default: all cores)")
       ->check(CLI::Range(1, 1024));
   cmd->add_flag("--check", args->check, "Count order violations with the ray-traced oracle (slow)");
@@ -254,7 +289,8 @@ Action add_sortbench(CLI::App& app) {
   cmd->add_option("--gaps", args->gaps,
                   "How mpvo-abuffer finds the relations across gaps: " + gap_method_names() +
                       " (auto: overlaps, and the A-buffer for a view where a visibility cycle holds one of their "
-                      "relations)")->capture_default_str();
+                      "relations)")
+      ->capture_default_str();
   cmd->add_option("--csv", args->csv, "Also write the rows to this CSV file");
   cmd->add_flag("--json", args->json, "One JSON object per line per (mesh, sort, projection) instead of the table");
   cmd->add_option("--pairwise-limit", args->pairwise_limit, "Skip pairwise on meshes with more cells than this")

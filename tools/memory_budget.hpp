@@ -22,7 +22,8 @@ std::uint64_t available_memory_bytes();
 
 // Throws InputError, prefixed with `source`, when `need` bytes exceed the limit: `max_memory_gib`
 // when positive, else the memory available now. `what` names the work ("rendering 512x512 ...").
-void refuse_beyond_memory(std::uint64_t need, double max_memory_gib, const std::string& what, const std::string& source);
+void refuse_beyond_memory(std::uint64_t need, double max_memory_gib, const std::string& what,
+                          const std::string& source);
 
 // "3.2 GiB"
 std::string format_bytes(std::uint64_t bytes);

@@ -18,7 +18,8 @@ bool finite(const glm::dvec3& v) { return std::isfinite(v.x) && std::isfinite(v.
 
 void check_camera(const Camera& c, const std::string& source) {
   const std::string at = source + ": camera";
-  if (!finite(c.eye) || !finite(c.target) || !finite(c.up)) throw InputError(at + ": eye, target and up must be finite");
+  if (!finite(c.eye) || !finite(c.target) || !finite(c.up))
+    throw InputError(at + ": eye, target and up must be finite");
   const glm::dvec3 view = c.target - c.eye;
   if (glm::length(view) == 0.0) throw InputError(at + ": eye and target are the same point");
   if (glm::length(c.up) == 0.0) throw InputError(at + ": up is the zero vector");

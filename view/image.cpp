@@ -59,7 +59,8 @@ void write_npy(const Image& img, const std::string& path) {
   const unsigned char len_le[2] = {static_cast<unsigned char>(len & 0xff), static_cast<unsigned char>(len >> 8)};
   out.write(reinterpret_cast<const char*>(len_le), 2);
   out << header;
-  out.write(reinterpret_cast<const char*>(img.rgba.data()), static_cast<std::streamsize>(img.rgba.size() * sizeof(float)));
+  out.write(reinterpret_cast<const char*>(img.rgba.data()),
+            static_cast<std::streamsize>(img.rgba.size() * sizeof(float)));
   if (!out) throw InputError(where(path, "write failed"));
 }
 
@@ -96,8 +97,9 @@ Image difference_image(const Image& a, const Image& b, double scale) {
   Image d(a.width, a.height);
   for (std::size_t p = 0; p < a.rgba.size(); p += 4) {
     for (int c = 0; c < 3; ++c)  // colour differences, plus the opacity difference in every channel
-      d.rgba[p + c] = static_cast<float>(std::min(1.0, scale * std::max(std::abs(double(a.rgba[p + c]) - b.rgba[p + c]),
-                                                                        std::abs(double(a.rgba[p + 3]) - b.rgba[p + 3]))));
+      d.rgba[p + c] =
+          static_cast<float>(std::min(1.0, scale * std::max(std::abs(double(a.rgba[p + c]) - b.rgba[p + c]),
+                                                            std::abs(double(a.rgba[p + 3]) - b.rgba[p + 3]))));
     d.rgba[p + 3] = 1.0f;
   }
   return d;

@@ -50,7 +50,7 @@ struct EdgeFunction {
     }
     const double x = ax + slope * (y - ay) - 0.5;  // the pixel whose centre is the crossing
     int i = !(x > begin) ? begin : !(x < end - 1) ? end - 1 : static_cast<int>(x);  // (NaN: begin)
-    if (right_bound) {  // inside up to the crossing
+    if (right_bound) {                                                              // inside up to the crossing
       if (in(i)) {
         while (i + 1 < end && in(i + 1)) ++i;
         end = i + 1;

@@ -15,10 +15,10 @@
 #include <limits>
 #include <memory>
 
-#include <glm/geometric.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
+#include <glm/geometric.hpp>
 
 #include "visibility/image_faces.hpp"
 
@@ -94,7 +94,8 @@ class GapSweep {
     list_.clear();
     for (std::uint32_t x = runs[k].begin;;) {
       list_.erase(std::remove_if(list_.begin(), list_.end(), [x](const Listed& l) { return l.end == x; }), list_.end());
-      for (; k < end && runs[k].begin == x; ++k) list_.push_back({runs[k].face, runs[k].end, 0.0, faces_[runs[k].face].entering()});
+      for (; k < end && runs[k].begin == x; ++k)
+        list_.push_back({runs[k].face, runs[k].end, 0.0, faces_[runs[k].face].entering()});
       if (list_.empty()) {
         if (k == end) return;
         x = runs[k].begin;
@@ -172,7 +173,8 @@ struct RowBands {
     face.resize(start.back());
     std::vector<std::uint32_t> fill(start.begin(), start.end() - 1);
     for (std::size_t k = 0; k < faces.size(); ++k)
-      for (int b = faces[k].box.j0 / rows; b <= faces[k].box.j1 / rows; ++b) face[fill[b]++] = static_cast<std::uint32_t>(k);
+      for (int b = faces[k].box.j0 / rows; b <= faces[k].box.j1 / rows; ++b)
+        face[fill[b]++] = static_cast<std::uint32_t>(k);
   }
 };
 

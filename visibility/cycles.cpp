@@ -5,7 +5,8 @@
 
 namespace cellproj {
 
-CycleBreaker::CycleBreaker(std::vector<std::int64_t> start, std::vector<std::int64_t> to, const std::vector<char>& emitted)
+CycleBreaker::CycleBreaker(std::vector<std::int64_t> start, std::vector<std::int64_t> to,
+                           const std::vector<char>& emitted)
     : start_(std::move(start)), to_(std::move(to)) {
   const std::size_t n = emitted.size();
   comp_.assign(n, -1);
@@ -39,8 +40,10 @@ void CycleBreaker::decompose(const std::vector<std::int64_t>& cells, Inside&& in
       if (next < start_[c + 1]) {
         const std::int64_t m = to_[next++];
         if (!inside(m)) continue;
-        if (index_[m] < 0) open(m);
-        else if (on_stack_[m]) low_[c] = std::min(low_[c], index_[m]);
+        if (index_[m] < 0)
+          open(m);
+        else if (on_stack_[m])
+          low_[c] = std::min(low_[c], index_[m]);
         continue;
       }
       const std::int64_t done = c;

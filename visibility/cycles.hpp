@@ -43,7 +43,7 @@ class CycleBreaker {
   struct Range {
     std::int64_t begin, end;  // the component's cells in members_
   };
-  std::vector<Range> range_;          // per component
+  std::vector<Range> range_;            // per component
   std::vector<std::int64_t> cross_in_;  // per component: relations into it from other components left
   std::vector<char> broken_;            // per component: a cell of it was emitted to break a cycle
   std::vector<std::int64_t> ready_;     // components whose cross_in_ is 0

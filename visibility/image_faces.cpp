@@ -3,9 +3,9 @@
 #include <algorithm>
 #include <limits>
 
-#include <glm/geometric.hpp>
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <glm/geometric.hpp>
 
 namespace cellproj {
 namespace {
@@ -33,15 +33,18 @@ void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int h
   constexpr int kTile = 16;
   const int tw = (width + kTile - 1) / kTile, th = (height + kTile - 1) / kTile;
   const double inf = std::numeric_limits<double>::infinity();
-  std::vector<double> nearest_leaving(static_cast<std::size_t>(tw) * th, inf), deepest_entering(nearest_leaving.size(), -inf);
+  std::vector<double> nearest_leaving(static_cast<std::size_t>(tw) * th, inf),
+      deepest_entering(nearest_leaving.size(), -inf);
   // visit(tile, lowest key, highest key) for each tile the face's bounding box touches.
   auto each_tile = [&](const ProjectedFace& f, auto&& visit) {
     const ImageFace& g = f.face;
     const auto [i0, i1, j0, j1] = f.box;
     for (int ty = j0 / kTile; ty <= j1 / kTile; ++ty) {
-      const double y0 = g.ky * (std::max(j0, ty * kTile) + 0.5), y1 = g.ky * (std::min(j1, ty * kTile + kTile - 1) + 0.5);
+      const double y0 = g.ky * (std::max(j0, ty * kTile) + 0.5),
+                   y1 = g.ky * (std::min(j1, ty * kTile + kTile - 1) + 0.5);
       for (int tx = i0 / kTile; tx <= i1 / kTile; ++tx) {
-        const double x0 = g.kx * (std::max(i0, tx * kTile) + 0.5), x1 = g.kx * (std::min(i1, tx * kTile + kTile - 1) + 0.5);
+        const double x0 = g.kx * (std::max(i0, tx * kTile) + 0.5),
+                     x1 = g.kx * (std::min(i1, tx * kTile + kTile - 1) + 0.5);
         const double lo = std::max(f.kmin, g.k0 + std::min(x0, x1) + std::min(y0, y1) - f.rounding);
         const double hi = std::min(f.kmax, g.k0 + std::max(x0, x1) + std::max(y0, y1) + f.rounding);
         if (visit(static_cast<std::size_t>(ty) * tw + tx, lo, hi)) return true;
@@ -51,20 +54,23 @@ void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int h
   };
   for (const ProjectedFace& f : faces)
     each_tile(f, [&](std::size_t t, double lo, double hi) {
-      if (f.face.entering()) deepest_entering[t] = std::max(deepest_entering[t], hi);
-      else nearest_leaving[t] = std::min(nearest_leaving[t], lo);
+      if (f.face.entering())
+        deepest_entering[t] = std::max(deepest_entering[t], hi);
+      else
+        nearest_leaving[t] = std::min(nearest_leaving[t], lo);
       return false;
     });
   std::vector<char> keep(faces.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t k = r.begin(); k < r.end(); ++k) {
-      const ProjectedFace& f = faces[k];
-      keep[k] = each_tile(f, [&](std::size_t t, double lo, double hi) {
-        return f.face.entering() ? nearest_leaving[t] <= hi + key_slack(nearest_leaving[t], hi)
-                                 : deepest_entering[t] + key_slack(deepest_entering[t], lo) >= lo;
-      });
-    }
-  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, faces.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                        const ProjectedFace& f = faces[k];
+                        keep[k] = each_tile(f, [&](std::size_t t, double lo, double hi) {
+                          return f.face.entering() ? nearest_leaving[t] <= hi + key_slack(nearest_leaving[t], hi)
+                                                   : deepest_entering[t] + key_slack(deepest_entering[t], lo) >= lo;
+                        });
+                      }
+                    });
   keep_flagged(faces, keep);
 }
 
@@ -77,15 +83,16 @@ struct ImagePoint {
 
 std::vector<ImagePoint> project_points(const VisibilitySorter::Prepared& p, const ViewFrame& v, const PixelRays& rays) {
   std::vector<ImagePoint> out(p.boundary_point.size());
-  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), kGrain), [&](const tbb::blocked_range<std::size_t>& r) {
-    for (std::size_t k = r.begin(); k < r.end(); ++k) {
-      const glm::dvec3 x = p.point(p.boundary_point[k]);
-      ImagePoint& q = out[k];
-      q.visible = rays.project(x, q.s.x, q.s.y);
-      const double depth = glm::dot(x - v.eye, v.dir);
-      q.key = v.perspective ? -1.0 / depth : depth;
-    }
-  });
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, out.size(), kGrain),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                        const glm::dvec3 x = p.point(p.boundary_point[k]);
+                        ImagePoint& q = out[k];
+                        q.visible = rays.project(x, q.s.x, q.s.y);
+                        const double depth = glm::dot(x - v.eye, v.dir);
+                        q.key = v.perspective ? -1.0 / depth : depth;
+                      }
+                    });
   return out;
 }
 
@@ -104,7 +111,8 @@ bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const
   if (area == 0.0) return false;  // edge-on: no pixel centre is covered
   f.box = PixelBox(s[0], s[1], s[2], view.width, view.height);
   if (f.box.empty()) return false;  // no pixel centre in its bounding box
-  const glm::dvec3 x[3] = {p.point(p.boundary_point[tri[0]]), p.point(p.boundary_point[tri[1]]), p.point(p.boundary_point[tri[2]])};
+  const glm::dvec3 x[3] = {p.point(p.boundary_point[tri[0]]), p.point(p.boundary_point[tri[1]]),
+                           p.point(p.boundary_point[tri[2]])};
   const glm::dvec3 n = glm::cross(x[1] - x[0], x[2] - x[0]);  // outward
   const bool entering = v.perspective ? glm::dot(n, v.eye - x[0]) > 0 : glm::dot(n, v.dir) < 0;
   // key(x, y) = k0 + kx x + ky y through the three projected vertices.
@@ -137,7 +145,8 @@ std::vector<ProjectedFace> project_faces(const VisibilitySorter::Prepared& p, co
   });
   std::vector<ProjectedFace> projected;
   if (chunk.size() == 1) projected = std::move(chunk[0]);
-  for (std::size_t c = chunk.size() == 1 ? 1 : 0; c < chunk.size(); ++c) projected.insert(projected.end(), chunk[c].begin(), chunk[c].end());
+  for (std::size_t c = chunk.size() == 1 ? 1 : 0; c < chunk.size(); ++c)
+    projected.insert(projected.end(), chunk[c].begin(), chunk[c].end());
   if (cull) cull_faces_without_gaps(projected, view.width, view.height);
   return projected;
 }

@@ -50,7 +50,9 @@ class GapPairs {
   std::vector<std::pair<std::int64_t, std::int64_t>> pairs;
 
   // Whether the pair is among those met lately (then it is in `pairs`).
-  bool met(std::int64_t entered, std::int64_t left) const { return recent_[slot(key(entered, left))] == key(entered, left); }
+  bool met(std::int64_t entered, std::int64_t left) const {
+    return recent_[slot(key(entered, left))] == key(entered, left);
+  }
   void add(std::int64_t entered, std::int64_t left) {
     const std::uint64_t k = key(entered, left);
     std::uint64_t& seen = recent_[slot(k)];

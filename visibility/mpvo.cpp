@@ -2,14 +2,13 @@
 // viewpoint is on, then Kahn's topological sort; visibility cycles found and broken.
 #include <algorithm>
 
-#include "base/error.hpp"
 #include <cmath>
 #include <limits>
-#include <stdexcept>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <glm/geometric.hpp>
 
+#include "base/error.hpp"
 #include "visibility/cycles.hpp"
 #include "visibility/prepared.hpp"
 
@@ -28,7 +27,10 @@ int viewpoint_side(const VisibilitySorter::Prepared& p, const ViewFrame& v, std:
   const double s = n.x * v.eye.x + n.y * v.eye.y + n.z * v.eye.z - p.offset[f];
   if (std::abs(s) > 1e-9 * v.eye_scale || p.face_tri[f][0] < 0) return s > 0 ? 1 : s < 0 ? -1 : 0;
   // Nearly in the face's plane: CGAL's exact orientation decides.
-  auto P = [&](std::int64_t i) { const glm::dvec3 x = p.point(i); return K::Point_3(x.x, x.y, x.z); };
+  auto P = [&](std::int64_t i) {
+    const glm::dvec3 x = p.point(i);
+    return K::Point_3(x.x, x.y, x.z);
+  };
   const auto& t = p.face_tri[f];
   const auto o = CGAL::orientation(P(t[0]), P(t[1]), P(t[2]), K::Point_3(v.eye.x, v.eye.y, v.eye.z));
   return o == CGAL::POSITIVE ? -1 : o == CGAL::NEGATIVE ? 1 : 0;  // POSITIVE: below the plane, inside a
@@ -134,7 +136,8 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
     if (gaps && !gaps->start.empty()) {
       for (std::int64_t c : cells) inside[c] = 1;
       for (std::int64_t c : cells)
-        for (std::int64_t k = gaps->start[c]; k < gaps->start[c + 1] && !cycle.across_gap; ++k) cycle.across_gap = inside[gaps->to[k]];
+        for (std::int64_t k = gaps->start[c]; k < gaps->start[c + 1] && !cycle.across_gap; ++k)
+          cycle.across_gap = inside[gaps->to[k]];
       for (std::int64_t c : cells) inside[c] = 0;
     }
     cycle.relations_dropped = in[cycle.broken_at];

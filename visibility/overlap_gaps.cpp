@@ -113,7 +113,8 @@ Pair leaves_then_enters(const ProjectedFace& f, const EdgeLines& fe, const Proje
   if (n == 0) return Pair::apart;
   double dmin = std::numeric_limits<double>::infinity(), dmax = -dmin;
   for (int k = 0; k < n; ++k) {
-    const double d = (f.face.k0 - g.face.k0) + (f.face.kx - g.face.kx) * from[k].x + (f.face.ky - g.face.ky) * from[k].y;
+    const double d =
+        (f.face.k0 - g.face.k0) + (f.face.kx - g.face.kx) * from[k].x + (f.face.ky - g.face.ky) * from[k].y;
     dmin = std::min(dmin, d), dmax = std::max(dmax, d);
   }
   if (dmin < -slack) return dmax > slack ? Pair::crossing : Pair::gap;
@@ -143,16 +144,19 @@ struct TileBins {
     const std::size_t tiles = static_cast<std::size_t>(across) * down;
     std::vector<std::uint32_t> leaving(tiles + 1, 0);
     start.assign(tiles + 1, 0);
-    each_tile(faces, [&](std::uint32_t k, std::size_t t) { ++start[t + 1], leaving[t + 1] += !faces[k].face.entering(); });
+    each_tile(faces,
+              [&](std::uint32_t k, std::size_t t) { ++start[t + 1], leaving[t + 1] += !faces[k].face.entering(); });
     for (std::size_t t = 0; t < tiles; ++t) start[t + 1] += start[t];
     entering_from.resize(tiles);
     for (std::size_t t = 0; t < tiles; ++t) entering_from[t] = start[t] + leaving[t + 1];
     entry.resize(start.back());
-    for (std::size_t t = 0; t < tiles; ++t) scans += std::size_t(leaving[t + 1]) * (start[t + 1] - start[t] - leaving[t + 1]);
+    for (std::size_t t = 0; t < tiles; ++t)
+      scans += std::size_t(leaving[t + 1]) * (start[t + 1] - start[t] - leaving[t + 1]);
     std::vector<std::uint32_t> fill_leaving(start.begin(), start.end() - 1), fill_entering(entering_from);
     each_tile(faces, [&](std::uint32_t k, std::size_t t) {
       const ImageFace& f = faces[k].face;
-      entry[f.entering() ? fill_entering[t]++ : fill_leaving[t]++] = {faces[k].box, static_cast<std::uint32_t>(f.cell()), k};
+      entry[f.entering() ? fill_entering[t]++ : fill_leaving[t]++] = {faces[k].box,
+                                                                      static_cast<std::uint32_t>(f.cell()), k};
     });
   }
   std::size_t tiles() const { return entering_from.size(); }
@@ -200,7 +204,8 @@ Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const std::
         for (std::uint32_t j = bins.entering_from[t]; j < bins.start[t + 1]; ++j) {
           const Binned& g = bins.entry[j];
           if (g.box.i0 > f.box.i1 || f.box.i0 > g.box.i1 || g.box.j0 > f.box.j1 || f.box.j0 > g.box.j1) continue;
-          if (!(f_x || g.box.i0 >= x0) || !(f_y || g.box.j0 >= y0) || g.cell == f.cell || out.found.met(g.cell, f.cell)) continue;
+          if (!(f_x || g.box.i0 >= x0) || !(f_y || g.box.j0 >= y0) || g.cell == f.cell || out.found.met(g.cell, f.cell))
+            continue;
           ++out.tests;
           const ProjectedFace &ff = faces[f.face], &gf = faces[g.face];
           const Pair pair = leaves_then_enters(ff, edges[f.face], gf, edges[g.face], share_a_point(ff, gf));

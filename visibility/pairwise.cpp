@@ -28,7 +28,8 @@ double cross(const glm::dvec2& o, const glm::dvec2& a, const glm::dvec2& b) {
 
 // Andrew's monotone chain: the convex hull, counter-clockwise (in x-right, y-up terms).
 Polygon hull(Polygon pts) {
-  std::sort(pts.begin(), pts.end(), [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
+  std::sort(pts.begin(), pts.end(),
+            [](const glm::dvec2& a, const glm::dvec2& b) { return a.x < b.x || (a.x == b.x && a.y < b.y); });
   Polygon h(2 * pts.size());
   std::size_t k = 0;
   for (std::size_t i = 0; i < pts.size(); ++i) {
@@ -117,9 +118,11 @@ void for_each_centre(const Polygon& poly, int width, int height, Visit&& visit) 
   bool go = true;
   auto image = [](const glm::dvec2& q) { return glm::dvec2(q.x, -q.y); };
   for (std::size_t k = 1; k + 1 < poly.size() && go; ++k)
-    rasterize_triangle_runs(image(poly[0]), image(poly[k]), image(poly[k + 1]), width, height, [&](int j, int b, int e) {
-      for (int i = b; i < e && go; ++i) go = ++visited <= kMaxCentres && visit(glm::dvec2(i + 0.5, -(j + 0.5)));
-    });
+    rasterize_triangle_runs(image(poly[0]), image(poly[k]), image(poly[k + 1]), width, height,
+                            [&](int j, int b, int e) {
+                              for (int i = b; i < e && go; ++i)
+                                go = ++visited <= kMaxCentres && visit(glm::dvec2(i + 0.5, -(j + 0.5)));
+                            });
 }
 
 struct CellShadow {
@@ -155,7 +158,8 @@ Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFram
     if (!s.usable) continue;
     s.hull = hull(pts);
     s.x0 = s.y0 = std::numeric_limits<double>::max(), s.x1 = s.y1 = -s.x0;
-    for (const auto& q : s.hull) s.x0 = std::min(s.x0, q.x), s.x1 = std::max(s.x1, q.x), s.y0 = std::min(s.y0, q.y), s.y1 = std::max(s.y1, q.y);
+    for (const auto& q : s.hull)
+      s.x0 = std::min(s.x0, q.x), s.x1 = std::max(s.x1, q.x), s.y0 = std::min(s.y0, q.y), s.y1 = std::max(s.y1, q.y);
     gx0 = std::min(gx0, s.x0), gx1 = std::max(gx1, s.x1), gy0 = std::min(gy0, s.y0), gy1 = std::max(gy1, s.y1);
   }
   // Candidate pairs from a grid over the screen boxes; a pair is tested in one tile only.
@@ -179,12 +183,15 @@ Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFram
           if (tile(std::max(a.x0, b.x0), wx, gx0) != tx || tile(std::max(a.y0, b.y0), wy, gy0) != ty) continue;
           const Polygon overlap = clip(a.hull, b.hull);
           glm::dvec2 centre(0.0);
-          if (overlap.size() < 3 || area(overlap, centre) <= 1e-12 * (a.x1 - a.x0 + b.x1 - b.x0) * (a.y1 - a.y0 + b.y1 - b.y0))
+          if (overlap.size() < 3 ||
+              area(overlap, centre) <= 1e-12 * (a.x1 - a.x0 + b.x1 - b.x0) * (a.y1 - a.y0 + b.y1 - b.y0))
             continue;
           const std::int64_t ca = bin[i], cb = bin[j];
           bool a_front = false;
-          if (a.z1 <= b.z0) a_front = true;
-          else if (b.z1 <= a.z0) a_front = false;
+          if (a.z1 <= b.z0)
+            a_front = true;
+          else if (b.z1 <= a.z0)
+            a_front = false;
           else {  // the exact test: along a ray through the overlap, which is met first
             // The overlap of the hulls may hold parts of it that one shadow leaves out (a warped
             // cell's shadow need not be convex): its centre first, then points pulled in from its

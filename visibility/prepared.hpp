@@ -21,18 +21,19 @@ struct VisibilitySorter::Prepared {
   const FaceTopology* topo = nullptr;
   bool convex = false;
   std::shared_ptr<const RecentredPoints> points;  // coordinates below are relative to points->centre
-  std::vector<glm::dvec3> centroid;   // per cell
+  std::vector<glm::dvec3> centroid;               // per cell
   // Shared faces, each once: cells a and b, the face's unit normal outward from a, and its plane
   // offset (normal . x on the face; a quad's at its centroid).
   std::vector<std::int32_t> face_a, face_b;
   std::vector<glm::dvec3> normal;
   std::vector<double> offset;
-  std::vector<std::array<std::int64_t, 3>> face_tri;  // a triangle face's ids turning with the normal; [0] = -1 for quads
-  std::vector<std::int64_t> face_start;  // per cell: the shared faces it makes start here (n + 1)
+  std::vector<std::array<std::int64_t, 3>>
+      face_tri;                                // a triangle face's ids turning with the normal; [0] = -1 for quads
+  std::vector<std::int64_t> face_start;        // per cell: the shared faces it makes start here (n + 1)
   std::vector<std::uint8_t> local_a, local_b;  // per shared face: its index among face_a's / face_b's faces
                                                // (local_b kNoLocalFace: face_b's side is a split quad)
-  std::vector<std::int32_t> across;   // per cell face (topology order): the cell across a shared face, or -1
-  bool all_tetrahedra = false;        // then cell c's faces start at 4 c
+  std::vector<std::int32_t> across;            // per cell face (topology order): the cell across a shared face, or -1
+  bool all_tetrahedra = false;                 // then cell c's faces start at 4 c
   // Boundary faces off the convex hull as triangles (quads split by the diagonal from their lowest
   // id), outward, over the points they use (indices into boundary_point, so that a view projects
   // each point once).
@@ -48,7 +49,7 @@ struct ViewFrame {
   bool perspective = false;
   glm::dvec3 eye{0.0}, dir{0.0, 0.0, -1.0};
   double eye_scale = 1.0;  // |eye| plus the mesh's extent: the scale of plane tests in perspective
-  Camera camera;  // recentred
+  Camera camera;           // recentred
   // Larger is farther: distance along the view direction (orthographic), squared distance from the eye (perspective).
   double far_key(const glm::dvec3& p) const {
     const glm::dvec3 d = p - eye;

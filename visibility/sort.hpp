@@ -16,7 +16,6 @@
 
 namespace cellproj {
 
-
 // A visibility cycle met by the topological sort: the cells of one strongly connected component
 // (at most kMaxCycleCells listed), and the cell whose remaining relations were dropped to go on.
 struct VisibilityCycle {
@@ -25,24 +24,23 @@ struct VisibilityCycle {
   std::vector<std::int64_t> cells;  // the first kMaxCycleCells of them
   std::int64_t broken_at = -1;      // the cell emitted early
   std::int64_t relations_dropped = 0;
-  bool across_gap = false;          // a relation across a gap lies inside it (not only face relations)
+  bool across_gap = false;  // a relation across a gap lies inside it (not only face relations)
 };
 
-
 struct SortStats {
-  SortMethod method = SortMethod::centroid;  // the method that ran (auto resolved)
-  std::int64_t face_relations = 0;  // relations across shared faces
-  std::int64_t gap_relations = 0;   // relations across gaps between boundary faces, distinct
+  SortMethod method = SortMethod::centroid;    // the method that ran (auto resolved)
+  std::int64_t face_relations = 0;             // relations across shared faces
+  std::int64_t gap_relations = 0;              // relations across gaps between boundary faces, distinct
   GapMethod gaps_from = GapMethod::automatic;  // overlaps or abuffer: what found them (mpvo-abuffer)
-  std::int64_t gap_pair_tests = 0;  // pairs of faces tested for a gap between them (overlaps; varies with threads)
+  std::int64_t gap_pair_tests = 0;      // pairs of faces tested for a gap between them (overlaps; varies with threads)
   std::int64_t gap_face_crossings = 0;  // of those, pairs passing through each other in depth (overlaps)
-  std::int64_t pair_relations = 0;  // relations from pairwise occlusion tests
-  std::int64_t abuffer_fragments = 0;  // pixel centres covered by boundary faces in the A-buffer
-  std::int64_t abuffer_runs = 0;       // runs of them, one per face and row: the A-buffer's work
-  std::int64_t abuffer_crossings = 0;  // stretches of a row where faces cross in depth, sampled per pixel
+  std::int64_t pair_relations = 0;      // relations from pairwise occlusion tests
+  std::int64_t abuffer_fragments = 0;   // pixel centres covered by boundary faces in the A-buffer
+  std::int64_t abuffer_runs = 0;        // runs of them, one per face and row: the A-buffer's work
+  std::int64_t abuffer_crossings = 0;   // stretches of a row where faces cross in depth, sampled per pixel
   std::vector<VisibilityCycle> cycles;
   std::vector<std::pair<std::string, double>> phase_seconds;  // in the order they ran
-  double seconds = 0.0;  // the whole sort
+  double seconds = 0.0;                                       // the whole sort
 };
 
 struct SortResult {

@@ -1,8 +1,8 @@
-#include <cstring>
 #include <algorithm>
-#include <unordered_map>
 #include <climits>
+#include <cstring>
 #include <limits>
+#include <unordered_map>
 
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
@@ -17,7 +17,6 @@
 
 namespace cellproj {
 namespace {
-
 
 // A face's normal (outward for the cell listing it in this order) and a point of its plane.
 // Triangles take their normal from the vertices in increasing id and their centroid, so both cells
@@ -115,7 +114,6 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
 }
 
 }  // namespace
-
 
 VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& topo, const HullReport& hull,
                                    std::shared_ptr<const RecentredPoints> points, const VisibilitySorter* whole,
@@ -221,8 +219,10 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
     std::int64_t ids[4];
     const int n = face_ids(c, cf, ids);
     std::int64_t tri[2][3];
-    if (n == 3) std::copy(ids, ids + 3, tri[0]);
-    else split_quad(ids, tri);
+    if (n == 3)
+      std::copy(ids, ids + 3, tri[0]);
+    else
+      split_quad(ids, tri);
     for (int t = 0; t < (n == 3 ? 1 : 2); ++t) {
       p.boundary_cell.push_back(c);
       p.boundary_tri.push_back({local_id(tri[t][0]), local_id(tri[t][1]), local_id(tri[t][2])});
@@ -262,12 +262,8 @@ SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const
       r.order = centroid_order(p, v);
       clock.lap("radix_sort");
       break;
-    case SortMethod::mpvo:
-      r.order = mpvo_order(p, v, r.stats, clock);
-      break;
-    case SortMethod::mpvo_abuffer:
-      r.order = mpvo_with_gaps(p, v, view, r.stats, clock);
-      break;
+    case SortMethod::mpvo: r.order = mpvo_order(p, v, r.stats, clock); break;
+    case SortMethod::mpvo_abuffer: r.order = mpvo_with_gaps(p, v, view, r.stats, clock); break;
     case SortMethod::pairwise: {
       const Relations pairs = pairwise_relations(p, v, view, r.stats);
       clock.lap("occlusion_tests");

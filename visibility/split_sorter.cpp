@@ -17,7 +17,6 @@ Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre) {
   return v;
 }
 
-
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points,
                                             std::shared_ptr<const BoundaryHull> hull, const SortableMesh* whole) {
@@ -33,8 +32,9 @@ std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vec
   s->topology = whole ? split_topology(mesh, whole->topology, s->split) : build_topology(s->cells);
   s->boundary_hull = hull ? std::move(hull) : std::make_shared<const BoundaryHull>(s->cells, s->topology);
   s->hull = boundary_convexity(s->cells, s->topology, *s->boundary_hull);
-  s->sorter = std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull, std::move(points),
-                                                 whole ? whole->sorter.get() : nullptr, whole ? &s->split.parent : nullptr);
+  s->sorter =
+      std::make_unique<VisibilitySorter>(s->cells, s->topology, s->hull, std::move(points),
+                                         whole ? whole->sorter.get() : nullptr, whole ? &s->split.parent : nullptr);
   return s;
 }
 
@@ -50,7 +50,7 @@ const SortableMesh& SplittingSorter::base() const { return *base_mesh(); }
 
 std::shared_ptr<const SortableMesh> SplittingSorter::base_mesh() const {
   std::lock_guard<std::mutex> lock(mutex_);
-  if (!base_) {  // made when first needed: sorted when no cell needs splitting, patched by each split
+  if (!base_) {                   // made when first needed: sorted when no cell needs splitting, patched by each split
     const std::vector<char> all;  // empty: every cell that is not a tetrahedron
     base_ = sortable_mesh(mesh_, mode_ == Tetrahedralize::all ? &all : nullptr, points_, hull_);
     if (!hull_) hull_ = base_->boundary_hull;
@@ -88,8 +88,9 @@ ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view) const {
     return out;
   }
   check_camera(view.camera, "sort view");
-  std::vector<char> problem = folds_ ? folds_->problem_cells(viewpoint(view.camera, points_->centre), &out.problem_cells)
-                                     : std::vector<char>(static_cast<std::size_t>(mesh_.n_cells), 0);
+  std::vector<char> problem = folds_
+                                  ? folds_->problem_cells(viewpoint(view.camera, points_->centre), &out.problem_cells)
+                                  : std::vector<char>(static_cast<std::size_t>(mesh_.n_cells), 0);
   if (mode_ == Tetrahedralize::none || out.problem_cells == 0) {
     out.mesh = base_mesh();
     out.sorted = out.mesh->sorter->sort(method, view);
@@ -103,7 +104,8 @@ ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view) const {
   std::int64_t more = 0;
   for (const VisibilityCycle& cycle : out.sorted.stats.cycles)
     for (const std::int64_t c : cycle.cells)
-      if (out.mesh->cells.type(c) != CellType::Tetra && !problem[out.mesh->parent(c)]) problem[out.mesh->parent(c)] = 1, ++more;
+      if (out.mesh->cells.type(c) != CellType::Tetra && !problem[out.mesh->parent(c)])
+        problem[out.mesh->parent(c)] = 1, ++more;
   if (more == 0) return out;
   const double first_seconds = out.sorted.stats.seconds;
   out.cycle_splits = more;

@@ -17,7 +17,6 @@
 
 namespace cellproj {
 
-
 // Where a camera looks from, in the frame of points recentred on `centre` (RecentredPoints): what
 // CellFolds::problem_cells takes.
 Viewpoint viewpoint(const Camera& camera, const glm::dvec3& centre);
@@ -64,7 +63,7 @@ class SplittingSorter {
   mutable std::mutex mutex_;
   mutable std::shared_ptr<const SortableMesh> base_;  // also the topology and hull each split patches
   mutable std::shared_ptr<const SortableMesh> last_;  // the last view's split mesh
-  mutable std::shared_ptr<const BoundaryHull> hull_;   // the boundary's hull, from the first mesh prepared
+  mutable std::shared_ptr<const BoundaryHull> hull_;  // the boundary's hull, from the first mesh prepared
 };
 
 // Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given);
