@@ -68,12 +68,13 @@ std::vector<ColorPoint> paraview_preset(const nlohmann::json& spec, const std::s
     lo = number(r[0], key + ".range");
     hi = number(r[1], key + ".range");
   }
-  const double x0 = pts[0].get<double>(), x1 = pts[pts.size() - 4].get<double>();
+  const std::string at = file.string() + ": RGBPoints";
+  const double x0 = number(pts[0], at), x1 = number(pts[pts.size() - 4], at);
   std::vector<ColorPoint> out;
   for (std::size_t i = 0; i < pts.size(); i += 4) {
-    const double x = pts[i].get<double>();
+    const double x = number(pts[i], at);
     const double s = x1 > x0 ? lo + (x - x0) / (x1 - x0) * (hi - lo) : lo;
-    out.push_back({s, {pts[i + 1].get<double>(), pts[i + 2].get<double>(), pts[i + 3].get<double>()}});
+    out.push_back({s, {number(pts[i + 1], at), number(pts[i + 2], at), number(pts[i + 3], at)}});
   }
   return out;
 }

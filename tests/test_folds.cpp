@@ -10,21 +10,13 @@
 #include "grid/face_split.hpp"
 #include "grid/split_topology.hpp"
 #include "grid/topology.hpp"
-#include "raycast/order_oracle.hpp"
-#include "scene/names.hpp"
 #include "test_util.hpp"
 #include "visibility/split_sorter.hpp"
 
 using namespace cellproj;
 
-namespace {
-
 using test::twisted_mixed;
 using test::warped_hexahedra;
-
-std::vector<Camera> views(int n) { return test::sphere_views(n, 6.0, 4.5, 3.6, 45); }
-
-}  // namespace
 
 namespace {
 
@@ -77,7 +69,7 @@ TEST(Folds, FoundOnceGiveEachViewsProblemCells) {
     const CellFolds folds(m.view(), pts);
     EXPECT_GT(folds.folds(), 0);
     std::int64_t problems = 0, unsure = 0;
-    for (const Camera& cam : views(6)) {
+    for (const Camera& cam : test::views_of_unit_mesh(6)) {
       const Viewpoint v = viewpoint(cam, pts->centre);
       std::int64_t count = 0;
       const std::vector<char> got = folds.problem_cells(v, &count);
@@ -108,7 +100,7 @@ TEST(Folds, OfACollapsedHexahedron) {
   const auto pts = std::make_shared<const RecentredPoints>(recentre(m.view()));
   const CellFolds folds(m.view(), pts);
   EXPECT_GT(folds.folds(), 0);
-  for (const Camera& cam : views(3)) {
+  for (const Camera& cam : test::views_of_unit_mesh(3)) {
     const std::vector<char> problem = folds.problem_cells(viewpoint(cam, pts->centre));
     EXPECT_EQ(problem.size(), static_cast<std::size_t>(m.n_cells()));
   }

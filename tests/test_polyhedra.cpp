@@ -33,8 +33,6 @@ namespace {
 using test::twisted_mixed;
 using test::warped_hexahedra;
 
-std::vector<Camera> views(int n) { return test::sphere_views(n, 6.0, 4.5, 3.6, 45); }
-
 void affine_field(Mesh& m) {
   set_field(m, "s", [](const glm::dvec3& x) { return 0.35 * x.x - 0.25 * x.y + 0.3 * x.z + 0.4; });
 }
@@ -57,7 +55,7 @@ TEST(Polyhedra, ACubeIsOneHexagonOfPolygonsAndExact) {
   // One cube seen obliquely: three faces in front, three behind, every pixel's segment exact.
   Mesh m = make_box(1, 1, 1, glm::dvec3(-1), glm::dvec3(1), false);
   affine_field(m);
-  for (const Camera& c : views(3)) {
+  for (const Camera& c : test::views_of_unit_mesh(3)) {
     ProjectionStats st;
     const Image img = project(m, "s", c, 64, Tetrahedralize::problem, &st);
     EXPECT_EQ(st.counters.polyhedra, 1);
@@ -73,7 +71,7 @@ TEST(Polyhedra, WarpedGridsMatchExactAndSplitOnlyProblemCells) {
     Mesh m = kind == 0 ? warped_hexahedra(6) : twisted_mixed(4);
     affine_field(m);
     std::int64_t problem_views = 0;
-    for (const Camera& c : views(4)) {
+    for (const Camera& c : test::views_of_unit_mesh(4)) {
       ProjectionStats st;
       const Image img = project(m, "s", c, 72, Tetrahedralize::problem, &st);
       const Image ref = test::exact(m, "s", tf(), c, 72, 72, CellInterpolation::canonical_tets);
@@ -96,7 +94,7 @@ TEST(Polyhedra, WholeCellsWhereFacesFoldAreWrong) {
   Mesh m = warped_hexahedra(6);
   affine_field(m);
   double worst_none = 0, worst_problem = 0;
-  for (const Camera& c : views(4)) {
+  for (const Camera& c : test::views_of_unit_mesh(4)) {
     ProjectionStats st;
     const Image none = project(m, "s", c, 72, Tetrahedralize::none, &st);
     if (st.problem_cells == 0) continue;
@@ -114,7 +112,7 @@ TEST(Polyhedra, SeamedMeshRendersAsIfStoredWhole) {
   Mesh whole = twisted_mixed(4);
   affine_field(whole);
   Mesh seamed = test::with_seam(whole, 0.0);
-  for (const Camera& c : views(2)) {
+  for (const Camera& c : test::views_of_unit_mesh(2)) {
     ProjectionStats a, b;
     const Image wi = project(whole, "s", c, 64, Tetrahedralize::problem, &a);
     const Image si = project(seamed, "s", c, 64, Tetrahedralize::problem, &b);
@@ -129,7 +127,7 @@ TEST(Polyhedra, OneAndManyThreadsGiveTheSameBits) {
   affine_field(m);
   const ProjectionRenderer r(m.view());
   const double* s = test::field_values(m, "s");
-  const Camera c = views(2).back();
+  const Camera c = test::views_of_unit_mesh(2).back();
   ProjectionOptions o;
   o.batch_cells = 16;
   Image one, many;
@@ -167,7 +165,7 @@ TEST(Polyhedra, LookedUpSubdivisionsGiveTheGeneralPathsBits) {
     affine_field(m);
     const MeshView mesh = m.view();
     const RecentredPoints pts = recentre(mesh);
-    for (const Camera& c : views(2)) {
+    for (const Camera& c : test::views_of_unit_mesh(2)) {
       const PixelRays rays(recentred(c, pts.centre), 200, 200);
       const ScreenPoints screen = project_points(pts, test::field_values(m, "s"), rays);
       SubdivisionCache cache;

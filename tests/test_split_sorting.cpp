@@ -1,13 +1,11 @@
 // Sorting meshes whose problem cells are split per view (visibility/split_sorter): no order
 // violation against the ray-traced oracle, and the split sorter's shortcuts sort as a fresh one.
 #include <algorithm>
-#include <array>
 #include <cmath>
 #include <memory>
 
 #include <gtest/gtest.h>
 
-#include "grid/face_split.hpp"
 #include "grid/split_topology.hpp"
 #include "grid/topology.hpp"
 #include "raycast/order_oracle.hpp"
@@ -17,14 +15,8 @@
 
 using namespace cellproj;
 
-namespace {
-
 using test::twisted_mixed;
 using test::warped_hexahedra;
-
-std::vector<Camera> views(int n) { return test::sphere_views(n, 6.0, 4.5, 3.6, 45); }
-
-}  // namespace
 
 // Both exact sorts on meshes whose warped hexahedra stay whole where they do not fold: pairwise
 // tests occlusion on the cells' surface triangles (a warped quad's two), not on one plane a face.
@@ -33,7 +25,7 @@ TEST(SplitSorting, SplittingSorterHasNoOrderViolations) {
     Mesh m = kind == 0 ? warped_hexahedra(5) : twisted_mixed(4);
     const SplittingSorter sorter(m.view(), Tetrahedralize::problem);
     for (const SortMethod method : {SortMethod::mpvo_abuffer, SortMethod::pairwise})
-      for (const Camera& c : views(4)) {
+      for (const Camera& c : test::views_of_unit_mesh(4)) {
         const ViewOrder v = sorter.sort(method, {c, 64, 64});
         const MeshView& cells = v.mesh->cells;
         ASSERT_EQ(static_cast<std::int64_t>(v.sorted.order.size()), cells.n_cells);
@@ -60,7 +52,7 @@ TEST(SplitSorting, SplitSorterCopyingWholeCellsPlanesSortsTheSame) {
     const FaceTopology st = build_topology(split.view);
     const HullReport hull = boundary_convexity(split.view, st);
     const VisibilitySorter fresh(split.view, st, hull, pts), copied(split.view, st, hull, pts, &whole, &split.parent);
-    for (const Camera& c : views(3))
+    for (const Camera& c : test::views_of_unit_mesh(3))
       for (const SortMethod method : {SortMethod::mpvo, SortMethod::mpvo_abuffer}) {
         const SortResult a = fresh.sort(method, {c, 64, 64}), b = copied.sort(method, {c, 64, 64});
         EXPECT_EQ(a.order, b.order) << kind;

@@ -74,4 +74,16 @@ TEST(TransferFunction, ParaViewPresetIsStretchedOverTheRange) {
   } catch (const InputError& e) {
     EXPECT_NE(std::string(e.what()).find("the maps are: Other, Cool"), std::string::npos) << e.what();
   }
+  // A preset's wrong types are InputErrors naming the key, not JSON library exceptions.
+  std::ofstream(dir.file("text.json")) << R"([{"Name": "T", "RGBPoints": [0, "red", 0, 0, 1, 1, 1, 1]}])";
+  for (const char* spec : {R"({"color_preset": {"file": "text.json"}, "extinction": [[0, 1]]})",
+                           R"({"color_preset": {"file": 7}, "extinction": [[0, 1]]})",
+                           R"({"color_preset": {"file": "text.json", "name": 3}, "extinction": [[0, 1]]})"}) {
+    try {
+      transfer_function_from_json(nlohmann::json::parse(spec), "s.json", file_dir, 0, 1);
+      ADD_FAILURE() << spec;
+    } catch (const InputError& e) {
+      EXPECT_TRUE(std::string(e.what()).find("expected a") != std::string::npos) << e.what();
+    }
+  }
 }

@@ -40,6 +40,8 @@ Camera perspective(const glm::dvec3& eye, const glm::dvec3& target, double fov_y
 // n directions over the sphere, each orthographic from `ortho_distance` and perspective from
 // `persp_distance` (height and fov_y as given).
 std::vector<Camera> sphere_views(int n, double ortho_distance, double persp_distance, double height, double fov_y);
+// sphere_views framing the meshes of [-1, 1]^3 below (warped_hexahedra, twisted_mixed).
+inline std::vector<Camera> views_of_unit_mesh(int n) { return sphere_views(n, 6.0, 4.5, 3.6, 45); }
 
 // The mesh's point field `field` (its only one when empty), rendered by the stage's renderer.
 const double* field_values(const Mesh& m, const std::string& field = "");
