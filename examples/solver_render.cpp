@@ -41,7 +41,6 @@ int main(int argc, char** argv) {
     cells.ids_32bit = true;
     // Validated here (cellproj::InputError names the bad element); the points are read in place.
     const cellproj::Volume volume(xyz.data(), n_points, cells, "solver arrays");
-    for (const std::string& copy : volume.copies()) std::printf("cellproj copied %s\n", copy.c_str());
 
     const cellproj::TransferFunction tf({{0.0, {0.1, 0.2, 0.8}}, {0.5, {0.9, 0.6, 0.2}}, {1.0, {1.0, 1.0, 0.9}}},
                                         {{0.0, 0.0}, {0.2, 1.0}, {1.0, 20.0}});
@@ -67,6 +66,7 @@ int main(int argc, char** argv) {
       std::printf("step %d: wrote %s in %.3f s (preparation %.3f s, preparations so far: %d)\n", step, path.c_str(),
                   report.seconds, report.prepare_seconds, volume.preparations());
     }
+    for (const std::string& copy : volume.copies()) std::printf("cellproj copied %s\n", copy.c_str());
     if (volume.preparations() != 1) {
       std::fprintf(stderr, "error: the second time step prepared the mesh again\n");
       return 1;

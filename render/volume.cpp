@@ -86,7 +86,10 @@ Volume::~Volume() = default;
 
 const MeshView& Volume::mesh() const { return state_->mesh; }
 const ValidationReport& Volume::validation() const { return state_->validation; }
-const std::vector<std::string>& Volume::copies() const { return state_->copies; }
+std::vector<std::string> Volume::copies() const {
+  std::lock_guard<std::mutex> lock(state_->mutex);
+  return state_->copies;
+}
 int Volume::preparations() const { return state_->preparations; }
 
 void Volume::check(const Field& f) const {
@@ -106,14 +109,24 @@ const ProjectionRenderer& Volume::projection(Tetrahedralize mode) const {
   State& s = *state_;
   std::lock_guard<std::mutex> lock(s.mutex);
   auto& p = s.projection[static_cast<int>(mode)];
-  if (!p) p = std::make_unique<ProjectionRenderer>(s.mesh, mode), ++s.preparations;
+  if (!p) {
+    p = std::make_unique<ProjectionRenderer>(s.mesh, mode);
+    ++s.preparations;
+    s.copies.push_back("points recentred for projection, " +
+                       megabytes(static_cast<std::size_t>(s.mesh.n_points) * 3 * sizeof(double)));
+  }
   return *p;
 }
 
 const ExactRenderer& Volume::exact() const {
   State& s = *state_;
   std::lock_guard<std::mutex> lock(s.mutex);
-  if (!s.exact) s.exact = std::make_unique<ExactRenderer>(s.mesh), ++s.preparations;
+  if (!s.exact) {
+    s.exact = std::make_unique<ExactRenderer>(s.mesh);
+    ++s.preparations;
+    s.copies.push_back("points recentred for the exact renderer, " +
+                       megabytes(static_cast<std::size_t>(s.mesh.n_points) * 3 * sizeof(double)));
+  }
   return *s.exact;
 }
 

@@ -54,9 +54,10 @@ class Volume {
 
   const MeshView& mesh() const;
   const ValidationReport& validation() const;  // empty when trusted
-  // What the volume copied of the caller's arrays, one line each ("connectivity: 32-bit ids widened,
-  // 1.2 MB"); the renderers' own working copies (recentred points, split cells) are not listed.
-  const std::vector<std::string>& copies() const;
+  // What the volume copied, one line each ("connectivity and offsets: 32-bit ids widened to 64
+  // bits, 1 MB"): of the caller's arrays at commit, and each preparation's copy of the points
+  // recentred on their bounding box (doubles, so huge coordinate offsets lose no precision).
+  std::vector<std::string> copies() const;
 
   // Throws InputError unless `field` has one finite value per point.
   void check(const Field& field) const;

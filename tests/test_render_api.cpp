@@ -53,6 +53,8 @@ TEST(RenderApi, ANewFieldRendersWithoutPreparingAgain) {
                                    test::view_from({-2, 1, 2}, Projection::Orthographic), {64, 64}, &second);
   EXPECT_EQ(volume.preparations(), 1) << "a new time step, view and field must not rebuild topology, hull or sorter";
   EXPECT_EQ(second.prepare_seconds, 0.0);
+  ASSERT_EQ(volume.copies().size(), 1u);  // the caller's arrays are read in place; the preparation says what it copied
+  EXPECT_NE(volume.copies()[0].find("points recentred"), std::string::npos);
   EXPECT_NE(a.rgba, b.rgba);
   // The façade's picture is the stage's, bit for bit.
   EXPECT_EQ(a.rgba, test::project(m, "a", tf(), kView, 64).rgba);
