@@ -2,6 +2,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <cstdio>
 #include <mutex>
 
 #include "base/error.hpp"
@@ -23,8 +24,11 @@ struct Volume::State {
 
 namespace {
 
-std::string megabytes(std::size_t bytes) { return std::to_string((bytes + 500'000) / 1'000'000) + " MB"; }
-
+std::string megabytes(std::size_t bytes) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / 1e6);
+  return text;
+}
 }  // namespace
 
 Field field_of(const Mesh& mesh, const std::string& name) {
