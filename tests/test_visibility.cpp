@@ -54,22 +54,6 @@ struct Scene {
   }
 };
 
-// Views from n directions spread over the sphere, looking at the origin.
-std::vector<Camera> views(int n, Projection projection, double distance) {
-  std::vector<Camera> out;
-  for (const glm::dvec3& d : sphere_directions(n)) {
-    Camera c;
-    c.projection = projection;
-    c.eye = distance * d;
-    c.target = {0, 0, 0};
-    c.up = up_for(d);
-    c.height = 3.2;
-    c.fov_y = 40;
-    out.push_back(c);
-  }
-  return out;
-}
-
 // A mesh of hand-placed tetrahedra, each turned positive whatever the construction gave, with a
 // zero field.
 Mesh tetrahedra_mesh(Mesh m) {
@@ -84,11 +68,8 @@ Mesh tetrahedra_mesh(Mesh m) {
   return m;
 }
 
-std::vector<Camera> both_projections(int n) {
-  auto v = views(n, Projection::Orthographic, 6.0), p = views(n, Projection::Perspective, 4.5);
-  v.insert(v.end(), p.begin(), p.end());
-  return v;
-}
+// Views from n directions over the sphere, orthographic then perspective, looking at the origin.
+std::vector<Camera> both_projections(int n) { return test::sphere_views(n, 6.0, 4.5, 3.2, 40); }
 
 }  // namespace
 
@@ -278,7 +259,7 @@ TEST(Visibility, AbufferSweepOrdersFacesThatCrossPixelByPixel) {
 
 TEST(Visibility, AutoPicksWhatTheMeshNeeds) {
   const Scene convex(generate("box-tets", 3)), ring(generate("swirl-tets", 3));
-  const Camera c = views(1, Projection::Orthographic, 6.0)[0];
+  const Camera c = both_projections(1)[0];
   EXPECT_EQ(convex.sorter->sort(SortMethod::automatic, {c, 32, 32}).stats.method, SortMethod::mpvo);
   EXPECT_EQ(ring.sorter->sort(SortMethod::automatic, {c, 32, 32}).stats.method, SortMethod::mpvo_abuffer);
 }
@@ -315,7 +296,7 @@ TEST(Visibility, CentroidSortIsDefeatedByGradedCells) {
 // Where two cells overlap no order of whole cells is right: the oracle counts those pixels apart.
 // A mesh without overlaps has none (cells sharing faces touch, they do not overlap).
 TEST(Visibility, TheOracleCountsPixelsWhereCellsOverlap) {
-  const Camera c = views(1, Projection::Orthographic, 6.0)[0];
+  const Camera c = both_projections(1)[0];
   const Scene box(generate("box-tets", 3));
   const OrderCheck none = box.check(SortMethod::mpvo, c, 48);
   EXPECT_GT(none.pixels_covered, 500);
@@ -331,7 +312,7 @@ TEST(Visibility, TheOracleCountsPixelsWhereCellsOverlap) {
 
 TEST(Visibility, TheOracleCountsAReversedOrder) {
   const Scene s(generate("box-tets", 3));
-  const Camera c = views(1, Projection::Orthographic, 6.0)[0];
+  const Camera c = both_projections(1)[0];
   std::vector<std::int64_t> order = s.sorter->sort(SortMethod::mpvo, {c, 32, 32}).order;
   std::reverse(order.begin(), order.end());
   const OrderCheck k = check_order(*s.tracer, s.mesh.n_cells(), order, c, 32, 32);
