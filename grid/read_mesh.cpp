@@ -25,6 +25,22 @@ class Gunzipped {
     dir_ = fs::temp_directory_path() / ("cellproj-" + std::to_string(std::hash<std::string>{}(path)) + "-" +
                                         std::to_string(reinterpret_cast<std::uintptr_t>(this)));
     fs::create_directories(dir_);
+    try {
+      decompress(path);
+    } catch (...) {  // the destructor does not run for an object whose constructor threw
+      remove();
+      throw;
+    }
+  }
+  ~Gunzipped() { remove(); }
+  const std::string& file() const { return file_; }
+
+ private:
+  void remove() {
+    std::error_code ec;
+    fs::remove_all(dir_, ec);
+  }
+  void decompress(const std::string& path) {
     file_ = (dir_ / fs::path(path).stem()).string();
     gzFile in = gzopen(path.c_str(), "rb");
     if (!in) throw InputError(where(path, "cannot open"));
@@ -39,13 +55,7 @@ class Gunzipped {
     gzclose(in);
     if (bad) throw InputError(where(path, "corrupt or truncated gzip data (" + what + ")"));
   }
-  ~Gunzipped() {
-    std::error_code ec;
-    fs::remove_all(dir_, ec);
-  }
-  const std::string& file() const { return file_; }
 
- private:
   fs::path dir_;
   std::string file_;
 };

@@ -108,6 +108,17 @@ TEST(Readers, ReadsRestoreVtksLoggingAndAreSafeFromTwoThreads) {
   }
 }
 
+// A corrupt .gz is an error, and the folder it was being decompressed into goes with it.
+TEST(Readers, CorruptGzipLeavesNoTemporaryFolder) {
+  test::TempDir dir;
+  const std::string path = dir.file("mesh.vtu.gz");
+  spit(path, std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03", 10) + std::string(300, 'x'));
+  EXPECT_NE(read_error(path).find("mesh.vtu.gz: corrupt or truncated gzip data"), std::string::npos) << read_error(path);
+  const std::string prefix = "cellproj-" + std::to_string(std::hash<std::string>{}(path)) + "-";
+  for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
+    EXPECT_NE(e.path().filename().string().rfind(prefix, 0), 0u) << "left behind: " << e.path();
+}
+
 TEST(Readers, LegacyVtkCellDataIsVolumeWeightedAndLineCellsSkipped) {
   test::TempDir dir;
   spit(dir.file("two.vtk"), kLegacy);
