@@ -39,6 +39,7 @@ int main(int argc, char** argv) {
     cells.types = types.data();
     cells.n_cells = static_cast<std::int64_t>(types.size());
     cells.ids_32bit = true;
+    cells.connectivity_size = static_cast<std::int64_t>(connectivity.size());
     // Validated here (cellproj::InputError names the bad element); the points are read in place.
     const cellproj::Volume volume(xyz.data(), n_points, cells, "solver arrays");
 

@@ -45,6 +45,18 @@ Volume::Volume(const PointArray& points, std::int64_t n_points, const CellArrays
     : state_(std::make_unique<State>()) {
   if (cells.n_cells < 0 || !cells.offsets || !cells.types || !cells.connectivity || points.empty())
     throw InputError(where(source, "a null array or a negative cell count"));
+  // The offsets say how much of the connectivity to read: check them before anything is read.
+  auto offset = [&](std::int64_t c) {
+    return cells.ids_32bit ? std::int64_t(static_cast<const std::int32_t*>(cells.offsets)[c])
+                           : static_cast<const std::int64_t*>(cells.offsets)[c];
+  };
+  if (cells.n_cells > 0 && offset(0) != 0) throw InputError(where(source, "offsets[0] must be 0"));
+  for (std::int64_t c = 0; c < cells.n_cells; ++c)
+    if (offset(c + 1) < offset(c)) throw InputError(where(source, "offsets decrease at cell " + std::to_string(c)));
+  if (cells.connectivity_size >= 0 && offset(cells.n_cells) != cells.connectivity_size)
+    throw InputError(where(source, "the offsets end at " + std::to_string(offset(cells.n_cells)) +
+                                       " but the connectivity has " + std::to_string(cells.connectivity_size) +
+                                       " entries"));
   MeshView v;
   v.points = points;
   v.n_points = n_points;
@@ -59,7 +71,6 @@ Volume::Volume(const PointArray& points, std::int64_t n_points, const CellArrays
     const auto* off = static_cast<const std::int32_t*>(cells.offsets);
     const auto* conn = static_cast<const std::int32_t*>(cells.connectivity);
     s.offsets.assign(off, off + cells.n_cells + 1);
-    if (s.offsets.front() != 0 || s.offsets.back() < 0) throw InputError(where(v.source, "offsets[0] must be 0"));
     s.connectivity.assign(conn, conn + s.offsets.back());
     v.connectivity = s.connectivity.data();
     v.offsets = s.offsets.data();

@@ -22,7 +22,8 @@ struct CellArrays {
   const void* offsets = nullptr;  // n_cells + 1 entries
   const std::uint8_t* types = nullptr;
   std::int64_t n_cells = 0;
-  bool ids_32bit = false;  // int32 ids (widened once when the volume is committed), else int64
+  bool ids_32bit = false;               // int32 ids (widened once when the volume is committed), else int64
+  std::int64_t connectivity_size = -1;  // entries in connectivity, checked against offsets; -1: unknown
 };
 
 // One value per point: a span over the caller's array, read during the render call only.

@@ -99,6 +99,12 @@ TEST(RenderApi, SolverArraysAsTheyAreGiveTheSamePicture) {
   ASSERT_EQ(v32.copies().size(), 1u);
   EXPECT_NE(v32.copies()[0].find("32-bit ids widened"), std::string::npos);
   EXPECT_EQ(render(v32, a, tf(), {}, kView, {48, 48}).rgba, reference.rgba);
+  CellArrays short_cells = cells;
+  short_cells.connectivity_size = static_cast<std::int64_t>(conn.size()) - 4;
+  EXPECT_NE(error_of([&] {
+              Volume v(m.points.data(), m.n_points(), short_cells, "short");
+            }).find("short: the offsets end at " + std::to_string(conn.size())),
+            std::string::npos);
   // Float points (exact here) and a strided array of {x, y, z, temperature} records: read in place.
   const std::vector<float> xyz_f(m.points.begin(), m.points.end());
   CellArrays cells64{m.connectivity.data(), m.offsets.data(), m.types.data(), m.n_cells(), false};
