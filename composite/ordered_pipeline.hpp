@@ -26,8 +26,12 @@ namespace cellproj {
 //             draws item k straight onto the image, "over" (called in order from the compositor).
 struct PipelineLimits {
   std::size_t batch_items = 0;  // items per token; 0: about 16 tokens per thread, 64 to 2048
-  double batch_pixels = 5e6;    // a token also closes once its items' footprints add up to this
-  double direct_pixels = 1e6;   // an item covering more is not buffered: the compositor draws it
+  // A token also closes once its items' footprints add up to this many pixels, so that its
+  // fragments (20 bytes each, at most one per covered pixel and item) stay near 100 MB.
+  double batch_pixels = 5e6;
+  // An item covering more is not buffered: the compositor draws it itself, in order, straight onto
+  // the image (a few huge cells in a large image would otherwise buffer gigabytes of fragments).
+  double direct_pixels = 1e6;
 };
 
 // Items per token: the limit, or enough tokens to keep every thread busy on small inputs (a few

@@ -51,18 +51,6 @@ MeshView Mesh::view() const {
   return v;
 }
 
-PointArray PointArray::strided(const double* first, std::ptrdiff_t stride_bytes) {
-  PointArray a(first);
-  if (stride_bytes != 0) a.stride_ = stride_bytes;
-  return a;
-}
-
-PointArray PointArray::strided(const float* first, std::ptrdiff_t stride_bytes) {
-  PointArray a(first);
-  if (stride_bytes != 0) a.stride_ = stride_bytes;
-  return a;
-}
-
 std::int64_t merge_coincident_points(Mesh& mesh) {
   const std::int64_t n = mesh.n_points();
   std::vector<std::int64_t> order(static_cast<std::size_t>(n));

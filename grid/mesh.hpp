@@ -19,9 +19,13 @@ class PointArray {
   PointArray() = default;
   PointArray(const double* xyz) : data_(xyz), stride_(3 * sizeof(double)) {}  // NOLINT: packed doubles, implicitly
   PointArray(const float* xyz) : data_(xyz), stride_(3 * sizeof(float)), is_float_(true) {}  // NOLINT
-  // x, y, z of point p at data + p * stride bytes; stride 0 means packed.
-  static PointArray strided(const double* first, std::ptrdiff_t stride_bytes);
-  static PointArray strided(const float* first, std::ptrdiff_t stride_bytes);
+  // x, y, z of point p at first + p * stride bytes (T: float or double); stride 0 means packed.
+  template <class T>
+  static PointArray strided(const T* first, std::ptrdiff_t stride_bytes) {
+    PointArray a(first);
+    if (stride_bytes != 0) a.stride_ = stride_bytes;
+    return a;
+  }
 
   glm::dvec3 operator()(std::int64_t p) const {
     const char* at = static_cast<const char*>(data_) + p * stride_;
@@ -33,7 +37,6 @@ class PointArray {
     return {d[0], d[1], d[2]};
   }
   bool empty() const { return data_ == nullptr; }
-  bool packed_double() const { return !is_float_ && stride_ == 3 * std::ptrdiff_t(sizeof(double)); }
 
  private:
   const void* data_ = nullptr;

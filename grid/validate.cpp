@@ -80,12 +80,15 @@ void check_finite(const std::string& source, const PointField& field) {
                                          std::to_string(field.values[p]) + ")"));
 }
 
+void check_offsets(const std::string& source, const std::int64_t* offsets, std::int64_t n_cells) {
+  if (offsets[0] != 0) throw InputError(where(source, "offsets[0] must be 0"));
+  for (std::int64_t c = 0; c < n_cells; ++c)
+    if (offsets[c + 1] < offsets[c]) throw InputError(where(source, "offsets decrease at cell " + std::to_string(c)));
+}
+
 ValidationReport validate(const MeshView& m) {
   if (m.n_cells <= 0) throw InputError(where(m.source, "the mesh has no 3D cells"));
-  if (m.offsets[0] != 0) throw InputError(where(m.source, "offsets[0] must be 0"));
-  for (std::int64_t c = 0; c < m.n_cells; ++c)
-    if (m.offsets[c + 1] < m.offsets[c])
-      throw InputError(where(m.source, "offsets decrease at cell " + std::to_string(c)));
+  check_offsets(m.source, m.offsets, m.n_cells);
   check_cells(m);
   check_points(m);
 

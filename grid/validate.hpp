@@ -25,6 +25,10 @@ struct ValidationReport {
 // range, a NaN or infinite coordinate.
 ValidationReport validate(const MeshView& mesh);
 
+// Throws InputError (naming the source) unless offsets[0] is 0 and the offsets never decrease:
+// what must hold before the connectivity they index can be read. validate() checks it first.
+void check_offsets(const std::string& source, const std::int64_t* offsets, std::int64_t n_cells);
+
 // Throws InputError for the first non-finite value of a field.
 void check_finite(const std::string& source, const PointField& field);
 

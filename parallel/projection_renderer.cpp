@@ -76,8 +76,7 @@ void check_options(const ProjectionOptions& o) {
     throw ResourceError(
         "the OpenGL back ends were not built (OSMesa, libosmesa6-dev, was not found when cellproj was "
         "configured); use the software back end");
-  if (o.table_size < 2 || o.table_size > 8192)
-    throw InputError("opacity table size " + std::to_string(o.table_size) + " is outside [2, 8192]");
+  OpacityTable::check_size(o.table_size);
   if (is_opengl(o.backend) && !traits(o.method).opengl) {
     std::string drawable;
     for (const MethodTraits& t : kProjectionMethods)

@@ -16,8 +16,12 @@ constexpr bool listed_in_enum_order() {
 static_assert(listed_in_enum_order(), "traits() indexes kProjectionMethods by the enum's value");
 }  // namespace
 
-OpacityTable::OpacityTable(int size, double kappa_max, double l_max) : size_(size) {
+void OpacityTable::check_size(int size) {
   if (size < 2 || size > 8192) throw InputError("opacity table size " + std::to_string(size) + " is outside [2, 8192]");
+}
+
+OpacityTable::OpacityTable(int size, double kappa_max, double l_max) : size_(size) {
+  check_size(size);
   if (!(kappa_max > 0) || !std::isfinite(kappa_max)) kappa_max = 1.0;
   if (!(l_max > 0) || !std::isfinite(l_max)) l_max = 1.0;
   max_index_ = size - 1;

@@ -49,7 +49,8 @@ constexpr bool is_opengl(ProjectionBackend backend) { return backend != Projecti
 // the paper's 2D alpha texture. Arguments beyond the table are clamped to its edge.
 class OpacityTable {
  public:
-  OpacityTable(int size, double kappa_max, double l_max);
+  OpacityTable(int size, double kappa_max, double l_max);  // check_size(size) first
+  static void check_size(int size);                        // InputError unless 2 <= size <= 8192
   // Where kappa and l fall between the nodes (fractional node index, clamped to the table).
   double kappa_index(double kappa) const { return std::min(kappa * kscale_, max_index_); }
   double length_index(double l) const { return std::min(l * lscale_, max_index_); }

@@ -21,13 +21,14 @@ std::uint64_t common_bytes(ImageSize size) {
   return pixels * (16 * 2 + 4) + (576ull << 20);
 }
 
-// Runs `prepare` and adds its time to the report when it made a preparation.
-template <class Prepare>
-void timed_preparation(const Volume& volume, RenderReport* report, Prepare&& prepare) {
+// The volume's preparation that `get` returns, its time added to the report when this call made it.
+template <class Get>
+decltype(auto) timed_preparation(const Volume& volume, RenderReport* report, Get&& get) {
   const int before = volume.preparations();
   const auto t = std::chrono::steady_clock::now();
-  prepare();
+  decltype(auto) prepared = get();
   if (report && volume.preparations() != before) report->prepare_seconds += since(t);
+  return prepared;
 }
 
 class ProjectionMode final : public Renderer {
@@ -44,9 +45,10 @@ class ProjectionMode final : public Renderer {
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                ImageSize size, RenderReport* report, const Progress&) const override {
     volume.check(field);
-    timed_preparation(volume, report, [&] { prepare(volume); });
+    const ProjectionRenderer& renderer =
+        timed_preparation(volume, report, [&]() -> const ProjectionRenderer& { return volume.projection(mode_); });
     ProjectionStats st;
-    Image image = volume.projection(mode_).render(field.values, tf, camera, size.width, size.height, options_, &st);
+    Image image = renderer.render(field.values, tf, camera, size.width, size.height, options_, &st);
     if (report) fill(*report, st);
     return image;
   }
@@ -128,10 +130,10 @@ class ExactMode final : public Renderer {
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                ImageSize size, RenderReport* report, const Progress& progress) const override {
     volume.check(field);
-    timed_preparation(volume, report, [&] { prepare(volume); });
+    const ExactRenderer& renderer =
+        timed_preparation(volume, report, [&]() -> const ExactRenderer& { return volume.exact(); });
     ExactStats st;
-    Image image =
-        volume.exact().render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress);
+    Image image = renderer.render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress);
     if (report) {
       report->seconds = st.trace_seconds;
       report->phase_seconds = {{"trace and integrate", st.trace_seconds}};

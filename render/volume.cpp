@@ -45,35 +45,31 @@ Volume::Volume(const PointArray& points, std::int64_t n_points, const CellArrays
     : state_(std::make_unique<State>()) {
   if (cells.n_cells < 0 || !cells.offsets || !cells.types || !cells.connectivity || points.empty())
     throw InputError(where(source, "a null array or a negative cell count"));
-  // The offsets say how much of the connectivity to read: check them before anything is read.
-  auto offset = [&](std::int64_t c) {
-    return cells.ids_32bit ? std::int64_t(static_cast<const std::int32_t*>(cells.offsets)[c])
-                           : static_cast<const std::int64_t*>(cells.offsets)[c];
-  };
-  if (cells.n_cells > 0 && offset(0) != 0) throw InputError(where(source, "offsets[0] must be 0"));
-  for (std::int64_t c = 0; c < cells.n_cells; ++c)
-    if (offset(c + 1) < offset(c)) throw InputError(where(source, "offsets decrease at cell " + std::to_string(c)));
-  if (cells.connectivity_size >= 0 && offset(cells.n_cells) != cells.connectivity_size)
-    throw InputError(where(source, "the offsets end at " + std::to_string(offset(cells.n_cells)) +
+  State& s = *state_;
+  const auto* offsets = static_cast<const std::int64_t*>(cells.offsets);
+  if (cells.ids_32bit) {
+    const auto* off = static_cast<const std::int32_t*>(cells.offsets);
+    s.offsets.assign(off, off + cells.n_cells + 1);
+    offsets = s.offsets.data();
+  }
+  // The offsets say how much connectivity there is: checked before any of it is read.
+  check_offsets(source, offsets, cells.n_cells);
+  if (cells.connectivity_size >= 0 && offsets[cells.n_cells] != cells.connectivity_size)
+    throw InputError(where(source, "the offsets end at " + std::to_string(offsets[cells.n_cells]) +
                                        " but the connectivity has " + std::to_string(cells.connectivity_size) +
                                        " entries"));
   MeshView v;
   v.points = points;
   v.n_points = n_points;
+  v.offsets = offsets;
   v.types = cells.types;
   v.n_cells = cells.n_cells;
   v.source = std::move(source);
-  if (!cells.ids_32bit) {
-    v.connectivity = static_cast<const std::int64_t*>(cells.connectivity);
-    v.offsets = static_cast<const std::int64_t*>(cells.offsets);
-  } else {
-    State& s = *state_;
-    const auto* off = static_cast<const std::int32_t*>(cells.offsets);
+  v.connectivity = static_cast<const std::int64_t*>(cells.connectivity);
+  if (cells.ids_32bit) {
     const auto* conn = static_cast<const std::int32_t*>(cells.connectivity);
-    s.offsets.assign(off, off + cells.n_cells + 1);
-    s.connectivity.assign(conn, conn + s.offsets.back());
+    s.connectivity.assign(conn, conn + offsets[cells.n_cells]);
     v.connectivity = s.connectivity.data();
-    v.offsets = s.offsets.data();
     s.copies.push_back("connectivity and offsets: 32-bit ids widened to 64 bits, " +
                        megabytes((s.connectivity.size() + s.offsets.size()) * sizeof(std::int64_t)));
   }

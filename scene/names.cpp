@@ -1,5 +1,6 @@
 #include "scene/names.hpp"
 
+#include <array>
 #include <type_traits>
 #include <variant>
 
@@ -11,13 +12,12 @@
 namespace cellproj {
 namespace {
 
-constexpr std::pair<ProjectionMethod, const char*> kMethods[] = {
-    {ProjectionMethod::pt_linear, name_of(ProjectionMethod::pt_linear)},
-    {ProjectionMethod::pt_table, name_of(ProjectionMethod::pt_table)},
-    {ProjectionMethod::pt_analytic, name_of(ProjectionMethod::pt_analytic)},
-    {ProjectionMethod::pt_breakpoints, name_of(ProjectionMethod::pt_breakpoints)},
-};
-static_assert(std::size(kMethods) == std::size(kProjectionMethods), "every projection method has its name here");
+// The projection methods' names are their traits' (projection/method.hpp).
+template <std::size_t... I>
+constexpr std::array<std::pair<ProjectionMethod, const char*>, sizeof...(I)> method_table(std::index_sequence<I...>) {
+  return {{{kProjectionMethods[I].method, kProjectionMethods[I].name}...}};
+}
+constexpr auto kMethods = method_table(std::make_index_sequence<std::size(kProjectionMethods)>());
 constexpr std::pair<ProjectionBackend, const char*> kBackends[] = {
     {ProjectionBackend::software, "software"},
     {ProjectionBackend::opengl, "opengl"},
