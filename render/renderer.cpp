@@ -6,6 +6,7 @@
 #include "grid/tetrahedralize.hpp"
 #include "parallel/projection_renderer.hpp"
 #include "raycast/reference_renderer.hpp"
+#include "slicing/slice_renderer.hpp"
 
 namespace cellproj {
 namespace {
@@ -154,7 +155,93 @@ class ExactMode final : public Renderer {
   CellInterpolation interpolation_;
 };
 
+// The slicing stats as a report.
+void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
+  r.seconds = st.seconds;
+  r.phase_seconds = st.phase_seconds;
+  r.add("slice_axis", st.axis);
+  r.add("slice_integral", o.integral);
+  r.add("spacing", st.spacing);
+  for (const auto& [name, value] : {std::pair<const char*, std::int64_t>{"slices", st.slices},
+                                    {"planes_behind_eye", st.planes_behind_eye},
+                                    {"planes_reused", st.planes_reused},
+                                    {"polygons", st.polygons},
+                                    {"clipped_polygons", st.clipped_polygons},
+                                    {"fragments", st.fragments},
+                                    {"overlapping_fragments", st.overlapping_fragments},
+                                    {"cells_between_planes", st.cells_between_planes},
+                                    {"table_layers", st.table_layers}})
+    r.add(name, value);
+  if (st.cells_between_planes > 0)
+    r.warnings.push_back(std::to_string(st.cells_between_planes) +
+                         " cells (or tetrahedra of split cells) lie between two planes and add nothing to the picture; "
+                         "more --slices catch them");
+  if (st.overlapping_fragments > 0)
+    r.warnings.push_back(std::to_string(st.overlapping_fragments) +
+                         " pixels were covered twice by one slice: cells overlap (`cellproj info --overlaps`), and "
+                         "only one of them shows there");
+}
+
+class SlicingMode final : public Renderer {
+ public:
+  SlicingMode(const SlicingOptions& options, Tetrahedralize mode) : options_(options), mode_(mode) {
+    check_options(options);
+  }
+  std::string name() const override { return "slicing"; }
+  std::vector<std::string> settings_used() const override {
+    return {"method", "slices", "slice-axis", "slice-integral", "table-size", "progressive", "tetrahedralize"};
+  }
+  void prepare(const Volume& volume) const override { volume.slicing(mode_); }
+
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+               ImageSize size, RenderReport* report, const Progress&) const override {
+    Image image;
+    render_levels(volume, field, tf, camera, size, {options_.slices},
+                  [&](std::size_t, int, const Image& i, const RenderReport& r) {
+                    image = i;
+                    if (report) *report = r;
+                  });
+    return image;
+  }
+
+  void render_levels(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+                     ImageSize size, const std::vector<int>& levels, const LevelDone& done) const {
+    volume.check(field);
+    RenderReport first;
+    const SliceRenderer& renderer =
+        timed_preparation(volume, &first, [&]() -> const SliceRenderer& { return volume.slicing(mode_); });
+    renderer.render_levels(field.values, tf, camera, size.width, size.height, options_, levels,
+                           [&](std::size_t level, int slices, const Image& image, const SlicingStats& st) {
+                             RenderReport r;
+                             if (level == 0) r.prepare_seconds = first.prepare_seconds;
+                             fill(r, st, options_);
+                             r.add("tetrahedralize", mode_);
+                             done(level, slices, image, r);
+                           });
+  }
+
+  std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
+    // Per point: coordinates (twice: recentred), screen attributes and height. Per tetrahedron:
+    // the slice cells' ids. Per pixel: the chunk's slice images (64 MB), lengths and layers.
+    const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
+    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 112 + static_cast<std::uint64_t>(v.tets) * 48 +
+           pixels * 8 + (64ull << 20) + (512ull << 20);
+  }
+
+ private:
+  SlicingOptions options_;
+  Tetrahedralize mode_;
+};
+
 }  // namespace
+
+void render_progressive(const Volume& volume, const Field& field, const TransferFunction& tf,
+                        const RenderSettings& settings, const Camera& camera, ImageSize size,
+                        const std::vector<int>& levels, const LevelDone& done) {
+  if (settings.mode != RenderMode::slicing)
+    throw InputError("progressive refinement is a slicing feature: use --method slicing");
+  SlicingMode(settings.slicing, settings.tetrahedralize).render_levels(volume, field, tf, camera, size, levels, done);
+}
 
 VolumeSize size_of(const MeshView& mesh) {
   VolumeSize v{mesh.n_points, mesh.n_cells, 0};
@@ -166,6 +253,7 @@ std::unique_ptr<Renderer> make_renderer(const RenderSettings& s) {
   switch (s.mode) {
     case RenderMode::projection: return std::make_unique<ProjectionMode>(s.projection, s.tetrahedralize);
     case RenderMode::exact: return std::make_unique<ExactMode>(s.interpolation);
+    case RenderMode::slicing: return std::make_unique<SlicingMode>(s.slicing, s.tetrahedralize);
   }
   throw InputError("unknown render mode " + std::to_string(static_cast<int>(s.mode)));
 }

@@ -45,6 +45,15 @@ class Renderer {
 // The renderer for `settings`, checked once (InputError for settings that do not go together).
 std::unique_ptr<Renderer> make_renderer(const RenderSettings& settings);
 
+// Progressive refinement (slicing): the frame at each plane count of `levels` (increasing), each
+// handed to done(level index, slices, image, report) as soon as it is composited; a level reuses
+// the polygons of the previous one's planes where they coincide. InputError unless settings.mode is
+// slicing.
+using LevelDone = std::function<void(std::size_t level, int slices, const Image&, const RenderReport&)>;
+void render_progressive(const Volume& volume, const Field& field, const TransferFunction& tf,
+                        const RenderSettings& settings, const Camera& camera, ImageSize size,
+                        const std::vector<int>& levels, const LevelDone& done);
+
 // make_renderer(settings)->render(...): one call for one picture.
 Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const RenderSettings& settings,
              const Camera& camera, ImageSize size, RenderReport* report = nullptr);

@@ -3,6 +3,7 @@
 // the default a user gets from `cellproj render` without options.
 #include "parallel/projection_options.hpp"
 #include "raycast/interpolation.hpp"
+#include "slicing/slicing_options.hpp"
 #include "visibility/methods.hpp"
 
 namespace cellproj {
@@ -10,6 +11,7 @@ namespace cellproj {
 enum class RenderMode {
   projection,  // cell projection (parallel/, projection/): `projection.method` picks the rung of the ladder
   exact,       // the reference ray integrator (raycast/)
+  slicing,     // plane slicing (slicing/): cells cut on parallel planes, composited without a sort
 };
 
 struct RenderSettings {
@@ -17,6 +19,7 @@ struct RenderSettings {
   ProjectionOptions projection;                                        // method, back end, sort, gaps, table size
   Tetrahedralize tetrahedralize = Tetrahedralize::problem;             // projection: which cells are split
   CellInterpolation interpolation = CellInterpolation::isoparametric;  // exact: the field inside cells
+  SlicingOptions slicing;                                              // slices, family, integral, table size
 };
 
 struct ImageSize {

@@ -8,6 +8,7 @@
 #include "base/error.hpp"
 #include "parallel/projection_renderer.hpp"
 #include "raycast/reference_renderer.hpp"
+#include "slicing/slice_renderer.hpp"
 
 namespace cellproj {
 
@@ -19,7 +20,21 @@ struct Volume::State {
   std::mutex mutex;
   std::unique_ptr<ProjectionRenderer> projection[3];  // by Tetrahedralize
   std::unique_ptr<ExactRenderer> exact;
+  std::unique_ptr<SliceRenderer> slicing[3];  // by Tetrahedralize
   std::atomic<int> preparations{0};
+
+  // The preparation in `slot`, made by make() under the lock on first use, counted, and its copy of
+  // the mesh listed (what copied() says of it).
+  template <class T, class Make, class Copied>
+  const T& prepared(std::unique_ptr<T>& slot, Make&& make, Copied&& copied) {
+    std::lock_guard<std::mutex> lock(mutex);
+    if (!slot) {
+      slot = make();
+      ++preparations;
+      copies.push_back(copied(*slot));
+    }
+    return *slot;
+  }
 };
 
 namespace {
@@ -28,6 +43,11 @@ std::string megabytes(std::size_t bytes) {
   char text[32];
   std::snprintf(text, sizeof text, "%.1f MB", double(bytes) / 1e6);
   return text;
+}
+
+std::string points_copy(const MeshView& mesh, const char* what) {
+  return std::string("points recentred for ") + what + ", " +
+         megabytes(static_cast<std::size_t>(mesh.n_points) * 3 * sizeof(double));
 }
 }  // namespace
 
@@ -118,27 +138,29 @@ void Volume::check(const Field& f) const {
 
 const ProjectionRenderer& Volume::projection(Tetrahedralize mode) const {
   State& s = *state_;
-  std::lock_guard<std::mutex> lock(s.mutex);
-  auto& p = s.projection[static_cast<int>(mode)];
-  if (!p) {
-    p = std::make_unique<ProjectionRenderer>(s.mesh, mode);
-    ++s.preparations;
-    s.copies.push_back("points recentred for projection, " +
-                       megabytes(static_cast<std::size_t>(s.mesh.n_points) * 3 * sizeof(double)));
-  }
-  return *p;
+  return s.prepared(
+      s.projection[static_cast<int>(mode)], [&] { return std::make_unique<ProjectionRenderer>(s.mesh, mode); },
+      [&](const ProjectionRenderer&) { return points_copy(s.mesh, "projection"); });
 }
 
 const ExactRenderer& Volume::exact() const {
   State& s = *state_;
-  std::lock_guard<std::mutex> lock(s.mutex);
-  if (!s.exact) {
-    s.exact = std::make_unique<ExactRenderer>(s.mesh);
-    ++s.preparations;
-    s.copies.push_back("points recentred for the exact renderer, " +
-                       megabytes(static_cast<std::size_t>(s.mesh.n_points) * 3 * sizeof(double)));
-  }
-  return *s.exact;
+  return s.prepared(
+      s.exact, [&] { return std::make_unique<ExactRenderer>(s.mesh); },
+      [&](const ExactRenderer&) { return points_copy(s.mesh, "the exact renderer"); });
+}
+
+const SliceRenderer& Volume::slicing(Tetrahedralize mode) const {
+  State& s = *state_;
+  return s.prepared(
+      s.slicing[static_cast<int>(mode)], [&] { return std::make_unique<SliceRenderer>(s.mesh, mode); },
+      [&](const SliceRenderer& r) {
+        const SliceCells& c = r.cells();
+        return points_copy(s.mesh, "slicing") + "; the cells to slice (" + std::to_string(c.whole) + " whole, " +
+               std::to_string(c.split) + " as tetrahedra), " +
+               megabytes(c.ids.size() * sizeof(std::int64_t) + c.offsets.size() * sizeof(std::int64_t) +
+                         c.types.size());
+      });
 }
 
 }  // namespace cellproj

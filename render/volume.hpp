@@ -15,6 +15,7 @@ namespace cellproj {
 
 class ExactRenderer;
 class ProjectionRenderer;
+class SliceRenderer;
 
 // A caller's cell arrays with 32- or 64-bit ids (connectivity and offsets alike).
 struct CellArrays {
@@ -66,6 +67,7 @@ class Volume {
   // The preparations, each made on the first call that needs it (thread-safe) and kept.
   const ProjectionRenderer& projection(Tetrahedralize mode) const;
   const ExactRenderer& exact() const;
+  const SliceRenderer& slicing(Tetrahedralize mode) const;
   // How many preparations were made so far: rendering a second field, view or transfer function
   // makes none.
   int preparations() const;

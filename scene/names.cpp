@@ -35,6 +35,13 @@ constexpr std::pair<Tetrahedralize, const char*> kModes[] = {
     {Tetrahedralize::problem, "problem"}, {Tetrahedralize::all, "all"}, {Tetrahedralize::none, "none"}};
 constexpr std::pair<CellInterpolation, const char*> kInterpolations[] = {
     {CellInterpolation::isoparametric, "isoparametric"}, {CellInterpolation::canonical_tets, "canonical-tets"}};
+constexpr std::pair<SliceAxis, const char*> kSliceAxes[] = {{SliceAxis::automatic, "auto"},
+                                                            {SliceAxis::view, "view"},
+                                                            {SliceAxis::x, "x"},
+                                                            {SliceAxis::y, "y"},
+                                                            {SliceAxis::z, "z"}};
+constexpr std::pair<SliceIntegral, const char*> kSliceIntegrals[] = {{SliceIntegral::sampled, "sampled"},
+                                                                     {SliceIntegral::preintegrated, "preintegrated"}};
 
 }  // namespace
 
@@ -63,9 +70,17 @@ CellInterpolation parse_cell_interpolation(const std::string& n) {
 const char* name_of(CellInterpolation interpolation) { return name_in(kInterpolations, interpolation); }
 std::string cell_interpolation_names() { return names(kInterpolations); }
 
+SliceAxis parse_slice_axis(const std::string& n) { return from_name(kSliceAxes, n, "--slice-axis"); }
+const char* name_of(SliceAxis axis) { return name_in(kSliceAxes, axis); }
+std::string slice_axis_names() { return names(kSliceAxes); }
+
+SliceIntegral parse_slice_integral(const std::string& n) { return from_name(kSliceIntegrals, n, "--slice-integral"); }
+const char* name_of(SliceIntegral integral) { return name_in(kSliceIntegrals, integral); }
+std::string slice_integral_names() { return names(kSliceIntegrals); }
+
 void parse_render_method(const std::string& name, RenderSettings& settings) {
-  if (name == "exact") {
-    settings.mode = RenderMode::exact;
+  if (name == "exact" || name == "slicing") {
+    settings.mode = name == "exact" ? RenderMode::exact : RenderMode::slicing;
     return;
   }
   for (const auto& [method, n] : kMethods)
@@ -77,7 +92,7 @@ void parse_render_method(const std::string& name, RenderSettings& settings) {
   throw InputError("unknown method '" + name + "' (known: " + render_method_names() + ")");
 }
 
-std::string render_method_names() { return "exact, " + projection_method_names(); }
+std::string render_method_names() { return "exact, slicing, " + projection_method_names(); }
 
 nlohmann::json report_json(const RenderReport& report) {
   nlohmann::json j = nlohmann::json::object();

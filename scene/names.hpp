@@ -34,9 +34,17 @@ CellInterpolation parse_cell_interpolation(const std::string& name);
 const char* name_of(CellInterpolation interpolation);
 std::string cell_interpolation_names();
 
-// "exact" or a projection method's name into settings.mode (and settings.projection.method).
+SliceAxis parse_slice_axis(const std::string& name);
+const char* name_of(SliceAxis axis);
+std::string slice_axis_names();
+
+SliceIntegral parse_slice_integral(const std::string& name);
+const char* name_of(SliceIntegral integral);
+std::string slice_integral_names();
+
+// "exact", "slicing" or a projection method's name into settings.mode (and settings.projection.method).
 void parse_render_method(const std::string& name, RenderSettings& settings);
-std::string render_method_names();  // "exact, pt-linear, ..."
+std::string render_method_names();  // "exact, slicing, pt-linear, ..."
 
 // The report's values and phases as one JSON object (choices by their names, monostate as null),
 // with "phase_seconds" an object.

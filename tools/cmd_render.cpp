@@ -25,8 +25,9 @@ namespace {
 
 struct RenderArgs {
   std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto",
-                               gaps = "auto", backend = "software", tetrahedralize = "problem";
-  int threads = 0, frames = 1, table_size = 256;
+                               gaps = "auto", backend = "software", tetrahedralize = "problem", slice_axis = "auto",
+                               slice_integral = "preintegrated", progressive;
+  int threads = 0, frames = 1, table_size = 256, slices = 256;
   std::vector<std::string> given;  // the render settings given on the command line, by name
   double max_memory_gib = 0.0;     // 0: the machine's available memory
   bool stats = false;
@@ -46,7 +47,40 @@ RenderSettings settings_from(const RenderArgs& a) {
   s.projection.backend = parse_backend(a.backend);
   s.tetrahedralize = parse_tetrahedralize(a.tetrahedralize);
   s.interpolation = parse_cell_interpolation(a.interpolation);
+  s.slicing.slices = a.slices;
+  s.slicing.axis = parse_slice_axis(a.slice_axis);
+  s.slicing.integral = parse_slice_integral(a.slice_integral);
+  s.slicing.table_size = a.table_size;
   return s;
+}
+
+// "16,64,256": the plane counts of --progressive.
+std::vector<int> parse_levels(const std::string& text) {
+  std::vector<int> levels;
+  std::size_t at = 0;
+  while (at <= text.size()) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    const std::string item = text.substr(at, comma - at);
+    std::size_t used = 0;
+    int n = 0;
+    try {
+      n = std::stoi(item, &used);
+    } catch (const std::exception&) {
+      used = 0;
+    }
+    if (item.empty() || used != item.size())
+      throw InputError("--progressive: '" + item + "' is not a number of slices (give counts like 16,64,256)");
+    levels.push_back(n);
+    at = comma + 1;
+  }
+  return levels;
+}
+
+// out.png -> out-64.png: where level `slices` of --progressive goes.
+std::string level_path(const std::string& path, int slices) {
+  if (path.empty()) return path;
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + "-" + std::to_string(slices) + p.extension().string())).string();
 }
 
 // An option given for a renderer that does not read it is an error, not silently ignored.
@@ -64,8 +98,16 @@ int run_render(const RenderArgs& a) {
   Scene scene = load_scene(a.scene);
   if (!a.size.empty()) parse_size(a.size, scene.width, scene.height);
   if (!a.field.empty()) scene.field = a.field;
-  const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(a));
+  const RenderSettings settings = settings_from(a);
+  const std::unique_ptr<Renderer> renderer = make_renderer(settings);
   refuse_unused(*renderer, a.given);
+  const std::vector<int> levels = a.progressive.empty() ? std::vector<int>{} : parse_levels(a.progressive);
+  if (!levels.empty() && settings.mode != RenderMode::slicing)
+    throw InputError("--progressive refines slicing: give --method slicing");
+  if (!levels.empty() && a.frames > 1) throw InputError("--progressive renders one view: it does not go with --frames");
+  if (settings.mode == RenderMode::slicing)
+    for (int n : levels.empty() ? std::vector<int>{settings.slicing.slices} : levels)
+      check_slices(n, scene.width, scene.height);
   const ImageSize size{scene.width, scene.height};
   // Refuse what would not fit, before allocating it: from the file's header before reading it,
   // and again from the mesh as read.
@@ -81,6 +123,14 @@ int run_render(const RenderArgs& a) {
   refuse_beyond_memory(renderer->estimate_bytes(size_of(mesh.view()), size), a.max_memory_gib,
                        "rendering " + size_text + " of " + std::to_string(mesh.n_cells()) + " cells", a.scene);
 
+  std::string png = a.png;
+  if (png.empty() && a.npy.empty()) png = std::filesystem::path(a.scene).stem().string() + ".png";
+  for (const std::string& out : {png, a.npy}) {
+    if (out.empty()) continue;
+    const auto dir = std::filesystem::path(out).parent_path();
+    if (!dir.empty()) std::filesystem::create_directories(dir);
+  }
+
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   tbb::task_arena arena(threads);
   Image first;
@@ -93,6 +143,26 @@ int run_render(const RenderArgs& a) {
     const auto t_prep = std::chrono::steady_clock::now();
     renderer->prepare(volume);
     prepare_seconds = seconds_since(t_prep);
+    if (!levels.empty()) {  // each level written as soon as it is done, for the interactive user
+      render_progressive(volume, field, prepared.tf, settings, prepared.camera, size, levels,
+                         [&](std::size_t, int slices, const Image& img, const RenderReport& r) {
+                           if (!png.empty()) write_png(img, scene.background, level_path(png, slices));
+                           if (!a.npy.empty()) write_npy(img, level_path(a.npy, slices));
+                           for (const std::string& out : {png, a.npy})
+                             if (!out.empty())
+                               std::printf("wrote %s (%dx%d, slicing, %d slices, %.3f s)\n",
+                                           level_path(out, slices).c_str(), scene.width, scene.height, slices,
+                                           r.seconds);
+                           std::fflush(stdout);
+                           if (a.stats) {
+                             nlohmann::json j = {{"method", a.method}, {"level_slices", slices}};
+                             j.update(report_json(r));
+                             std::fprintf(stderr, "%s\n", j.dump().c_str());
+                           }
+                           report = r;
+                         });
+      return;
+    }
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
       ProgressBar bar(a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering");
@@ -105,14 +175,8 @@ int run_render(const RenderArgs& a) {
     }
   });
   for (const auto& w : report.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());  // the last frame's
+  if (!levels.empty()) return kExitOk;
 
-  std::string png = a.png;
-  if (png.empty() && a.npy.empty()) png = std::filesystem::path(a.scene).stem().string() + ".png";
-  for (const std::string& out : {png, a.npy}) {
-    if (out.empty()) continue;
-    const auto dir = std::filesystem::path(out).parent_path();
-    if (!dir.empty()) std::filesystem::create_directories(dir);
-  }
   if (!png.empty()) write_png(first, scene.background, png);
   if (!a.npy.empty()) write_npy(first, a.npy);
   const double frame_seconds = median(frame_times);
@@ -156,7 +220,22 @@ Action add_render(CLI::App& app) {
       "method",
       cmd->add_option("--method", args->method,
                       "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
-                      "pt-table, pt-linear (fastest), or exact (the reference ray integrator); see docs/methods.md"));
+                      "pt-table, pt-linear (fastest), exact (the reference ray integrator), or slicing (cells cut on "
+                      "parallel planes, no sort); see docs/methods.md"));
+  settings.emplace_back("slices", cmd->add_option("--slices", args->slices,
+                                                  "slicing: number of planes (default 256; at most 16 per pixel of "
+                                                  "the image's longer side)"));
+  settings.emplace_back("slice-axis", cmd->add_option("--slice-axis", args->slice_axis,
+                                                      "slicing: the plane family, " + slice_axis_names() +
+                                                          " (auto: the axis-aligned stack closest to the view)"));
+  settings.emplace_back("slice-integral", cmd->add_option("--slice-integral", args->slice_integral,
+                                                          "slicing: " + slice_integral_names() +
+                                                              " (default: the segment between two planes looked up "
+                                                              "from the scalar at both ends)"));
+  settings.emplace_back("progressive",
+                        cmd->add_option("--progressive", args->progressive,
+                                        "slicing: render at each of these plane counts in turn, e.g. "
+                                        "16,64,256, writing OUT-16.png, OUT-64.png, ... as each completes"));
   settings.emplace_back("sort", cmd->add_option("--sort", args->sort,
                                                 "Visibility sort for the projection methods: " + sort_method_names()));
   settings.emplace_back(
@@ -175,7 +254,8 @@ Action add_render(CLI::App& app) {
           "Which cells other than tetrahedra the projection methods split into tetrahedra: problem (default; "
           "per view, those with a folded non-planar face), all, or none (every cell whole)"));
   settings.emplace_back("table-size", cmd->add_option("--table-size", args->table_size,
-                                                      "pt-table: nodes per axis of the opacity table (default 256)")
+                                                      "pt-table: nodes per axis of the opacity table; slicing: "
+                                                      "of the preintegrated table (default 256)")
                                           ->check(CLI::Range(2, 8192)));
   settings.emplace_back(
       "interpolation",

@@ -90,6 +90,15 @@ void PixelRays::project(const glm::dvec3& p, double& x, double& y, double& z) co
   y = (1.0 - v / half_h_) * 0.5 * height_;
 }
 
+void PixelRays::project_homogeneous(const glm::dvec3& p, double& hx, double& hy, double& z) const {
+  const glm::dvec3 d = p - camera_.eye;
+  const double u = glm::dot(d, right_), v = glm::dot(d, up_);
+  z = glm::dot(d, forward_);
+  const double w = perspective() ? z : 1.0;  // x = (u / (z half_w) + 1) W / 2, times z
+  hx = (u / half_w_ + w) * 0.5 * width_;
+  hy = (w - v / half_h_) * 0.5 * height_;
+}
+
 bool PixelRays::project(const glm::dvec3& p, double& x, double& y) const {
   double z;
   project(p, x, y, z);

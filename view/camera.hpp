@@ -54,6 +54,10 @@ class PixelRays {
   // Image position and view depth z of p (distance along the view direction from the eye, or from
   // the eye's plane in orthographic projection); in perspective x, y mean something only for z > 0.
   void project(const glm::dvec3& p, double& x, double& y, double& z) const;
+  // The same with x and y multiplied by z in perspective (hx = x z, hy = y z; in orthographic
+  // hx = x, hy = y): each is affine in p, so it interpolates along straight lines and clips against
+  // a near plane, even for points behind the eye; divide by z to get x, y.
+  void project_homogeneous(const glm::dvec3& p, double& hx, double& hy, double& z) const;
   // Ray length per unit of view depth through image position (x, y): 1 / cos of the ray's angle
   // with the view direction (1 in orthographic projection).
   double length_per_depth(double x, double y) const {

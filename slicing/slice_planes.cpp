@@ -1,0 +1,67 @@
+#include "slicing/slice_planes.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include <glm/geometric.hpp>
+
+namespace cellproj {
+
+SlicePlanes::SlicePlanes(const RecentredPoints& points, const PixelRays& rays, SliceAxis axis, int slices)
+    : axis_(axis), count_(slices) {
+  const glm::dvec3& forward = rays.forward();
+  if (axis_ == SliceAxis::automatic) {
+    const glm::dvec3 a = glm::abs(forward);
+    axis_ = a.x >= a.y && a.x >= a.z ? SliceAxis::x : a.y >= a.z ? SliceAxis::y : SliceAxis::z;
+  }
+  glm::dvec3 along(0.0);  // the direction whose coordinate the lattice is laid on
+  if (axis_ == SliceAxis::view) {
+    along = -forward;
+  } else {
+    along[static_cast<int>(axis_) - static_cast<int>(SliceAxis::x)] = 1.0;
+    flipped_ = glm::dot(along, forward) > 0.0;  // then -along points towards the eye
+  }
+  normal_ = flipped_ ? -along : along;
+  const std::size_t n = points.xyz.size() / 3;
+  double lo = 0.0, hi = 0.0;
+  for (std::size_t p = 0; p < n; ++p) {
+    const double h = glm::dot(points(static_cast<std::int64_t>(p)), along);
+    lo = p == 0 ? h : std::min(lo, h), hi = p == 0 ? h : std::max(hi, h);
+  }
+  lo_ = lo, extent_ = hi - lo;
+  if (!(extent_ > 0.0)) extent_ = std::max(1.0, std::abs(lo)) * 1e-300;  // a flat mesh: no plane crosses it
+  height_.resize(static_cast<std::size_t>(count_) + 2);
+  for (int j = 0; j <= count_ + 1; ++j) height_[static_cast<std::size_t>(j)] = height_of(j);
+  // Planes at or behind the eye are never drawn (perspective; their polygons would be clipped away).
+  visible_end_ = count_ + 1;
+  if (rays.perspective()) {
+    const double eye = glm::dot(rays.camera().eye, normal_);
+    visible_end_ = first_above(std::nextafter(eye, -INFINITY));
+  }
+}
+
+double SlicePlanes::lattice(int k) const {
+  const int g = std::gcd(k, count_);
+  return lo_ + extent_ * (k / g) / (count_ / g);
+}
+
+double SlicePlanes::height_of(int j) const { return flipped_ ? -lattice(count_ - j) : lattice(j); }
+
+int SlicePlanes::first_above(double h) const {
+  // Heights rise by about spacing() per plane from height(0); the estimate is corrected by the
+  // exact comparisons, so the answer is exact however it rounds.
+  const double h0 = flipped_ ? -(lo_ + extent_) : lo_;
+  const double estimate = std::floor((h - h0) / spacing()) + 1;
+  int j = !(estimate > 1) ? 1 : estimate > count_ ? count_ + 1 : static_cast<int>(estimate);
+  while (j <= count_ && !(height(j) > h)) ++j;
+  while (j > 1 && height(j - 1) > h) --j;
+  return j;
+}
+
+void SlicePlanes::crossing(double lo, double hi, int& first, int& last) const {
+  first = first_above(lo);
+  last = first_above(hi) - 1;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,67 @@
+#pragma once
+// Plane slicing end to end (MWSC section 5; Yagel et al. 1996): cells are cut into convex polygons
+// on a family of parallel planes, the polygons of a plane are scan converted into that slice's
+// scalar image, and the slices are composited back to front along the normal. No cell sort: the
+// planes are the order. The mesh's decomposition is prepared once; the field comes with each frame.
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "grid/geometry.hpp"
+#include "grid/mesh.hpp"
+#include "optics/transfer_function.hpp"
+#include "slicing/slice_cells.hpp"
+#include "slicing/slicing_options.hpp"
+#include "view/camera.hpp"
+#include "view/image.hpp"
+
+namespace cellproj {
+
+struct SlicingStats {
+  SliceAxis axis = SliceAxis::z;           // the family that was used
+  double spacing = 0.0;                    // between neighbouring planes, world units
+  std::int64_t slices = 0;                 // planes in front of the eye, cut and composited
+  std::int64_t planes_behind_eye = 0;      // perspective: planes at or behind the eye, not drawn
+  std::int64_t planes_reused = 0;          // progressive: planes whose polygons the previous level made
+  std::int64_t polygons = 0;               // section polygons scan converted
+  std::int64_t clipped_polygons = 0;       // perspective: polygons clipped at the near plane
+  std::int64_t fragments = 0;              // pixel samples the slices wrote
+  std::int64_t overlapping_fragments = 0;  // samples a slice wrote twice (overlapping cells)
+  std::int64_t cells_between_planes = 0;   // slice cells no plane crosses: thinner than the spacing, they add nothing
+  std::int64_t table_layers = 0;           // preintegrated: segment lengths tabulated (1 orthographic)
+  std::vector<std::pair<std::string, double>> phase_seconds;  // table, cut, scan convert, composite
+  double seconds = 0.0;
+};
+
+// One level of progressive refinement, as soon as it is composited: its index in the list, its
+// plane count, the image and its stats.
+using SliceLevelDone = std::function<void(std::size_t level, int slices, const Image&, const SlicingStats&)>;
+
+class SliceRenderer {
+ public:
+  // Prepared once per mesh (its arrays must outlive the renderer): the points recentred, each cell
+  // to be cut whole or as its canonical tetrahedra as `mode` says (slicing/slice_cells).
+  explicit SliceRenderer(const MeshView& mesh, Tetrahedralize mode = Tetrahedralize::problem);
+
+  // One frame of the point field `scalar` (n_points values). Threads: those of the calling task
+  // arena; the same image from 1 and N threads, bit for bit.
+  Image render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
+               const SlicingOptions& options, SlicingStats* stats = nullptr) const;
+
+  // Progressive refinement: the frame at each plane count of `levels` (increasing), each handed to
+  // `done` when it completes. A level reuses the polygons of the previous level's planes that
+  // coincide with its own (every plane when the counts divide), within a memory budget.
+  void render_levels(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
+                     const SlicingOptions& options, const std::vector<int>& levels, const SliceLevelDone& done) const;
+
+  const SliceCells& cells() const { return cells_; }
+
+ private:
+  MeshView mesh_;
+  RecentredPoints points_;
+  SliceCells cells_;
+};
+
+}  // namespace cellproj

@@ -1,0 +1,35 @@
+#pragma once
+// The settings of plane slicing (MWSC section 5; Yagel et al. 1996): how many planes, which family,
+// how the light between two planes is integrated. Light enough for render/settings.hpp to hold.
+namespace cellproj {
+
+enum class SliceAxis {
+  automatic,  // the axis-aligned stack (x, y or z) closest to the view direction, as the paper
+  view,       // planes perpendicular to the view direction, made per view
+  x,
+  y,
+  z,
+};
+
+enum class SliceIntegral {
+  sampled,        // each plane's scalar stands for the ray between it and the next: C(s), 1 - exp(-kappa(s) l)
+  preintegrated,  // the ray between two planes integrated from the scalar at both ends (a lookup table)
+};
+
+struct SlicingOptions {
+  int slices = 256;  // the spacing is the mesh's extent along the planes' normal over `slices`
+  SliceAxis axis = SliceAxis::automatic;
+  SliceIntegral integral = SliceIntegral::preintegrated;
+  int table_size = 256;  // preintegrated: nodes per scalar axis of the table
+};
+
+// Throws InputError for fewer than 1 slice or a table size outside [2, 4096], naming the option.
+void check_options(const SlicingOptions& options);
+
+// The most slices a width x height image is given (docs/methods.md says why): 16 per pixel of its
+// longer side.
+int max_slices(int width, int height);
+// Throws InputError when `slices` is more than max_slices(width, height), saying so.
+void check_slices(int slices, int width, int height);
+
+}  // namespace cellproj
