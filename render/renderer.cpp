@@ -170,12 +170,18 @@ void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
                                     {"fragments", st.fragments},
                                     {"overlapping_fragments", st.overlapping_fragments},
                                     {"cells_between_planes", st.cells_between_planes},
+                                    {"rays_along_planes", st.rays_along_planes},
                                     {"table_layers", st.table_layers}})
     r.add(name, value);
   if (st.cells_between_planes > 0)
     r.warnings.push_back(std::to_string(st.cells_between_planes) +
                          " cells (or tetrahedra of split cells) lie between two planes and add nothing to the picture; "
                          "more --slices catch them");
+  if (st.rays_along_planes > 0)
+    r.warnings.push_back(std::to_string(st.rays_along_planes) +
+                         " pixels' rays run along the slice planes or away from them (an axis-aligned stack in "
+                         "perspective, the camera near or inside the mesh): their slices are composited out of order; "
+                         "use --slice-axis view or auto");
   if (st.overlapping_fragments > 0)
     r.warnings.push_back(std::to_string(st.overlapping_fragments) +
                          " pixels were covered twice by one slice: cells overlap (`cellproj info --overlaps`), and "

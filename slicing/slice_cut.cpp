@@ -22,6 +22,7 @@ struct EdgeCrossings {
   bool ready = false;
   int first = 0;
   double t_first = 0.0, dt = 0.0;
+  double h_lo = 0.0, h_hi = 0.0;  // the ends' heights
   std::int64_t lo = 0, hi = 0;
 };
 
@@ -72,14 +73,17 @@ void cut_cell(const SliceCells& cells, std::int64_t c, const FramePoints& f, con
           const CellEdge& ce = table.edges[cut.edge[k]];
           e.lo = std::min(id[ce.a], id[ce.b]), e.hi = std::max(id[ce.a], id[ce.b]);
           const double ha = f.height[static_cast<std::size_t>(e.lo)], hb = f.height[static_cast<std::size_t>(e.hi)];
+          e.h_lo = ha, e.h_hi = hb;
           e.first = planes.first_above(std::min(ha, hb));
           e.t_first = (planes.height(e.first) - ha) / (hb - ha);
           e.dt = planes.spacing() / (hb - ha);
           e.ready = true;
         }
-        const double t = e.t_first + (j - e.first) * e.dt;
+        // A plane through an end gives that end itself (every edge meeting there agrees).
+        const double t = d == e.h_lo ? 0.0 : d == e.h_hi ? 1.0 : e.t_first + (j - e.first) * e.dt;
         const glm::dvec4& a = f.screen[static_cast<std::size_t>(e.lo)];
-        poly[i] = a + t * (f.screen[static_cast<std::size_t>(e.hi)] - a);
+        const glm::dvec4& b = f.screen[static_cast<std::size_t>(e.hi)];
+        poly[i] = (1.0 - t) * a + t * b;  // exact at both ends
         near = near || (f.perspective && !(poly[i].z >= f.near));
       }
       if (!near) {

@@ -5,16 +5,38 @@
 #include <numeric>
 
 #include <glm/geometric.hpp>
+#include <glm/vector_relational.hpp>
 
 namespace cellproj {
+
+namespace {
+// Below this cosine between a pixel's ray and an axis-aligned stack's normal, the ray crosses its
+// planes more than 3.3 spacings apart, and nearly along them: the view family serves better.
+constexpr double kMinCosine = 0.3;
+}  // namespace
+
+SliceAxis automatic_axis(const RecentredPoints& points, const PixelRays& rays) {
+  const glm::dvec3 a = glm::abs(rays.forward());
+  const int k = a.x >= a.y && a.x >= a.z ? 0 : a.y >= a.z ? 1 : 2;
+  const SliceAxis axis = static_cast<SliceAxis>(static_cast<int>(SliceAxis::x) + k);
+  if (!rays.perspective()) return axis;
+  // In perspective the rays fan out: an eye inside the mesh's box sees the stack from both sides,
+  // and the image's corner rays may run nearly along its planes.
+  glm::dvec3 lo(INFINITY), hi(-INFINITY);
+  for (std::size_t p = 0; p < points.xyz.size() / 3; ++p)
+    lo = glm::min(lo, points(static_cast<std::int64_t>(p))), hi = glm::max(hi, points(static_cast<std::int64_t>(p)));
+  const glm::dvec3& eye = rays.camera().eye;
+  if (glm::all(glm::greaterThanEqual(eye, lo)) && glm::all(glm::lessThanEqual(eye, hi))) return SliceAxis::view;
+  for (double x : {0.0, double(rays.width())})
+    for (double y : {0.0, double(rays.height())})
+      if (std::abs(rays.ray(x, y).dir[k]) < kMinCosine) return SliceAxis::view;
+  return axis;
+}
 
 SlicePlanes::SlicePlanes(const RecentredPoints& points, const PixelRays& rays, SliceAxis axis, int slices)
     : axis_(axis), count_(slices) {
   const glm::dvec3& forward = rays.forward();
-  if (axis_ == SliceAxis::automatic) {
-    const glm::dvec3 a = glm::abs(forward);
-    axis_ = a.x >= a.y && a.x >= a.z ? SliceAxis::x : a.y >= a.z ? SliceAxis::y : SliceAxis::z;
-  }
+  if (axis_ == SliceAxis::automatic) axis_ = automatic_axis(points, rays);
   glm::dvec3 along(0.0);  // the direction whose coordinate the lattice is laid on
   if (axis_ == SliceAxis::view) {
     along = -forward;

@@ -13,9 +13,14 @@
 
 namespace cellproj {
 
+// The family `automatic` picks: the axis-aligned stack closest to the view direction (MWSC section
+// 5), except in perspective when the eye is inside the points' bounding box or a corner ray of the
+// image runs within 73 degrees of that stack's planes, where the view family is used.
+SliceAxis automatic_axis(const RecentredPoints& points, const PixelRays& rays);
+
 class SlicePlanes {
  public:
-  // The planes of `axis` (automatic: the one of x, y, z closest to the view direction) for the
+  // The planes of `axis` (automatic: automatic_axis) for the
   // recentred points and the camera of `rays` (recentred too). An axis-aligned family lies on the
   // lattice lo + k extent / slices of that coordinate whatever the view, so its planes stay put
   // while the camera turns; the view family spans the mesh's depth in this view.

@@ -110,18 +110,22 @@ void constant_light(const TransferFunction& tf, double s, double length, float r
 struct PixelLengths {
   std::vector<float> length, layer;
   double lo = 0.0, hi = 0.0;
+  std::int64_t along = 0;  // rays within 0.06 degrees of the planes, or turning away from the eye's side
 };
 
 PixelLengths pixel_lengths(const PixelRays& rays, const glm::dvec3& normal, double spacing) {
   PixelLengths p;
   const int w = rays.width(), h = rays.height();
   p.length.resize(static_cast<std::size_t>(w) * h);
+  std::vector<int> along(static_cast<std::size_t>(h), 0);
   tbb::parallel_for(0, h, [&](int j) {
     for (int i = 0; i < w; ++i) {
-      const double c = std::abs(glm::dot(rays.ray(i + 0.5, j + 0.5).dir, normal));
-      p.length[static_cast<std::size_t>(j) * w + i] = static_cast<float>(spacing / std::max(c, 1e-6));
+      const double c = -glm::dot(rays.ray(i + 0.5, j + 0.5).dir, normal);  // the normal points to the eye
+      along[static_cast<std::size_t>(j)] += !(c > 1e-3);
+      p.length[static_cast<std::size_t>(j) * w + i] = static_cast<float>(spacing / std::max(std::abs(c), 1e-6));
     }
   });
+  for (int a : along) p.along += a;
   const auto [lo, hi] = std::minmax_element(p.length.begin(), p.length.end());
   p.lo = *lo, p.hi = *hi;
   return p;
@@ -241,6 +245,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
 
     auto t = std::chrono::steady_clock::now();
     PixelLengths lengths = pixel_lengths(rays, planes.normal(), planes.spacing());
+    st.rays_along_planes = lengths.along;
     std::unique_ptr<PreintegratedTable> table;
     if (options.integral == SliceIntegral::preintegrated) {
       table = std::make_unique<PreintegratedTable>(tf, s_lo, s_hi, lengths.lo, lengths.hi, options.table_size);

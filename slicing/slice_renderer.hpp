@@ -30,6 +30,8 @@ struct SlicingStats {
   std::int64_t fragments = 0;              // pixel samples the slices wrote
   std::int64_t overlapping_fragments = 0;  // samples a slice wrote twice (overlapping cells)
   std::int64_t cells_between_planes = 0;   // slice cells no plane crosses: thinner than the spacing, they add nothing
+  std::int64_t rays_along_planes = 0;      // pixels whose ray runs along the planes or away from them (axis
+                                           // stacks in perspective): their slices come in a wrong order
   std::int64_t table_layers = 0;           // preintegrated: segment lengths tabulated (1 orthographic)
   std::vector<std::pair<std::string, double>> phase_seconds;  // table, cut, scan convert, composite
   double seconds = 0.0;

@@ -4,7 +4,9 @@
 namespace cellproj {
 
 enum class SliceAxis {
-  automatic,  // the axis-aligned stack (x, y or z) closest to the view direction, as the paper
+  automatic,  // the axis-aligned stack (x, y or z) closest to the view direction, as the paper; the
+              // view family where the camera is inside the mesh's box or the image's rays are too
+              // slanted to the stack (slicing/slice_planes.hpp)
   view,       // planes perpendicular to the view direction, made per view
   x,
   y,

@@ -122,6 +122,21 @@ assert auto["gap_relations"] >= sweep["gap_relations"], (auto["gap_relations"], 
 PY
 expect 1 "unknown gap method 'pixels' \(known: auto, overlaps, abuffer\)" -- sortbench "$tmp/mixed.vtu" --gaps pixels
 expect 1 "unknown gap method 'pixels'" -- render "$tmp/ok.json" --gaps pixels
+# Slicing: its options, bad plane counts, progressive levels written as they complete.
+expect 1 "--slices must be at least 1, not 0" -- render "$tmp/ok.json" --method slicing --slices 0
+expect 1 "--slices must be at least 1, not -2" -- render "$tmp/ok.json" --method slicing --slices -2
+expect 2 "slices" -- render "$tmp/ok.json" --method slicing --slices 1.5
+expect 1 "--slices 600 is more than a 32x24 image can use: at most 512" -- render "$tmp/ok.json" --method slicing --slices 600 --size 32x24
+expect 1 "unknown --slice-axis 'w' \(known: auto, view, x, y, z\)" -- render "$tmp/ok.json" --method slicing --slice-axis w
+expect 1 "unknown --slice-integral 'midpoint'" -- render "$tmp/ok.json" --method slicing --slice-integral midpoint
+expect 1 "--slices does not apply to --method pt-table" -- render "$tmp/ok.json" --method pt-table --slices 8
+expect 1 "--sort does not apply to --method slicing" -- render "$tmp/ok.json" --method slicing --sort mpvo
+expect 1 "--progressive: 'x' is not a number of slices" -- render "$tmp/ok.json" --method slicing --progressive 8,x
+expect 1 "the levels must increase \(32 then 8\)" -- render "$tmp/ok.json" --method slicing --progressive 32,8 --size 32x24
+expect 1 "--progressive does not apply to --method exact" -- render "$tmp/ok.json" --method exact --progressive 8,32
+expect 0 "wrote .*prog-32.png" -- render "$tmp/ok.json" --method slicing --progressive 8,32 --size 32x24 -o "$tmp/prog.png" --stats
+[ -s "$tmp/prog-8.png" ] && [ -s "$tmp/prog-32.png" ] && grep -q '"planes_reused":8' "$tmp/err" || { echo "FAIL: --progressive files or reuse"; failed=$((failed+1)); }
+expect 0 '"slice_axis":"view".*"slices":16' -- render "$tmp/ok.json" --method slicing --slices 16 --slice-axis view --slice-integral sampled --size 32x24 -o "$tmp/sl.png" --stats
 
 # info --json: the documented keys with this mesh's values.
 "$exe" info "$tmp/box.vtu" --json > "$tmp/info.json" || { echo "FAIL: info --json"; failed=$((failed+1)); }
