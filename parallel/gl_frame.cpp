@@ -7,27 +7,23 @@
 #include "base/error.hpp"
 #include "composite/ordered_pipeline.hpp"
 #ifdef CELLPROJ_HAVE_OPENGL
-#include "projection/gl_compositor.hpp"
+#include "composite/gl_compositor.hpp"
 #endif
 
 namespace cellproj {
 
 #ifndef CELLPROJ_HAVE_OPENGL
-bool opengl_built() { return false; }
-
 Image draw_with_opengl(const CellFragments&, const MeshView&, const std::vector<std::int64_t>&, const OpacityTable*,
                        int, int, const ProjectionOptions&, ProjectionStats&) {
   throw ResourceError("this cellproj was built without the OpenGL back ends (OSMesa was not found)");
 }
 #else
-bool opengl_built() { return true; }
-
 Image draw_with_opengl(const CellFragments& project, const MeshView& cells, const std::vector<std::int64_t>& order,
                        const OpacityTable* table, int width, int height, const ProjectionOptions& options,
                        ProjectionStats& st) {
-  const GLTarget target = options.backend == ProjectionBackend::opengl        ? GLTarget::float32
-                          : options.backend == ProjectionBackend::opengl_8bit ? GLTarget::rgba8
-                                                                              : GLTarget::rgba8_dithered;
+  const GLTarget target = options.backend == Backend::opengl        ? GLTarget::float32
+                          : options.backend == Backend::opengl_8bit ? GLTarget::rgba8
+                                                                    : GLTarget::rgba8_dithered;
   GLCompositor gl(width, height, target);  // its calls stay on this thread; workers only make triangles
   st.gl_renderer = gl.renderer();
   gl.begin(table);

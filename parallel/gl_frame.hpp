@@ -1,6 +1,6 @@
 #pragma once
 // The OpenGL back ends' frame: triangles made by parallel workers, drawn in visibility order by the
-// one thread that owns the context (projection/gl_compositor).
+// one thread that owns the context (composite/gl_compositor).
 #include <cstdint>
 #include <vector>
 
@@ -8,9 +8,6 @@
 #include "parallel/projection_renderer.hpp"
 
 namespace cellproj {
-
-// Whether this build has the OpenGL back ends (OSMesa was found when it was configured).
-bool opengl_built();
 
 // Counts into st.counters and names the GL renderer in st.gl_renderer.
 Image draw_with_opengl(const CellFragments& project, const MeshView& cells, const std::vector<std::int64_t>& order,

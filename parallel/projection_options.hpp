@@ -8,7 +8,7 @@ namespace cellproj {
 
 struct ProjectionOptions {
   ProjectionMethod method = ProjectionMethod::pt_breakpoints;
-  ProjectionBackend backend = ProjectionBackend::software;  // the OpenGL ones draw the Gouraud methods
+  Backend backend = Backend::software;  // the OpenGL ones draw the Gouraud methods
   SortMethod sort = SortMethod::automatic;
   GapMethod gaps = GapMethod::automatic;  // how mpvo-abuffer finds the relations across gaps
   int table_size = 256;                   // pt-table: nodes per axis of the opacity table

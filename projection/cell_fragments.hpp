@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "composite/fragment.hpp"
+#include "composite/gl_corner.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "optics/transfer_function.hpp"
 #include "projection/method.hpp"
@@ -46,14 +47,6 @@ struct GouraudCorner {
   double a = 0, l = 0;
   glm::dvec3 c{0.0};
 };
-
-// A corner of a triangle for the OpenGL back end: pixel position, colour and opacity (pt-linear:
-// Gouraud; pt-table: opacity 1, to be modulated by the 2D alpha texture at u, v in [0, 1]), and
-// where it reads the dither noise (screen position in noise tiles, shifted per cell).
-struct GLCorner {
-  float x, y, u, v, r, g, b, a, nu, nv;
-};
-constexpr int kDitherTile = 64;  // pixels per side of the dither noise tile
 
 // A cell's image as triangles with their thick-vertex values, and (pt-linear, pt-table) their
 // Gouraud corners: one per worker, so the hot loop allocates nothing once warm.

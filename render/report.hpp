@@ -16,7 +16,7 @@ namespace cellproj {
 
 // A counter, a time, a text, or a choice the renderer made (printed by its name, scene/names.hpp);
 // monostate where a value does not apply to this frame (JSON null).
-using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, ProjectionBackend, SortMethod,
+using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, Backend, SortMethod,
                                  GapMethod, Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral>;
 
 struct RenderReport {

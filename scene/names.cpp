@@ -18,11 +18,11 @@ constexpr std::array<std::pair<ProjectionMethod, const char*>, sizeof...(I)> met
   return {{{kProjectionMethods[I].method, kProjectionMethods[I].name}...}};
 }
 constexpr auto kMethods = method_table(std::make_index_sequence<std::size(kProjectionMethods)>());
-constexpr std::pair<ProjectionBackend, const char*> kBackends[] = {
-    {ProjectionBackend::software, "software"},
-    {ProjectionBackend::opengl, "opengl"},
-    {ProjectionBackend::opengl_8bit, "opengl-8bit"},
-    {ProjectionBackend::opengl_8bit_dithered, "opengl-8bit-dither"},
+constexpr std::pair<Backend, const char*> kBackends[] = {
+    {Backend::software, "software"},
+    {Backend::opengl, "opengl"},
+    {Backend::opengl_8bit, "opengl-8bit"},
+    {Backend::opengl_8bit_dithered, "opengl-8bit-dither"},
 };
 constexpr std::pair<SortMethod, const char*> kSorts[] = {{SortMethod::automatic, "auto"},
                                                          {SortMethod::centroid, "centroid"},
@@ -48,8 +48,8 @@ constexpr std::pair<SliceIntegral, const char*> kSliceIntegrals[] = {{SliceInteg
 ProjectionMethod parse_projection_method(const std::string& n) { return from_name(kMethods, n, "projection method"); }
 std::string projection_method_names() { return names(kMethods); }
 
-ProjectionBackend parse_backend(const std::string& n) { return from_name(kBackends, n, "back end"); }
-const char* name_of(ProjectionBackend backend) { return name_in(kBackends, backend); }
+Backend parse_backend(const std::string& n) { return from_name(kBackends, n, "back end"); }
+const char* name_of(Backend backend) { return name_in(kBackends, backend); }
 std::string backend_names() { return names(kBackends); }
 
 SortMethod parse_sort_method(const std::string& n) { return from_name(kSorts, n, "sort"); }

@@ -14,8 +14,8 @@ namespace cellproj {
 ProjectionMethod parse_projection_method(const std::string& name);
 std::string projection_method_names();  // name_of(ProjectionMethod) is the method's trait
 
-ProjectionBackend parse_backend(const std::string& name);
-const char* name_of(ProjectionBackend backend);
+Backend parse_backend(const std::string& name);
+const char* name_of(Backend backend);
 std::string backend_names();
 
 SortMethod parse_sort_method(const std::string& name);

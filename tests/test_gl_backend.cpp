@@ -13,7 +13,7 @@ using namespace cellproj;
 namespace {
 
 Image render(const Mesh& m, const TransferFunction& tf, const Camera& c, int size, ProjectionMethod method,
-             ProjectionBackend backend) {
+             Backend backend) {
   ProjectionOptions o;
   o.method = method;
   o.backend = backend;
@@ -41,8 +41,8 @@ TEST(GLBackend, FloatTargetMatchesSoftware) {
     c.up = {0, 0, 1};
     c.fov_y = 40;
     for (ProjectionMethod method : {ProjectionMethod::pt_table, ProjectionMethod::pt_linear}) {
-      const ImageDifference d = compare(render(m, tf, c, 96, method, ProjectionBackend::opengl),
-                                        render(m, tf, c, 96, method, ProjectionBackend::software));
+      const ImageDifference d = compare(render(m, tf, c, 96, method, Backend::opengl),
+                                        render(m, tf, c, 96, method, Backend::software));
       // Mesa snaps vertices to 1/256 pixel and interpolates in float: edge pixels differ slightly.
       EXPECT_LT(d.max_abs, 5e-3) << name_of(method) << " mesh " << kind;
       EXPECT_LT(d.rmse, 1e-4) << name_of(method) << " mesh " << kind;
@@ -59,9 +59,9 @@ TEST(GLBackend, DitheringKeepsFaintLayers) {
   Camera c;
   c.eye = {0, 0, 5};
   c.height = 1.5;  // the slab fills the image
-  const Image f = render(m, tf, c, 64, ProjectionMethod::pt_table, ProjectionBackend::opengl);
-  const Image plain = render(m, tf, c, 64, ProjectionMethod::pt_table, ProjectionBackend::opengl_8bit);
-  const Image dithered = render(m, tf, c, 64, ProjectionMethod::pt_table, ProjectionBackend::opengl_8bit_dithered);
+  const Image f = render(m, tf, c, 64, ProjectionMethod::pt_table, Backend::opengl);
+  const Image plain = render(m, tf, c, 64, ProjectionMethod::pt_table, Backend::opengl_8bit);
+  const Image dithered = render(m, tf, c, 64, ProjectionMethod::pt_table, Backend::opengl_8bit_dithered);
   const double want = -std::expm1(-0.025 * 2.0);
   EXPECT_NEAR(mean_alpha(f), want, 1e-4);
   EXPECT_LT(mean_alpha(plain), 0.25 * want);  // lost to rounding

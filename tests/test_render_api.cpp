@@ -163,12 +163,12 @@ TEST(RenderApi, InvertedCellsAreReorientedInACopy) {
 
 TEST(RenderApi, SettingsThatDoNotGoTogetherAreRefusedBeforeAFrame) {
   RenderSettings s;
-  s.projection.backend = ProjectionBackend::opengl;
+  s.projection.backend = Backend::opengl;
   s.projection.method = ProjectionMethod::pt_breakpoints;
   // A build without OSMesa refuses the OpenGL back ends themselves.
   EXPECT_NE(error_of([&] { make_renderer(s); }).find(opengl_built() ? "not pt-breakpoints" : "were not built"),
             std::string::npos);
-  s.projection.backend = ProjectionBackend::software;
+  s.projection.backend = Backend::software;
   s.projection.method = ProjectionMethod::pt_table;
   s.projection.table_size = 1;
   EXPECT_NE(error_of([&] { make_renderer(s); }).find("opacity table size 1"), std::string::npos);

@@ -1,6 +1,6 @@
 #pragma once
-// The paper's hardware path (MWSC section 2) through OpenGL in software (OSMesa, Mesa's llvmpipe):
-// the projected triangles drawn in visibility order with Gouraud colour, opacity either
+// The paper's hardware path (MWSC sections 2 and 5) through OpenGL in software (OSMesa, Mesa's
+// llvmpipe), for cell projection and slicing: triangles drawn in visibility order with Gouraud colour, opacity either
 // interpolated (pt-linear) or read from the 2D alpha texture at (kappa_avg, l) (pt-table), and
 // blended back to front. Targets: float32, or 8-bit RGBA as the 1990s hardware had, optionally with
 // alpha dithering (Williams, Frank and LaMar) so that many faint layers do not round away.
@@ -8,8 +8,8 @@
 #include <string>
 #include <vector>
 
-#include "projection/cell_fragments.hpp"
-#include "projection/method.hpp"
+#include "composite/gl_corner.hpp"
+#include "optics/opacity_table.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {

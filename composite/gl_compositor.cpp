@@ -1,4 +1,4 @@
-#include "projection/gl_compositor.hpp"
+#include "composite/gl_compositor.hpp"
 
 #include <random>
 
