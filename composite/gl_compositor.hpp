@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "composite/backend.hpp"
 #include "composite/gl_corner.hpp"
 #include "optics/opacity_table.hpp"
 #include "view/image.hpp"
@@ -19,6 +20,13 @@ enum class GLTarget {
   rgba8,           // 8 bits per channel: faint layers are lost to rounding
   rgba8_dithered,  // 8 bits, each fragment's value offset by a fixed pseudo-random +-1/2 step first
 };
+
+// The framebuffer of an OpenGL back end.
+constexpr GLTarget gl_target(Backend backend) {
+  return backend == Backend::opengl        ? GLTarget::float32
+         : backend == Backend::opengl_8bit ? GLTarget::rgba8
+                                           : GLTarget::rgba8_dithered;
+}
 
 // One OpenGL context (OSMesa) with its framebuffer; every call must come from the same thread.
 class GLCompositor {

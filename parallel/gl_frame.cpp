@@ -21,9 +21,7 @@ Image draw_with_opengl(const CellFragments&, const MeshView&, const std::vector<
 Image draw_with_opengl(const CellFragments& project, const MeshView& cells, const std::vector<std::int64_t>& order,
                        const OpacityTable* table, int width, int height, const ProjectionOptions& options,
                        ProjectionStats& st) {
-  const GLTarget target = options.backend == Backend::opengl        ? GLTarget::float32
-                          : options.backend == Backend::opengl_8bit ? GLTarget::rgba8
-                                                                    : GLTarget::rgba8_dithered;
+  const GLTarget target = gl_target(options.backend);
   GLCompositor gl(width, height, target);  // its calls stay on this thread; workers only make triangles
   st.gl_renderer = gl.renderer();
   gl.begin(table);

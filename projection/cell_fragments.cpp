@@ -236,10 +236,7 @@ void CellFragments::triangles(const std::int64_t* ids, CellType type, std::int64
   const bool table = method_.opacity_table;
   // Texel centres: node i of n sits at (i + 0.5) / n, so GL_LINEAR reads the table as OpacityTable does.
   const double n = table ? table_->size() : 1.0;
-  // A whole-pixel shift of the noise tile per cell (a 64-bit mix of its id).
-  std::uint64_t h = static_cast<std::uint64_t>(cell) * 0x9E3779B97F4A7C15ull;
-  h ^= h >> 29;
-  const float shift_u = static_cast<float>(h % kDitherTile), shift_v = static_cast<float>((h >> 16) % kDitherTile);
+  const DitherShift shift(static_cast<std::uint64_t>(cell));
   for (std::size_t t = 0; t < p.tri.size(); ++t)
     for (int k = 0; k < 3; ++k) {
       const double x = p.tri[t].v[k].x, y = p.tri[t].v[k].y;
@@ -248,8 +245,8 @@ void CellFragments::triangles(const std::int64_t* ids, CellType type, std::int64
       const double w = table ? (table_->length_index(g.l) + 0.5) / n : 0.0;
       out.push_back({static_cast<float>(x), static_cast<float>(y), static_cast<float>(u), static_cast<float>(w),
                      static_cast<float>(g.c.r), static_cast<float>(g.c.g), static_cast<float>(g.c.b),
-                     table ? 1.0f : static_cast<float>(g.a), (static_cast<float>(x) + shift_u) / kDitherTile,
-                     (static_cast<float>(y) + shift_v) / kDitherTile});
+                     table ? 1.0f : static_cast<float>(g.a), (static_cast<float>(x) + shift.u) / kDitherTile,
+                     (static_cast<float>(y) + shift.v) / kDitherTile});
     }
 }
 

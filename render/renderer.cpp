@@ -160,6 +160,7 @@ void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
   r.seconds = st.seconds;
   r.phase_seconds = st.phase_seconds;
   r.add("slice_axis", st.axis);
+  r.add("backend", o.backend);
   r.add("slice_integral", o.integral);
   r.add("spacing", st.spacing);
   for (const auto& [name, value] : {std::pair<const char*, std::int64_t>{"slices", st.slices},
@@ -173,6 +174,7 @@ void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
                                     {"rays_along_planes", st.rays_along_planes},
                                     {"table_layers", st.table_layers}})
     r.add(name, value);
+  if (!st.gl_renderer.empty()) r.add("gl_renderer", st.gl_renderer);
   if (st.cells_between_planes > 0)
     r.warnings.push_back(std::to_string(st.cells_between_planes) +
                          " cells (or tetrahedra of split cells) lie between two planes and add nothing to the picture; "
@@ -195,7 +197,8 @@ class SlicingMode final : public Renderer {
   }
   std::string name() const override { return "slicing"; }
   std::vector<std::string> settings_used() const override {
-    return {"method", "slices", "slice-axis", "slice-integral", "table-size", "progressive", "tetrahedralize"};
+    return {"method",         "backend",    "slices",      "slice-axis",
+            "slice-integral", "table-size", "progressive", "tetrahedralize"};
   }
   void prepare(const Volume& volume) const override { volume.slicing(mode_); }
 

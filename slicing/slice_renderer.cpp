@@ -15,6 +15,9 @@
 #include "slicing/preintegration.hpp"
 #include "slicing/slice_cut.hpp"
 #include "view/raster.hpp"
+#ifdef CELLPROJ_HAVE_OPENGL
+#include "composite/gl_compositor.hpp"
+#endif
 
 namespace cellproj {
 namespace {
@@ -179,6 +182,29 @@ struct Compositor {
   }
 };
 
+#ifdef CELLPROJ_HAVE_OPENGL
+// A slice's polygons as Gouraud triangles for OpenGL (the paper's hardware slicing): each corner
+// with its colour and the opacity of one spacing along its own ray, C(s), 1 - exp(-kappa(s) l).
+void gl_corners(const PlanePolygons& plane, const TransferFunction& tf, const PixelRays& rays, const glm::dvec3& normal,
+                double spacing, const DitherShift& shift, std::vector<GLCorner>& out, SlicingStats& st) {
+  out.clear();
+  plane.for_each([&](const SlicePolygons& p) {
+    st.polygons += static_cast<std::int64_t>(p.size()), st.clipped_polygons += p.clipped;
+    auto corner = [&](std::uint32_t v) {
+      const double s = p.sw[v] / p.w[v];
+      const double l = spacing / std::max(std::abs(glm::dot(rays.ray(p.x[v], p.y[v]).dir, normal)), 1e-6);
+      const glm::dvec3 c = tf.color(s);
+      const float x = static_cast<float>(p.x[v]), y = static_cast<float>(p.y[v]);
+      out.push_back({x, y, 0.0f, 0.0f, static_cast<float>(c.r), static_cast<float>(c.g), static_cast<float>(c.b),
+                     static_cast<float>(-std::expm1(-tf.extinction(s) * l)), (x + shift.u) / kDitherTile,
+                     (y + shift.v) / kDitherTile});
+    };
+    for (std::size_t q = 0; q < p.size(); ++q)
+      for (std::uint32_t v = p.start[q] + 1; v + 1 < p.start[q + 1]; ++v) corner(p.start[q]), corner(v), corner(v + 1);
+  });
+}
+#endif
+
 }  // namespace
 
 SliceRenderer::SliceRenderer(const MeshView& mesh, Tetrahedralize mode) : mesh_(mesh), points_(recentre(mesh)) {
@@ -259,6 +285,15 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     st.phase_seconds.push_back({"table", since(t)});
 
     Image image(width, height);
+#ifdef CELLPROJ_HAVE_OPENGL
+    std::unique_ptr<GLCompositor> gl;  // its calls stay on this thread
+    std::vector<GLCorner> corners;
+    if (is_opengl(options.backend)) {
+      gl = std::make_unique<GLCompositor>(width, height, gl_target(options.backend));
+      st.gl_renderer = gl->renderer();
+      gl->begin(nullptr);
+    }
+#endif
     const Compositor compositor{tf, options, lengths, table.get(), width, height};
     const int chunk = static_cast<int>(std::clamp<std::size_t>(
         kSliceImageBytes / (static_cast<std::size_t>(width) * height * sizeof(float)), 2, kMaxChunk));
@@ -293,6 +328,18 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       cut_planes(cells_, points, planes, sweep, sweep.advance(first, end), first, end, wanted, blocks);
       cut_s += since(t);
 
+#ifdef CELLPROJ_HAVE_OPENGL
+      if (gl) {  // the planes drawn in order, back to front, blended by OpenGL
+        t = std::chrono::steady_clock::now();
+        for (std::size_t k = 0; k < here; ++k) {
+          gl_corners(plane[k], tf, rays, planes.normal(), planes.spacing(),
+                     DitherShift(static_cast<std::uint64_t>(first) + k), corners, st);
+          gl->draw(corners);
+        }
+        comp_s += since(t);
+        continue;
+      }
+#endif
       t = std::chrono::steady_clock::now();
       std::vector<SlicingStats> counts(here);
       tbb::parallel_for(std::size_t{0}, here, [&](std::size_t k) {
@@ -321,6 +368,9 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
         kept_flag[static_cast<std::size_t>(first) + k] = 1;
       }
     }
+#ifdef CELLPROJ_HAVE_OPENGL
+    if (gl) image = gl->finish();
+#endif
     previous = std::move(kept), previous_kept = std::move(kept_flag);
     previous_count = count;
     st.phase_seconds.push_back({"cut", cut_s});

@@ -33,6 +33,7 @@ struct SlicingStats {
   std::int64_t rays_along_planes = 0;      // pixels whose ray runs along the planes or away from them (axis
                                            // stacks in perspective): their slices come in a wrong order
   std::int64_t table_layers = 0;           // preintegrated: segment lengths tabulated (1 orthographic)
+  std::string gl_renderer;                 // the OpenGL back ends: GL_RENDERER
   std::vector<std::pair<std::string, double>> phase_seconds;  // table, cut, scan convert, composite
   double seconds = 0.0;
 };

@@ -1,6 +1,8 @@
 #pragma once
 // The settings of plane slicing (MWSC section 5; Yagel et al. 1996): how many planes, which family,
 // how the light between two planes is integrated. Light enough for render/settings.hpp to hold.
+#include "composite/backend.hpp"
+
 namespace cellproj {
 
 enum class SliceAxis {
@@ -23,9 +25,13 @@ struct SlicingOptions {
   SliceAxis axis = SliceAxis::automatic;
   SliceIntegral integral = SliceIntegral::preintegrated;
   int table_size = 256;  // preintegrated: nodes per scalar axis of the table
+  // software, or OpenGL (sampled only): the polygons drawn with per-vertex colour and opacity into
+  // a float or an 8-bit framebuffer, as the paper's hardware path.
+  Backend backend = Backend::software;
 };
 
-// Throws InputError for fewer than 1 slice or a table size outside [2, 4096], naming the option.
+// Throws InputError for fewer than 1 slice, a table size outside [2, 4096] or an OpenGL back end with
+// the preintegrated integral, naming the option; ResourceError for OpenGL in a build without it.
 void check_options(const SlicingOptions& options);
 
 // The most slices a width x height image is given (docs/methods.md says why): 16 per pixel of its

@@ -137,6 +137,12 @@ expect 1 "--progressive does not apply to --method exact" -- render "$tmp/ok.jso
 expect 0 "wrote .*prog-32.png" -- render "$tmp/ok.json" --method slicing --progressive 8,32 --size 32x24 -o "$tmp/prog.png" --stats
 [ -s "$tmp/prog-8.png" ] && [ -s "$tmp/prog-32.png" ] && grep -q '"planes_reused":8' "$tmp/err" || { echo "FAIL: --progressive files or reuse"; failed=$((failed+1)); }
 expect 0 '"slice_axis":"view".*"slices":16' -- render "$tmp/ok.json" --method slicing --slices 16 --slice-axis view --slice-integral sampled --size 32x24 -o "$tmp/sl.png" --stats
+if [ "$gl" = ON ]; then
+  expect 1 "the OpenGL back ends draw --slice-integral sampled" -- render "$tmp/ok.json" --method slicing --backend opengl --size 32x24
+  expect 0 '"backend":"opengl-8bit-dither".*"gl_renderer"' -- render "$tmp/ok.json" --method slicing --slice-integral sampled --backend opengl-8bit-dither --size 32x24 -o "$tmp/slgl.png" --stats
+else
+  expect 3 "OpenGL back ends were not built" -- render "$tmp/ok.json" --method slicing --slice-integral sampled --backend opengl --size 32x24
+fi
 
 # info --json: the documented keys with this mesh's values.
 "$exe" info "$tmp/box.vtu" --json > "$tmp/info.json" || { echo "FAIL: info --json"; failed=$((failed+1)); }

@@ -51,6 +51,7 @@ RenderSettings settings_from(const RenderArgs& a) {
   s.slicing.axis = parse_slice_axis(a.slice_axis);
   s.slicing.integral = parse_slice_integral(a.slice_integral);
   s.slicing.table_size = a.table_size;
+  s.slicing.backend = s.projection.backend;
   return s;
 }
 
@@ -245,8 +246,9 @@ Action add_render(CLI::App& app) {
   settings.emplace_back(
       "backend",
       cmd->add_option("--backend", args->backend,
-                      "Where the projection methods rasterize: software (default), or for pt-linear and pt-table "
-                      "opengl (OSMesa, float target), opengl-8bit, opengl-8bit-dither"));
+                      "Where the projection methods and slicing rasterize: software (default), or for pt-linear, "
+                      "pt-table and slicing with --slice-integral sampled opengl (OSMesa, float target), "
+                      "opengl-8bit, opengl-8bit-dither"));
   settings.emplace_back(
       "tetrahedralize",
       cmd->add_option(
