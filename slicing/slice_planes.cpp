@@ -61,6 +61,9 @@ SlicePlanes::SlicePlanes(const RecentredPoints& points, const PixelRays& rays, S
     const double eye = glm::dot(rays.camera().eye, normal_);
     visible_end_ = first_above(std::nextafter(eye, -INFINITY));
   }
+  front_end_ = height(visible_end_);
+  if (rays.perspective()) eye_height_ = glm::dot(rays.camera().eye, normal_);
+  front_end_ = std::min(front_end_, eye_height_);
 }
 
 double SlicePlanes::lattice(int k) const {

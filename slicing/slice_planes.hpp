@@ -2,6 +2,7 @@
 // A family of evenly spaced parallel planes through the mesh (MWSC section 5): dot(p, normal) = h
 // for the heights h of a lattice spanning the mesh's extent along the normal. The normal points
 // towards the eye, so planes run back to front as their index grows.
+#include <cmath>
 #include <cstdint>
 #include <vector>
 
@@ -39,6 +40,10 @@ class SlicePlanes {
   void crossing(double lo, double hi, int& first, int& last) const;
   // Planes j >= visible_end() lie at or behind the eye (perspective), count() + 1 when none does.
   int visible_end() const { return visible_end_; }
+  // The front end of the slab in front of the last visible plane: the next plane's height, or the
+  // eye's where that lies beyond the eye (perspective).
+  double front_end() const { return front_end_; }
+  double eye_height() const { return eye_height_; }  // infinity in orthographic views
 
  private:
   double lattice(int k) const;  // lo_ + extent_ * k / count_, k reduced by its gcd with count_
@@ -49,6 +54,7 @@ class SlicePlanes {
   double lo_ = 0.0, extent_ = 0.0;
   int count_ = 1;
   int visible_end_ = 2;
+  double front_end_ = 0.0, eye_height_ = INFINITY;
   std::vector<double> height_;  // plane j's at [j], 0 <= j <= count_ + 1 (the ends for lookups)
 };
 

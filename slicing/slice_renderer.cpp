@@ -12,6 +12,7 @@
 
 #include "base/error.hpp"
 #include "composite/fragment.hpp"
+#include "slicing/boundary_crossings.hpp"
 #include "slicing/preintegration.hpp"
 #include "slicing/slice_cut.hpp"
 #include "view/raster.hpp"
@@ -27,7 +28,8 @@ double since(std::chrono::steady_clock::time_point t) {
 }
 
 constexpr float kEmpty = std::numeric_limits<float>::quiet_NaN();  // a pixel no polygon of the slice covers
-constexpr std::size_t kSliceImageBytes = 64u << 20;                // the slices' scalar images of one chunk
+constexpr double kNoHeight = std::numeric_limits<double>::quiet_NaN();
+constexpr std::size_t kSliceImageBytes = 64u << 20;  // the slices' scalar images of one chunk
 // Planes cut and scan converted together: more keep the threads busy on small images; fewer keep
 // the polygons of a chunk (which are written once, then read) small enough to stay in memory once
 // touched.
@@ -37,6 +39,7 @@ constexpr std::size_t kReuseBytes = 512u << 20;  // polygons kept for the next l
 // One slice scan converted: the scalar at each pixel centre it covers, and the box of those pixels.
 struct SliceImage {
   std::vector<float> s;
+  double height = 0.0;                 // of its plane
   int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // covered pixels lie in [x0, x1) x [y0, y1)
   bool covers(int i, int j) const { return i >= x0 && i < x1 && j >= y0 && j < y1; }
   float at(int i, int j, int width) const { return covers(i, j) ? s[static_cast<std::size_t>(j) * width + i] : kEmpty; }
@@ -134,51 +137,66 @@ PixelLengths pixel_lengths(const PixelRays& rays, const glm::dvec3& normal, doub
   return p;
 }
 
-// Composites slabs onto the image, back to front: for the planes of `slices` in order, the slab
-// behind each (between it and the one before, `behind` for the first), and, when `last` is set,
-// the slab in front of the last plane (to no plane).
+// Composites the slabs between neighbouring planes onto the image, back to front: for the planes
+// of `slices` in order, the slab behind each (between it and the one before, `behind` for the
+// first), and, when `front` is a height (not NaN), the slab from the last plane to that height.
+// Where both planes of a slab cover the pixel, the slab is either two half-spacing samples, each
+// plane's scalar held constant (sampled), or the preintegrated segment between the two scalars.
+// Where only one does, the ray crosses the boundary inside the slab: the inside part, from the
+// covering plane to the boundary crossing (half the slab when none is known), with that scalar.
 struct Compositor {
   const TransferFunction& tf;
   const SlicingOptions& options;
   const PixelLengths& lengths;
   const PreintegratedTable* table;
+  const BoundaryCrossings& boundary;
+  double eye_height;  // perspective: the eye's height along the normal (infinity in orthographic views)
   int width, height;
 
   void operator()(Image& image, const SliceImage& behind, const std::vector<const SliceImage*>& slices,
-                  bool last) const {
+                  double front) const {
     tbb::parallel_for(tbb::blocked_range<int>(0, height, 4), [&](const tbb::blocked_range<int>& rows) {
       for (int j = rows.begin(); j < rows.end(); ++j)
-        for (int i = 0; i < width; ++i) pixel(image, i, j, behind, slices, last);
+        for (int i = 0; i < width; ++i) pixel(image, i, j, behind, slices, front);
     });
   }
 
   void pixel(Image& image, int i, int j, const SliceImage& behind, const std::vector<const SliceImage*>& slices,
-             bool last) const {
+             double front_height) const {
     const std::size_t at = static_cast<std::size_t>(j) * width + i;
     float* dst = image.pixel(i, j);
-    float rgba[4];
-    if (options.integral == SliceIntegral::sampled) {
-      for (const SliceImage* s : slices) {  // each plane's sample stands for one spacing of the ray
-        const float v = s->at(i, j, width);
-        if (!std::isnan(v)) constant_light(tf, v, lengths.length[at], rgba), over(dst, rgba);
-      }
-      return;
-    }
     const double length = lengths.length[at], layer = lengths.layer.empty() ? 0.0 : lengths.layer[at];
-    float back = behind.at(i, j, width);
-    auto slab = [&](float front) {
-      if (!std::isnan(front) && !std::isnan(back)) {
-        (*table)(front, back, length, layer, rgba);
+    const bool sampled = options.integral == SliceIntegral::sampled;
+    float back = behind.at(i, j, width), rgba[4], back_half[4], front_half[4];
+    double back_height = behind.height;
+    if (sampled && !std::isnan(back)) constant_light(tf, back, 0.5 * length, back_half);
+    auto slab = [&](float front, double height) {
+      const bool f = !std::isnan(front), b = !std::isnan(back);
+      if (f && b) {
+        if (sampled) {
+          constant_light(tf, front, 0.5 * length, front_half);
+          over(dst, back_half), over(dst, front_half);
+        } else {
+          (*table)(front, back, length, layer, rgba);
+          over(dst, rgba);
+        }
+      } else if (f || b) {
+        // No crossing in a slab that ends at the eye: inside the mesh up to the eye. None known
+        // otherwise (too many, or its face reaches behind the eye): half the slab, on average.
+        const double crossing = boundary.between(at, back_height, height, f);
+        const double inside = std::isinf(crossing) && height == eye_height ? 1.0
+                              : !std::isfinite(crossing)
+                                  ? 0.5
+                                  : (f ? height - crossing : crossing - back_height) / (height - back_height);
+        constant_light(tf, f ? front : back, inside * length, rgba);
         over(dst, rgba);
-      } else if (!std::isnan(front) || !std::isnan(back)) {
-        // The ray enters or leaves the mesh inside this slab: half of it, on average, is inside.
-        constant_light(tf, std::isnan(front) ? back : front, 0.5 * length, rgba);
-        over(dst, rgba);
+        if (sampled && f) constant_light(tf, front, 0.5 * length, front_half);
       }
-      back = front;
+      back = front, back_height = height;
+      if (sampled) std::copy(front_half, front_half + 4, back_half);
     };
-    for (const SliceImage* s : slices) slab(s->at(i, j, width));
-    if (last) slab(kEmpty);
+    for (const SliceImage* s : slices) slab(s->at(i, j, width), s->height);
+    if (!std::isnan(front_height)) slab(kEmpty, front_height);
   }
 };
 
@@ -207,7 +225,8 @@ void gl_corners(const PlanePolygons& plane, const TransferFunction& tf, const Pi
 
 }  // namespace
 
-SliceRenderer::SliceRenderer(const MeshView& mesh, Tetrahedralize mode) : mesh_(mesh), points_(recentre(mesh)) {
+SliceRenderer::SliceRenderer(const MeshView& mesh, Tetrahedralize mode)
+    : mesh_(mesh), points_(recentre(mesh)), boundary_(boundary_triangles(mesh)) {
   cells_ = slice_cells(mesh_, points_, mode);
 }
 
@@ -294,7 +313,10 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       gl->begin(nullptr);
     }
 #endif
-    const Compositor compositor{tf, options, lengths, table.get(), width, height};
+    t = std::chrono::steady_clock::now();
+    const BoundaryCrossings crossings(boundary_, points, width, height);
+    st.phase_seconds.push_back({"boundary", since(t)});
+    const Compositor compositor{tf, options, lengths, table.get(), crossings, planes.eye_height(), width, height};
     const int chunk = static_cast<int>(std::clamp<std::size_t>(
         kSliceImageBytes / (static_cast<std::size_t>(width) * height * sizeof(float)), 2, kMaxChunk));
     std::vector<SliceImage> slice(static_cast<std::size_t>(chunk));
@@ -302,6 +324,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     for (SliceImage* s = slice.data(); s != slice.data() + chunk; ++s)
       s->s.assign(static_cast<std::size_t>(width) * height, kEmpty);
     behind.s.assign(static_cast<std::size_t>(width) * height, kEmpty);
+    behind.height = planes.height(0);  // the back end of the mesh: no plane covers it
     const bool keep = level + 1 < levels.size();
     std::vector<SlicePolygons> kept(keep ? static_cast<std::size_t>(visible) + 1 : 0);
     std::vector<char> kept_flag(kept.size(), 0);
@@ -344,6 +367,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       std::vector<SlicingStats> counts(here);
       tbb::parallel_for(std::size_t{0}, here, [&](std::size_t k) {
         slice[k].clear(width);
+        slice[k].height = planes.height(first + static_cast<int>(k));
         scan_convert(plane[k], width, height, slice[k], counts[k]);
       });
       scan_s += since(t);
@@ -355,7 +379,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       t = std::chrono::steady_clock::now();
       std::vector<const SliceImage*> in_order;
       for (std::size_t k = 0; k < here; ++k) in_order.push_back(&slice[k]);
-      compositor(image, behind, in_order, end == visible + 1);
+      compositor(image, behind, in_order, end == visible + 1 ? planes.front_end() : kNoHeight);
       comp_s += since(t);
       std::swap(behind, slice[here - 1]);
 

@@ -12,6 +12,7 @@
 #include "grid/geometry.hpp"
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
+#include "slicing/boundary_crossings.hpp"
 #include "slicing/slice_cells.hpp"
 #include "slicing/slicing_options.hpp"
 #include "view/camera.hpp"
@@ -45,7 +46,8 @@ using SliceLevelDone = std::function<void(std::size_t level, int slices, const I
 class SliceRenderer {
  public:
   // Prepared once per mesh (its arrays must outlive the renderer): the points recentred, each cell
-  // to be cut whole or as its canonical tetrahedra as `mode` says (slicing/slice_cells).
+  // to be cut whole or as its canonical tetrahedra as `mode` says (slicing/slice_cells), the
+  // boundary faces.
   explicit SliceRenderer(const MeshView& mesh, Tetrahedralize mode = Tetrahedralize::problem);
 
   // One frame of the point field `scalar` (n_points values). Threads: those of the calling task
@@ -65,6 +67,7 @@ class SliceRenderer {
   MeshView mesh_;
   RecentredPoints points_;
   SliceCells cells_;
+  std::vector<BoundaryTriangle> boundary_;  // the mesh's boundary faces as triangles
 };
 
 }  // namespace cellproj

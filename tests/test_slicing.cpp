@@ -155,9 +155,16 @@ TEST(Slicing, ConvergesToTheExactImage) {
       const Image ref = render(v, f, ramp(), exact_tets(), c, {64, 64});
       for (SliceIntegral integral : {SliceIntegral::sampled, SliceIntegral::preintegrated}) {
         const auto e = errors(v, f, ramp(), c, {16, 64, 256, 1024}, integral, ref, Tetrahedralize::all);
+        // Faster than first order, which gains 64x from 16 to 1024 planes: the boundary crossings
+        // make the length of the slabs the ray enters and leaves by exact (measured here: 300x;
+        // second order, 4000x, on the larger images of bench/slicing, where fewer pixels are
+        // silhouette pixels).
         for (std::size_t k = 1; k < e.size(); ++k)
-          EXPECT_LT(e[k], 0.5 * e[k - 1]) << "4x the planes, error " << e[k - 1] << " -> " << e[k];
-        EXPECT_LT(e.back(), 2e-3);
+          EXPECT_LT(e[k], 0.4 * e[k - 1])
+              << (tets ? "tets " : "hexahedra ") << (p == Projection::Perspective ? "perspective" : "orthographic")
+              << ": 4x the planes, error " << e[k - 1] << " -> " << e[k];
+        EXPECT_GT(e.front() / e.back(), 150.0);
+        EXPECT_LT(e.back(), 1e-4) << e[0] << " " << e[1] << " " << e[2] << " " << e[3];
       }
     }
   }
