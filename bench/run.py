@@ -3,7 +3,8 @@ needs and calls this with Debian's python3 (numpy, matplotlib and VTK's Python m
 
 For every benchmark mesh and image size: `exact` (canonical-tets, the field the projection methods
 render; and isoparametric where the mesh has other cells), every projection method with the `auto`
-sort, `pt-breakpoints` with each other sort (so the error a sort causes shows in the picture), and
+sort, `pt-breakpoints` with each other sort (so the error a sort causes shows in the picture),
+slicing at 256 and 1024 planes (bench/slicing measures its convergence), and
 VTK's three unstructured-grid mappers on the same scene; time per frame (median, min and max over
 repeated frames), cells per second, RMSE and largest error of the premultiplied float image against
 exact, and the sort's order violations counted by the ray-traced oracle (`sortbench --check`, four
@@ -24,9 +25,10 @@ import numpy as np
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 METHODS = ["pt-linear", "pt-table", "pt-analytic", "pt-breakpoints"]
 OTHER_SORTS = ["centroid", "mpvo", "mpvo-abuffer"]
+SLICING = [(256, "sampled"), (1024, "sampled"), (1024, "preintegrated")]
 PEERS = {"vtk-pt": "pt", "vtk-raycast": "raycast", "vtk-zsweep": "zsweep"}
 PEER_CPU_LIMIT = 30_000  # cells: the CPU mappers take tens of seconds per frame beyond this
-HEADER = ("| mesh | cells | method | sort | size | median s | min s | max s | cells/s | RMSE | max error | violations |\n"
+HEADER = ("| mesh | cells | method | sort (slicing: planes) | size | median s | min s | max s | cells/s | RMSE | max error | violations |\n"
           "|---|---|---|---|---|---|---|---|---|---|---|---|")
 COLUMNS = ["mesh", "cells", "method", "sort", "width", "height", "median_seconds", "min_seconds", "max_seconds",
            "cells_per_second", "rmse", "max_abs", "violations"]
@@ -149,6 +151,14 @@ def measure(bench, name, scene, mesh, info, size, peers):
                   median_seconds=st["frame_seconds"], min_seconds=st["min_frame_seconds"],
                   max_seconds=st["max_frame_seconds"], cells_per_second=cells / st["frame_seconds"],
                   rmse=e[0], max_abs=e[1], violations=viol.get(sort, ""))
+    # Slicing (no sort; bench/slicing has its convergence): the sort column gives the plane count.
+    for n, integral in SLICING:
+        st, npy = bench.render(scene, f"{tag}_slicing_{integral}_{n}", "slicing", size, bench.frames,
+                               ["--slices", str(n), "--slice-integral", integral, "--tetrahedralize", "all"])
+        e = error(npy, ref)
+        bench.add(**base, method=f"slicing-{integral}", sort=f"{n} slices", median_seconds=st["frame_seconds"],
+                  min_seconds=st["min_frame_seconds"], max_seconds=st["max_frame_seconds"],
+                  cells_per_second=cells / st["frame_seconds"], rmse=e[0], max_abs=e[1], violations="")
     if not peers or not mesh.endswith(".vtu"):
         return
     for method, mapper in PEERS.items():
