@@ -11,11 +11,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
-#include "composite/fragment.hpp"
-#include "slicing/boundary_crossings.hpp"
-#include "slicing/preintegration.hpp"
-#include "slicing/slice_cut.hpp"
-#include "view/raster.hpp"
+#include "slicing/slab_compositor.hpp"
 #ifdef CELLPROJ_HAVE_OPENGL
 #include "composite/gl_compositor.hpp"
 #endif
@@ -27,7 +23,6 @@ double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
 }
 
-constexpr float kEmpty = std::numeric_limits<float>::quiet_NaN();  // a pixel no polygon of the slice covers
 constexpr double kNoHeight = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kSliceImageBytes = 64u << 20;  // the slices' scalar images of one chunk
 // Planes cut and scan converted together: more keep the threads busy on small images; fewer keep
@@ -36,175 +31,11 @@ constexpr std::size_t kSliceImageBytes = 64u << 20;  // the slices' scalar image
 constexpr std::size_t kMaxChunk = 16;
 constexpr std::size_t kReuseBytes = 512u << 20;  // polygons kept for the next level
 
-// One slice scan converted: the scalar at each pixel centre it covers, and the box of those pixels.
-struct SliceImage {
-  std::vector<float> s;
-  double height = 0.0;                 // of its plane
-  int x0 = 0, y0 = 0, x1 = 0, y1 = 0;  // covered pixels lie in [x0, x1) x [y0, y1)
-  bool covers(int i, int j) const { return i >= x0 && i < x1 && j >= y0 && j < y1; }
-  float at(int i, int j, int width) const { return covers(i, j) ? s[static_cast<std::size_t>(j) * width + i] : kEmpty; }
-  void clear(int width) {
-    for (int j = y0; j < y1; ++j) std::fill_n(s.begin() + static_cast<std::ptrdiff_t>(j) * width + x0, x1 - x0, kEmpty);
-    x0 = y0 = x1 = y1 = 0;
-  }
-};
-
-// The polygons of a slice, fanned from their first vertex, into its scalar image (the coverage
-// rule of view/raster.hpp: neighbouring polygons, whose shared edges have the same bits, cover
-// each centre on them once). The scalar is interpolated perspective-correctly: s w / w.
-void scan_convert(const SlicePolygons& p, int width, int height, SliceImage& out, std::int64_t& fragments,
-                  std::int64_t& overlaps) {
-  for (std::size_t q = 0; q < p.size(); ++q) {
-    const std::uint32_t v0 = p.start[q];
-    const glm::dvec2 a(p.x[v0], p.y[v0]);
-    for (std::uint32_t v = v0 + 1; v + 1 < p.start[q + 1]; ++v) {
-      const TriangleCoverage t(a, {p.x[v], p.y[v]}, {p.x[v + 1], p.y[v + 1]}, width, height);
-      const double w[3] = {p.w[v0], p.w[v], p.w[v + 1]}, sw[3] = {p.sw[v0], p.sw[v], p.sw[v + 1]};
-      for (int j = t.first_row(); j <= t.last_row(); ++j) {
-        const TriangleCoverage::Row r = t.row(j);
-        int b, e;
-        t.run(r, b, e);
-        if (b == e) continue;
-        out.y0 = std::min(out.y0, j), out.y1 = std::max(out.y1, j + 1);
-        out.x0 = std::min(out.x0, b), out.x1 = std::max(out.x1, e);
-        float* row = out.s.data() + static_cast<std::size_t>(j) * width;
-        for (int i = b; i < e; ++i) {
-          double l[3];
-          t.weights(r, i, l);
-          const double s = (l[0] * sw[0] + l[1] * sw[1] + l[2] * sw[2]) / (l[0] * w[0] + l[1] * w[1] + l[2] * w[2]);
-          overlaps += !std::isnan(row[i]);
-          row[i] = static_cast<float>(s);
-        }
-        fragments += e - b;
-      }
-    }
-  }
-}
-
-// A plane's polygons: those the previous level kept, or its entries of every block of cells.
-struct PlanePolygons {
-  const SlicePolygons* kept = nullptr;
-  const CutBlocks* blocks = nullptr;
-  std::size_t index = 0;  // in each block
-  template <class F>
-  void for_each(F&& f) const {
-    if (kept) return f(*kept);
-    for (const auto& block : *blocks) f(block[index]);
-  }
-};
-
-void scan_convert(const PlanePolygons& plane, int width, int height, SliceImage& out, SlicingStats& st) {
-  out.x0 = width, out.y0 = height, out.x1 = 0, out.y1 = 0;
-  plane.for_each([&](const SlicePolygons& p) {
-    scan_convert(p, width, height, out, st.fragments, st.overlapping_fragments);
-    st.polygons += static_cast<std::int64_t>(p.size()), st.clipped_polygons += p.clipped;
-  });
-  if (out.x1 <= out.x0) out.x0 = out.y0 = out.x1 = out.y1 = 0;
-}
-
-// The light of a constant scalar over `length`: C (1 - exp(-kappa l)), 1 - exp(-kappa l).
-void constant_light(const TransferFunction& tf, double s, double length, float rgba[4]) {
-  const double alpha = -std::expm1(-tf.extinction(s) * length);
-  const glm::dvec3 c = tf.color(s);
-  rgba[0] = static_cast<float>(c.r * alpha), rgba[1] = static_cast<float>(c.g * alpha);
-  rgba[2] = static_cast<float>(c.b * alpha), rgba[3] = static_cast<float>(alpha);
-}
-
-// What one frame composites from: the ray length between neighbouring planes at each pixel (the
-// spacing over the cosine of the ray with the normal, per pixel: slanted and perspective rays cross
-// farther), and the preintegrated table's layer for it.
-struct PixelLengths {
-  std::vector<float> length, layer;
-  double lo = 0.0, hi = 0.0;
-  std::int64_t along = 0;  // rays within 0.06 degrees of the planes, or turning away from the eye's side
-};
-
-PixelLengths pixel_lengths(const PixelRays& rays, const glm::dvec3& normal, double spacing) {
-  PixelLengths p;
-  const int w = rays.width(), h = rays.height();
-  p.length.resize(static_cast<std::size_t>(w) * h);
-  std::vector<int> along(static_cast<std::size_t>(h), 0);
-  tbb::parallel_for(0, h, [&](int j) {
-    for (int i = 0; i < w; ++i) {
-      const double c = -glm::dot(rays.ray(i + 0.5, j + 0.5).dir, normal);  // the normal points to the eye
-      along[static_cast<std::size_t>(j)] += !(c > 1e-3);
-      p.length[static_cast<std::size_t>(j) * w + i] = static_cast<float>(spacing / std::max(std::abs(c), 1e-6));
-    }
-  });
-  for (int a : along) p.along += a;
-  const auto [lo, hi] = std::minmax_element(p.length.begin(), p.length.end());
-  p.lo = *lo, p.hi = *hi;
-  return p;
-}
-
-// Composites the slabs between neighbouring planes onto the image, back to front: for the planes
-// of `slices` in order, the slab behind each (between it and the one before, `behind` for the
-// first), and, when `front` is a height (not NaN), the slab from the last plane to that height.
-// Where both planes of a slab cover the pixel, the slab is either two half-spacing samples, each
-// plane's scalar held constant (sampled), or the preintegrated segment between the two scalars.
-// Where only one does, the ray crosses the boundary inside the slab: the inside part, from the
-// covering plane to the boundary crossing (half the slab when none is known), with that scalar.
-struct Compositor {
-  const TransferFunction& tf;
-  const SlicingOptions& options;
-  const PixelLengths& lengths;
-  const PreintegratedTable* table;
-  const BoundaryCrossings& boundary;
-  double eye_height;  // perspective: the eye's height along the normal (infinity in orthographic views)
-  int width, height;
-
-  void operator()(Image& image, const SliceImage& behind, const std::vector<const SliceImage*>& slices,
-                  double front) const {
-    tbb::parallel_for(tbb::blocked_range<int>(0, height, 4), [&](const tbb::blocked_range<int>& rows) {
-      for (int j = rows.begin(); j < rows.end(); ++j)
-        for (int i = 0; i < width; ++i) pixel(image, i, j, behind, slices, front);
-    });
-  }
-
-  void pixel(Image& image, int i, int j, const SliceImage& behind, const std::vector<const SliceImage*>& slices,
-             double front_height) const {
-    const std::size_t at = static_cast<std::size_t>(j) * width + i;
-    float* dst = image.pixel(i, j);
-    const double length = lengths.length[at], layer = lengths.layer.empty() ? 0.0 : lengths.layer[at];
-    const bool sampled = options.integral == SliceIntegral::sampled;
-    float back = behind.at(i, j, width), rgba[4], back_half[4], front_half[4];
-    double back_height = behind.height;
-    if (sampled && !std::isnan(back)) constant_light(tf, back, 0.5 * length, back_half);
-    auto slab = [&](float front, double height) {
-      const bool f = !std::isnan(front), b = !std::isnan(back);
-      if (f && b) {
-        if (sampled) {
-          constant_light(tf, front, 0.5 * length, front_half);
-          over(dst, back_half), over(dst, front_half);
-        } else {
-          (*table)(front, back, length, layer, rgba);
-          over(dst, rgba);
-        }
-      } else if (f || b) {
-        // No crossing in a slab that ends at the eye: inside the mesh up to the eye. None known
-        // otherwise (too many, or its face reaches behind the eye): half the slab, on average.
-        const double crossing = boundary.between(at, back_height, height, f);
-        const double inside = std::isinf(crossing) && height == eye_height ? 1.0
-                              : !std::isfinite(crossing)
-                                  ? 0.5
-                                  : (f ? height - crossing : crossing - back_height) / (height - back_height);
-        constant_light(tf, f ? front : back, inside * length, rgba);
-        over(dst, rgba);
-        if (sampled && f) constant_light(tf, front, 0.5 * length, front_half);
-      }
-      back = front, back_height = height;
-      if (sampled) std::copy(front_half, front_half + 4, back_half);
-    };
-    for (const SliceImage* s : slices) slab(s->at(i, j, width), s->height);
-    if (!std::isnan(front_height)) slab(kEmpty, front_height);
-  }
-};
-
 #ifdef CELLPROJ_HAVE_OPENGL
 // A slice's polygons as Gouraud triangles for OpenGL (the paper's hardware slicing): each corner
 // with its colour and the opacity of one spacing along its own ray, C(s), 1 - exp(-kappa(s) l).
 void gl_corners(const PlanePolygons& plane, const TransferFunction& tf, const PixelRays& rays, const glm::dvec3& normal,
-                double spacing, const DitherShift& shift, std::vector<GLCorner>& out, SlicingStats& st) {
+                double spacing, const DitherShift& shift, std::vector<GLCorner>& out, ScanCounts& st) {
   out.clear();
   plane.for_each([&](const SlicePolygons& p) {
     st.polygons += static_cast<std::int64_t>(p.size()), st.clipped_polygons += p.clipped;
@@ -307,6 +138,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
 #ifdef CELLPROJ_HAVE_OPENGL
     std::unique_ptr<GLCompositor> gl;  // its calls stay on this thread
     std::vector<GLCorner> corners;
+    ScanCounts gl_counts;
     if (is_opengl(options.backend)) {
       gl = std::make_unique<GLCompositor>(width, height, gl_target(options.backend));
       st.gl_renderer = gl->renderer();
@@ -356,7 +188,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
         t = std::chrono::steady_clock::now();
         for (std::size_t k = 0; k < here; ++k) {
           gl_corners(plane[k], tf, rays, planes.normal(), planes.spacing(),
-                     DitherShift(static_cast<std::uint64_t>(first) + k), corners, st);
+                     DitherShift(static_cast<std::uint64_t>(first) + k), corners, gl_counts);
           gl->draw(corners);
         }
         comp_s += since(t);
@@ -364,14 +196,14 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       }
 #endif
       t = std::chrono::steady_clock::now();
-      std::vector<SlicingStats> counts(here);
+      std::vector<ScanCounts> counts(here);
       tbb::parallel_for(std::size_t{0}, here, [&](std::size_t k) {
         slice[k].clear(width);
         slice[k].height = planes.height(first + static_cast<int>(k));
         scan_convert(plane[k], width, height, slice[k], counts[k]);
       });
       scan_s += since(t);
-      for (const SlicingStats& c : counts) {
+      for (const ScanCounts& c : counts) {
         st.fragments += c.fragments, st.overlapping_fragments += c.overlapping_fragments;
         st.polygons += c.polygons, st.clipped_polygons += c.clipped_polygons;
       }
@@ -393,7 +225,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       }
     }
 #ifdef CELLPROJ_HAVE_OPENGL
-    if (gl) image = gl->finish();
+    if (gl) image = gl->finish(), st.polygons = gl_counts.polygons, st.clipped_polygons = gl_counts.clipped_polygons;
 #endif
     previous = std::move(kept), previous_kept = std::move(kept_flag);
     previous_count = count;
