@@ -179,6 +179,10 @@ void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
     r.warnings.push_back(std::to_string(st.cells_between_planes) +
                          " cells (or tetrahedra of split cells) lie between two planes and add nothing to the picture; "
                          "more --slices catch them");
+  if (st.slices == 0)
+    r.warnings.push_back(
+        "no slice plane lies in front of the eye: the picture is empty (the camera is inside the "
+        "mesh or beyond it); use --slice-axis view or more --slices");
   if (st.rays_along_planes > 0)
     r.warnings.push_back(std::to_string(st.rays_along_planes) +
                          " pixels' rays run along the slice planes or away from them (an axis-aligned stack in "

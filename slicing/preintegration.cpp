@@ -12,13 +12,16 @@ namespace cellproj {
 namespace {
 constexpr double kLayerRatio = 1.2;  // neighbouring layers' lengths
 constexpr int kMaxLayers = 64;
+constexpr double kMaxLengthRatio = 4.0;
 }  // namespace
 
 PreintegratedTable::PreintegratedTable(const TransferFunction& tf, double s_lo, double s_hi, double l_lo, double l_hi,
                                        int size)
     : size_(size), s_lo_(s_lo), l_lo_(l_lo) {
   s_scale_ = s_hi > s_lo ? (size - 1) / (s_hi - s_lo) : 0.0;
-  const double ratio = l_hi / l_lo;
+  // Longer rays than 4x the shortest (nearly along the planes) take the colour of 4x: their
+  // opacity is still exact, and the mean colour of a thick slab varies little with its length.
+  const double ratio = std::min(l_hi / l_lo, kMaxLengthRatio);
   layers_ =
       ratio > 1.0 + 1e-12 ? std::min(kMaxLayers, 2 + static_cast<int>(std::log(ratio) / std::log(kLayerRatio))) : 1;
   log_ratio_ = layers_ > 1 ? std::log(ratio) / (layers_ - 1) : 0.0;

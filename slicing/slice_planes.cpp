@@ -51,6 +51,12 @@ SlicePlanes::SlicePlanes(const RecentredPoints& points, const PixelRays& rays, S
     const double h = glm::dot(points(static_cast<std::int64_t>(p)), along);
     lo = p == 0 ? h : std::min(lo, h), hi = p == 0 ? h : std::max(hi, h);
   }
+  // The view family spends its planes on what lies in front of the eye (an eye inside the mesh
+  // would leave the planes behind it unused); an axis stack keeps its lattice.
+  if (axis_ == SliceAxis::view && rays.perspective()) {
+    const double eye = glm::dot(rays.camera().eye, normal_);
+    if (eye > lo) hi = std::min(hi, eye - 1e-9 * (hi - lo));
+  }
   lo_ = lo, extent_ = hi - lo;
   if (!(extent_ > 0.0)) extent_ = std::max(1.0, std::abs(lo)) * 1e-300;  // a flat mesh: no plane crosses it
   height_.resize(static_cast<std::size_t>(count_) + 2);

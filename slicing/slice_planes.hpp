@@ -24,7 +24,8 @@ class SlicePlanes {
   // The planes of `axis` (automatic: automatic_axis) for the
   // recentred points and the camera of `rays` (recentred too). An axis-aligned family lies on the
   // lattice lo + k extent / slices of that coordinate whatever the view, so its planes stay put
-  // while the camera turns; the view family spans the mesh's depth in this view.
+  // while the camera turns; the view family spans the mesh's depth in this view, in front of the
+  // eye.
   SlicePlanes(const RecentredPoints& points, const PixelRays& rays, SliceAxis axis, int slices);
 
   SliceAxis axis() const { return axis_; }  // x, y, z or view: the family used

@@ -123,7 +123,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     PixelLengths lengths = pixel_lengths(rays, planes.normal(), planes.spacing());
     st.rays_along_planes = lengths.along;
     std::unique_ptr<PreintegratedTable> table;
-    if (options.integral == SliceIntegral::preintegrated) {
+    if (options.integral == SliceIntegral::preintegrated && visible > 0) {
       table = std::make_unique<PreintegratedTable>(tf, s_lo, s_hi, lengths.lo, lengths.hi, options.table_size);
       st.table_layers = table->layers();
       if (table->layers() > 1) {

@@ -166,5 +166,21 @@ TEST(Raster, SharedEdgesCoverEachCentreOnce) {
     }
 }
 
+// A triangle far outside the image (a vertex just in front of the eye projects to ~1e12 pixels)
+// covers nothing, and its box holds no row: the conversion to int is clamped first (it once
+// overflowed and made the rows run from INT_MIN).
+TEST(Raster, ATriangleFarOutsideTheImageHasNoRows) {
+  for (double far : {1e12, -1e12, 1e300}) {
+    const TriangleCoverage below({10, far}, {20, far}, {15, 2 * far}, 48, 48);
+    EXPECT_GT(below.first_row(), below.last_row()) << far;
+    const PixelBox right({far, 10}, {2 * far, 20}, {far, 30}, 48, 48);
+    EXPECT_TRUE(right.empty()) << far;
+  }
+  // One reaching from inside to far outside keeps its rows inside the image.
+  const TriangleCoverage t({10, 10}, {1e12, 20}, {10, 1e12}, 48, 48);
+  EXPECT_EQ(t.first_row(), 10);
+  EXPECT_EQ(t.last_row(), 47);
+}
+
 }  // namespace
 }  // namespace cellproj

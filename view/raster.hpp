@@ -81,10 +81,14 @@ struct PixelBox {
   PixelBox(const glm::dvec2& p0, const glm::dvec2& p1, const glm::dvec2& p2, int width, int height) {
     const double xmin = std::min({p0.x, p1.x, p2.x}), xmax = std::max({p0.x, p1.x, p2.x});
     const double ymin = std::min({p0.y, p1.y, p2.y}), ymax = std::max({p0.y, p1.y, p2.y});
-    i0 = static_cast<int>(std::max(0.0, std::ceil(xmin - 0.5)));
-    i1 = static_cast<int>(std::min(double(width - 1), std::floor(xmax - 0.5)));
-    j0 = static_cast<int>(std::max(0.0, std::ceil(ymin - 0.5)));
-    j1 = static_cast<int>(std::min(double(height - 1), std::floor(ymax - 0.5)));
+    // Clamped to [-1, size] before the conversion: a triangle far outside the image (a vertex
+    // just in front of the eye) would overflow int, and then cover nothing, not every row.
+    i0 = clamped(std::ceil(xmin - 0.5), width), i1 = clamped(std::floor(xmax - 0.5), width);
+    j0 = clamped(std::ceil(ymin - 0.5), height), j1 = clamped(std::floor(ymax - 0.5), height);
+    i0 = std::max(i0, 0), i1 = std::min(i1, width - 1), j0 = std::max(j0, 0), j1 = std::min(j1, height - 1);
+  }
+  static int clamped(double v, int size) {
+    return !(v > -1.0) ? -1 : v > size ? size : static_cast<int>(v);  // NaN: -1
   }
   bool empty() const { return i1 < i0 || j1 < j0; }
 };
