@@ -63,22 +63,14 @@ BoundaryCrossings::BoundaryCrossings(const std::vector<BoundaryTriangle>& triang
     for (const Projected& q : tri) {
       if (!q.drawn) continue;
       if (std::max({q.p[0].y, q.p[1].y, q.p[2].y}) < j0 || std::min({q.p[0].y, q.p[1].y, q.p[2].y}) > j1) continue;
-      const TriangleCoverage t(q.p[0], q.p[1], q.p[2], width, height);
-      for (int j = std::max(t.first_row(), j0); j <= std::min(t.last_row(), j1 - 1); ++j) {
-        const TriangleCoverage::Row r = t.row(j);
-        int b, e;
-        t.run(r, b, e);
-        for (int i = b; i < e; ++i) {
-          double l[3];
-          t.weights(r, i, l);
-          const std::size_t px = static_cast<std::size_t>(j) * width + i;
-          std::uint8_t& n = n_[px];
-          if (n < kMax)
-            h_[px * kMax + n] = static_cast<float>((l[0] * q.hw[0] + l[1] * q.hw[1] + l[2] * q.hw[2]) /
-                                                   (l[0] * q.w[0] + l[1] * q.w[1] + l[2] * q.w[2]));
-          if (n <= kMax) n += 1;
-        }
-      }
+      rasterize_triangle_weights(q.p[0], q.p[1], q.p[2], width, height, j0, j1,
+                                 [&](int i, int j, double l0, double l1, double l2) {
+                                   const std::size_t px = static_cast<std::size_t>(j) * width + i;
+                                   std::uint8_t& n = n_[px];
+                                   if (n < kMax)
+                                     h_[px * kMax + n] = static_cast<float>(perspective_correct(l0, l1, l2, q.hw, q.w));
+                                   if (n <= kMax) n += 1;
+                                 });
     }
     for (int j = j0; j < j1; ++j)
       for (int i = 0; i < width; ++i) {

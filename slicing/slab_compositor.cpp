@@ -13,34 +13,23 @@
 namespace cellproj {
 namespace {
 
-// The polygons of a slice, fanned from their first vertex, into its scalar image (the coverage
-// rule of view/raster.hpp: neighbouring polygons, whose shared edges have the same bits, cover
-// each centre on them once). The scalar is interpolated perspective-correctly: s w / w.
+// The polygons of a slice, fanned from their first vertex, into its scalar image.
 void scan_convert(const SlicePolygons& p, int width, int height, SliceImage& out, std::int64_t& fragments,
                   std::int64_t& overlaps) {
   for (std::size_t q = 0; q < p.size(); ++q) {
     const std::uint32_t v0 = p.start[q];
-    const glm::dvec2 a(p.x[v0], p.y[v0]);
     for (std::uint32_t v = v0 + 1; v + 1 < p.start[q + 1]; ++v) {
-      const TriangleCoverage t(a, {p.x[v], p.y[v]}, {p.x[v + 1], p.y[v + 1]}, width, height);
       const double w[3] = {p.w[v0], p.w[v], p.w[v + 1]}, sw[3] = {p.sw[v0], p.sw[v], p.sw[v + 1]};
-      for (int j = t.first_row(); j <= t.last_row(); ++j) {
-        const TriangleCoverage::Row r = t.row(j);
-        int b, e;
-        t.run(r, b, e);
-        if (b == e) continue;
-        out.y0 = std::min(out.y0, j), out.y1 = std::max(out.y1, j + 1);
-        out.x0 = std::min(out.x0, b), out.x1 = std::max(out.x1, e);
-        float* row = out.s.data() + static_cast<std::size_t>(j) * width;
-        for (int i = b; i < e; ++i) {
-          double l[3];
-          t.weights(r, i, l);
-          const double s = (l[0] * sw[0] + l[1] * sw[1] + l[2] * sw[2]) / (l[0] * w[0] + l[1] * w[1] + l[2] * w[2]);
-          overlaps += !std::isnan(row[i]);
-          row[i] = static_cast<float>(s);
-        }
-        fragments += e - b;
-      }
+      rasterize_triangle_weights({p.x[v0], p.y[v0]}, {p.x[v], p.y[v]}, {p.x[v + 1], p.y[v + 1]}, width, height,
+                                 [&](int i, int j, double l0, double l1, double l2) {
+                                   const double s = perspective_correct(l0, l1, l2, sw, w);
+                                   float& at = out.s[static_cast<std::size_t>(j) * width + i];
+                                   overlaps += !std::isnan(at);
+                                   at = static_cast<float>(s);
+                                   out.x0 = std::min(out.x0, i), out.x1 = std::max(out.x1, i + 1);
+                                   out.y0 = std::min(out.y0, j), out.y1 = std::max(out.y1, j + 1);
+                                   ++fragments;
+                                 });
     }
   }
 }

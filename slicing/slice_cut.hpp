@@ -21,6 +21,12 @@ struct FramePoints {
   double near = 0.0;  // perspective: polygons are clipped to z >= near
 };
 
+// An attribute a interpolated perspective-correctly at barycentric weights l: the weighted a / z
+// over the weighted 1 / z (aw and w at the three corners).
+inline double perspective_correct(double l0, double l1, double l2, const double aw[3], const double w[3]) {
+  return (l0 * aw[0] + l1 * aw[1] + l2 * aw[2]) / (l0 * w[0] + l1 * w[1] + l2 * w[2]);
+}
+
 // The section polygons of one plane: polygon q's vertices are start[q] <= v < start[q + 1]; pixel
 // position x, y, w = 1 / z (1 in orthographic projection) and s w, for perspective-correct
 // interpolation of the scalar.

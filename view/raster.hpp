@@ -156,19 +156,27 @@ void rasterize_triangle_runs(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int wi
   }
 }
 
-// Calls covered(i, j, w0, w1, w2) for every pixel of a width x height image whose centre the
-// triangle (p0, p1, p2) in pixel coordinates (x right, y down) covers, with the barycentric weights
-// of p0, p1 and p2 at that centre. Degenerate triangles cover nothing.
+// Calls covered(i, j, w0, w1, w2) for every pixel of rows row_begin <= j < row_end of a width x
+// height image whose centre the triangle (p0, p1, p2) in pixel coordinates (x right, y down)
+// covers, with the barycentric weights of p0, p1 and p2 at that centre. Degenerate triangles cover
+// nothing.
 template <class Covered>
-void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Covered&& covered) {
+void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, int row_begin,
+                                int row_end, Covered&& covered) {
   const TriangleCoverage t(p0, p1, p2, width, height);
-  for (int j = t.first_row(); j <= t.last_row(); ++j) {
+  for (int j = std::max(t.first_row(), row_begin); j <= std::min(t.last_row(), row_end - 1); ++j) {
     const TriangleCoverage::Row r = t.row(j);
     int b, e;
     t.run(r, b, e);
     double w[3];
     for (int i = b; i < e; ++i) t.weights(r, i, w), covered(i, j, w[0], w[1], w[2]);
   }
+}
+
+// The same over every row of the image.
+template <class Covered>
+void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Covered&& covered) {
+  rasterize_triangle_weights(p0, p1, p2, width, height, 0, height, covered);
 }
 
 }  // namespace cellproj
