@@ -51,6 +51,7 @@ RecentredPoints recentre(const MeshView& mesh) {
   glm::dvec3 lo = mesh.point(0), hi = lo;
   for (std::int64_t p = 1; p < mesh.n_points; ++p) lo = glm::min(lo, mesh.point(p)), hi = glm::max(hi, mesh.point(p));
   r.centre = 0.5 * (lo + hi);
+  r.lo = lo - r.centre, r.hi = hi - r.centre;  // rounding is monotone: the extremes of the recentred points
   r.half_diagonal = 0.5 * glm::length(hi - lo);
   r.xyz.resize(static_cast<std::size_t>(3 * mesh.n_points));
   for (std::int64_t p = 0; p < mesh.n_points; ++p) {

@@ -45,7 +45,8 @@ inline bool sort_triangle_ids(std::int64_t id[3]) {
 // lose no precision in the differences the geometry is made of.
 struct RecentredPoints {
   glm::dvec3 centre{0.0};
-  double half_diagonal = 0.0;  // of the bounding box
+  glm::dvec3 lo{0.0}, hi{0.0};  // the bounding box, recentred (the extremes of the recentred points)
+  double half_diagonal = 0.0;   // of the bounding box
   std::vector<double> xyz;
   glm::dvec3 operator()(std::int64_t p) const { return {xyz[3 * p], xyz[3 * p + 1], xyz[3 * p + 2]}; }
 };

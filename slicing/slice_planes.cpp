@@ -22,11 +22,9 @@ SliceAxis automatic_axis(const RecentredPoints& points, const PixelRays& rays) {
   if (!rays.perspective()) return axis;
   // In perspective the rays fan out: an eye inside the mesh's box sees the stack from both sides,
   // and the image's corner rays may run nearly along its planes.
-  glm::dvec3 lo(INFINITY), hi(-INFINITY);
-  for (std::size_t p = 0; p < points.xyz.size() / 3; ++p)
-    lo = glm::min(lo, points(static_cast<std::int64_t>(p))), hi = glm::max(hi, points(static_cast<std::int64_t>(p)));
   const glm::dvec3& eye = rays.camera().eye;
-  if (glm::all(glm::greaterThanEqual(eye, lo)) && glm::all(glm::lessThanEqual(eye, hi))) return SliceAxis::view;
+  if (glm::all(glm::greaterThanEqual(eye, points.lo)) && glm::all(glm::lessThanEqual(eye, points.hi)))
+    return SliceAxis::view;
   for (double x : {0.0, double(rays.width())})
     for (double y : {0.0, double(rays.height())})
       if (std::abs(rays.ray(x, y).dir[k]) < kMinCosine) return SliceAxis::view;
@@ -45,31 +43,27 @@ SlicePlanes::SlicePlanes(const RecentredPoints& points, const PixelRays& rays, S
     flipped_ = glm::dot(along, forward) > 0.0;  // then -along points towards the eye
   }
   normal_ = flipped_ ? -along : along;
-  const std::size_t n = points.xyz.size() / 3;
+  if (rays.perspective()) eye_height_ = glm::dot(rays.camera().eye, normal_);
   double lo = 0.0, hi = 0.0;
-  for (std::size_t p = 0; p < n; ++p) {
-    const double h = glm::dot(points(static_cast<std::int64_t>(p)), along);
-    lo = p == 0 ? h : std::min(lo, h), hi = p == 0 ? h : std::max(hi, h);
-  }
-  // The view family spends its planes on what lies in front of the eye (an eye inside the mesh
-  // would leave the planes behind it unused); an axis stack keeps its lattice.
-  if (axis_ == SliceAxis::view && rays.perspective()) {
-    const double eye = glm::dot(rays.camera().eye, normal_);
-    if (eye > lo) hi = std::min(hi, eye - 1e-9 * (hi - lo));
+  if (axis_ != SliceAxis::view) {  // the mesh's extent along the axis: its bounding box, whatever the view
+    const int k = static_cast<int>(axis_) - static_cast<int>(SliceAxis::x);
+    lo = points.lo[k], hi = points.hi[k];
+  } else {
+    for (std::size_t p = 0, n = points.xyz.size() / 3; p < n; ++p) {
+      const double h = glm::dot(points(static_cast<std::int64_t>(p)), along);
+      lo = p == 0 ? h : std::min(lo, h), hi = p == 0 ? h : std::max(hi, h);
+    }
+    // The view family spends its planes on what lies in front of the eye (an eye inside the mesh
+    // would leave the planes behind it unused); an axis stack keeps its lattice.
+    if (rays.perspective() && eye_height_ > lo) hi = std::min(hi, eye_height_ - 1e-9 * (hi - lo));
   }
   lo_ = lo, extent_ = hi - lo;
   if (!(extent_ > 0.0)) extent_ = std::max(1.0, std::abs(lo)) * 1e-300;  // a flat mesh: no plane crosses it
   height_.resize(static_cast<std::size_t>(count_) + 2);
   for (int j = 0; j <= count_ + 1; ++j) height_[static_cast<std::size_t>(j)] = height_of(j);
   // Planes at or behind the eye are never drawn (perspective; their polygons would be clipped away).
-  visible_end_ = count_ + 1;
-  if (rays.perspective()) {
-    const double eye = glm::dot(rays.camera().eye, normal_);
-    visible_end_ = first_above(std::nextafter(eye, -INFINITY));
-  }
-  front_end_ = height(visible_end_);
-  if (rays.perspective()) eye_height_ = glm::dot(rays.camera().eye, normal_);
-  front_end_ = std::min(front_end_, eye_height_);
+  visible_end_ = rays.perspective() ? first_above(std::nextafter(eye_height_, -INFINITY)) : count_ + 1;
+  front_end_ = std::min(height(visible_end_), eye_height_);
 }
 
 double SlicePlanes::lattice(int k) const {
