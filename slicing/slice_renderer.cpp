@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <optional>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -102,9 +103,9 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     s_lo = *lo, s_hi = *hi;
   }
 
-  std::vector<SlicePolygons> previous;  // the last level's polygons by plane,
-  std::vector<char> previous_kept;      // where they were kept (within the budget)
+  std::vector<std::optional<SlicePolygons>> previous;  // the last level's polygons by plane, where kept
   int previous_count = 0;
+  const bool software = !is_opengl(options.backend);
   for (std::size_t level = 0; level < levels.size(); ++level) {
     const auto t_frame = std::chrono::steady_clock::now();
     SlicingStats st;
@@ -119,11 +120,14 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     const int visible = planes.visible_end() - 1;  // planes 1..visible are drawn
     st.slices = visible, st.planes_behind_eye = count - visible;
 
+    // What the software back end composites from: the ray lengths between planes, the table, the
+    // boundary crossings, the slices' images (OpenGL takes each corner's length itself).
     auto t = std::chrono::steady_clock::now();
-    PixelLengths lengths = pixel_lengths(rays, planes.normal(), planes.spacing());
+    PixelLengths lengths;
+    if (software) lengths = pixel_lengths(rays, planes.normal(), planes.spacing());
     st.rays_along_planes = lengths.along;
     std::unique_ptr<PreintegratedTable> table;
-    if (options.integral == SliceIntegral::preintegrated && visible > 0) {
+    if (software && options.integral == SliceIntegral::preintegrated && visible > 0) {
       table = std::make_unique<PreintegratedTable>(tf, s_lo, s_hi, lengths.lo, lengths.hi, options.table_size);
       st.table_layers = table->layers();
       if (table->layers() > 1) {
@@ -146,20 +150,19 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     }
 #endif
     t = std::chrono::steady_clock::now();
-    const BoundaryCrossings crossings(boundary_, points, width, height);
+    std::optional<BoundaryCrossings> crossings;
+    if (software) crossings.emplace(boundary_, points, width, height);
     st.phase_seconds.push_back({"boundary", since(t)});
-    const Compositor compositor{tf, options, lengths, table.get(), crossings, planes.eye_height(), width, height};
     const int chunk = static_cast<int>(std::clamp<std::size_t>(
         kSliceImageBytes / (static_cast<std::size_t>(width) * height * sizeof(float)), 2, kMaxChunk));
+    const std::size_t pixels = software ? static_cast<std::size_t>(width) * height : 0;
     std::vector<SliceImage> slice(static_cast<std::size_t>(chunk));
     SliceImage behind;  // the last plane of the previous chunk
-    for (SliceImage* s = slice.data(); s != slice.data() + chunk; ++s)
-      s->s.assign(static_cast<std::size_t>(width) * height, kEmpty);
-    behind.s.assign(static_cast<std::size_t>(width) * height, kEmpty);
+    for (SliceImage& s : slice) s.s.assign(pixels, kEmpty);
+    behind.s.assign(pixels, kEmpty);
     behind.height = planes.height(0);  // the back end of the mesh: no plane covers it
     const bool keep = level + 1 < levels.size();
-    std::vector<SlicePolygons> kept(keep ? static_cast<std::size_t>(visible) + 1 : 0);
-    std::vector<char> kept_flag(kept.size(), 0);
+    std::vector<std::optional<SlicePolygons>> kept(keep ? static_cast<std::size_t>(visible) + 1 : 0);
     std::size_t kept_bytes = 0;
     double cut_s = 0.0, scan_s = 0.0, comp_s = 0.0;
     CutBlocks blocks;
@@ -174,8 +177,8 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
         const std::int64_t coarse = static_cast<std::int64_t>(first + static_cast<int>(k)) * previous_count;
         if (previous.empty() || coarse % count != 0) continue;
         const std::size_t pj = static_cast<std::size_t>(coarse / count);
-        if (pj < previous.size() && previous_kept[pj]) {
-          plane[k].kept = &previous[pj], wanted[k] = 0;
+        if (pj < previous.size() && previous[pj]) {
+          plane[k].kept = &*previous[pj], wanted[k] = 0;
           ++st.planes_reused;
         }
       }
@@ -211,6 +214,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       t = std::chrono::steady_clock::now();
       std::vector<const SliceImage*> in_order;
       for (std::size_t k = 0; k < here; ++k) in_order.push_back(&slice[k]);
+      const Compositor compositor{tf, options, lengths, table.get(), *crossings, planes.eye_height(), width, height};
       compositor(image, behind, in_order, end == visible + 1 ? planes.front_end() : kNoHeight);
       comp_s += since(t);
       std::swap(behind, slice[here - 1]);
@@ -221,13 +225,12 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
         if (kept_bytes + p.bytes() > kReuseBytes) break;
         kept_bytes += p.bytes();
         kept[static_cast<std::size_t>(first) + k] = std::move(p);
-        kept_flag[static_cast<std::size_t>(first) + k] = 1;
       }
     }
 #ifdef CELLPROJ_HAVE_OPENGL
     if (gl) image = gl->finish(), st.polygons = gl_counts.polygons, st.clipped_polygons = gl_counts.clipped_polygons;
 #endif
-    previous = std::move(kept), previous_kept = std::move(kept_flag);
+    previous = std::move(kept);
     previous_count = count;
     st.phase_seconds.push_back({"cut", cut_s});
     st.phase_seconds.push_back({"scan convert", scan_s});
