@@ -8,6 +8,7 @@
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
+#include "base/timing.hpp"
 #include "composite/ordered_pipeline.hpp"
 #include "grid/geometry.hpp"
 #include "parallel/gl_frame.hpp"
@@ -15,10 +16,6 @@
 
 namespace cellproj {
 namespace {
-
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind the
 // eye in perspective covers the whole image.
@@ -110,7 +107,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   auto t = std::chrono::steady_clock::now();
   const PixelRays rays(recentred(camera, points.centre), width, height);  // as the A-buffer's
   const ScreenPoints screen = project_points(points, scalar, rays);
-  st.phase_seconds.emplace_back("project points", since(t));
+  st.phase_seconds.emplace_back("project points", seconds_since(t));
 
   t = std::chrono::steady_clock::now();
   SortView sort_view{camera, width, height};
@@ -124,7 +121,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   st.problem_cells = view.problem_cells;
   st.cells_split = view.mesh->split.cells_split;
   st.cycle_splits = view.cycle_splits;
-  st.phase_seconds.emplace_back("sort", since(t));
+  st.phase_seconds.emplace_back("sort", seconds_since(t));
 
   const MethodTraits& method = traits(options.method);
   std::optional<OpacityTable> table;
@@ -146,9 +143,9 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
         image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
         OrderedCells{project, cells, order});
   }
-  st.phase_seconds.emplace_back("project and composite", since(t));
+  st.phase_seconds.emplace_back("project and composite", seconds_since(t));
   st.sort = std::move(view.sorted.stats);
-  st.seconds = since(start);
+  st.seconds = seconds_since(start);
   if (stats) *stats = std::move(st);
   return image;
 }

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "base/error.hpp"
+#include "base/timing.hpp"
 #include "optics/polynomial_segment.hpp"
 
 namespace cellproj {
@@ -101,7 +102,7 @@ Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, co
       },
       progress);
   if (stats) {
-    stats->trace_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    stats->trace_seconds = seconds_since(start);
     stats->segments = segments;
     stats->newton_failures = failures;
   }

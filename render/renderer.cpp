@@ -3,6 +3,7 @@
 #include <chrono>
 
 #include "base/error.hpp"
+#include "base/timing.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "parallel/projection_renderer.hpp"
 #include "raycast/reference_renderer.hpp"
@@ -10,10 +11,6 @@
 
 namespace cellproj {
 namespace {
-
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 // Bytes every renderer needs: the float image and its copy kept for output, 8-bit PNG rows, and
 // a fixed allowance for triangle and fragment buffers and thread stacks.
@@ -28,7 +25,7 @@ decltype(auto) timed_preparation(const Volume& volume, RenderReport* report, Get
   const int before = volume.preparations();
   const auto t = std::chrono::steady_clock::now();
   decltype(auto) prepared = get();
-  if (report && volume.preparations() != before) report->prepare_seconds += since(t);
+  if (report && volume.preparations() != before) report->prepare_seconds += seconds_since(t);
   return prepared;
 }
 

@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
+#include "base/timing.hpp"
 #include "slicing/slab_compositor.hpp"
 #ifdef CELLPROJ_HAVE_OPENGL
 #include "composite/gl_compositor.hpp"
@@ -19,10 +20,6 @@
 
 namespace cellproj {
 namespace {
-
-double since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
 
 constexpr double kNoHeight = std::numeric_limits<double>::quiet_NaN();
 constexpr std::size_t kSliceImageBytes = 64u << 20;  // the slices' scalar images of one chunk
@@ -136,7 +133,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
           lengths.layer[k] = static_cast<float>(table->layer_of(lengths.length[k]));
       }
     }
-    st.phase_seconds.push_back({"table", since(t)});
+    st.phase_seconds.push_back({"table", seconds_since(t)});
 
     Image image(width, height);
 #ifdef CELLPROJ_HAVE_OPENGL
@@ -152,7 +149,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     t = std::chrono::steady_clock::now();
     std::optional<BoundaryCrossings> crossings;
     if (software) crossings.emplace(boundary_, points, width, height);
-    st.phase_seconds.push_back({"boundary", since(t)});
+    st.phase_seconds.push_back({"boundary", seconds_since(t)});
     const int chunk = static_cast<int>(std::clamp<std::size_t>(
         kSliceImageBytes / (static_cast<std::size_t>(width) * height * sizeof(float)), 2, kMaxChunk));
     const std::size_t pixels = software ? static_cast<std::size_t>(width) * height : 0;
@@ -184,7 +181,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       }
       t = std::chrono::steady_clock::now();
       cut_planes(cells_, points, planes, sweep, sweep.advance(first, end), first, end, wanted, blocks);
-      cut_s += since(t);
+      cut_s += seconds_since(t);
 
 #ifdef CELLPROJ_HAVE_OPENGL
       if (gl) {  // the planes drawn in order, back to front, blended by OpenGL
@@ -194,7 +191,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
                      DitherShift(static_cast<std::uint64_t>(first) + k), corners, gl_counts);
           gl->draw(corners);
         }
-        comp_s += since(t);
+        comp_s += seconds_since(t);
         continue;
       }
 #endif
@@ -205,7 +202,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
         slice[k].height = planes.height(first + static_cast<int>(k));
         scan_convert(plane[k], width, height, slice[k], counts[k]);
       });
-      scan_s += since(t);
+      scan_s += seconds_since(t);
       for (const ScanCounts& c : counts) {
         st.fragments += c.fragments, st.overlapping_fragments += c.overlapping_fragments;
         st.polygons += c.polygons, st.clipped_polygons += c.clipped_polygons;
@@ -216,7 +213,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       for (std::size_t k = 0; k < here; ++k) in_order.push_back(&slice[k]);
       const Compositor compositor{tf, options, lengths, table.get(), *crossings, planes.eye_height(), width, height};
       compositor(image, behind, in_order, end == visible + 1 ? planes.front_end() : kNoHeight);
-      comp_s += since(t);
+      comp_s += seconds_since(t);
       std::swap(behind, slice[here - 1]);
 
       for (std::size_t k = 0; k < here && keep; ++k) {  // for the next level, within the budget
@@ -235,7 +232,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     st.phase_seconds.push_back({"cut", cut_s});
     st.phase_seconds.push_back({"scan convert", scan_s});
     st.phase_seconds.push_back({"composite", comp_s});
-    st.seconds = since(t_frame);
+    st.seconds = seconds_since(t_frame);
     done(level, count, image, st);
   }
 }

@@ -1,14 +1,11 @@
 #pragma once
 // Timing helpers of the subcommands.
 #include <algorithm>
-#include <chrono>
 #include <vector>
 
-namespace cellproj {
+#include "base/timing.hpp"
 
-inline double seconds_since(std::chrono::steady_clock::time_point t) {
-  return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
-}
+namespace cellproj {
 
 inline double median(std::vector<double> v) {
   if (v.empty()) return 0.0;

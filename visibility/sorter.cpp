@@ -12,6 +12,7 @@
 #include <tbb/parallel_invoke.h>
 
 #include "base/error.hpp"
+#include "base/timing.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "visibility/image_faces.hpp"
 
@@ -82,7 +83,7 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
     auto timed = [](double& seconds, auto&& work) {
       const auto t = std::chrono::steady_clock::now();
       work();
-      seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+      seconds = seconds_since(t);
     };
     tbb::parallel_invoke([&] { timed(face_seconds, find_face_relations); },
                          [&] {
@@ -274,7 +275,7 @@ SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const
     }
     case SortMethod::automatic: break;
   }
-  r.stats.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  r.stats.seconds = seconds_since(start);
   return r;
 }
 
