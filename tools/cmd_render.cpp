@@ -94,6 +94,16 @@ void refuse_unused(const Renderer& renderer, const std::vector<std::string>& giv
       throw InputError("--" + g + " does not apply to --method " + renderer.name() + ", which reads --" + list);
 }
 
+// The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`.
+void write_outputs(const Image& image, const glm::dvec3& background, const std::string& png, const std::string& npy,
+                   const std::string& what) {
+  if (!png.empty()) write_png(image, background, png);
+  if (!npy.empty()) write_npy(image, npy);
+  for (const std::string& out : {png, npy})
+    if (!out.empty()) std::printf("wrote %s (%s)\n", out.c_str(), what.c_str());
+  std::fflush(stdout);
+}
+
 int run_render(const RenderArgs& a) {
   const auto t_load = std::chrono::steady_clock::now();
   Scene scene = load_scene(a.scene);
@@ -103,8 +113,6 @@ int run_render(const RenderArgs& a) {
   const std::unique_ptr<Renderer> renderer = make_renderer(settings);
   refuse_unused(*renderer, a.given);
   const std::vector<int> levels = a.progressive.empty() ? std::vector<int>{} : parse_levels(a.progressive);
-  if (!levels.empty() && settings.mode != RenderMode::slicing)
-    throw InputError("--progressive refines slicing: give --method slicing");
   if (!levels.empty() && a.frames > 1) throw InputError("--progressive renders one view: it does not go with --frames");
   if (settings.mode == RenderMode::slicing)
     for (int n : levels.empty() ? std::vector<int>{settings.slicing.slices} : levels)
@@ -147,14 +155,11 @@ int run_render(const RenderArgs& a) {
     if (!levels.empty()) {  // each level written as soon as it is done, for the interactive user
       render_progressive(volume, field, prepared.tf, settings, prepared.camera, size, levels,
                          [&](std::size_t, int slices, const Image& img, const RenderReport& r) {
-                           if (!png.empty()) write_png(img, scene.background, level_path(png, slices));
-                           if (!a.npy.empty()) write_npy(img, level_path(a.npy, slices));
-                           for (const std::string& out : {png, a.npy})
-                             if (!out.empty())
-                               std::printf("wrote %s (%dx%d, slicing, %d slices, %.3f s)\n",
-                                           level_path(out, slices).c_str(), scene.width, scene.height, slices,
-                                           r.seconds);
-                           std::fflush(stdout);
+                           char what[96];
+                           std::snprintf(what, sizeof what, "%dx%d, slicing, %d slices, %.3f s", scene.width,
+                                         scene.height, slices, r.seconds);
+                           write_outputs(img, scene.background, level_path(png, slices), level_path(a.npy, slices),
+                                         what);
                            if (a.stats) {
                              nlohmann::json j = {{"method", a.method}, {"level_slices", slices}};
                              j.update(report_json(r));
@@ -178,13 +183,11 @@ int run_render(const RenderArgs& a) {
   for (const auto& w : report.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());  // the last frame's
   if (!levels.empty()) return kExitOk;
 
-  if (!png.empty()) write_png(first, scene.background, png);
-  if (!a.npy.empty()) write_npy(first, a.npy);
   const double frame_seconds = median(frame_times);
-  for (const std::string& out : {png, a.npy})
-    if (!out.empty())
-      std::printf("wrote %s (%dx%d, %s, %.3f s per frame)\n", out.c_str(), scene.width, scene.height, a.method.c_str(),
-                  frame_seconds);
+  char what[128];
+  std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, a.method.c_str(),
+                frame_seconds);
+  write_outputs(first, scene.background, png, a.npy, what);
 
   if (a.stats) {
     nlohmann::json s = {{"method", a.method},
