@@ -14,5 +14,7 @@ constexpr bool is_opengl(Backend backend) { return backend != Backend::software;
 
 // Whether this build has the OpenGL back ends (OSMesa was found when it was configured).
 bool opengl_built();
+// Throws ResourceError, saying why, for an OpenGL back end in a build without it.
+void check_built(Backend backend);
 
 }  // namespace cellproj

@@ -69,10 +69,7 @@ OpacityTable opacity_table(const TransferFunction& tf, int size, double max_diam
 }  // namespace
 
 void check_options(const ProjectionOptions& o) {
-  if (is_opengl(o.backend) && !opengl_built())
-    throw ResourceError(
-        "the OpenGL back ends were not built (OSMesa, libosmesa6-dev, was not found when cellproj was "
-        "configured); use the software back end");
+  check_built(o.backend);
   OpacityTable::check_size(o.table_size);
   if (is_opengl(o.backend) && !traits(o.method).opengl) {
     std::string drawable;

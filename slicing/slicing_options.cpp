@@ -11,10 +11,7 @@ void check_options(const SlicingOptions& o) {
   if (o.slices < 1) throw InputError("--slices must be at least 1, not " + std::to_string(o.slices));
   if (o.table_size < 2 || o.table_size > 4096)
     throw InputError("--table-size for slicing must be in [2, 4096], not " + std::to_string(o.table_size));
-  if (is_opengl(o.backend) && !opengl_built())
-    throw ResourceError(
-        "the OpenGL back ends were not built (OSMesa, libosmesa6-dev, was not found when cellproj was "
-        "configured); use the software back end");
+  check_built(o.backend);
   if (is_opengl(o.backend) && o.integral == SliceIntegral::preintegrated)
     throw InputError(
         "the OpenGL back ends draw --slice-integral sampled (each polygon with its corners' colour and opacity); "
