@@ -31,18 +31,19 @@ SliceAxis automatic_axis(const RecentredPoints& points, const PixelRays& rays) {
   return axis;
 }
 
+glm::dvec3 slice_normal(SliceAxis axis, const PixelRays& rays) {
+  if (axis == SliceAxis::view) return -rays.forward();
+  glm::dvec3 n(0.0);
+  n[static_cast<int>(axis) - static_cast<int>(SliceAxis::x)] = 1.0;
+  return glm::dot(n, rays.forward()) > 0.0 ? -n : n;  // towards the eye
+}
+
 SlicePlanes::SlicePlanes(const RecentredPoints& points, const PixelRays& rays, SliceAxis axis, int slices)
     : axis_(axis), count_(slices) {
-  const glm::dvec3& forward = rays.forward();
   if (axis_ == SliceAxis::automatic) axis_ = automatic_axis(points, rays);
-  glm::dvec3 along(0.0);  // the direction whose coordinate the lattice is laid on
-  if (axis_ == SliceAxis::view) {
-    along = -forward;
-  } else {
-    along[static_cast<int>(axis_) - static_cast<int>(SliceAxis::x)] = 1.0;
-    flipped_ = glm::dot(along, forward) > 0.0;  // then -along points towards the eye
-  }
-  normal_ = flipped_ ? -along : along;
+  normal_ = slice_normal(axis_, rays);
+  const glm::dvec3 along = axis_ == SliceAxis::view ? normal_ : glm::abs(normal_);  // the lattice's direction
+  flipped_ = along != normal_;
   if (rays.perspective()) eye_height_ = glm::dot(rays.camera().eye, normal_);
   double lo = 0.0, hi = 0.0;
   if (axis_ != SliceAxis::view) {  // the mesh's extent along the axis: its bounding box, whatever the view

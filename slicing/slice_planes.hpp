@@ -19,6 +19,10 @@ namespace cellproj {
 // image runs within 73 degrees of that stack's planes, where the view family is used.
 SliceAxis automatic_axis(const RecentredPoints& points, const PixelRays& rays);
 
+// The unit normal of family `axis` (not automatic) in this view, pointing towards the eye: the view
+// direction reversed, or the axis or its negation.
+glm::dvec3 slice_normal(SliceAxis axis, const PixelRays& rays);
+
 class SlicePlanes {
  public:
   // The planes of `axis` (automatic: automatic_axis) for the

@@ -100,26 +100,41 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     s_lo = *lo, s_hi = *hi;
   }
 
+  // What every level shares: the family (the plane count changes neither its normal nor its
+  // extent), the points' heights along the normal, and for the software back end the boundary
+  // crossings and the slices' images (OpenGL takes each corner's values itself).
+  const bool software = !is_opengl(options.backend);
+  const SliceAxis axis = options.axis == SliceAxis::automatic ? automatic_axis(points_, rays) : options.axis;
+  const glm::dvec3 normal = slice_normal(axis, rays);
+  tbb::parallel_for(std::size_t{0}, n,
+                    [&](std::size_t p) { points.height[p] = glm::dot(points_(static_cast<std::int64_t>(p)), normal); });
+  auto t = std::chrono::steady_clock::now();
+  std::optional<BoundaryCrossings> crossings;
+  if (software) crossings.emplace(boundary_, points, width, height);
+  const double boundary_seconds = seconds_since(t);
+  const int chunk = static_cast<int>(std::clamp<std::size_t>(
+      kSliceImageBytes / (static_cast<std::size_t>(width) * height * sizeof(float)), 2, kMaxChunk));
+  const std::size_t pixels = software ? static_cast<std::size_t>(width) * height : 0;
+  std::vector<SliceImage> slice(static_cast<std::size_t>(chunk));
+  SliceImage behind;  // the last plane of the previous chunk
+  for (SliceImage& s : slice) s.s.assign(pixels, kEmpty);
+  behind.s.assign(pixels, kEmpty);
+
   std::vector<std::optional<SlicePolygons>> previous;  // the last level's polygons by plane, where kept
   int previous_count = 0;
-  const bool software = !is_opengl(options.backend);
   for (std::size_t level = 0; level < levels.size(); ++level) {
     const auto t_frame = std::chrono::steady_clock::now();
     SlicingStats st;
     const int count = levels[level];
-    const SlicePlanes planes(points_, rays, options.axis, count);
+    const SlicePlanes planes(points_, rays, axis, count);
     st.axis = planes.axis(), st.spacing = planes.spacing();
-    tbb::parallel_for(std::size_t{0}, n, [&](std::size_t p) {
-      points.height[p] = glm::dot(points_(static_cast<std::int64_t>(p)), planes.normal());
-    });
     CellSweep sweep(cells_, points, planes);
     st.cells_between_planes = sweep.between_planes();
     const int visible = planes.visible_end() - 1;  // planes 1..visible are drawn
     st.slices = visible, st.planes_behind_eye = count - visible;
 
-    // What the software back end composites from: the ray lengths between planes, the table, the
-    // boundary crossings, the slices' images (OpenGL takes each corner's length itself).
-    auto t = std::chrono::steady_clock::now();
+    // The software back end's ray lengths between planes and preintegrated table.
+    t = std::chrono::steady_clock::now();
     PixelLengths lengths;
     if (software) lengths = pixel_lengths(rays, planes.normal(), planes.spacing());
     st.rays_along_planes = lengths.along;
@@ -146,17 +161,8 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       gl->begin(nullptr);
     }
 #endif
-    t = std::chrono::steady_clock::now();
-    std::optional<BoundaryCrossings> crossings;
-    if (software) crossings.emplace(boundary_, points, width, height);
-    st.phase_seconds.push_back({"boundary", seconds_since(t)});
-    const int chunk = static_cast<int>(std::clamp<std::size_t>(
-        kSliceImageBytes / (static_cast<std::size_t>(width) * height * sizeof(float)), 2, kMaxChunk));
-    const std::size_t pixels = software ? static_cast<std::size_t>(width) * height : 0;
-    std::vector<SliceImage> slice(static_cast<std::size_t>(chunk));
-    SliceImage behind;  // the last plane of the previous chunk
-    for (SliceImage& s : slice) s.s.assign(pixels, kEmpty);
-    behind.s.assign(pixels, kEmpty);
+    st.phase_seconds.push_back({"boundary", level == 0 ? boundary_seconds : 0.0});
+    behind.clear(width);
     behind.height = planes.height(0);  // the back end of the mesh: no plane covers it
     const bool keep = level + 1 < levels.size();
     std::vector<std::optional<SlicePolygons>> kept(keep ? static_cast<std::size_t>(visible) + 1 : 0);
