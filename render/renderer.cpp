@@ -66,27 +66,26 @@ class ProjectionMode final : public Renderer {
     r.add("backend", options_.backend);
     r.add("sort", s.method);
     r.add("tetrahedralize", p.tetrahedralize);
-    for (const auto& [name, value] : {std::pair<const char*, std::int64_t>{"cells_projected", p.cells},
-                                      {"tets", p.tets},
-                                      {"problem_cells", p.problem_cells},
-                                      {"cells_split", p.cells_split},
-                                      {"cycle_splits", p.cycle_splits},
-                                      {"polyhedra", c.polyhedra},
-                                      {"polygons", c.polygons},
-                                      {"subdivisions_looked_up", c.subdivisions_looked_up},
-                                      {"class1_tets", c.class1},
-                                      {"class2_tets", c.class2},
-                                      {"empty_tets", c.empty},
-                                      {"behind_eye_tets", c.behind_eye},
-                                      {"fragments", c.fragments},
-                                      {"breakpoint_cells", c.breakpoint_cells},
-                                      {"direct_cells", c.direct_cells},
-                                      {"face_relations", s.face_relations},
-                                      {"gap_relations", s.gap_relations},
-                                      {"gap_pair_tests", s.gap_pair_tests},
-                                      {"abuffer_runs", s.abuffer_runs},
-                                      {"cycles", static_cast<std::int64_t>(s.cycles.size())}})
-      r.add(name, value);
+    r.add({{"cells_projected", p.cells},
+           {"tets", p.tets},
+           {"problem_cells", p.problem_cells},
+           {"cells_split", p.cells_split},
+           {"cycle_splits", p.cycle_splits},
+           {"polyhedra", c.polyhedra},
+           {"polygons", c.polygons},
+           {"subdivisions_looked_up", c.subdivisions_looked_up},
+           {"class1_tets", c.class1},
+           {"class2_tets", c.class2},
+           {"empty_tets", c.empty},
+           {"behind_eye_tets", c.behind_eye},
+           {"fragments", c.fragments},
+           {"breakpoint_cells", c.breakpoint_cells},
+           {"direct_cells", c.direct_cells},
+           {"face_relations", s.face_relations},
+           {"gap_relations", s.gap_relations},
+           {"gap_pair_tests", s.gap_pair_tests},
+           {"abuffer_runs", s.abuffer_runs},
+           {"cycles", static_cast<std::int64_t>(s.cycles.size())}});
     r.add("gaps_from", s.method == SortMethod::mpvo_abuffer ? ReportValue(s.gaps_from) : ReportValue());
     if (!p.gl_renderer.empty()) r.add("gl_renderer", p.gl_renderer);
     warn(r, p);
@@ -160,17 +159,16 @@ void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
   r.add("backend", o.backend);
   r.add("slice_integral", o.integral);
   r.add("spacing", st.spacing);
-  for (const auto& [name, value] : {std::pair<const char*, std::int64_t>{"slices", st.slices},
-                                    {"planes_behind_eye", st.planes_behind_eye},
-                                    {"planes_reused", st.planes_reused},
-                                    {"polygons", st.polygons},
-                                    {"clipped_polygons", st.clipped_polygons},
-                                    {"fragments", st.fragments},
-                                    {"overlapping_fragments", st.overlapping_fragments},
-                                    {"cells_between_planes", st.cells_between_planes},
-                                    {"rays_along_planes", st.rays_along_planes},
-                                    {"table_layers", st.table_layers}})
-    r.add(name, value);
+  r.add({{"slices", st.slices},
+         {"planes_behind_eye", st.planes_behind_eye},
+         {"planes_reused", st.planes_reused},
+         {"polygons", st.polygons},
+         {"clipped_polygons", st.clipped_polygons},
+         {"fragments", st.fragments},
+         {"overlapping_fragments", st.overlapping_fragments},
+         {"cells_between_planes", st.cells_between_planes},
+         {"rays_along_planes", st.rays_along_planes},
+         {"table_layers", st.table_layers}});
   if (!st.gl_renderer.empty()) r.add("gl_renderer", st.gl_renderer);
   if (st.cells_between_planes > 0)
     r.warnings.push_back(std::to_string(st.cells_between_planes) +

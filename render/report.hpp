@@ -2,6 +2,7 @@
 // What a render call measured and what the user should know about its picture, in a form any
 // front end can print without knowing the renderer (the CLI's --stats JSON, Python's dict).
 #include <cstdint>
+#include <initializer_list>
 #include <string>
 #include <utility>
 #include <variant>
@@ -16,8 +17,8 @@ namespace cellproj {
 
 // A counter, a time, a text, or a choice the renderer made (printed by its name, scene/names.hpp);
 // monostate where a value does not apply to this frame (JSON null).
-using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, Backend, SortMethod,
-                                 GapMethod, Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral>;
+using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, Backend, SortMethod, GapMethod,
+                                 Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral>;
 
 struct RenderReport {
   double seconds = 0.0;          // the frame, preparation excluded
@@ -27,6 +28,9 @@ struct RenderReport {
   std::vector<std::string> warnings;                        // where the picture may be wrong, and what to do about it
 
   void add(std::string name, ReportValue value) { values.emplace_back(std::move(name), std::move(value)); }
+  void add(std::initializer_list<std::pair<const char*, std::int64_t>> counters) {
+    for (const auto& [name, value] : counters) add(name, value);
+  }
 };
 
 }  // namespace cellproj
