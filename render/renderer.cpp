@@ -205,26 +205,28 @@ class SlicingMode final : public Renderer {
                ImageSize size, RenderReport* report, const Progress&) const override {
     Image image;
     render_levels(volume, field, tf, camera, size, {options_.slices},
-                  [&](std::size_t, int, const Image& i, const RenderReport& r) {
-                    image = i;
-                    if (report) *report = r;
+                  [&](std::size_t, int, Image&& i, RenderReport&& r) {
+                    image = std::move(i);
+                    if (report) *report = std::move(r);
                   });
     return image;
   }
 
+  // Each level's image and report, the callee's to keep.
+  using Taken = std::function<void(std::size_t level, int slices, Image&&, RenderReport&&)>;
   void render_levels(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
-                     ImageSize size, const std::vector<int>& levels, const LevelDone& done) const {
+                     ImageSize size, const std::vector<int>& levels, const Taken& done) const {
     volume.check(field);
     RenderReport first;
     const SliceRenderer& renderer =
         timed_preparation(volume, &first, [&]() -> const SliceRenderer& { return volume.slicing(mode_); });
     renderer.render_levels(field.values, tf, camera, size.width, size.height, options_, levels,
-                           [&](std::size_t level, int slices, const Image& image, const SlicingStats& st) {
+                           [&](std::size_t level, int slices, Image&& image, const SlicingStats& st) {
                              RenderReport r;
                              if (level == 0) r.prepare_seconds = first.prepare_seconds;
                              fill(r, st, options_);
                              r.add("tetrahedralize", mode_);
-                             done(level, slices, image, r);
+                             done(level, slices, std::move(image), std::move(r));
                            });
   }
 
@@ -248,7 +250,11 @@ void render_progressive(const Volume& volume, const Field& field, const Transfer
                         const std::vector<int>& levels, const LevelDone& done) {
   if (settings.mode != RenderMode::slicing)
     throw InputError("progressive refinement is a slicing feature: use --method slicing");
-  SlicingMode(settings.slicing, settings.tetrahedralize).render_levels(volume, field, tf, camera, size, levels, done);
+  SlicingMode(settings.slicing, settings.tetrahedralize)
+      .render_levels(volume, field, tf, camera, size, levels,
+                     [&](std::size_t level, int slices, Image&& image, RenderReport&& report) {
+                       done(level, slices, image, report);
+                     });
 }
 
 VolumeSize size_of(const MeshView& mesh) {

@@ -63,8 +63,8 @@ Image SliceRenderer::render(const double* scalar, const TransferFunction& tf, co
                             int height, const SlicingOptions& options, SlicingStats* stats) const {
   Image result;
   render_levels(scalar, tf, camera, width, height, options, {options.slices},
-                [&](std::size_t, int, const Image& image, const SlicingStats& st) {
-                  result = image;
+                [&](std::size_t, int, Image&& image, const SlicingStats& st) {
+                  result = std::move(image);
                   if (stats) *stats = st;
                 });
   return result;
@@ -239,7 +239,7 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     st.phase_seconds.push_back({"scan convert", scan_s});
     st.phase_seconds.push_back({"composite", comp_s});
     st.seconds = seconds_since(t_frame);
-    done(level, count, image, st);
+    done(level, count, std::move(image), st);
   }
 }
 

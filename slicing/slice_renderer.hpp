@@ -40,8 +40,8 @@ struct SlicingStats {
 };
 
 // One level of progressive refinement, as soon as it is composited: its index in the list, its
-// plane count, the image and its stats.
-using SliceLevelDone = std::function<void(std::size_t level, int slices, const Image&, const SlicingStats&)>;
+// plane count, the image (the callee's to keep) and its stats.
+using SliceLevelDone = std::function<void(std::size_t level, int slices, Image&&, const SlicingStats&)>;
 
 class SliceRenderer {
  public:
