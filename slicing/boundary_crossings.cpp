@@ -57,8 +57,7 @@ BoundaryCrossings::BoundaryCrossings(const std::vector<BoundaryTriangle>& triang
   // Bands of rows in parallel, each scan converting every triangle over its rows: no two threads
   // write a pixel, and each pixel's crossings are sorted at the end, so the order does not matter.
   constexpr int kBandRows = 16;
-  std::vector<std::int64_t> overflow(static_cast<std::size_t>((height + kBandRows - 1) / kBandRows), 0);
-  tbb::parallel_for(0, static_cast<int>(overflow.size()), [&](int band) {
+  tbb::parallel_for(0, (height + kBandRows - 1) / kBandRows, [&](int band) {
     const int j0 = band * kBandRows, j1 = std::min(height, j0 + kBandRows);
     for (const Projected& q : tri) {
       if (!q.drawn) continue;
@@ -75,14 +74,11 @@ BoundaryCrossings::BoundaryCrossings(const std::vector<BoundaryTriangle>& triang
     for (int j = j0; j < j1; ++j)
       for (int i = 0; i < width; ++i) {
         const std::size_t px = static_cast<std::size_t>(j) * width + i;
-        if (n_[px] > kMax)
-          ++overflow[static_cast<std::size_t>(band)];
-        else
+        if (n_[px] <= kMax)
           std::sort(h_.begin() + static_cast<std::ptrdiff_t>(px * kMax),
                     h_.begin() + static_cast<std::ptrdiff_t>(px * kMax + n_[px]));
       }
   });
-  for (std::int64_t o : overflow) overflowing_ += o;
 }
 
 double BoundaryCrossings::between(std::size_t pixel, double lo, double hi, bool from_hi) const {

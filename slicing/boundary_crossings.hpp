@@ -27,12 +27,10 @@ class BoundaryCrossings {
   // The crossing of pixel `pixel` between heights lo < hi (ends included) nearest to hi (from_hi) or to
   // lo; infinity when it has none there, NaN when its crossings are not known (too many).
   double between(std::size_t pixel, double lo, double hi, bool from_hi) const;
-  std::int64_t overflowing() const { return overflowing_; }  // pixels crossing more than kMax times
 
  private:
   std::vector<float> h_;         // kMax per pixel, sorted
   std::vector<std::uint8_t> n_;  // per pixel (kMax + 1: too many)
-  std::int64_t overflowing_ = 0;
 };
 
 }  // namespace cellproj
