@@ -3,7 +3,8 @@
 # rendered by A and B in turn (A, B, B, A, ... so drift favours neither), and the ratio of their
 # median frame times is printed, with whether their pictures are bit-identical. For a refactor
 # that must not change pictures or speed. Then every other path (each method, sort, back end,
-# tetrahedralize mode, interpolation, --frames) at 96x80, compared bit for bit.
+# tetrahedralize mode, interpolation, --frames, slicing's families, integrals and back
+# ends) at 96x80, compared bit for bit.
 # usage: bench/compare_builds.sh A/bin/cellproj B/bin/cellproj [ROUNDS]   (about 5 minutes)
 set -euo pipefail
 a=$1; b=$2; rounds=${3:-3}
@@ -38,7 +39,11 @@ done
 paths=("--method pt-linear" "--method pt-analytic" "--method exact --interpolation canonical-tets"
        "--tetrahedralize all" "--tetrahedralize none" "--sort centroid" "--sort mpvo" "--sort mpvo-abuffer"
        "--sort pairwise" "--method pt-table --backend opengl" "--method pt-table --backend opengl-8bit"
-       "--method pt-table --backend opengl-8bit-dither" "--frames 3 --threads 1")
+       "--method pt-table --backend opengl-8bit-dither" "--frames 3 --threads 1"
+       "--method slicing --slices 64" "--method slicing --slices 200 --slice-integral sampled"
+       "--method slicing --slices 128 --slice-axis view" "--method slicing --slices 96 --tetrahedralize all --slice-axis x"
+       "--method slicing --slices 50 --tetrahedralize none --slice-integral sampled"
+       "--method slicing --slices 64 --slice-integral sampled --backend opengl-8bit-dither")
 same=0; differ=0
 for s in "${scenes[@]}"; do
   for p in "${paths[@]}"; do
