@@ -1,6 +1,7 @@
 // cellproj compare A.npy B.npy: how far apart two float images are (the numbers of methods.md).
 #include <cstdio>
 
+#include "base/error.hpp"
 #include "tools/commands.hpp"
 #include "view/image.hpp"
 
@@ -10,6 +11,7 @@ Action add_compare(CLI::App& app) {
   struct Args {
     std::string a, b, diff;
     double scale = 10.0;
+    int downsample = 1;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd =
@@ -18,8 +20,17 @@ Action add_compare(CLI::App& app) {
   cmd->add_option("b", args->b, "Second image (.npy), e.g. the exact reference")->required();
   cmd->add_option("--diff", args->diff, "Also write |a - b| as a PNG, multiplied by --scale");
   cmd->add_option("--scale", args->scale, "Gain of the --diff image (default 10)")->check(CLI::PositiveNumber);
+  cmd->add_option("--downsample", args->downsample,
+                  "Box-filter B down by K first (B rendered at K times A's size: the anti-aliased reference)")
+      ->check(CLI::Range(1, 64));
   return [args] {
-    const Image a = read_npy(args->a), b = read_npy(args->b);
+    const Image a = read_npy(args->a);
+    Image b;
+    try {
+      b = downsample(read_npy(args->b), args->downsample);
+    } catch (const InputError& e) {
+      throw InputError(args->b + ": " + e.what());
+    }
     const ImageDifference d = compare(a, b);
     if (!args->diff.empty()) write_png(difference_image(a, b, args->scale), glm::dvec3(0.0), args->diff);
     std::printf("{\"max_abs\": %.6g, \"rmse\": %.6g}\n", d.max_abs, d.rmse);

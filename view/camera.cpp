@@ -90,6 +90,15 @@ void PixelRays::project(const glm::dvec3& p, double& x, double& y, double& z) co
   y = (1.0 - v / half_h_) * 0.5 * height_;
 }
 
+std::array<glm::dvec3, 3> PixelRays::ray_space_jacobian(const glm::dvec3& p) const {
+  const double sx = 0.5 * width_ / half_w_, sy = -0.5 * height_ / half_h_;  // pixels per unit of u and v
+  if (!perspective()) return {sx * right_, sy * up_, forward_};
+  const glm::dvec3 d = p - camera_.eye;
+  const double u = glm::dot(d, right_), v = glm::dot(d, up_), z = glm::dot(d, forward_);
+  // x = (u / (z half_w) + 1) W / 2: d x / d p = sx (right / z - u forward / z^2), and so for y.
+  return {sx * (right_ / z - (u / (z * z)) * forward_), sy * (up_ / z - (v / (z * z)) * forward_), d / glm::length(d)};
+}
+
 void PixelRays::project_homogeneous(const glm::dvec3& p, double& hx, double& hy, double& z) const {
   const glm::dvec3 d = p - camera_.eye;
   const double u = glm::dot(d, right_), v = glm::dot(d, up_);

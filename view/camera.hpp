@@ -1,6 +1,7 @@
 #pragma once
 // The camera and the rays through pixel centres. Pixel (i, j) is column i from the left and row j
 // from the top; its ray passes through (i + 0.5, j + 0.5).
+#include <array>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -58,6 +59,10 @@ class PixelRays {
   // hx = x, hy = y): each is affine in p, so it interpolates along straight lines and clips against
   // a near plane, even for points behind the eye; divide by z to get x, y.
   void project_homogeneous(const glm::dvec3& p, double& hx, double& hy, double& z) const;
+  // The rows of the Jacobian at p of (x, y, t): image position and distance t along the ray from
+  // its origin, EWA's ray space (Zwicker et al. 2001, section 4.2): the local affine map a splat
+  // centred at p is projected through.
+  std::array<glm::dvec3, 3> ray_space_jacobian(const glm::dvec3& p) const;
   // Ray length per unit of view depth through image position (x, y): 1 / cos of the ray's angle
   // with the view direction (1 in orthographic projection).
   double length_per_depth(double x, double y) const {

@@ -118,4 +118,24 @@ ImageDifference compare(const Image& a, const Image& b) {
   return d;
 }
 
+Image downsample(const Image& image, int k) {
+  if (k < 1 || image.width % k != 0 || image.height % k != 0)
+    throw InputError("downsample: " + std::to_string(k) + " does not divide the image's " +
+                     std::to_string(image.width) + "x" + std::to_string(image.height));
+  Image out(image.width / k, image.height / k);
+  const double inv = 1.0 / (double(k) * k);
+  for (int j = 0; j < out.height; ++j)
+    for (int i = 0; i < out.width; ++i) {
+      double sum[4] = {0, 0, 0, 0};
+      for (int b = 0; b < k; ++b)
+        for (int a = 0; a < k; ++a) {
+          const float* p = image.pixel(i * k + a, j * k + b);
+          for (int c = 0; c < 4; ++c) sum[c] += p[c];
+        }
+      float* q = out.pixel(i, j);
+      for (int c = 0; c < 4; ++c) q[c] = static_cast<float>(sum[c] * inv);
+    }
+  return out;
+}
+
 }  // namespace cellproj

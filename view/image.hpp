@@ -29,6 +29,10 @@ struct ImageDifference {
   double max_abs = 0.0;  // largest channel difference
 };
 ImageDifference compare(const Image& a, const Image& b);
+// The image box-filtered down by k in each direction: each pixel the mean of a k x k block (the
+// anti-aliased reference of an image rendered at k times the resolution). Throws InputError
+// unless k >= 1 divides both sides.
+Image downsample(const Image& image, int k);
 // |a - b| per pixel times `scale`, clamped to 1, opaque: each colour channel shows the larger of
 // its own difference and the opacity difference (for looking at where two methods disagree).
 Image difference_image(const Image& a, const Image& b, double scale);
