@@ -114,11 +114,41 @@ Mesh swirl(int n, bool tets) {
   return m;
 }
 
+// The growth ratio r of n geometric cells from `first` to a total of 1: first (r^n - 1) / (r - 1) = 1.
+double growth_ratio(int n, double first) {
+  if (n * first >= 1.0) return 1.0;
+  double lo = 1.0, hi = 2.0;
+  auto total = [&](double r) { return first * (std::pow(r, n) - 1.0) / (r - 1.0); };
+  while (total(hi) < 1.0) hi *= 2.0;
+  for (int k = 0; k < 200; ++k) (total(0.5 * (lo + hi)) < 1.0 ? lo : hi) = 0.5 * (lo + hi);
+  return 0.5 * (lo + hi);
+}
+
 }  // namespace
+
+Mesh make_graded(int n, double first, bool tetrahedra) {
+  const double r = growth_ratio(n, first);
+  auto axis = [&](double u) {  // u in [0, 1] at the nodes k / (2n): 2n cells, the smallest at 0.5
+    const double t = std::abs(2.0 * u - 1.0);
+    const double x = r == 1.0 ? t : (std::pow(r, n * t) - 1.0) / (std::pow(r, n) - 1.0);
+    return u < 0.5 ? -x : x;
+  };
+  Mesh m = make_curvilinear(
+      2 * n, 2 * n, 2 * n, [&](const glm::dvec3& u) { return glm::dvec3(axis(u.x), axis(u.y), 2.0 * u.z - 1.0); },
+      tetrahedra);
+  // A hot filament along the z axis, 0.004 in radius (about a pixel wide at 512 x 512) and
+  // brightening upwards, over a gentle background: only the cells thinner than a pixel resolve it.
+  set_field(m, "scalar", [](const glm::dvec3& x) {
+    const double d2 = x.x * x.x + x.y * x.y, sigma = 0.004;
+    return 0.2 * (1.0 - glm::dot(x, x) / 3.0) + (0.55 + 0.25 * x.z) * std::exp(-d2 / (2.0 * sigma * sigma));
+  });
+  return m;
+}
 
 std::string generated_kinds() {
   return "box (hexahedra), box-tets (6 tetrahedra per hexahedron), swirl (non-convex curvilinear ring, hexahedra), "
-         "swirl-tets, mixed (twisted box of hexahedra, wedges, pyramids and tetrahedra)";
+         "swirl-tets, mixed (twisted box of hexahedra, wedges, pyramids and tetrahedra), graded (hexahedra of "
+         "[-1, 1]^3 thinning geometrically to 1e-4 towards the z axis, a hot filament along it), graded-tets";
 }
 
 Mesh generate(const std::string& kind, int n) {
@@ -134,6 +164,8 @@ Mesh generate(const std::string& kind, int n) {
       return glm::dvec3(p.x * std::cos(a) - p.y * std::sin(a), p.x * std::sin(a) + p.y * std::cos(a), p.z);
     });
     set_field(m, "scalar", [](const glm::dvec3& x) { return 1.0 - glm::dot(x, x) / 3.0 + 0.3 * x.x * x.y * x.z; });
+  } else if (kind == "graded" || kind == "graded-tets") {
+    m = make_graded(n, kGradedFirstCell, kind == "graded-tets");
   } else if (kind == "swirl" || kind == "swirl-tets") {
     m = swirl(n, kind == "swirl-tets");
   } else {

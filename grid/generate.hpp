@@ -19,6 +19,11 @@ Mesh make_curvilinear(int nx, int ny, int nz, const std::function<glm::dvec3(con
 Mesh make_mixed(int nx, int ny, int nz, const std::function<glm::dvec3(const glm::dvec3&)>& map);
 // An axis-aligned box [lo, hi].
 Mesh make_box(int nx, int ny, int nz, const glm::dvec3& lo, const glm::dvec3& hi, bool tetrahedra);
+// The box [-1, 1]^3 in 2n cells per axis, thinning geometrically in x and y towards the z axis (the
+// thinnest `first` wide), with a field "scalar" holding a hot filament of radius 0.004 along it: an
+// adaptive mesh whose cells far below a pixel carry the picture (MWSC section 6).
+Mesh make_graded(int n, double first, bool tetrahedra);
+constexpr double kGradedFirstCell = 1e-4;  // about 1/50 of a pixel of a 512 x 512 frame of the box
 // Adds (or replaces) a point field f(x).
 void set_field(Mesh& mesh, const std::string& name, const std::function<double(const glm::dvec3&)>& f);
 

@@ -16,8 +16,9 @@ Action add_generate(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("generate", "Write a synthetic mesh made by cellproj (" + generated_kinds() + ")");
-  cmd->add_option("kind", args->kind, "box | box-tets | swirl | swirl-tets | mixed")->required();
-  cmd->add_option("-n,--resolution", args->n, "Cells per axis (swirl: 3n x n x n)")->check(CLI::Range(1, 1000));
+  cmd->add_option("kind", args->kind, "box | box-tets | swirl | swirl-tets | mixed | graded | graded-tets")->required();
+  cmd->add_option("-n,--resolution", args->n, "Cells per axis (swirl: 3n x n x n; graded: 2n x 2n x 2n)")
+      ->check(CLI::Range(1, 1000));
   cmd->add_option("-o,--output", args->out, "Output mesh: .vtu, or .off (tetrahedra only)")->required();
   return [args] {
     const Mesh m = generate(args->kind, args->n);
