@@ -2,6 +2,7 @@
 // The settings of cell projection: the rung of the method ladder, where it is drawn, how cells are
 // sorted. Light enough for a settings struct (render/settings.hpp) to hold.
 #include "projection/method.hpp"
+#include "splat/splat_options.hpp"
 #include "visibility/methods.hpp"
 
 namespace cellproj {
@@ -13,6 +14,7 @@ struct ProjectionOptions {
   GapMethod gaps = GapMethod::automatic;  // how mpvo-abuffer finds the relations across gaps
   int table_size = 256;                   // pt-table: nodes per axis of the opacity table
   int batch_cells = 0;                    // cells per pipeline token; 0: about 16 tokens per thread, 64 to 2048
+  SplatOptions splat;                     // cells whose projection covers few pixel centres: splatted
 };
 // Throws InputError for options that do not go together (a method the back end cannot draw) or a
 // table size outside [2, 8192]: before a frame starts, never in the middle of one.

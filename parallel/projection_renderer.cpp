@@ -1,7 +1,9 @@
 #include "parallel/projection_renderer.hpp"
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
+#include <cmath>
 #include <optional>
 
 #include <tbb/blocked_range.h>
@@ -12,6 +14,7 @@
 #include "composite/ordered_pipeline.hpp"
 #include "grid/geometry.hpp"
 #include "parallel/gl_frame.hpp"
+#include "splat/splat.hpp"
 #include "view/screen.hpp"
 
 namespace cellproj {
@@ -42,22 +45,64 @@ std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& sc
   return area;
 }
 
-// The cells of the order as a source of the ordered pipeline.
+// Which cells of the frame are small: their projection covers fewer than `threshold` pixel
+// centres (MWSC section 6, Williams et al.'s software scan conversion), counted.
+std::vector<std::uint8_t> small_cells(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays,
+                                      double threshold, SplatCounters& counters) {
+  std::vector<std::uint8_t> small(static_cast<std::size_t>(cells.n_cells), 0);
+  const int limit = static_cast<int>(std::min(std::ceil(threshold), 1e9));
+  std::atomic<std::int64_t> n_small{0}, none{0};
+  tbb::parallel_for(
+      tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
+        std::int64_t here = 0, empty = 0;
+        for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+          const std::int64_t* id = cells.cell(c);
+          const ScreenVertex* v[8];
+          const int n = std::min(cells.cell_size(c), 8);
+          for (int k = 0; k < n; ++k) v[k] = &screen.v[static_cast<std::size_t>(id[k])];
+          const int covered = covered_pixels(v, n, rays.width(), rays.height(), rays.perspective(), std::max(limit, 1));
+          if (covered < 0) continue;  // reaching behind the eye: projected (ray cast)
+          empty += covered == 0;
+          if (covered < threshold) small[static_cast<std::size_t>(c)] = 1, ++here;
+        }
+        n_small += here, none += empty;
+      });
+  counters.small_cells = n_small, counters.covering_no_pixel = none;
+  return small;
+}
+
+struct FrameCounters {
+  ProjectionCounters projection;
+  SplatCounters splat;
+  void add(const FrameCounters& o) { projection.add(o.projection), splat.add(o.splat); }
+};
+
+// The cells of the order as a source of the ordered pipeline; the small ones splatted in their
+// place (or skipped), the others projected.
 struct OrderedCells {
   using Scratch = CellScratch;
-  using Counters = ProjectionCounters;
+  using Counters = FrameCounters;
   const CellFragments& project;
   const MeshView& cells;
   const std::vector<std::int64_t>& order;
+  const std::vector<std::uint8_t>& small;  // per cell: drawn by its splat (or not at all)
+  SmallCells mode;
+  const SplatContext& splat;
   void fragments(std::size_t k, std::vector<Fragment>& out, Scratch& s, Counters& c) const {
-    project.project(cells.cell(order[k]), cells.type(order[k]), out, s, c);
+    const std::int64_t cell = order[k];
+    if (mode != SmallCells::draw && small[static_cast<std::size_t>(cell)]) {
+      if (mode == SmallCells::splat)
+        append_fragments(cell_splat(splat, cells.cell(cell), cells.type(cell), c.splat), splat.rays.width(),
+                         splat.rays.height(), out, c.splat);
+      return;
+    }
+    project.project(cells.cell(cell), cells.type(cell), out, s, c.projection);
   }
   void composite(std::size_t k, Image& image, Scratch& s, Counters& c) const {
-    project.project(cells.cell(order[k]), cells.type(order[k]), image, s, c);
-    ++c.direct_cells;
+    project.project(cells.cell(order[k]), cells.type(order[k]), image, s, c.projection);
+    ++c.projection.direct_cells;
   }
 };
-
 // The opacity table of pt-table: extinction up to the transfer function's largest, lengths up to
 // the longest segment a ray can have in one cell.
 OpacityTable opacity_table(const TransferFunction& tf, int size, double max_diameter) {
@@ -71,6 +116,7 @@ OpacityTable opacity_table(const TransferFunction& tf, int size, double max_diam
 void check_options(const ProjectionOptions& o) {
   check_built(o.backend);
   OpacityTable::check_size(o.table_size);
+  resolve(o.splat, o.backend);
   if (is_opengl(o.backend) && !traits(o.method).opengl) {
     std::string drawable;
     for (const MethodTraits& t : kProjectionMethods)
@@ -120,6 +166,9 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   st.cycle_splits = view.cycle_splits;
   st.phase_seconds.emplace_back("sort", seconds_since(t));
 
+  st.small_cells = resolve(options.splat, options.backend);
+  st.splat_threshold = threshold_or(options.splat, kDefaultPixelThreshold);
+
   const MethodTraits& method = traits(options.method);
   std::optional<OpacityTable> table;
   if (method.opacity_table) table.emplace(opacity_table(tf, options.table_size, max_diameter_));
@@ -134,11 +183,15 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   } else {
     image = Image(width, height);
     const std::vector<float> footprint = cell_footprints(cells, screen, rays);
+    const std::vector<std::uint8_t> small = small_cells(cells, screen, rays, st.splat_threshold, st.splat);
+    const SplatContext splat{points, scalar, tf, rays, options.splat.prefilter};
     PipelineLimits limits;
     limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
-    st.counters = composite_in_order(
+    const FrameCounters counters = composite_in_order(
         image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
-        OrderedCells{project, cells, order});
+        OrderedCells{project, cells, order, small, st.small_cells, splat});
+    st.counters = counters.projection;
+    st.splat.add(counters.splat);
   }
   st.phase_seconds.emplace_back("project and composite", seconds_since(t));
   st.sort = std::move(view.sorted.stats);

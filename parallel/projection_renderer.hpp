@@ -13,6 +13,7 @@
 #include "parallel/projection_options.hpp"
 #include "projection/cell_fragments.hpp"
 #include "projection/method.hpp"
+#include "splat/small_cells.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
 #include "visibility/sort.hpp"
@@ -22,6 +23,9 @@ namespace cellproj {
 
 struct ProjectionStats {
   ProjectionCounters counters;
+  SplatCounters splat;
+  SmallCells small_cells = SmallCells::draw;  // the mode that ran
+  double splat_threshold = 0.0;               // pixel centres: cells covering fewer are small
   SortStats sort;
   Tetrahedralize tetrahedralize = Tetrahedralize::problem;  // the mode that ran (none for a mesh of tetrahedra)
   std::int64_t cells = 0;                                   // cells sorted and projected this frame (after splitting)

@@ -29,6 +29,24 @@ decltype(auto) timed_preparation(const Volume& volume, RenderReport* report, Get
   return prepared;
 }
 
+// What the small cells' rule found and the splats did, as report counters.
+void add_splats(RenderReport& r, SmallCells mode, double threshold, const SplatCounters& c) {
+  r.add("small_cells_mode", mode);
+  r.add("splat_threshold", threshold);
+  r.add({{"small_cells", c.small_cells},
+         {"cells_covering_no_pixel", c.covering_no_pixel},
+         {"splats", c.splats},
+         {"splat_fragments", c.splat_fragments},
+         {"splat_fragments_masked", c.masked_fragments},
+         {"splats_refused_degenerate", c.refused_degenerate},
+         {"splats_refused_inverted", c.refused_inverted},
+         {"splats_behind_eye", c.behind_eye}});
+  if (c.refused_degenerate + c.refused_inverted > 0)
+    r.warnings.push_back(std::to_string(c.refused_degenerate + c.refused_inverted) + " small cells have no splat (" +
+                         std::to_string(c.refused_degenerate) + " of zero volume, " +
+                         std::to_string(c.refused_inverted) + " inverted) and add nothing to the picture");
+}
+
 class ProjectionMode final : public Renderer {
  public:
   ProjectionMode(const ProjectionOptions& options, Tetrahedralize mode) : options_(options), mode_(mode) {
@@ -36,7 +54,8 @@ class ProjectionMode final : public Renderer {
   }
   std::string name() const override { return name_of(options_.method); }
   std::vector<std::string> settings_used() const override {
-    return {"method", "backend", "sort", "gaps", "table-size", "tetrahedralize"};
+    return {"method",      "backend",         "sort",           "gaps", "table-size", "tetrahedralize",
+            "small-cells", "splat-threshold", "splat-prefilter"};
   }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 
@@ -87,6 +106,7 @@ class ProjectionMode final : public Renderer {
            {"abuffer_runs", s.abuffer_runs},
            {"cycles", static_cast<std::int64_t>(s.cycles.size())}});
     r.add("gaps_from", s.method == SortMethod::mpvo_abuffer ? ReportValue(s.gaps_from) : ReportValue());
+    add_splats(r, p.small_cells, p.splat_threshold, p.splat);
     if (!p.gl_renderer.empty()) r.add("gl_renderer", p.gl_renderer);
     warn(r, p);
   }
@@ -170,6 +190,7 @@ void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
          {"rays_along_planes", st.rays_along_planes},
          {"table_layers", st.table_layers}});
   if (!st.gl_renderer.empty()) r.add("gl_renderer", st.gl_renderer);
+  add_splats(r, st.small_cells, st.splat_threshold, st.splat);
   if (st.cells_between_planes > 0)
     r.warnings.push_back(std::to_string(st.cells_between_planes) +
                          " cells (or tetrahedra of split cells) lie between two planes and add nothing to the picture; "
@@ -196,8 +217,8 @@ class SlicingMode final : public Renderer {
   }
   std::string name() const override { return "slicing"; }
   std::vector<std::string> settings_used() const override {
-    return {"method",         "backend",    "slices",      "slice-axis",
-            "slice-integral", "table-size", "progressive", "tetrahedralize"};
+    return {"method",      "backend",        "slices",      "slice-axis",      "slice-integral", "table-size",
+            "progressive", "tetrahedralize", "small-cells", "splat-threshold", "splat-prefilter"};
   }
   void prepare(const Volume& volume) const override { volume.slicing(mode_); }
 

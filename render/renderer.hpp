@@ -1,7 +1,7 @@
 #pragma once
 // One interface for every way of making a picture of a Volume (docs/architecture.md, "Adding a
-// renderer"): cell projection and the exact ray integrator today; slicing, splatting and the MPI
-// compositor are further implementations behind the same call.
+// renderer"): cell projection (small cells splatted), the exact ray integrator and slicing; the
+// MPI compositor will be a further implementation behind the same call.
 #include <cstdint>
 #include <functional>
 #include <memory>

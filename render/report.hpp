@@ -11,6 +11,7 @@
 #include "projection/method.hpp"
 #include "raycast/interpolation.hpp"
 #include "slicing/slicing_options.hpp"
+#include "splat/splat_options.hpp"
 #include "visibility/methods.hpp"
 
 namespace cellproj {
@@ -18,7 +19,7 @@ namespace cellproj {
 // A counter, a time, a text, or a choice the renderer made (printed by its name, scene/names.hpp);
 // monostate where a value does not apply to this frame (JSON null).
 using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, Backend, SortMethod, GapMethod,
-                                 Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral>;
+                                 Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral, SmallCells>;
 
 struct RenderReport {
   double seconds = 0.0;          // the frame, preparation excluded

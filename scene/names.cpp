@@ -42,6 +42,8 @@ constexpr std::pair<SliceAxis, const char*> kSliceAxes[] = {{SliceAxis::automati
                                                             {SliceAxis::z, "z"}};
 constexpr std::pair<SliceIntegral, const char*> kSliceIntegrals[] = {{SliceIntegral::sampled, "sampled"},
                                                                      {SliceIntegral::preintegrated, "preintegrated"}};
+constexpr std::pair<SmallCells, const char*> kSmallCells[] = {
+    {SmallCells::splat, "splat"}, {SmallCells::draw, "draw"}, {SmallCells::skip, "skip"}};
 
 }  // namespace
 
@@ -77,6 +79,10 @@ std::string slice_axis_names() { return names(kSliceAxes); }
 SliceIntegral parse_slice_integral(const std::string& n) { return from_name(kSliceIntegrals, n, "--slice-integral"); }
 const char* name_of(SliceIntegral integral) { return name_in(kSliceIntegrals, integral); }
 std::string slice_integral_names() { return names(kSliceIntegrals); }
+
+SmallCells parse_small_cells(const std::string& n) { return from_name(kSmallCells, n, "--small-cells"); }
+const char* name_of(SmallCells mode) { return name_in(kSmallCells, mode); }
+std::string small_cells_names() { return names(kSmallCells); }
 
 void parse_render_method(const std::string& name, RenderSettings& settings) {
   if (name == "exact" || name == "slicing") {

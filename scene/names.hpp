@@ -42,6 +42,10 @@ SliceIntegral parse_slice_integral(const std::string& name);
 const char* name_of(SliceIntegral integral);
 std::string slice_integral_names();
 
+SmallCells parse_small_cells(const std::string& name);
+const char* name_of(SmallCells mode);
+std::string small_cells_names();
+
 // "exact", "slicing" or a projection method's name into settings.mode (and settings.projection.method).
 void parse_render_method(const std::string& name, RenderSettings& settings);
 std::string render_method_names();  // "exact, slicing, pt-linear, ..."

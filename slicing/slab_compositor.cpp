@@ -8,6 +8,7 @@
 #include <glm/geometric.hpp>
 
 #include "composite/fragment.hpp"
+#include "slicing/slice_splats.hpp"
 #include "view/raster.hpp"
 
 namespace cellproj {
@@ -71,15 +72,16 @@ PixelLengths pixel_lengths(const PixelRays& rays, const glm::dvec3& normal, doub
 }
 
 void Compositor::operator()(Image& image, const SliceImage& behind, const std::vector<const SliceImage*>& slices,
-                            double front) const {
+                            const std::vector<const SplatLayer*>& splats, double front) const {
   tbb::parallel_for(tbb::blocked_range<int>(0, height, 4), [&](const tbb::blocked_range<int>& rows) {
     for (int j = rows.begin(); j < rows.end(); ++j)
-      for (int i = 0; i < width; ++i) pixel(image, i, j, behind, slices, front);
+      for (int i = 0; i < width; ++i) pixel(image, i, j, behind, slices, splats, front);
   });
 }
 
 void Compositor::pixel(Image& image, int i, int j, const SliceImage& behind,
-                       const std::vector<const SliceImage*>& slices, double front_height) const {
+                       const std::vector<const SliceImage*>& slices, const std::vector<const SplatLayer*>& splats,
+                       double front_height) const {
   const std::size_t at = static_cast<std::size_t>(j) * width + i;
   float* dst = image.pixel(i, j);
   const double length = lengths.length[at], layer = lengths.layer.empty() ? 0.0 : lengths.layer[at];
@@ -112,7 +114,11 @@ void Compositor::pixel(Image& image, int i, int j, const SliceImage& behind,
     back = front, back_height = height;
     if (sampled) std::copy(front_half, front_half + 4, back_half);
   };
-  for (const SliceImage* s : slices) slab(s->at(i, j, width), s->height);
+  for (std::size_t k = 0; k < slices.size(); ++k) {
+    slab(slices[k]->at(i, j, width), slices[k]->height);
+    const SplatLayer* layer = splats.empty() ? nullptr : splats[k];
+    if (layer && layer->covers(i, j)) over(dst, layer->at(i, j));  // the plane's splats, where it left the pixel empty
+  }
   if (!std::isnan(front_height)) slab(kEmpty, front_height);
 }
 

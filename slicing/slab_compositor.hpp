@@ -71,6 +71,7 @@ PixelLengths pixel_lengths(const PixelRays& rays, const glm::dvec3& normal, doub
 // plane's scalar held constant (sampled), or the preintegrated segment between the two scalars.
 // Where only one does, the ray crosses the boundary inside the slab: the inside part, from the
 // covering plane to the boundary crossing (half the slab when none is known), with that scalar.
+struct SplatLayer;
 struct Compositor {
   const TransferFunction& tf;
   const SlicingOptions& options;
@@ -80,12 +81,14 @@ struct Compositor {
   double eye_height;  // perspective: the eye's height along the normal (infinity in orthographic views)
   int width, height;
 
+  // `splats` (empty, or one per slice, null where none): each plane's splat layer, composited over
+  // the slab behind that plane.
   void operator()(Image& image, const SliceImage& behind, const std::vector<const SliceImage*>& slices,
-                  double front) const;
+                  const std::vector<const SplatLayer*>& splats, double front) const;
 
   // The slabs of pixel (i, j).
   void pixel(Image& image, int i, int j, const SliceImage& behind, const std::vector<const SliceImage*>& slices,
-             double front_height) const;
+             const std::vector<const SplatLayer*>& splats, double front_height) const;
 };
 
 }  // namespace cellproj

@@ -107,26 +107,34 @@ void SlicePolygons::append(const SlicePolygons& o) {
   clipped += o.clipped;
 }
 
-CellSweep::CellSweep(const SliceCells& cells, const FramePoints& f, const SlicePlanes& planes)
+void planes_crossing(const SliceCells& cells, std::int64_t c, const FramePoints& f, const SlicePlanes& planes,
+                     int& first, int& last) {
+  double lo = INFINITY, hi = -INFINITY;
+  for (std::int64_t k = cells.offsets[c]; k < cells.offsets[c + 1]; ++k) {
+    const double h = f.height[static_cast<std::size_t>(cells.ids[static_cast<std::size_t>(k)])];
+    lo = std::min(lo, h), hi = std::max(hi, h);
+  }
+  planes.crossing(lo, hi, first, last);
+}
+
+CellSweep::CellSweep(const SliceCells& cells, const FramePoints& f, const SlicePlanes& planes,
+                     const std::vector<char>* skip)
     : range_(static_cast<std::size_t>(cells.size())) {
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.size(), 4096),
                     [&](const tbb::blocked_range<std::int64_t>& r) {
                       for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-                        double lo = INFINITY, hi = -INFINITY;
-                        for (std::int64_t k = cells.offsets[c]; k < cells.offsets[c + 1]; ++k) {
-                          const double h = f.height[static_cast<std::size_t>(cells.ids[static_cast<std::size_t>(k)])];
-                          lo = std::min(lo, h), hi = std::max(hi, h);
-                        }
                         Range& x = range_[static_cast<std::size_t>(c)];
-                        planes.crossing(lo, hi, x.first, x.last);
+                        planes_crossing(cells, c, f, planes, x.first, x.last);
+                        if (skip && (*skip)[static_cast<std::size_t>(c)]) x.first = 1, x.last = -1;
                       }
                     });
   // A counting sort by first plane: the cells enter the sweep in plane order, each run of planes
   // appending those that start in it.
   std::vector<std::int64_t> count(static_cast<std::size_t>(planes.count()) + 3, 0);
-  for (const Range& x : range_) {
+  for (std::size_t c = 0; c < range_.size(); ++c) {
+    const Range& x = range_[c];
     if (x.last < x.first)
-      ++between_;
+      between_ += !(skip && (*skip)[c]);
     else
       ++count[static_cast<std::size_t>(x.first) + 1];
   }

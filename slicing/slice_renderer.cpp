@@ -14,6 +14,7 @@
 #include "base/error.hpp"
 #include "base/timing.hpp"
 #include "slicing/slab_compositor.hpp"
+#include "slicing/slice_splats.hpp"
 #ifdef CELLPROJ_HAVE_OPENGL
 #include "composite/gl_compositor.hpp"
 #endif
@@ -57,6 +58,12 @@ void gl_corners(const PlanePolygons& plane, const TransferFunction& tf, const Pi
 SliceRenderer::SliceRenderer(const MeshView& mesh, Tetrahedralize mode)
     : mesh_(mesh), points_(recentre(mesh)), boundary_(boundary_triangles(mesh)) {
   cells_ = slice_cells(mesh_, points_, mode);
+  volume_.resize(static_cast<std::size_t>(cells_.size()));
+  tbb::parallel_for(std::int64_t{0}, cells_.size(), [&](std::int64_t c) {
+    const std::int64_t* ids = cells_.ids.data() + cells_.offsets[static_cast<std::size_t>(c)];
+    volume_[static_cast<std::size_t>(c)] =
+        cell_moments(ids, static_cast<CellType>(cells_.types[static_cast<std::size_t>(c)]), points_).volume;
+  });
 }
 
 Image SliceRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,
@@ -122,16 +129,29 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
 
   std::vector<std::optional<SlicePolygons>> previous;  // the last level's polygons by plane, where kept
   int previous_count = 0;
+  std::vector<char> previous_skip;  // the cells the last level did not cut
+  const SmallCells small_mode = resolve(options.splat, options.backend);
+  const double threshold = threshold_or(options.splat, kDefaultVolumeThreshold);
+  const SplatContext splat_frame{points_, scalar, tf, rays, options.splat.prefilter};
+  std::vector<SplatLayer> layer(static_cast<std::size_t>(chunk));
   for (std::size_t level = 0; level < levels.size(); ++level) {
     const auto t_frame = std::chrono::steady_clock::now();
     SlicingStats st;
     const int count = levels[level];
     const SlicePlanes planes(points_, rays, axis, count);
     st.axis = planes.axis(), st.spacing = planes.spacing();
-    CellSweep sweep(cells_, points, planes);
-    st.cells_between_planes = sweep.between_planes();
     const int visible = planes.visible_end() - 1;  // planes 1..visible are drawn
     st.slices = visible, st.planes_behind_eye = count - visible;
+    // The small cells of this stack: splatted or skipped (draw: counted only, and cut).
+    const SliceSplats splats(cells_, volume_, points, splat_frame, planes,
+                             small_mode == SmallCells::splat ? visible : 0, threshold);
+    st.small_cells = small_mode, st.splat_threshold = threshold, st.splat = splats.counters();
+    const std::vector<char>* skip = small_mode == SmallCells::draw ? nullptr : &splats.small();
+    CellSweep sweep(cells_, points, planes, skip);
+    st.cells_between_planes = sweep.between_planes();
+    // Polygons kept from the last level hold the cells it cut: only the same cells may reuse them.
+    if (skip ? *skip != previous_skip : !previous_skip.empty()) previous.clear();
+    previous_skip = skip ? *skip : std::vector<char>();
 
     // The software back end's ray lengths between planes and preintegrated table.
     t = std::chrono::steady_clock::now();
@@ -217,8 +237,20 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
       t = std::chrono::steady_clock::now();
       std::vector<const SliceImage*> in_order;
       for (std::size_t k = 0; k < here; ++k) in_order.push_back(&slice[k]);
+      std::vector<const SplatLayer*> layers;  // the planes' splats where their slices left pixels empty
+      if (splats.any()) {
+        std::vector<SplatCounters> drawn(here);
+        tbb::parallel_for(std::size_t{0}, here, [&](std::size_t k) {
+          const int j = first + static_cast<int>(k);
+          splat_layer(splats.begin(j), splats.end(j), slice[k], width, height, layer[k], drawn[k]);
+        });
+        for (std::size_t k = 0; k < here; ++k) {
+          st.splat.add(drawn[k]);
+          layers.push_back(layer[k].empty() ? nullptr : &layer[k]);
+        }
+      }
       const Compositor compositor{tf, options, lengths, table.get(), *crossings, planes.eye_height(), width, height};
-      compositor(image, behind, in_order, end == visible + 1 ? planes.front_end() : kNoHeight);
+      compositor(image, behind, in_order, layers, end == visible + 1 ? planes.front_end() : kNoHeight);
       comp_s += seconds_since(t);
       std::swap(behind, slice[here - 1]);
 

@@ -15,6 +15,7 @@
 #include "slicing/boundary_crossings.hpp"
 #include "slicing/slice_cells.hpp"
 #include "slicing/slicing_options.hpp"
+#include "splat/small_cells.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
 
@@ -34,7 +35,10 @@ struct SlicingStats {
   std::int64_t rays_along_planes = 0;      // pixels whose ray runs along the planes or away from them (axis
                                            // stacks in perspective): their slices come in a wrong order
   std::int64_t table_layers = 0;           // preintegrated: segment lengths tabulated (1 orthographic)
-  std::string gl_renderer;                 // the OpenGL back ends: GL_RENDERER
+  SplatCounters splat;                     // the small cells and their splats
+  SmallCells small_cells = SmallCells::draw;                  // the mode that ran
+  double splat_threshold = 0.0;                               // of a cell's volume over the spacing cubed
+  std::string gl_renderer;                                    // the OpenGL back ends: GL_RENDERER
   std::vector<std::pair<std::string, double>> phase_seconds;  // table, cut, scan convert, composite
   double seconds = 0.0;
 };
@@ -67,6 +71,7 @@ class SliceRenderer {
   MeshView mesh_;
   RecentredPoints points_;
   SliceCells cells_;
+  std::vector<double> volume_;              // of each slice cell, for the small cells' rule
   std::vector<BoundaryTriangle> boundary_;  // the mesh's boundary faces as triangles
 };
 

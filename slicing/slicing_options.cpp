@@ -16,6 +16,7 @@ void check_options(const SlicingOptions& o) {
     throw InputError(
         "the OpenGL back ends draw --slice-integral sampled (each polygon with its corners' colour and opacity); "
         "preintegrated slabs read two slices per pixel and run on --backend software");
+  resolve(o.splat, o.backend);
 }
 
 int max_slices(int width, int height) { return 16 * std::max({width, height, 1}); }

@@ -2,6 +2,7 @@
 // The settings of plane slicing (MWSC section 5; Yagel et al. 1996): how many planes, which family,
 // how the light between two planes is integrated. Light enough for render/settings.hpp to hold.
 #include "composite/backend.hpp"
+#include "splat/splat_options.hpp"
 
 namespace cellproj {
 
@@ -28,6 +29,7 @@ struct SlicingOptions {
   // software, or OpenGL (sampled only): the polygons drawn with per-vertex colour and opacity into
   // a float or an 8-bit framebuffer, as the paper's hardware path.
   Backend backend = Backend::software;
+  SplatOptions splat;  // cells of small volume against the spacing: splatted on their nearest plane
 };
 
 // Throws InputError for fewer than 1 slice, a table size outside [2, 4096] or an OpenGL back end with

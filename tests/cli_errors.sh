@@ -137,7 +137,20 @@ expect 1 "--progressive does not apply to --method exact" -- render "$tmp/ok.jso
 expect 0 "wrote .*prog-32.png" -- render "$tmp/ok.json" --method slicing --progressive 8,32 --size 32x24 -o "$tmp/prog.png" --stats
 [ -s "$tmp/prog-8.png" ] && [ -s "$tmp/prog-32.png" ] && grep -q '"planes_reused":8' "$tmp/err" || { echo "FAIL: --progressive files or reuse"; failed=$((failed+1)); }
 expect 0 '"slice_axis":"view".*"slices":16' -- render "$tmp/ok.json" --method slicing --slices 16 --slice-axis view --slice-integral sampled --size 32x24 -o "$tmp/sl.png" --stats
+# Splatting small cells.
+expect 1 "unknown --small-cells 'blur' \(known: splat, draw, skip\)" -- render "$tmp/ok.json" --small-cells blur
+expect 1 "--splat-threshold must be a finite number >= 0, not -1" -- render "$tmp/ok.json" --splat-threshold -1 --size 32x24
+expect 1 "pre-filter must be 0.3 to 4 pixels, not 0.1" -- render "$tmp/ok.json" --splat-prefilter 0.1 --size 32x24
+expect 1 "--small-cells does not apply to --method exact" -- render "$tmp/ok.json" --method exact --small-cells splat
+expect 0 '"small_cells":.*"small_cells_mode":"draw"' -- render "$tmp/ok.json" --method pt-linear --size 8x6 -o "$tmp/sp.png" --stats
+expect 0 '"small_cells":[1-9].*"small_cells_mode":"splat".*"splats":[1-9]' -- render "$tmp/ok.json" --method pt-linear --small-cells splat --size 8x6 -o "$tmp/sp.png" --stats
+expect 0 '"small_cells_mode":"splat".*"splats":[1-9]' -- render "$tmp/ok.json" --method slicing --small-cells splat --slices 4 --size 32x24 -o "$tmp/sps.png" --stats
+"$exe" render "$tmp/ok.json" --size 32x24 -o "$tmp/a.png" --npy "$tmp/a.npy" >/dev/null 2>&1
+"$exe" render "$tmp/ok.json" --size 64x48 -o "$tmp/b.png" --npy "$tmp/b.npy" >/dev/null 2>&1
+expect 0 '"rmse"' -- compare "$tmp/a.npy" "$tmp/b.npy" --downsample 2
+expect 1 "b.npy: downsample: 3 does not divide the image's 64x48" -- compare "$tmp/a.npy" "$tmp/b.npy" --downsample 3
 if [ "$gl" = ON ]; then
+  expect 1 "--small-cells splat needs the software back end" -- render "$tmp/ok.json" --method pt-linear --backend opengl --small-cells splat --size 32x24
   expect 1 "the OpenGL back ends draw --slice-integral sampled" -- render "$tmp/ok.json" --method slicing --backend opengl --size 32x24
   expect 0 '"backend":"opengl-8bit-dither".*"gl_renderer"' -- render "$tmp/ok.json" --method slicing --slice-integral sampled --backend opengl-8bit-dither --size 32x24 -o "$tmp/slgl.png" --stats
 else

@@ -26,10 +26,12 @@ namespace {
 struct RenderArgs {
   std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto",
                                gaps = "auto", backend = "software", tetrahedralize = "problem", slice_axis = "auto",
-                               slice_integral = "preintegrated", progressive;
+                               slice_integral = "preintegrated", progressive, small_cells = "draw";
   int threads = 0, frames = 1, table_size = 256, slices = 256;
-  std::vector<std::string> given;  // the render settings given on the command line, by name
-  double max_memory_gib = 0.0;     // 0: the machine's available memory
+  std::vector<std::string> given;                     // the render settings given on the command line, by name
+  double max_memory_gib = 0.0;                        // 0: the machine's available memory
+  double splat_threshold = SplatOptions{}.threshold;  // NaN: the method's default
+  double splat_prefilter = SplatOptions{}.prefilter;
   bool stats = false;
 };
 
@@ -52,6 +54,10 @@ RenderSettings settings_from(const RenderArgs& a) {
   s.slicing.integral = parse_slice_integral(a.slice_integral);
   s.slicing.table_size = a.table_size;
   s.slicing.backend = s.projection.backend;
+  s.projection.splat.small_cells = parse_small_cells(a.small_cells);
+  s.projection.splat.threshold = a.splat_threshold;
+  s.projection.splat.prefilter = a.splat_prefilter;
+  s.slicing.splat = s.projection.splat;
   return s;
 }
 
@@ -240,6 +246,20 @@ Action add_render(CLI::App& app) {
                         cmd->add_option("--progressive", args->progressive,
                                         "slicing: render at each of these plane counts in turn, e.g. "
                                         "16,64,256, writing OUT-16.png, OUT-64.png, ... as each completes"));
+  settings.emplace_back(
+      "small-cells",
+      cmd->add_option("--small-cells", args->small_cells,
+                      "projection and slicing: what small cells get, " + small_cells_names() +
+                          " (default draw; splat and skip need the software back end); docs/methods.md, Splatting"));
+  settings.emplace_back("splat-threshold",
+                        cmd->add_option("--splat-threshold", args->splat_threshold,
+                                        "Which cells are small: projection, those covering fewer pixel centres "
+                                        "(default 2); slicing, those of less volume than this times the spacing "
+                                        "cubed (default 1)"));
+  settings.emplace_back("splat-prefilter",
+                        cmd->add_option("--splat-prefilter", args->splat_prefilter,
+                                        "Standard deviation in pixels of the splats' anti-aliasing pre-filter "
+                                        "(default 0.7; 0.3 to 4)"));
   settings.emplace_back("sort", cmd->add_option("--sort", args->sort,
                                                 "Visibility sort for the projection methods: " + sort_method_names()));
   settings.emplace_back(
