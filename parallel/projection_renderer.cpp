@@ -182,8 +182,11 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     image = draw_with_opengl(project, cells, order, table ? &*table : nullptr, width, height, options, st);
   } else {
     image = Image(width, height);
-    const std::vector<float> footprint = cell_footprints(cells, screen, rays);
+    const auto t_small = std::chrono::steady_clock::now();
     const std::vector<std::uint8_t> small = small_cells(cells, screen, rays, st.splat_threshold, st.splat);
+    st.phase_seconds.emplace_back("small cells", seconds_since(t_small));
+    t = std::chrono::steady_clock::now();
+    const std::vector<float> footprint = cell_footprints(cells, screen, rays);
     const SplatContext splat{points, scalar, tf, rays, options.splat.prefilter};
     PipelineLimits limits;
     limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
