@@ -151,6 +151,14 @@ def measure(bench, name, scene, mesh, info, size, peers):
                   median_seconds=st["frame_seconds"], min_seconds=st["min_frame_seconds"],
                   max_seconds=st["max_frame_seconds"], cells_per_second=cells / st["frame_seconds"],
                   rmse=e[0], max_abs=e[1], violations=viol.get(sort, ""))
+    # Small cells splatted (bench/splat measures them against the anti-aliased reference; here the
+    # row says how far splats move the picture from the point-sampled model, and what they cost).
+    st, npy = bench.render(scene, f"{tag}_pt-breakpoints_splat", "pt-breakpoints", size, bench.frames,
+                           ["--tetrahedralize", "all", "--small-cells", "splat"])
+    e = error(npy, ref)
+    bench.add(**base, method="pt-breakpoints-splat", sort=st["sort"], median_seconds=st["frame_seconds"],
+              min_seconds=st["min_frame_seconds"], max_seconds=st["max_frame_seconds"],
+              cells_per_second=cells / st["frame_seconds"], rmse=e[0], max_abs=e[1], violations="")
     # Slicing (no sort; bench/slicing has its convergence): the sort column gives the plane count.
     for n, integral in SLICING:
         st, npy = bench.render(scene, f"{tag}_slicing_{integral}_{n}", "slicing", size, bench.frames,
