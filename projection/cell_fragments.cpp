@@ -36,14 +36,7 @@ struct AppendFragments {
   int width;
   bool operator()(int i, int j, const glm::dvec3& rgb, double alpha) const {
     if (adds_nothing(rgb, alpha)) return false;
-    // Written field by field into the vector: a fragment built on the stack and copied whole showed
-    // in perf as a store-forwarding stall.
-    Fragment& f = out.emplace_back();
-    f.pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i);
-    f.rgba[0] = static_cast<float>(rgb.r);
-    f.rgba[1] = static_cast<float>(rgb.g);
-    f.rgba[2] = static_cast<float>(rgb.b);
-    f.rgba[3] = static_cast<float>(alpha);
+    append_fragment(out, width, i, j, rgb.r, rgb.g, rgb.b, alpha);
     return true;
   }
 };

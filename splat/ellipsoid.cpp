@@ -14,20 +14,15 @@ CellMoments cell_moments(const std::int64_t* ids, CellType type, const Recentred
   double v_sum = 0.0, size = 0.0;
   glm::dvec3 m1(0.0);
   glm::dmat3 m2(0.0);
-  auto tet = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {  // (0, a, b, c), apex at 0
+  for_each_fan_tet(ids, type, [&](std::int64_t q0, std::int64_t q1, std::int64_t q2) {
+    const glm::dvec3 a = points(q0) - o, b = points(q1) - o, c = points(q2) - o;  // (0, a, b, c): apex at 0
     const double v = glm::dot(a, glm::cross(b, c)) / 6.0;
     const glm::dvec3 s = a + b + c;
     v_sum += v, m1 += v * (s / 4.0);
     m2 += (v / 20.0) *
           (glm::outerProduct(a, a) + glm::outerProduct(b, b) + glm::outerProduct(c, c) + glm::outerProduct(s, s));
-  };
+  });
   for (int k = 1; k < def.vertices; ++k) size = std::max(size, glm::distance(points(ids[k]), o));
-  for (int f = 0; f < def.faces; ++f) {
-    const FaceDef& face = def.face[f];
-    if (std::find(face.v, face.v + face.size, std::uint8_t{0}) != face.v + face.size) continue;
-    const glm::dvec3 p0 = points(ids[face.v[0]]) - o;
-    for (int k = 1; k + 1 < face.size; ++k) tet(p0, points(ids[face.v[k]]) - o, points(ids[face.v[k + 1]]) - o);
-  }
   CellMoments m;
   m.volume = v_sum, m.size = size;
   if (v_sum == 0.0) {

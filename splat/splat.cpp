@@ -24,32 +24,23 @@ constexpr double kMinCutoff = 18.4;  // exp(-18.4 / 2) = 1e-4: the share of the 
 
 SplatOptics splat_optics(const std::int64_t* ids, CellType type, const RecentredPoints& points, const double* scalar,
                          const TransferFunction& tf) {
-  const CellDef& def = cell_def(type);
   const glm::dvec3 o = points(ids[0]);
   auto value = [&](std::int64_t p) { return scalar ? scalar[p] : 0.0; };  // null: zeros, as ScreenPoints
   const double s0 = value(ids[0]);
   double depth = 0.0;
   glm::dvec3 light(0.0);
   constexpr double kA = 0.5854101966249685, kB = 0.1381966011250105;  // Keast's 4-point rule
-  auto tet = [&](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, double sa, double sb, double sc) {
+  for_each_fan_tet(ids, type, [&](std::int64_t q0, std::int64_t q1, std::int64_t q2) {
+    const glm::dvec3 a = points(q0) - o, b = points(q1) - o, c = points(q2) - o;
     const double v = std::abs(glm::dot(a, glm::cross(b, c))) / 6.0;
-    const double s[4] = {s0, sa, sb, sc};
+    const double s[4] = {s0, value(q0), value(q1), value(q2)};
     for (int q = 0; q < 4; ++q) {
       double sq = 0.0;
       for (int k = 0; k < 4; ++k) sq += (k == q ? kA : kB) * s[k];
       const double kappa = tf.extinction(sq);
       depth += 0.25 * v * kappa, light += (0.25 * v * kappa) * tf.color(sq);
     }
-  };
-  for (int f = 0; f < def.faces; ++f) {
-    const FaceDef& face = def.face[f];
-    if (std::find(face.v, face.v + face.size, std::uint8_t{0}) != face.v + face.size) continue;
-    const std::int64_t q0 = ids[face.v[0]];
-    for (int k = 1; k + 1 < face.size; ++k) {
-      const std::int64_t q1 = ids[face.v[k]], q2 = ids[face.v[k + 1]];
-      tet(points(q0) - o, points(q1) - o, points(q2) - o, value(q0), value(q1), value(q2));
-    }
-  }
+  });
   SplatOptics out;
   out.optical_depth = depth;
   out.color = depth > 0.0 ? light / depth : glm::dvec3(0.0);
@@ -109,10 +100,7 @@ Footprint cell_splat(const SplatContext& frame, const std::int64_t* ids, CellTyp
 
 void append_fragments(const Footprint& f, int width, int height, std::vector<Fragment>& out, SplatCounters& c) {
   c.splat_fragments += rasterize_splat(f, width, height, [&](int i, int j, const glm::dvec3& rgb, double alpha) {
-    Fragment& g = out.emplace_back();
-    g.pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i);
-    g.rgba[0] = static_cast<float>(rgb.r), g.rgba[1] = static_cast<float>(rgb.g), g.rgba[2] = static_cast<float>(rgb.b);
-    g.rgba[3] = static_cast<float>(alpha);
+    append_fragment(out, width, i, j, rgb.r, rgb.g, rgb.b, alpha);
   });
 }
 

@@ -29,7 +29,7 @@ struct SplatOptics {
   double optical_depth = 0.0;
   glm::dvec3 color{0.0};
 };
-// Quadrature over the same tetrahedra as cell_moments, the field linear on each: four points per
+// Quadrature over the tetrahedra of for_each_fan_tet (those of cell_moments), the field linear on each: four points per
 // tetrahedron (the degree-2 rule of Keast), so a transfer function linear over the cell's scalar
 // range is integrated exactly. `scalar` per point, indexed by ids (null: zeros).
 SplatOptics splat_optics(const std::int64_t* ids, CellType type, const RecentredPoints& points, const double* scalar,
