@@ -107,6 +107,9 @@ void SlicePolygons::append(const SlicePolygons& o) {
   clipped += o.clipped;
 }
 
+namespace {
+
+// The planes j crossing slice cell c in this frame: [first, last] (none when last < first).
 void planes_crossing(const SliceCells& cells, std::int64_t c, const FramePoints& f, const SlicePlanes& planes,
                      int& first, int& last) {
   double lo = INFINITY, hi = -INFINITY;
@@ -117,24 +120,23 @@ void planes_crossing(const SliceCells& cells, std::int64_t c, const FramePoints&
   planes.crossing(lo, hi, first, last);
 }
 
-CellSweep::CellSweep(const SliceCells& cells, const FramePoints& f, const SlicePlanes& planes,
-                     const std::vector<char>* skip)
+}  // namespace
+
+CellSweep::CellSweep(const SliceCells& cells, const FramePoints& f, const SlicePlanes& planes)
     : range_(static_cast<std::size_t>(cells.size())) {
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.size(), 4096),
                     [&](const tbb::blocked_range<std::int64_t>& r) {
                       for (std::int64_t c = r.begin(); c < r.end(); ++c) {
                         Range& x = range_[static_cast<std::size_t>(c)];
                         planes_crossing(cells, c, f, planes, x.first, x.last);
-                        if (skip && (*skip)[static_cast<std::size_t>(c)]) x.first = 1, x.last = -1;
                       }
                     });
   // A counting sort by first plane: the cells enter the sweep in plane order, each run of planes
   // appending those that start in it.
   std::vector<std::int64_t> count(static_cast<std::size_t>(planes.count()) + 3, 0);
-  for (std::size_t c = 0; c < range_.size(); ++c) {
-    const Range& x = range_[c];
+  for (const Range& x : range_) {
     if (x.last < x.first)
-      between_ += !(skip && (*skip)[c]);
+      ++between_;
     else
       ++count[static_cast<std::size_t>(x.first) + 1];
   }
@@ -144,6 +146,18 @@ CellSweep::CellSweep(const SliceCells& cells, const FramePoints& f, const SliceP
     const Range& x = range_[static_cast<std::size_t>(c)];
     if (x.last >= x.first) by_first_[static_cast<std::size_t>(count[static_cast<std::size_t>(x.first)]++)] = c;
   }
+}
+
+void CellSweep::drop(const std::vector<char>& skip) {
+  std::size_t kept = 0;  // in their order
+  for (std::int64_t c : by_first_)
+    if (!skip[static_cast<std::size_t>(c)]) by_first_[kept++] = c;
+  by_first_.resize(kept);
+  for (std::size_t c = 0; c < range_.size(); ++c)
+    if (skip[c]) {
+      between_ -= range_[c].last < range_[c].first;
+      range_[c] = {1, -1};
+    }
 }
 
 const std::vector<std::int64_t>& CellSweep::advance(int first, int end) {

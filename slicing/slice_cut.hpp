@@ -41,17 +41,14 @@ struct SlicePolygons {
   void append(const SlicePolygons& other);
 };
 
-// The planes j crossing slice cell c in this frame: [first, last] (none when last < first).
-void planes_crossing(const SliceCells& cells, std::int64_t c, const FramePoints& points, const SlicePlanes& planes,
-                     int& first, int& last);
-
 // The planes crossing each slice cell in this frame, and the sweep over them (Yagel et al.'s active
 // cell list): the cells a run of planes crosses, in an order that does not depend on the threads.
 class CellSweep {
  public:
-  // `skip` (null: none): per cell, not cut (a small cell drawn by its splat, or not at all).
-  CellSweep(const SliceCells& cells, const FramePoints& points, const SlicePlanes& planes,
-            const std::vector<char>* skip = nullptr);
+  CellSweep(const SliceCells& cells, const FramePoints& points, const SlicePlanes& planes);
+  // Leaves out the cells with skip[c] set (small cells drawn by their splat, or not at all), before
+  // the first advance().
+  void drop(const std::vector<char>& skip);
   // The cells crossing any plane first <= j < end; runs must come in increasing order.
   const std::vector<std::int64_t>& advance(int first, int end);
   std::int64_t between_planes() const { return between_; }  // cells no plane crosses: thinner than the spacing

@@ -143,11 +143,12 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     const int visible = planes.visible_end() - 1;  // planes 1..visible are drawn
     st.slices = visible, st.planes_behind_eye = count - visible;
     // The small cells of this stack: splatted or skipped (draw: counted only, and cut).
-    const SliceSplats splats(cells_, volume_, points, splat_frame, planes,
-                             small_mode == SmallCells::splat ? visible : 0, threshold);
+    CellSweep sweep(cells_, points, planes);
+    const SliceSplats splats(cells_, volume_, sweep, splat_frame, planes, small_mode == SmallCells::splat ? visible : 0,
+                             threshold);
     st.small_cells = small_mode, st.splat_threshold = threshold, st.splat = splats.counters();
     const std::vector<char>* skip = small_mode == SmallCells::draw ? nullptr : &splats.small();
-    CellSweep sweep(cells_, points, planes, skip);
+    if (skip) sweep.drop(*skip);
     st.cells_between_planes = sweep.between_planes();
     // Polygons kept from the last level hold the cells it cut: only the same cells may reuse them.
     if (skip ? *skip != previous_skip : !previous_skip.empty()) previous.clear();

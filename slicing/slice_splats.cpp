@@ -11,20 +11,13 @@
 
 namespace cellproj {
 
-SliceSplats::SliceSplats(const SliceCells& cells, const std::vector<double>& volume, const FramePoints& points,
+SliceSplats::SliceSplats(const SliceCells& cells, const std::vector<double>& volume, const CellSweep& sweep,
                          const SplatContext& frame, const SlicePlanes& planes, int visible, double threshold)
     : small_(static_cast<std::size_t>(cells.size()), 0) {
   const double limit = threshold * std::pow(planes.spacing(), 3);
-  tbb::parallel_for(
-      tbb::blocked_range<std::int64_t>(0, cells.size(), 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-        for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-          int first, last;
-          planes_crossing(cells, c, points, planes, first, last);
-          small_[static_cast<std::size_t>(c)] = volume[static_cast<std::size_t>(c)] < limit || last < first;
-        }
-      });
   for (std::int64_t c = 0; c < cells.size(); ++c)
-    if (small_[static_cast<std::size_t>(c)]) small_cells_.push_back(c);
+    if (volume[static_cast<std::size_t>(c)] < limit || sweep.last(c) < sweep.first(c))
+      small_[static_cast<std::size_t>(c)] = 1, small_cells_.push_back(c);
   counters_.small_cells = static_cast<std::int64_t>(small_cells_.size());
   start_.assign(static_cast<std::size_t>(visible) + 3, 0);
   if (small_cells_.empty() || visible < 1) return;

@@ -19,8 +19,9 @@ namespace cellproj {
 class SliceSplats {
  public:
   // The stack's small cells: volume[c] < threshold spacing^3 (of the slice cells, made once per
-  // mesh) or between two planes; their splats (counted) on planes 1..visible (none for 0).
-  SliceSplats(const SliceCells& cells, const std::vector<double>& volume, const FramePoints& points,
+  // mesh) or between two planes (the sweep's ranges); their splats (counted) on planes 1..visible
+  // (none for 0).
+  SliceSplats(const SliceCells& cells, const std::vector<double>& volume, const CellSweep& sweep,
               const SplatContext& frame, const SlicePlanes& planes, int visible, double threshold);
   const std::vector<char>& small() const { return small_; }  // per slice cell: not cut
   bool any() const { return !splats_.empty(); }              // splats to draw
