@@ -7,6 +7,7 @@
 #include <zlib.h>
 
 #include "base/error.hpp"
+#include "grid/isolated_read.hpp"
 
 namespace fs = std::filesystem;
 
@@ -60,6 +61,19 @@ class Gunzipped {
   std::string file_;
 };
 
+// Who reads the format, for the message when it fails; "" for an unknown format.
+std::string reader_name(const std::string& format) {
+  if (format == "vtk-xml") return "VTK's XML reader";
+  if (format == "vtk-legacy") return "VTK's legacy reader";
+  if (format == "exodus") return "VTK's Exodus II reader";
+  if (format == "cgns") return "VTK's CGNS reader";
+  if (format == "plot3d") return "VTK's PLOT3D reader";
+  if (format == "tetgen") return "TetGen's reader";
+  if (format == "off") return "the .off reader";
+  if (format == "points") return "the point-cloud reader";
+  return "";
+}
+
 }  // namespace
 
 std::vector<std::pair<std::string, std::string>> known_formats() {
@@ -108,18 +122,20 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options) {
   if (!fs::exists(path)) throw InputError(where(path, "no such file"));
   if (fs::is_directory(path)) throw InputError(where(path, "is a folder, not a mesh file"));
   const std::string format = options.format.empty() ? format_for(path) : options.format;
-  Mesh m;
-  if (format == "tetgen")
-    m = read_tetgen(path);
-  else if (format == "off")
-    m = read_off(path);
-  else if (format == "points")
-    m = read_point_cloud(path);
-  else if (format == "vtk-xml" || format == "vtk-legacy" || format == "exodus" || format == "cgns" ||
-           format == "plot3d")
-    m = read_vtk_family(path, format, options);
-  else
-    throw InputError(where(path, "unknown --format '" + format + "'"));
+  const std::string reader = reader_name(format);
+  if (reader.empty()) throw InputError(where(path, "unknown --format '" + format + "'"));
+  auto read = [&] {
+    if (format == "tetgen") return read_tetgen(path);
+    if (format == "off") return read_off(path);
+    if (format == "points") return read_point_cloud(path);
+    return read_vtk_family(path, format, options);
+  };
+  Isolation isolation;
+  isolation.memory_limit = options.max_memory_gib > 0
+                               ? static_cast<std::uint64_t>(options.max_memory_gib * double(1ull << 30))
+                               : available_memory_bytes();
+  isolation.limit_source = options.max_memory_gib > 0 ? "--max-memory" : "this machine's available memory";
+  Mesh m = options.isolate ? read_isolated(path, reader, isolation, read) : read();
   m.source = path;
   return m;
 }

@@ -14,6 +14,10 @@ struct ReadOptions {
   std::string q_file;  // PLOT3D solution; default: the grid's name with "xyz" replaced by "q"
   std::string zone;    // CGNS: read this zone only (default: all zones)
   int time_step = 0;   // Exodus II: which time step's fields
+  // Read in a child process (grid/isolated_read.hpp), so that a reader's crash on a malformed file
+  // is an InputError; its memory is bounded by max_memory_gib (0: the memory available now).
+  bool isolate = true;
+  double max_memory_gib = 0;
 };
 
 // The format names accepted in ReadOptions::format, with the extensions that select them.

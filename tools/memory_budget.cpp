@@ -54,19 +54,6 @@ std::uint64_t estimate_mesh_bytes(const HeaderCounts& counts) {
               static_cast<std::uint64_t>(std::max<std::int64_t>(counts.cells, 0)) * 80);
 }
 
-std::uint64_t available_memory_bytes() {
-  std::ifstream in("/proc/meminfo");
-  std::string line;
-  while (std::getline(in, line)) {
-    if (line.rfind("MemAvailable:", 0) != 0) continue;
-    std::istringstream s(line.substr(13));
-    std::uint64_t kib = 0;
-    s >> kib;
-    return kib * 1024;
-  }
-  return 0;
-}
-
 void refuse_beyond_memory(std::uint64_t need, double max_memory_gib, const std::string& what,
                           const std::string& source) {
   const std::uint64_t limit =

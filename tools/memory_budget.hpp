@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <string>
 
+#include "grid/isolated_read.hpp"  // available_memory_bytes
+
 namespace cellproj {
 
 // Points and cells of a VTK XML file (.vtu, .vts) read from its header alone, before the file is
@@ -16,9 +18,6 @@ HeaderCounts vtk_xml_header_counts(const std::string& path);
 
 // Bytes to hold a mesh of these counts while it is read (the reader's arrays and our copy).
 std::uint64_t estimate_mesh_bytes(const HeaderCounts& counts);
-
-// MemAvailable from /proc/meminfo, or 0 when it cannot be read.
-std::uint64_t available_memory_bytes();
 
 // Throws InputError, prefixed with `source`, when `need` bytes exceed the limit: `max_memory_gib`
 // when positive, else the memory available now. `what` names the work ("rendering 512x512 ...").

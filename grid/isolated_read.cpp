@@ -1,0 +1,303 @@
+#include "grid/isolated_read.hpp"
+
+#include <fcntl.h>
+#include <sys/mman.h>
+#include <sys/resource.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <algorithm>
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
+#include <fstream>
+#include <new>
+
+#include "base/error.hpp"
+
+#if defined(__SANITIZE_ADDRESS__)
+#define CELLPROJ_ASAN 1
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+#define CELLPROJ_ASAN 1
+#endif
+#endif
+
+namespace cellproj {
+namespace {
+
+constexpr std::uint32_t kMagic = 0x4d525043, kEnd = 0x444e4f44;  // "CPRM", "DONE"
+enum class Outcome : std::uint8_t { mesh, input_error, resource_error, out_of_memory, other_error };
+
+// The child's end: writes everything straight to the pipe, no copy of the mesh.
+class PipeWriter {
+ public:
+  explicit PipeWriter(int fd) : fd_(fd) {}
+  void bytes(const void* data, std::size_t n) {
+    const char* p = static_cast<const char*>(data);
+    while (n > 0) {
+      const ssize_t w = ::write(fd_, p, n);
+      if (w < 0 && errno == EINTR) continue;
+      if (w <= 0) _exit(120);  // the parent went away: nothing left to tell
+      p += w;
+      n -= static_cast<std::size_t>(w);
+    }
+  }
+  template <class T>
+  void value(T v) {
+    bytes(&v, sizeof v);
+  }
+  void text(const std::string& s) {
+    value<std::uint64_t>(s.size());
+    bytes(s.data(), s.size());
+  }
+  template <class T>
+  void array(const std::vector<T>& v) {
+    value<std::uint64_t>(v.size());
+    bytes(v.data(), v.size() * sizeof(T));
+  }
+
+ private:
+  int fd_;
+};
+
+// The parent's end. A short read means the child died mid-way: `ok` turns false and the values
+// read are zeros, so the caller asks waitpid why.
+class PipeReader {
+ public:
+  explicit PipeReader(int fd) : fd_(fd) {}
+  bool ok = true;
+  void bytes(void* data, std::size_t n) {
+    char* p = static_cast<char*>(data);
+    while (ok && n > 0) {
+      const ssize_t r = ::read(fd_, p, n);
+      if (r < 0 && errno == EINTR) continue;
+      if (r <= 0) {
+        ok = false;
+        std::memset(p, 0, n);
+        return;
+      }
+      p += r;
+      n -= static_cast<std::size_t>(r);
+    }
+  }
+  template <class T>
+  T value() {
+    T v{};
+    bytes(&v, sizeof v);
+    return v;
+  }
+  std::string text() {
+    std::string s;
+    array_into(s);
+    return s;
+  }
+  template <class T>
+  std::vector<T> array() {
+    std::vector<T> v;
+    array_into(v);
+    return v;
+  }
+
+ private:
+  // Grown a chunk at a time, so that a count garbled by a dying child ends at the pipe's end
+  // instead of in one huge allocation.
+  template <class Container>
+  void array_into(Container& v) {
+    const auto n = value<std::uint64_t>();
+    constexpr std::uint64_t chunk = (64u << 20) / sizeof(typename Container::value_type);
+    for (std::uint64_t done = 0; ok && done < n;) {
+      const std::uint64_t k = std::min(chunk, n - done);
+      v.resize(static_cast<std::size_t>(done + k));
+      bytes(&v[static_cast<std::size_t>(done)], static_cast<std::size_t>(k) * sizeof(typename Container::value_type));
+      done += k;
+    }
+  }
+  int fd_;
+};
+
+void write_mesh(PipeWriter& out, const Mesh& m) {
+  out.text(m.source);
+  out.array(m.points);
+  out.array(m.connectivity);
+  out.array(m.offsets);
+  out.array(m.types);
+  out.value<std::uint64_t>(m.fields.size());
+  for (const PointField& f : m.fields) {
+    out.text(f.name);
+    out.text(f.origin);
+    out.array(f.values);
+  }
+  out.value<std::uint64_t>(m.notes.size());
+  for (const std::string& n : m.notes) out.text(n);
+}
+
+Mesh read_mesh_from(PipeReader& in) {
+  Mesh m;
+  m.source = in.text();
+  m.points = in.array<double>();
+  m.connectivity = in.array<std::int64_t>();
+  m.offsets = in.array<std::int64_t>();
+  m.types = in.array<std::uint8_t>();
+  const auto fields = in.value<std::uint64_t>();
+  for (std::uint64_t i = 0; in.ok && i < fields; ++i) {
+    PointField f;
+    f.name = in.text();
+    f.origin = in.text();
+    f.values = in.array<double>();
+    m.fields.push_back(std::move(f));
+  }
+  const auto notes = in.value<std::uint64_t>();
+  for (std::uint64_t i = 0; in.ok && i < notes; ++i) m.notes.push_back(in.text());
+  return m;
+}
+
+std::uint64_t address_space_now() {
+  std::ifstream statm("/proc/self/statm");
+  std::uint64_t pages = 0;
+  statm >> pages;
+  return pages * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
+}
+
+[[noreturn]] void child(int out_fd, int err_fd, const Isolation& isolation, const std::function<Mesh()>& read) {
+  dup2(err_fd, STDERR_FILENO);  // what the library prints as it fails, for the parent's message
+#ifndef CELLPROJ_ASAN
+  if (isolation.memory_limit > 0) {
+    const rlim_t limit = address_space_now() + isolation.memory_limit;
+    const rlimit r{limit, limit};
+    setrlimit(RLIMIT_AS, &r);
+  }
+#endif
+  PipeWriter out(out_fd);
+  out.value(kMagic);
+  try {
+    Mesh m = read();
+    out.value(Outcome::mesh);
+    write_mesh(out, m);
+  } catch (const InputError& e) {
+    out.value(Outcome::input_error);
+    out.text(e.what());
+  } catch (const ResourceError& e) {
+    out.value(Outcome::resource_error);
+    out.text(e.what());
+  } catch (const std::bad_alloc&) {
+    out.value(Outcome::out_of_memory);
+  } catch (const std::exception& e) {
+    out.value(Outcome::other_error);
+    out.text(e.what());
+  } catch (...) {
+    out.value(Outcome::other_error);
+    out.text("an exception that is not a std::exception");
+  }
+  out.value(kEnd);
+  _exit(0);  // no atexit handlers or static destructors: they belong to the parent
+}
+
+// The last line the child wrote to stderr, e.g. glibc's "malloc(): corrupted top size".
+std::string last_line(int fd) {
+  const off_t size = lseek(fd, 0, SEEK_END);
+  if (size <= 0) return "";
+  const off_t from = std::max<off_t>(0, size - 4096);
+  std::string text(static_cast<std::size_t>(size - from), '\0');
+  if (pread(fd, text.data(), text.size(), from) <= 0) return "";
+  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
+  const auto nl = text.rfind('\n');
+  std::string line = nl == std::string::npos ? text : text.substr(nl + 1);
+  line.erase(std::remove_if(line.begin(), line.end(), [](char c) { return c == '\x1b'; }), line.end());
+  return line.size() > 200 ? line.substr(0, 200) + "..." : line;
+}
+
+std::string gib(std::uint64_t bytes) {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "%.1f GiB", double(bytes) / double(1ull << 30));
+  return buf;
+}
+
+}  // namespace
+
+std::uint64_t available_memory_bytes() {
+  std::ifstream in("/proc/meminfo");
+  std::string line;
+  while (std::getline(in, line)) {
+    if (line.rfind("MemAvailable:", 0) != 0) continue;
+    std::uint64_t kib = 0;
+    std::sscanf(line.c_str() + 13, "%lu", &kib);
+    return kib * 1024;
+  }
+  return 0;
+}
+
+namespace {
+
+// Why the child gave no mesh, from its wait status.
+std::string death(int status, int err_fd, const Isolation& isolation) {
+  std::string why;
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    why = std::string("crashed (signal ") + std::to_string(sig) + ", " + strsignal(sig) + ")";
+  } else if (WIFEXITED(status)) {
+    why = "exited with code " + std::to_string(WEXITSTATUS(status)) + " without a result";
+  } else {
+    why = "stopped without a result";
+  }
+  if (const std::string line = last_line(err_fd); !line.empty()) why += "; it said: \"" + line + "\"";
+  why += "; the file is malformed";
+  if (isolation.memory_limit > 0)
+    why += ", or reading it needs more than the " + gib(isolation.memory_limit) + " allowed" +
+           (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source);
+  return why;
+}
+
+}  // namespace
+
+Mesh read_isolated(const std::string& path, const std::string& reader, const Isolation& isolation,
+                   const std::function<Mesh()>& read) {
+  int fds[2];
+  if (pipe(fds) != 0) throw ResourceError(where(path, std::string("cannot make a pipe: ") + std::strerror(errno)));
+  const int err_fd = memfd_create("cellproj-reader-stderr", 0);
+  std::fflush(nullptr);  // nothing buffered may be written twice
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close(fds[0]);
+    close(fds[1]);
+    if (err_fd >= 0) close(err_fd);
+    throw ResourceError(where(path, std::string("cannot fork the reader: ") + std::strerror(errno)));
+  }
+  if (pid == 0) {
+    close(fds[0]);
+    child(fds[1], err_fd >= 0 ? err_fd : open("/dev/null", O_WRONLY), isolation, read);
+  }
+  close(fds[1]);
+  PipeReader in(fds[0]);
+  Outcome outcome = Outcome::other_error;
+  std::string message;
+  Mesh mesh;
+  if (in.value<std::uint32_t>() == kMagic && in.ok) {
+    outcome = in.value<Outcome>();
+    if (outcome == Outcome::mesh)
+      mesh = read_mesh_from(in);
+    else if (outcome != Outcome::out_of_memory)
+      message = in.text();
+  }
+  const bool complete = in.ok && in.value<std::uint32_t>() == kEnd && in.ok;
+  close(fds[0]);
+  if (!complete) kill(pid, SIGKILL);  // a half-written result: the child is not to be trusted
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  const std::string why = complete ? "" : death(status, err_fd, isolation);
+  if (err_fd >= 0) close(err_fd);
+  if (!complete) throw InputError(where(path, reader + " " + why));
+  switch (outcome) {
+    case Outcome::mesh: return mesh;
+    case Outcome::input_error: throw InputError(message);
+    case Outcome::resource_error: throw ResourceError(message);
+    case Outcome::out_of_memory:
+      throw InputError(where(path, "reading it needs more memory than the " + gib(isolation.memory_limit) + " allowed" +
+                                       (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source)));
+    default: throw InternalError(where(path, reader + ": " + message));
+  }
+}
+
+}  // namespace cellproj
