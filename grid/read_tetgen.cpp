@@ -2,8 +2,10 @@
 #include <fcntl.h>
 #include <unistd.h>
 
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <limits>
 
 #include <tetgen.h>
 
@@ -41,28 +43,65 @@ class QuietStdout {
   int saved_ = -1;
 };
 
-// tetgenio trusts its headers and reads past the end of a short file; check the counts first so
-// that a truncated file is an error, not undefined behaviour.
-void check_records(const std::string& file, bool node) {
+// What the .node file holds, for checking the .ele's ids against it.
+struct NodeRange {
+  std::int64_t first = 0, count = 0;  // ids run first .. first + count - 1 (TetGen numbers from 0 or 1)
+};
+
+// tetgenio trusts its headers, reads past the end of a short file, skips a token it cannot parse
+// (a NaN: the columns shift) and throws an int on a bad id: check every record first, so that a
+// bad file is an error naming its line.
+NodeRange check_node(const std::string& file) {
   TextScanner in(file);
-  const std::int64_t n = in.integer("the record count in the header");
-  if (n <= 0) throw InputError(where(file, "header record count " + std::to_string(n) + " must be positive"));
-  std::int64_t fields = 0;  // numbers per record, its index included
-  if (node) {               // <#points> <dimension> <#attributes> <boundary markers 0|1>
-    const std::int64_t dim = in.integer("the dimension"), attrs = in.integer("the attribute count"),
-                       markers = in.integer("the boundary-marker flag");
-    if (dim != 3)
-      throw InputError(where(file, "dimension " + std::to_string(dim) + " in the header; only 3D nodes are read"));
-    fields = 1 + 3 + attrs + (markers ? 1 : 0);
-  } else {  // <#tetrahedra> <nodes per tetrahedron> <region attribute 0|1>
-    const std::int64_t corners = in.integer("the nodes per tetrahedron"), region = in.integer("the region flag");
-    if (corners != 4 && corners != 10)
-      throw InputError(
-          where(file, "header says " + std::to_string(corners) + " nodes per tetrahedron; expected 4 (or 10)"));
-    fields = 1 + corners + (region ? 1 : 0);
+  NodeRange r;
+  r.count = in.integer("the point count in the header");
+  if (r.count <= 0 || r.count > std::numeric_limits<int>::max())
+    throw InputError(where(file, "header point count " + std::to_string(r.count) + " must be in [1, 2^31)"));
+  // <#points> <dimension> <#attributes> <boundary markers 0|1>
+  const std::int64_t dim = in.integer("the dimension"), attrs = in.integer("the attribute count"),
+                     markers = in.integer("the boundary-marker flag");
+  if (dim != 3)
+    throw InputError(where(file, "dimension " + std::to_string(dim) + " in the header; only 3D nodes are read"));
+  if (attrs < 0 || attrs > 1000 || (markers != 0 && markers != 1))
+    throw InputError(where(file, "header: " + std::to_string(attrs) + " attributes, boundary-marker flag " +
+                                     std::to_string(markers) + " (expected 0..1000 and 0 or 1)"));
+  for (std::int64_t p = 0; p < r.count; ++p) {
+    const std::int64_t id = in.integer("a point index");
+    if (p == 0) r.first = id;
+    if (id != r.first + p)
+      throw InputError(where(file, "line " + std::to_string(in.line()) + ": point index " + std::to_string(id) +
+                                       ", expected " + std::to_string(r.first + p) + " (indices run in order)"));
+    for (std::int64_t k = 0; k < 3 + attrs; ++k)
+      if (const double v = in.number(k < 3 ? "a coordinate" : "a point attribute"); !std::isfinite(v))
+        throw InputError(where(file, "line " + std::to_string(in.line()) + ": point " + std::to_string(id) + " has a " +
+                                         (k < 3 ? "non-finite coordinate" : "non-finite attribute")));
+    if (markers) in.integer("a boundary marker");
   }
-  for (std::int64_t r = 0; r < n; ++r)
-    for (std::int64_t k = 0; k < fields; ++k) in.number(node ? "a .node record field" : "an .ele record field");
+  if (r.first != 0 && r.first != 1)
+    throw InputError(where(file, "point indices start at " + std::to_string(r.first) + "; TetGen numbers from 0 or 1"));
+  return r;
+}
+
+void check_ele(const std::string& file, const NodeRange& nodes) {
+  TextScanner in(file);
+  const std::int64_t n = in.integer("the tetrahedron count in the header");
+  if (n <= 0 || n > std::numeric_limits<int>::max() / 10)
+    throw InputError(where(file, "header tetrahedron count " + std::to_string(n) + " must be in [1, 2^31 / 10)"));
+  // <#tetrahedra> <nodes per tetrahedron> <region attribute 0|1>
+  const std::int64_t corners = in.integer("the nodes per tetrahedron"), region = in.integer("the region flag");
+  if (corners != 4 && corners != 10)
+    throw InputError(
+        where(file, "header says " + std::to_string(corners) + " nodes per tetrahedron; expected 4 (or 10)"));
+  for (std::int64_t t = 0; t < n; ++t) {
+    in.integer("a tetrahedron index");
+    for (std::int64_t k = 0; k < corners; ++k)
+      if (const std::int64_t id = in.integer("a point id"); id < nodes.first || id >= nodes.first + nodes.count)
+        throw InputError(where(file, "line " + std::to_string(in.line()) + ": tetrahedron " + std::to_string(t) +
+                                         " refers to point " + std::to_string(id) + ", out of range [" +
+                                         std::to_string(nodes.first) + ", " +
+                                         std::to_string(nodes.first + nodes.count) + ")"));
+    if (region) in.number("a region attribute");
+  }
 }
 
 }  // namespace
@@ -73,15 +112,18 @@ Mesh read_tetgen(const std::string& path) {
   for (const auto& f : {node, ele})
     if (!fs::exists(f))
       throw InputError(where(f, "not found (a TetGen mesh is a .node and an .ele of the same base name)"));
-  check_records(node, true);
-  check_records(ele, false);
+  check_ele(ele, check_node(node));
 
   tetgenio io;
   std::string name = base.string();
   bool ok;
   {
     QuietStdout quiet;
-    ok = io.load_node(name.data()) && io.load_tet(name.data());
+    try {
+      ok = io.load_node(name.data()) && io.load_tet(name.data());
+    } catch (int code) {  // tetgenio's way of failing; the checks above should leave none
+      throw InputError(where(path, "tetgenio failed with code " + std::to_string(code)));
+    }
   }
   if (!ok) throw InputError(where(path, "tetgenio could not read the .node/.ele pair"));
 
