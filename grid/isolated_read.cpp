@@ -14,6 +14,7 @@
 #include <fstream>
 #include <new>
 
+#include "base/bytes.hpp"
 #include "base/error.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
@@ -208,12 +209,6 @@ std::string last_line(int fd) {
   return line.size() > 200 ? line.substr(0, 200) + "..." : line;
 }
 
-std::string gib(std::uint64_t bytes) {
-  char buf[32];
-  std::snprintf(buf, sizeof buf, "%.1f GiB", double(bytes) / double(1ull << 30));
-  return buf;
-}
-
 }  // namespace
 
 std::uint64_t available_memory_bytes() {
@@ -244,7 +239,7 @@ std::string death(int status, int err_fd, const Isolation& isolation) {
   if (const std::string line = last_line(err_fd); !line.empty()) why += "; it said: \"" + line + "\"";
   why += "; the file is malformed";
   if (isolation.memory_limit > 0)
-    why += ", or reading it needs more than the " + gib(isolation.memory_limit) + " allowed" +
+    why += ", or reading it needs more than the " + format_bytes(isolation.memory_limit) + " allowed" +
            (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source);
   return why;
 }
@@ -294,7 +289,8 @@ Mesh read_isolated(const std::string& path, const std::string& reader, const Iso
     case Outcome::input_error: throw InputError(message);
     case Outcome::resource_error: throw ResourceError(message);
     case Outcome::out_of_memory:
-      throw InputError(where(path, "reading it needs more memory than the " + gib(isolation.memory_limit) + " allowed" +
+      throw InputError(where(path, "reading it needs more memory than the " + format_bytes(isolation.memory_limit) +
+                                       " allowed" +
                                        (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source)));
     default: throw InternalError(where(path, reader + ": " + message));
   }

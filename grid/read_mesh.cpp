@@ -1,12 +1,15 @@
 #include "grid/read_mesh.hpp"
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 
 #include <zlib.h>
 
+#include "base/bytes.hpp"
 #include "base/error.hpp"
+#include "grid/header_counts.hpp"
 #include "grid/isolated_read.hpp"
 
 namespace fs = std::filesystem;
@@ -135,6 +138,12 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options) {
                                ? static_cast<std::uint64_t>(options.max_memory_gib * double(1ull << 30))
                                : available_memory_bytes();
   isolation.limit_source = options.max_memory_gib > 0 ? "--max-memory" : "this machine's available memory";
+  if (const HeaderCounts h = header_counts(path);
+      isolation.memory_limit > 0 && estimate_mesh_bytes(h) > isolation.memory_limit)
+    throw InputError(where(path, "its header declares " + std::to_string(h.points) + " points and " +
+                                     std::to_string(h.cells) + " cells: reading them needs about " +
+                                     format_bytes(estimate_mesh_bytes(h)) + ", more than the " +
+                                     format_bytes(isolation.memory_limit) + " allowed by " + isolation.limit_source));
   Mesh m = options.isolate ? read_isolated(path, reader, isolation, read) : read();
   m.source = path;
   return m;

@@ -66,13 +66,13 @@ TEST(MemoryBudget, CountsFromVtkXmlHeaders) {
   Mesh m = make_box(3, 4, 5, glm::dvec3(0), glm::dvec3(1), true);
   set_field(m, "s", [](const glm::dvec3& x) { return x.x; });
   write_vtu(m, dir.file("box.vtu"));
-  const HeaderCounts c = vtk_xml_header_counts(dir.file("box.vtu"));
+  const HeaderCounts c = header_counts(dir.file("box.vtu"));
   EXPECT_EQ(c.points, m.n_points());
   EXPECT_EQ(c.cells, m.n_cells());
-  EXPECT_EQ(vtk_xml_header_counts(dir.file("missing.vtu")).cells, 0);
+  EXPECT_EQ(header_counts(dir.file("missing.vtu")).cells, 0);
   const std::string vts = test::shared_data("nasa_bluntfin/bluntfin.vts");
   if (!std::filesystem::exists(vts)) GTEST_SKIP() << "no " << vts;
-  const HeaderCounts b = vtk_xml_header_counts(vts);  // WholeExtent="0 39 0 31 0 31", one piece
+  const HeaderCounts b = header_counts(vts);  // WholeExtent="0 39 0 31 0 31", one piece
   EXPECT_EQ(b.points, 40 * 32 * 32);
   EXPECT_EQ(b.cells, 39 * 31 * 31);
   EXPECT_GT(estimate_mesh_bytes(b), 0u);

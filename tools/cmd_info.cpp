@@ -162,6 +162,7 @@ Action add_info(CLI::App& app) {
   cmd->add_option("--zone", args->reader.zone, "CGNS: read only this zone");
   cmd->add_option("--time-step", args->reader.time_step, "Exodus II: time step of the fields (from 0)")
       ->check(CLI::NonNegativeNumber);
+  add_max_memory_option(*cmd, args->reader.max_memory_gib, "Refuse meshes");
   cmd->add_flag("--json", args->json, "Print one JSON object instead of text");
   cmd->add_flag("--overlaps", args->overlaps,
                 "Also look for cells whose interiors overlap (over their tetrahedra; seconds per million cells)");

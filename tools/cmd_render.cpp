@@ -115,6 +115,7 @@ int run_render(const RenderArgs& a) {
   Scene scene = load_scene(a.scene);
   if (!a.size.empty()) parse_size(a.size, scene.width, scene.height);
   if (!a.field.empty()) scene.field = a.field;
+  scene.reader.max_memory_gib = a.max_memory_gib;
   const RenderSettings settings = settings_from(a);
   const std::unique_ptr<Renderer> renderer = make_renderer(settings);
   refuse_unused(*renderer, a.given);
@@ -127,7 +128,7 @@ int run_render(const RenderArgs& a) {
   // Refuse what would not fit, before allocating it: from the file's header before reading it,
   // and again from the mesh as read.
   const auto size_text = std::to_string(scene.width) + "x" + std::to_string(scene.height);
-  if (const HeaderCounts h = vtk_xml_header_counts(scene.mesh); h.cells > 0)
+  if (const HeaderCounts h = header_counts(scene.mesh); h.cells > 0)
     refuse_beyond_memory(
         estimate_mesh_bytes(h) + renderer->estimate_bytes({h.points, h.cells, h.cells}, size), a.max_memory_gib,
         "reading " + scene.mesh + " (" + std::to_string(h.cells) + " cells) and rendering " + size_text, a.scene);
@@ -295,9 +296,7 @@ Action add_render(CLI::App& app) {
                   "Render N frames, turning the camera 1 degree about its up axis each frame; "
                   "report the median frame time")
       ->check(CLI::Range(1, 100000));
-  cmd->add_option("--max-memory", args->max_memory_gib,
-                  "Refuse renders estimated to need more than this many GiB (default: the memory available now)")
-      ->check(CLI::PositiveNumber);
+  add_max_memory_option(*cmd, args->max_memory_gib, "Refuse renders");
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
   return [args, settings] {
     for (const auto& [name, option] : settings)

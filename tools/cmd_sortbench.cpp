@@ -32,6 +32,7 @@ struct SortbenchArgs {
   int views = 8, threads = 0;
   bool check = false, json = false, abuffer_every_pixel = false;
   std::int64_t pairwise_limit = 50000;
+  ReadOptions reader;
 };
 
 std::vector<std::string> split(const std::string& list) {
@@ -220,7 +221,7 @@ int run_sortbench(const SortbenchArgs& a) {
   arena.execute([&] {
     for (const std::string& path : a.meshes) {
       const auto t0 = std::chrono::steady_clock::now();
-      LoadedMesh loaded = load_mesh(path);
+      LoadedMesh loaded = load_mesh(path, a.reader);
       const Mesh& mesh = loaded.mesh;
       const double load_seconds = seconds_since(t0);
       const auto t1 = std::chrono::steady_clock::now();
@@ -282,6 +283,7 @@ Action add_sortbench(CLI::App& app) {
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads for the sorts' parallel phases (default: all cores)")
       ->check(CLI::Range(1, 1024));
+  add_max_memory_option(*cmd, args->reader.max_memory_gib, "Refuse meshes");
   cmd->add_flag("--check", args->check, "Count order violations with the ray-traced oracle (slow)");
   cmd->add_flag("--abuffer-every-pixel", args->abuffer_every_pixel,
                 "mpvo-abuffer samples every boundary face off the hull and orders each pixel's list (the reference "

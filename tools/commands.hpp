@@ -2,6 +2,7 @@
 // The cellproj subcommands. Each registers its options on the CLI11 app and returns the action to
 // run once the command line is parsed; the action returns the exit code.
 #include <functional>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -14,6 +15,17 @@ constexpr int kExitUsage = 2;     // bad command line
 constexpr int kExitInternal = 3;  // a bug or an exhausted resource
 
 using Action = std::function<int()>;
+
+// --max-memory GiB: `what` ("Refuse renders") estimated to need more, and the limit of a mesh
+// reader's process (default: the memory available now).
+inline void add_max_memory_option(CLI::App& cmd, double& gib, const std::string& what) {
+  cmd.add_option("--max-memory", gib,
+                 what +
+                     " estimated to need more than this many GiB, and stop a mesh reader at it (default: the "
+                     "memory available now)")
+      ->check(CLI::PositiveNumber);
+}
+
 Action add_render(CLI::App& app);
 Action add_info(CLI::App& app);
 Action add_generate(CLI::App& app);

@@ -1,0 +1,114 @@
+#include "grid/header_counts.hpp"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+
+namespace fs = std::filesystem;
+
+namespace cellproj {
+namespace {
+
+// The integers of attribute `name` (e.g. NumberOfPoints="12") at every occurrence in `xml`.
+template <class F>
+void each_attribute(const std::string& xml, const std::string& name, F&& f) {
+  const std::string key = " " + name + "=\"";  // the whole name: Extent, not WholeExtent
+  for (std::size_t at = xml.find(key); at != std::string::npos; at = xml.find(key, at + key.size())) {
+    const std::size_t end = xml.find('"', at + key.size());
+    if (end != std::string::npos) f(xml.substr(at + key.size(), end - at - key.size()));
+  }
+}
+
+// Counts from a garbled header can be anything: sums saturate instead of overflowing.
+std::int64_t saturated(double v) { return v <= 0 ? 0 : v >= 1e15 ? std::int64_t(1e15) : static_cast<std::int64_t>(v); }
+
+HeaderCounts xml_counts(const std::string& path, const std::string& ext) {
+  HeaderCounts c;
+  std::ifstream in(path, std::ios::binary);
+  std::string xml(1 << 20, '\0');  // the XML part: every Piece element comes before the data
+  in.read(&xml[0], static_cast<std::streamsize>(xml.size()));
+  xml.resize(static_cast<std::size_t>(in.gcount()));
+  const std::size_t data = xml.find("<AppendedData");
+  if (data != std::string::npos) xml.resize(data);
+  each_attribute(xml, "NumberOfPoints",
+                 [&](const std::string& v) { c.points = saturated(double(c.points) + std::atof(v.c_str())); });
+  each_attribute(xml, "NumberOfCells",
+                 [&](const std::string& v) { c.cells = saturated(double(c.cells) + std::atof(v.c_str())); });
+  if (ext == ".vts")
+    each_attribute(xml, "Extent", [&](const std::string& v) {  // a Piece's extent: i0 i1 j0 j1 k0 k1
+      std::istringstream s(v);
+      double e[6] = {};
+      for (auto& x : e) s >> x;
+      c.points = saturated(double(c.points) + (e[1] - e[0] + 1) * (e[3] - e[2] + 1) * (e[5] - e[4] + 1));
+      c.cells = saturated(double(c.cells) +
+                          std::max(e[1] - e[0], 1.0) * std::max(e[3] - e[2], 1.0) * std::max(e[5] - e[4], 1.0));
+    });
+  return c;
+}
+
+// Legacy VTK: the counts after the keywords "POINTS" and "CELLS" at a line's start. In a binary file
+// they sit between the arrays, so the whole file is scanned, a block at a time.
+HeaderCounts legacy_counts(const std::string& path) {
+  HeaderCounts c;
+  std::ifstream in(path, std::ios::binary);
+  std::string block(1 << 20, '\0'), carry;
+  bool points = false, cells = false;
+  while (!(points && cells) && in) {
+    in.read(&block[0], static_cast<std::streamsize>(block.size()));
+    const std::string text = carry + block.substr(0, static_cast<std::size_t>(in.gcount()));
+    for (auto [key, out, seen] :
+         {std::make_tuple("\nPOINTS ", &c.points, &points), std::make_tuple("\nCELLS ", &c.cells, &cells)}) {
+      const auto at = text.find(key);
+      if (*seen || at == std::string::npos || text.find('\n', at + 1) == std::string::npos) continue;
+      *out = saturated(std::atof(text.c_str() + at + std::strlen(key)));
+      *seen = true;
+    }
+    carry = text.substr(text.size() - std::min<std::size_t>(text.size(), 64));
+  }
+  return c;
+}
+
+// The first number of a text file's first line that is not a comment.
+std::int64_t first_count(const std::string& path) {
+  std::ifstream in(path);
+  std::string line;
+  while (std::getline(in, line)) {
+    const auto at = line.find_first_not_of(" \t\r");
+    if (at == std::string::npos || line[at] == '#') continue;
+    return saturated(std::atof(line.c_str() + at));
+  }
+  return 0;
+}
+
+}  // namespace
+
+HeaderCounts header_counts(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(),
+                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  if (ext == ".vtu" || ext == ".vts") return xml_counts(path, ext);
+  if (ext == ".vtk") return legacy_counts(path);
+  if (ext == ".off") {
+    std::ifstream in(path);
+    double points = 0, cells = 0;
+    in >> points >> cells;
+    return in ? HeaderCounts{saturated(points), saturated(cells)} : HeaderCounts{};
+  }
+  if (ext == ".node" || ext == ".ele") {
+    const fs::path base = fs::path(path).replace_extension();
+    return {first_count(base.string() + ".node"), first_count(base.string() + ".ele")};
+  }
+  return {};
+}
+
+std::uint64_t estimate_mesh_bytes(const HeaderCounts& counts) {
+  // Points as doubles with a few fields, cells as 64-bit connectivity of up to 8 ids plus offsets
+  // and types; twice: the reader's arrays and the Mesh made from them.
+  return 2 * (static_cast<std::uint64_t>(std::max<std::int64_t>(counts.points, 0)) * 64 +
+              static_cast<std::uint64_t>(std::max<std::int64_t>(counts.cells, 0)) * 80);
+}
+
+}  // namespace cellproj

@@ -1,0 +1,21 @@
+#pragma once
+// The size of a mesh file's content from its header alone, before anything is read, so that a
+// file too large for memory (or a garbled count) is refused with a message instead of the reader
+// allocating without bound.
+#include <cstdint>
+#include <string>
+
+namespace cellproj {
+
+struct HeaderCounts {
+  std::int64_t points = 0, cells = 0;
+};
+
+// From the header of a VTK XML (.vtu, .vts: every Piece), legacy VTK (.vtk: POINTS and CELLS),
+// TetGen (.node/.ele) or .off file; {0, 0} for other formats or when the header does not say.
+HeaderCounts header_counts(const std::string& path);
+
+// Bytes to hold a mesh of these counts while it is read (the reader's arrays and our copy).
+std::uint64_t estimate_mesh_bytes(const HeaderCounts& counts);
+
+}  // namespace cellproj
