@@ -10,9 +10,14 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <new>
+
+#ifdef CELLPROJ_FUZZING
+#include <sanitizer/common_interface_defs.h>
+#endif
 
 #include "base/bytes.hpp"
 #include "base/error.hpp"
@@ -29,6 +34,7 @@ namespace cellproj {
 namespace {
 
 constexpr std::uint32_t kMagic = 0x4d525043, kEnd = 0x444e4f44;  // "CPRM", "DONE"
+constexpr int kLibraryExit = 121;                                // the child's exit code when a library called exit()
 enum class Outcome : std::uint8_t { mesh, input_error, resource_error, out_of_memory, other_error };
 
 // The child's end: writes everything straight to the pipe, no copy of the mesh.
@@ -154,14 +160,23 @@ Mesh read_mesh_from(PipeReader& in) {
   return m;
 }
 
-std::uint64_t address_space_now() {
+[[maybe_unused]] std::uint64_t address_space_now() {
   std::ifstream statm("/proc/self/statm");
   std::uint64_t pages = 0;
   statm >> pages;
   return pages * static_cast<std::uint64_t>(sysconf(_SC_PAGESIZE));
 }
 
-[[noreturn]] void child(int out_fd, int err_fd, const Isolation& isolation, const std::function<Mesh()>& read) {
+[[noreturn]] void child(int out_fd, int err_fd, [[maybe_unused]] const Isolation& isolation,
+                        const std::function<Mesh()>& read) {
+  // A library that calls exit() (the CGNS library does on some bad files) must not run the
+  // parent's atexit handlers in the child: ours, registered last, runs first and ends it.
+  std::atexit([] { _exit(kLibraryExit); });
+#ifdef CELLPROJ_FUZZING
+  // The fuzzer's crash handlers belong to the parent: a reader dying here is the parent's to report.
+  __sanitizer_set_death_callback(nullptr);
+  for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
+#endif
   dup2(err_fd, STDERR_FILENO);  // what the library prints as it fails, for the parent's message
 #ifndef CELLPROJ_ASAN
   if (isolation.memory_limit > 0) {
@@ -195,18 +210,83 @@ std::uint64_t address_space_now() {
   _exit(0);  // no atexit handlers or static destructors: they belong to the parent
 }
 
-// The last line the child wrote to stderr, e.g. glibc's "malloc(): corrupted top size".
-std::string last_line(int fd) {
+// The last line the child wrote to stderr that reads as a diagnosis (glibc's "malloc(): corrupted
+// top size", an HDF5 "error" line), or "" when its output is only a library's dump.
+std::string last_diagnosis(int fd) {
   const off_t size = lseek(fd, 0, SEEK_END);
   if (size <= 0) return "";
-  const off_t from = std::max<off_t>(0, size - 4096);
+  const off_t from = std::max<off_t>(0, size - 16384);
   std::string text(static_cast<std::size_t>(size - from), '\0');
   if (pread(fd, text.data(), text.size(), from) <= 0) return "";
-  while (!text.empty() && (text.back() == '\n' || text.back() == ' ')) text.pop_back();
-  const auto nl = text.rfind('\n');
-  std::string line = nl == std::string::npos ? text : text.substr(nl + 1);
-  line.erase(std::remove_if(line.begin(), line.end(), [](char c) { return c == '\x1b'; }), line.end());
-  return line.size() > 200 ? line.substr(0, 200) + "..." : line;
+  text.erase(std::remove(text.begin(), text.end(), '\x1b'), text.end());
+  std::size_t end = text.size();
+  for (int lines = 0; lines < 40 && end > 0; ++lines) {
+    const auto nl = text.rfind('\n', end - 1);
+    const std::size_t start = nl == std::string::npos ? 0 : nl + 1;
+    std::string line = text.substr(start, end - start);
+    end = nl == std::string::npos ? 0 : nl;
+    std::string low = line;
+    std::transform(low.begin(), low.end(), low.begin(),
+                   [](unsigned char c) { return static_cast<char>(std::tolower(c)); });
+    for (const char* word : {"error", "corrupt", "malloc", "assert", "abort", "invalid"})
+      if (low.find(word) != std::string::npos) {
+        line.erase(0, line.find_first_not_of(" \t#0123456789:"));
+        return line.size() > 160 ? line.substr(0, 160) + "..." : line;
+      }
+  }
+  return "";
+}
+
+#ifdef CELLPROJ_FUZZING
+// Under the fuzzers (bench/fuzz.sh), a sanitizer's report from the child whose first frame outside
+// the sanitizer runtime and libc is in cellproj's own sources is a finding, not a malformed file:
+// the parent prints it and aborts. A third-party reader's crash stays an InputError.
+void abort_on_own_finding(int fd) {
+  std::string text(1 << 20, '\0');
+  const ssize_t n = pread(fd, text.data(), text.size(), 0);
+  text.resize(n > 0 ? static_cast<std::size_t>(n) : 0);
+  const std::string ours = std::string(CELLPROJ_SOURCE_DIR) + "/";
+  bool own = false;
+  if (const auto ub = text.find(": runtime error: "); ub != std::string::npos) {  // "FILE:LINE:COL: runtime error"
+    const auto nl = text.rfind('\n', ub);
+    own = text.compare(nl == std::string::npos ? 0 : nl + 1, ours.size(), ours) == 0;
+  }
+  for (auto at = text.find("    #"); !own && at != std::string::npos; at = text.find("    #", at + 1)) {
+    const std::string frame = text.substr(at, text.find('\n', at) - at);
+    if (frame.find("compiler-rt") != std::string::npos || frame.find("libclang_rt") != std::string::npos ||
+        frame.find("libc.so") != std::string::npos || frame.find("sanitizer") != std::string::npos ||
+        frame.find(" in __interceptor_") != std::string::npos || frame.find(" in __asan") != std::string::npos)
+      continue;
+    const auto src = frame.find(ours);  // a source file of ours (not a binary built under the tree)
+    own = src != std::string::npos &&
+          (frame.find(".cpp:", src) != std::string::npos || frame.find(".hpp:", src) != std::string::npos);
+    break;
+  }
+  if (!own) return;
+  std::fprintf(stderr, "cellproj: the isolated reader failed in cellproj's own code:\n%s\n", text.c_str());
+  std::abort();
+}
+#endif
+
+// Why the child gave no mesh, from its wait status.
+std::string death(int status, int err_fd, const Isolation& isolation) {
+  std::string why;
+  if (WIFSIGNALED(status)) {
+    const int sig = WTERMSIG(status);
+    why = std::string("crashed (signal ") + std::to_string(sig) + ", " + strsignal(sig) + ")";
+  } else if (WIFEXITED(status) && WEXITSTATUS(status) == kLibraryExit) {
+    why = "called exit() without a result";
+  } else if (WIFEXITED(status)) {
+    why = "exited with code " + std::to_string(WEXITSTATUS(status)) + " without a result";
+  } else {
+    why = "stopped without a result";
+  }
+  if (const std::string line = last_diagnosis(err_fd); !line.empty()) why += "; it said: \"" + line + "\"";
+  why += "; the file is malformed";
+  if (isolation.memory_limit > 0 && WIFSIGNALED(status))
+    why += ", or reading it needs more than the " + format_bytes(isolation.memory_limit) + " allowed" +
+           (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source);
+  return why;
 }
 
 }  // namespace
@@ -222,29 +302,6 @@ std::uint64_t available_memory_bytes() {
   }
   return 0;
 }
-
-namespace {
-
-// Why the child gave no mesh, from its wait status.
-std::string death(int status, int err_fd, const Isolation& isolation) {
-  std::string why;
-  if (WIFSIGNALED(status)) {
-    const int sig = WTERMSIG(status);
-    why = std::string("crashed (signal ") + std::to_string(sig) + ", " + strsignal(sig) + ")";
-  } else if (WIFEXITED(status)) {
-    why = "exited with code " + std::to_string(WEXITSTATUS(status)) + " without a result";
-  } else {
-    why = "stopped without a result";
-  }
-  if (const std::string line = last_line(err_fd); !line.empty()) why += "; it said: \"" + line + "\"";
-  why += "; the file is malformed";
-  if (isolation.memory_limit > 0)
-    why += ", or reading it needs more than the " + format_bytes(isolation.memory_limit) + " allowed" +
-           (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source);
-  return why;
-}
-
-}  // namespace
 
 Mesh read_isolated(const std::string& path, const std::string& reader, const Isolation& isolation,
                    const std::function<Mesh()>& read) {
@@ -281,6 +338,9 @@ Mesh read_isolated(const std::string& path, const std::string& reader, const Iso
   int status = 0;
   while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
+#ifdef CELLPROJ_FUZZING
+  if (!complete && err_fd >= 0) abort_on_own_finding(err_fd);
+#endif
   const std::string why = complete ? "" : death(status, err_fd, isolation);
   if (err_fd >= 0) close(err_fd);
   if (!complete) throw InputError(where(path, reader + " " + why));
@@ -289,9 +349,10 @@ Mesh read_isolated(const std::string& path, const std::string& reader, const Iso
     case Outcome::input_error: throw InputError(message);
     case Outcome::resource_error: throw ResourceError(message);
     case Outcome::out_of_memory:
-      throw InputError(where(path, "reading it needs more memory than the " + format_bytes(isolation.memory_limit) +
+      throw InputError(where(path, "reading it asked for more memory than the " + format_bytes(isolation.memory_limit) +
                                        " allowed" +
-                                       (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source)));
+                                       (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source) +
+                                       ": a count in it is garbled, or the mesh is too large"));
     default: throw InternalError(where(path, reader + ": " + message));
   }
 }

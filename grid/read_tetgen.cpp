@@ -49,33 +49,36 @@ struct NodeRange {
 };
 
 // tetgenio trusts its headers, reads past the end of a short file, skips a token it cannot parse
-// (a NaN: the columns shift) and throws an int on a bad id: check every record first, so that a
-// bad file is an error naming its line.
+// (a NaN: the columns shift), throws an int on a bad id and dereferences null on a line shorter
+// than its record: check every record first, one per line as tetgenio reads them, so that a bad
+// file is an error naming its line.
 NodeRange check_node(const std::string& file) {
   TextScanner in(file);
   NodeRange r;
-  r.count = in.integer("the point count in the header");
+  in.next_record("the header");
+  r.count = in.integer_field("the point count in the header");
   if (r.count <= 0 || r.count > std::numeric_limits<int>::max())
     throw InputError(where(file, "header point count " + std::to_string(r.count) + " must be in [1, 2^31)"));
   // <#points> <dimension> <#attributes> <boundary markers 0|1>
-  const std::int64_t dim = in.integer("the dimension"), attrs = in.integer("the attribute count"),
-                     markers = in.integer("the boundary-marker flag");
+  const std::int64_t dim = in.integer_field("the dimension"), attrs = in.integer_field("the attribute count"),
+                     markers = in.integer_field("the boundary-marker flag");
   if (dim != 3)
     throw InputError(where(file, "dimension " + std::to_string(dim) + " in the header; only 3D nodes are read"));
   if (attrs < 0 || attrs > 1000 || (markers != 0 && markers != 1))
     throw InputError(where(file, "header: " + std::to_string(attrs) + " attributes, boundary-marker flag " +
                                      std::to_string(markers) + " (expected 0..1000 and 0 or 1)"));
   for (std::int64_t p = 0; p < r.count; ++p) {
-    const std::int64_t id = in.integer("a point index");
+    in.next_record("a point record");
+    const std::int64_t id = in.integer_field("a point index");
     if (p == 0) r.first = id;
     if (id != r.first + p)
       throw InputError(where(file, "line " + std::to_string(in.line()) + ": point index " + std::to_string(id) +
                                        ", expected " + std::to_string(r.first + p) + " (indices run in order)"));
     for (std::int64_t k = 0; k < 3 + attrs; ++k)
-      if (const double v = in.number(k < 3 ? "a coordinate" : "a point attribute"); !std::isfinite(v))
+      if (const double v = in.field(k < 3 ? "a coordinate" : "a point attribute"); !std::isfinite(v))
         throw InputError(where(file, "line " + std::to_string(in.line()) + ": point " + std::to_string(id) + " has a " +
                                          (k < 3 ? "non-finite coordinate" : "non-finite attribute")));
-    if (markers) in.integer("a boundary marker");
+    if (markers) in.integer_field("a boundary marker");
   }
   if (r.first != 0 && r.first != 1)
     throw InputError(where(file, "point indices start at " + std::to_string(r.first) + "; TetGen numbers from 0 or 1"));
@@ -84,23 +87,26 @@ NodeRange check_node(const std::string& file) {
 
 void check_ele(const std::string& file, const NodeRange& nodes) {
   TextScanner in(file);
-  const std::int64_t n = in.integer("the tetrahedron count in the header");
+  in.next_record("the header");
+  const std::int64_t n = in.integer_field("the tetrahedron count in the header");
   if (n <= 0 || n > std::numeric_limits<int>::max() / 10)
     throw InputError(where(file, "header tetrahedron count " + std::to_string(n) + " must be in [1, 2^31 / 10)"));
   // <#tetrahedra> <nodes per tetrahedron> <region attribute 0|1>
-  const std::int64_t corners = in.integer("the nodes per tetrahedron"), region = in.integer("the region flag");
+  const std::int64_t corners = in.integer_field("the nodes per tetrahedron"),
+                     region = in.integer_field("the region flag");
   if (corners != 4 && corners != 10)
     throw InputError(
         where(file, "header says " + std::to_string(corners) + " nodes per tetrahedron; expected 4 (or 10)"));
   for (std::int64_t t = 0; t < n; ++t) {
-    in.integer("a tetrahedron index");
+    in.next_record("a tetrahedron record");
+    in.integer_field("a tetrahedron index");
     for (std::int64_t k = 0; k < corners; ++k)
-      if (const std::int64_t id = in.integer("a point id"); id < nodes.first || id >= nodes.first + nodes.count)
+      if (const std::int64_t id = in.integer_field("a point id"); id < nodes.first || id >= nodes.first + nodes.count)
         throw InputError(where(file, "line " + std::to_string(in.line()) + ": tetrahedron " + std::to_string(t) +
                                          " refers to point " + std::to_string(id) + ", out of range [" +
                                          std::to_string(nodes.first) + ", " +
                                          std::to_string(nodes.first + nodes.count) + ")"));
-    if (region) in.number("a region attribute");
+    if (region) in.field("a region attribute");
   }
 }
 

@@ -14,10 +14,18 @@ class TextScanner {
   double number(const char* what);
   std::int64_t integer(const char* what);
   bool at_end();  // only white space and comments left
+  // Line-record formats (TetGen's, read line by line): start the next record on the next line that
+  // is not blank or a comment (what is left of the current one is skipped), then read fields from
+  // that line only, each a clear error when the line ends early.
+  void next_record(const char* what);
+  double field(const char* what);
+  std::int64_t integer_field(const char* what);
   int line() const { return line_; }
 
  private:
   bool next_token(std::string& tok);
+  double parse(const std::string& tok, const char* what) const;
+  static std::int64_t whole(double v, int line, const std::string& path, const char* what);
   std::string path_;
   std::ifstream in_;
   std::string buf_;

@@ -1,4 +1,6 @@
 // Every reader on a small file, and on truncated and corrupted copies (an InputError, never a crash).
+#include <csignal>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -8,6 +10,7 @@
 #include <vtkLogger.h>
 
 #include "base/error.hpp"
+#include "grid/isolated_read.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
 #include "grid/write_mesh.hpp"
@@ -113,7 +116,8 @@ TEST(Readers, CorruptGzipLeavesNoTemporaryFolder) {
   test::TempDir dir;
   const std::string path = dir.file("mesh.vtu.gz");
   spit(path, std::string("\x1f\x8b\x08\x00\x00\x00\x00\x00\x00\x03", 10) + std::string(300, 'x'));
-  EXPECT_NE(read_error(path).find("mesh.vtu.gz: corrupt or truncated gzip data"), std::string::npos) << read_error(path);
+  EXPECT_NE(read_error(path).find("mesh.vtu.gz: corrupt or truncated gzip data"), std::string::npos)
+      << read_error(path);
   const std::string prefix = "cellproj-" + std::to_string(std::hash<std::string>{}(path)) + "-";
   for (const auto& e : fs::directory_iterator(fs::temp_directory_path()))
     EXPECT_NE(e.path().filename().string().rfind(prefix, 0), 0u) << "left behind: " << e.path();
@@ -263,4 +267,62 @@ TEST(Readers, ParallelVtuPiecesAreMergedAtTheirInterface) {
   spit(dir.file("missing.pvtu"),
        slurp(dir.file("box.pvtu")).replace(slurp(dir.file("box.pvtu")).find("b.vtu"), 5, "c.vtu"));
   EXPECT_FALSE(read_error(dir.file("missing.pvtu")).empty());
+}
+
+// The isolated reader (grid/isolated_read.hpp): what a reader does in its child process comes
+// back to the caller as a mesh or an error, never as the caller's crash.
+TEST(IsolatedRead, MovesTheMeshBackBitForBit) {
+  Mesh m = make_box(3, 2, 2, glm::dvec3(-1), glm::dvec3(1), false);
+  set_field(m, "s", [](const glm::dvec3& x) { return x.x * x.y + 0.1; });
+  m.notes.push_back("a note");
+  const Mesh back = read_isolated("mesh.vtu", "a reader", {}, [&] { return m; });
+  EXPECT_EQ(back.points, m.points);
+  EXPECT_EQ(back.connectivity, m.connectivity);
+  EXPECT_EQ(back.offsets, m.offsets);
+  EXPECT_EQ(back.types, m.types);
+  ASSERT_EQ(back.fields.size(), 1u);
+  EXPECT_EQ(back.fields[0].name, "s");
+  EXPECT_EQ(back.fields[0].values, m.fields[0].values);
+  EXPECT_EQ(back.notes, m.notes);
+}
+
+TEST(IsolatedRead, ErrorsCrashesAndExitsBecomeInputErrors) {
+  auto message = [](const std::function<Mesh()>& read, const Isolation& iso = {}) -> std::string {
+    try {
+      read_isolated("bad.vtk", "VTK's legacy reader", iso, read);
+    } catch (const InputError& e) {
+      return e.what();
+    }
+    return "";
+  };
+  EXPECT_EQ(message([]() -> Mesh { throw InputError("bad.vtk: cell 3 is inverted"); }), "bad.vtk: cell 3 is inverted");
+  EXPECT_NE(message([]() -> Mesh {
+              std::raise(SIGSEGV);
+              return {};
+            }).find("bad.vtk: VTK's legacy reader crashed (signal 11"),
+            std::string::npos);
+  EXPECT_NE(message([]() -> Mesh { std::exit(255); }).find("bad.vtk: VTK's legacy reader called exit()"),
+            std::string::npos);
+#if !defined(__SANITIZE_ADDRESS__)
+  Isolation small;  // the child's address space is limited: a runaway allocation is refused
+  small.memory_limit = 256u << 20;
+  small.limit_source = "--max-memory";
+  const std::string oom = message(
+      []() -> Mesh {
+        std::vector<double> v(std::size_t(1) << 30, 1.0);
+        return {};
+      },
+      small);
+  EXPECT_NE(oom.find("more memory than the 0.2 GiB allowed by --max-memory"), std::string::npos) << oom;
+#endif
+}
+
+TEST(IsolatedRead, TheHeaderIsCheckedAgainstTheMemoryLimitFirst) {
+  test::TempDir dir;
+  spit(dir.file("huge.vtk"),
+       "# vtk DataFile Version 3.0\nx\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 2000000000 double\n");
+  ReadOptions o;
+  o.max_memory_gib = 4;
+  EXPECT_NE(read_error(dir.file("huge.vtk"), o).find("its header declares 2000000000 points and 0 cells"),
+            std::string::npos);
 }

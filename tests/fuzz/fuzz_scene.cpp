@@ -1,0 +1,44 @@
+// libFuzzer harness for scene files: the input is a scene JSON beside a small generated mesh,
+// loaded and prepared as `cellproj render` does (the mesh read, the field and transfer function
+// checked against it, the camera chosen).
+#include <unistd.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <fstream>
+#include <string>
+
+#include "base/error.hpp"
+#include "grid/generate.hpp"
+#include "grid/write_mesh.hpp"
+#include "scene/prepare.hpp"
+#include "scene/scene_file.hpp"
+
+namespace {
+
+const std::string& folder() {  // one per fuzzing process, holding box.vtu for the scenes to name
+  static const std::string dir = [] {
+    char name[] = "/tmp/cellproj-fuzz-XXXXXX";
+    if (!mkdtemp(name)) std::abort();
+    cellproj::write_vtu(cellproj::generate("box-tets", 2), std::string(name) + "/box.vtu");
+    return std::string(name);
+  }();
+  return dir;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string path = folder() + "/scene.json";
+  std::ofstream(path, std::ios::binary | std::ios::trunc)
+      .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
+  try {
+    cellproj::Scene scene = cellproj::load_scene(path);
+    scene.reader.max_memory_gib = 1;
+    cellproj::prepare_scene(scene);
+  } catch (const cellproj::InternalError&) {
+    std::abort();
+  } catch (const cellproj::Error&) {
+  }
+  return 0;
+}
