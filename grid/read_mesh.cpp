@@ -1,7 +1,9 @@
 #include "grid/read_mesh.hpp"
 
 #include <algorithm>
+#include <cerrno>
 #include <cstdio>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -124,6 +126,8 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options) {
   }
   if (!fs::exists(path)) throw InputError(where(path, "no such file"));
   if (fs::is_directory(path)) throw InputError(where(path, "is a folder, not a mesh file"));
+  if (std::ifstream probe(path, std::ios::binary); !probe)
+    throw InputError(where(path, "cannot be read (" + std::string(std::strerror(errno)) + ")"));
   const std::string format = options.format.empty() ? format_for(path) : options.format;
   const std::string reader = reader_name(format);
   if (reader.empty()) throw InputError(where(path, "unknown --format '" + format + "'"));

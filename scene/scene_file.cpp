@@ -1,5 +1,7 @@
 #include "scene/scene_file.hpp"
 
+#include <cerrno>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 
@@ -51,8 +53,12 @@ void parse_size(const std::string& t, int& w, int& h) {
 }
 
 Scene load_scene(const std::string& path) {
+  if (std::filesystem::is_directory(path)) throw InputError(where(path, "is a folder, not a scene file"));
   std::ifstream in(path);
-  if (!in) throw InputError(where(path, "cannot open scene file"));
+  if (!in)
+    throw InputError(where(path, std::filesystem::exists(path)
+                                     ? "cannot read the scene file (" + std::string(std::strerror(errno)) + ")"
+                                     : "no such scene file"));
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);

@@ -33,8 +33,8 @@ expect 1 "no point field named 'nope'; the fields are: scalar" -- render "$tmp/f
 echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "camera": {"up": [0, 0, 1]}}' > "$tmp/cam.json"
 expect 1 "cam.json: camera: up is parallel to the view direction" -- render "$tmp/cam.json"
 echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}}' > "$tmp/ok.json"
-expect 1 "size: expected WxH" -- render "$tmp/ok.json" --size 0x5
-expect 1 "unknown method 'pt-magic'" -- render "$tmp/ok.json" --method pt-magic
+expect 2 "size: expected WxH" -- render "$tmp/ok.json" --size 0x5
+expect 2 "unknown method 'pt-magic'" -- render "$tmp/ok.json" --method pt-magic
 expect 2 "threads" -- render "$tmp/ok.json" --threads 0
 expect 0 "wrote .*ok.png" -- render "$tmp/ok.json" --size 32x24 -o "$tmp/ok.png" --npy "$tmp/ok.npy" --stats --frames 3
 grep -q '"frame_seconds"' "$tmp/err" && grep -q '"load_seconds"' "$tmp/err" || { echo "FAIL: --stats JSON"; failed=$((failed+1)); }
@@ -51,7 +51,7 @@ done
 expect 0 '"max_abs": [0-9.e-]+' -- compare "$tmp/ct.npy" "$tmp/pt-breakpoints.npy"
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['max_abs'] < 1e-5 else 1)" <("$exe" compare "$tmp/ct.npy" "$tmp/pt-breakpoints.npy") \
   || { echo "FAIL: pt-breakpoints differs from exact canonical-tets"; failed=$((failed+1)); }
-expect 1 "unknown sort 'zsort'" -- render "$tmp/ok.json" --sort zsort
+expect 2 "unknown sort 'zsort'" -- render "$tmp/ok.json" --sort zsort
 expect 1 "ok.json: reading .*box.vtu \(64 cells\) and rendering 16384x16384 needs about 9.6 GiB, more than the 2.0 GiB allowed by --max-memory" -- render "$tmp/ok.json" --size 16384x16384 --max-memory 2
 # A mesh too large for memory is refused from its header, before anything is read.
 printf '<?xml version="1.0"?>\n<VTKFile type="UnstructuredGrid" version="1.0">\n<UnstructuredGrid>\n<Piece NumberOfPoints="900000000" NumberOfCells="4000000000">\n' > "$tmp/huge.vtu"
@@ -61,8 +61,8 @@ echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinc
 [ "$gl" = ON ] && expect 0 "warning: [0-9]+ cells reach behind the eye and were not drawn" -- render "$tmp/inside.json" --size 32x32 -o "$tmp/inside.png" --method pt-table --backend opengl
 "$exe" render "$tmp/inside.json" --size 32x32 -o "$tmp/inside.png" 2>"$tmp/err" >/dev/null
 ! grep -q "behind the eye" "$tmp/err" || { echo "FAIL: the software back end draws cells behind the eye, no warning"; failed=$((failed+1)); }
-expect 1 "unknown back end 'vulkan'" -- render "$tmp/ok.json" --backend vulkan
-expect 1 "unknown sort 'zsort'" -- render "$tmp/ok.json" --method exact --sort zsort
+expect 2 "unknown back end 'vulkan'" -- render "$tmp/ok.json" --backend vulkan
+expect 2 "unknown sort 'zsort'" -- render "$tmp/ok.json" --method exact --sort zsort
 # Three sticks each lying over the next: a visibility cycle seen from above. The picture cannot be
 # right everywhere, and render says so.
 printf '# vtk DataFile Version 3.0\nsticks\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 12 double\n%s\nCELLS 3 15\n4 0 1 2 3\n4 4 5 6 7\n4 8 9 10 11\nCELL_TYPES 3\n10 10 10\nPOINT_DATA 12\nSCALARS s double 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7 8 9 10 11\n' \
@@ -75,12 +75,12 @@ expect 0 "warning: the visibility sort met 1 visibility cycle \(3 cells\) .* --m
 expect 0 "overlapping cells: none" -- info "$tmp/box.vtu" --overlaps
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n0 0 0 1 0 0 0 1 0 0.2 0.2 1 0 0 0.5 1 0 0.5 0 1 0.5 0.3 0.3 -0.5\nCELLS 2 10\n4 0 1 2 3\n4 4 6 5 7\nCELL_TYPES 2\n10 10\n' > "$tmp/overlap.vtk"
 expect 0 "WARNING: cells overlap in 1 pair \(first: cells 0 and 1\)" -- info "$tmp/overlap.vtk" --overlaps
-expect 1 "--backend does not apply to --method exact, which reads --method, --interpolation" -- render "$tmp/ok.json" --method exact --backend opengl
-expect 1 "--interpolation does not apply to --method pt-breakpoints, which reads .*--tetrahedralize" -- render "$tmp/ok.json" --interpolation canonical-tets
-expect 1 "unknown --tetrahedralize 'some' \(known: problem, all, none\)" -- render "$tmp/ok.json" --tetrahedralize some
-expect 1 "--tetrahedralize does not apply to --method exact" -- render "$tmp/ok.json" --method exact --tetrahedralize all
+expect 2 "--backend does not apply to --method exact, which reads --method, --interpolation" -- render "$tmp/ok.json" --method exact --backend opengl
+expect 2 "--interpolation does not apply to --method pt-breakpoints, which reads .*--tetrahedralize" -- render "$tmp/ok.json" --interpolation canonical-tets
+expect 2 "unknown --tetrahedralize 'some' \(known: problem, all, none\)" -- render "$tmp/ok.json" --tetrahedralize some
+expect 2 "--tetrahedralize does not apply to --method exact" -- render "$tmp/ok.json" --method exact --tetrahedralize all
 if [ "$gl" = ON ]; then
-  expect 1 "OpenGL back ends draw pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
+  expect 2 "OpenGL back ends draw pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
   expect 0 "wrote .*gl.png" -- render "$tmp/ok.json" --size 40x30 --method pt-table --backend opengl-8bit-dither -o "$tmp/gl.png" --stats
   grep -q '"gl_renderer":' "$tmp/err" || { echo "FAIL: --stats lacks gl_renderer"; failed=$((failed+1)); }
 else  # a build without OSMesa says so, before it reads the mesh
@@ -89,7 +89,7 @@ fi
 expect 2 "table-size" -- render "$tmp/ok.json" --method pt-table --table-size 1
 expect 0 '"max_abs": 0, "rmse": 0' -- compare "$tmp/ok.npy" "$tmp/ok.npy"
 expect 1 "no such file|cannot open" -- compare "$tmp/ok.npy" "$tmp/none.npy"
-expect 1 "unknown sort 'zsort' \(known: auto, centroid" -- sortbench "$tmp/box.vtu" --sorts mpvo,zsort
+expect 2 "unknown sort 'zsort' \(known: auto, centroid" -- sortbench "$tmp/box.vtu" --sorts mpvo,zsort
 expect 2 "projection" -- sortbench "$tmp/box.vtu" --projection sideways
 expect 1 "missing.vtu: no such file" -- sortbench "$tmp/missing.vtu"
 expect 0 '"sort":"mpvo"' -- sortbench "$tmp/box.vtu" --views 2 --size 32x32 --sorts centroid,mpvo --check --json --csv "$tmp/sorts.csv"
@@ -104,7 +104,7 @@ grep -q '"sort":"mpvo".*"violations":0' "$tmp/out" || { echo "FAIL: mpvo on a bo
 # A twisted mixed mesh: its problem cells are split per view and mpvo-abuffer's order has no violation.
 "$exe" generate mixed -n 6 -o "$tmp/mixed.vtu" >/dev/null || { echo "FAIL: generate mixed"; failed=$((failed+1)); }
 expect 0 '"problem_cells":[0-9]+.*"violations":0,' -- sortbench "$tmp/mixed.vtu" --views 3 --size 48x48 --sorts mpvo-abuffer --projection persp --check --json
-expect 1 "unknown --tetrahedralize 'half'" -- sortbench "$tmp/mixed.vtu" --tetrahedralize half
+expect 2 "unknown --tetrahedralize 'half'" -- sortbench "$tmp/mixed.vtu" --tetrahedralize half
 # The A-buffer's sweep and its reference (every pixel ordered) find the same gap relations.
 # The overlaps' relations hold every one the A-buffer finds (auto: no view of this mesh needs the A-buffer).
 "$exe" sortbench "$tmp/mixed.vtu" --views 3 --size 96x96 --sorts mpvo-abuffer --gaps abuffer --json > "$tmp/sweep.json" &&
@@ -120,28 +120,28 @@ assert sweep["gaps"] == "abuffer" and sweep["abuffer_views"] == 3 and sweep["gap
 assert auto["gaps"] == "auto" and auto["abuffer_views"] == 0 and auto["gap_pair_tests"] > 0 and auto["abuffer_runs"] == 0
 assert auto["gap_relations"] >= sweep["gap_relations"], (auto["gap_relations"], sweep["gap_relations"])
 PY
-expect 1 "unknown gap method 'pixels' \(known: auto, overlaps, abuffer\)" -- sortbench "$tmp/mixed.vtu" --gaps pixels
-expect 1 "unknown gap method 'pixels'" -- render "$tmp/ok.json" --gaps pixels
+expect 2 "unknown gap method 'pixels' \(known: auto, overlaps, abuffer\)" -- sortbench "$tmp/mixed.vtu" --gaps pixels
+expect 2 "unknown gap method 'pixels'" -- render "$tmp/ok.json" --gaps pixels
 # Slicing: its options, bad plane counts, progressive levels written as they complete.
-expect 1 "--slices must be at least 1, not 0" -- render "$tmp/ok.json" --method slicing --slices 0
-expect 1 "--slices must be at least 1, not -2" -- render "$tmp/ok.json" --method slicing --slices -2
+expect 2 "--slices must be at least 1, not 0" -- render "$tmp/ok.json" --method slicing --slices 0
+expect 2 "--slices must be at least 1, not -2" -- render "$tmp/ok.json" --method slicing --slices -2
 expect 2 "slices" -- render "$tmp/ok.json" --method slicing --slices 1.5
-expect 1 "--slices 600 is more than a 32x24 image can use: at most 512" -- render "$tmp/ok.json" --method slicing --slices 600 --size 32x24
-expect 1 "unknown --slice-axis 'w' \(known: auto, view, x, y, z\)" -- render "$tmp/ok.json" --method slicing --slice-axis w
-expect 1 "unknown --slice-integral 'midpoint'" -- render "$tmp/ok.json" --method slicing --slice-integral midpoint
-expect 1 "--slices does not apply to --method pt-table" -- render "$tmp/ok.json" --method pt-table --slices 8
-expect 1 "--sort does not apply to --method slicing" -- render "$tmp/ok.json" --method slicing --sort mpvo
-expect 1 "--progressive: 'x' is not a number of slices" -- render "$tmp/ok.json" --method slicing --progressive 8,x
+expect 2 "--slices 600 is more than a 32x24 image can use: at most 512" -- render "$tmp/ok.json" --method slicing --slices 600 --size 32x24
+expect 2 "unknown --slice-axis 'w' \(known: auto, view, x, y, z\)" -- render "$tmp/ok.json" --method slicing --slice-axis w
+expect 2 "unknown --slice-integral 'midpoint'" -- render "$tmp/ok.json" --method slicing --slice-integral midpoint
+expect 2 "--slices does not apply to --method pt-table" -- render "$tmp/ok.json" --method pt-table --slices 8
+expect 2 "--sort does not apply to --method slicing" -- render "$tmp/ok.json" --method slicing --sort mpvo
+expect 2 "--progressive: 'x' is not a number of slices" -- render "$tmp/ok.json" --method slicing --progressive 8,x
 expect 1 "the levels must increase \(32 then 8\)" -- render "$tmp/ok.json" --method slicing --progressive 32,8 --size 32x24
-expect 1 "--progressive does not apply to --method exact" -- render "$tmp/ok.json" --method exact --progressive 8,32
+expect 2 "--progressive does not apply to --method exact" -- render "$tmp/ok.json" --method exact --progressive 8,32
 expect 0 "wrote .*prog-32.png" -- render "$tmp/ok.json" --method slicing --progressive 8,32 --size 32x24 -o "$tmp/prog.png" --stats
 [ -s "$tmp/prog-8.png" ] && [ -s "$tmp/prog-32.png" ] && grep -q '"planes_reused":8' "$tmp/err" || { echo "FAIL: --progressive files or reuse"; failed=$((failed+1)); }
 expect 0 '"slice_axis":"view".*"slices":16' -- render "$tmp/ok.json" --method slicing --slices 16 --slice-axis view --slice-integral sampled --size 32x24 -o "$tmp/sl.png" --stats
 # Splatting small cells.
-expect 1 "unknown --small-cells 'blur' \(known: splat, draw, skip\)" -- render "$tmp/ok.json" --small-cells blur
-expect 1 "--splat-threshold must be a finite number >= 0, not -1" -- render "$tmp/ok.json" --splat-threshold -1 --size 32x24
-expect 1 "pre-filter must be 0.3 to 4 pixels, not 0.1" -- render "$tmp/ok.json" --splat-prefilter 0.1 --size 32x24
-expect 1 "--small-cells does not apply to --method exact" -- render "$tmp/ok.json" --method exact --small-cells splat
+expect 2 "unknown --small-cells 'blur' \(known: splat, draw, skip\)" -- render "$tmp/ok.json" --small-cells blur
+expect 2 "--splat-threshold must be a finite number >= 0, not -1" -- render "$tmp/ok.json" --splat-threshold -1 --size 32x24
+expect 2 "pre-filter must be 0.3 to 4 pixels, not 0.1" -- render "$tmp/ok.json" --splat-prefilter 0.1 --size 32x24
+expect 2 "--small-cells does not apply to --method exact" -- render "$tmp/ok.json" --method exact --small-cells splat
 expect 0 '"small_cells":.*"small_cells_mode":"draw"' -- render "$tmp/ok.json" --method pt-linear --size 8x6 -o "$tmp/sp.png" --stats
 expect 0 '"small_cells":[1-9].*"small_cells_mode":"splat".*"splats":[1-9]' -- render "$tmp/ok.json" --method pt-linear --small-cells splat --size 8x6 -o "$tmp/sp.png" --stats
 expect 0 '"small_cells_mode":"splat".*"splats":[1-9]' -- render "$tmp/ok.json" --method slicing --small-cells splat --slices 4 --size 32x24 -o "$tmp/sps.png" --stats
@@ -150,8 +150,8 @@ expect 0 '"small_cells_mode":"splat".*"splats":[1-9]' -- render "$tmp/ok.json" -
 expect 0 '"rmse"' -- compare "$tmp/a.npy" "$tmp/b.npy" --downsample 2
 expect 1 "b.npy: downsample: 3 does not divide the image's 64x48" -- compare "$tmp/a.npy" "$tmp/b.npy" --downsample 3
 if [ "$gl" = ON ]; then
-  expect 1 "--small-cells splat needs the software back end" -- render "$tmp/ok.json" --method pt-linear --backend opengl --small-cells splat --size 32x24
-  expect 1 "the OpenGL back ends draw --slice-integral sampled" -- render "$tmp/ok.json" --method slicing --backend opengl --size 32x24
+  expect 2 "--small-cells splat needs the software back end" -- render "$tmp/ok.json" --method pt-linear --backend opengl --small-cells splat --size 32x24
+  expect 2 "the OpenGL back ends draw --slice-integral sampled" -- render "$tmp/ok.json" --method slicing --backend opengl --size 32x24
   expect 0 '"backend":"opengl-8bit-dither".*"gl_renderer"' -- render "$tmp/ok.json" --method slicing --slice-integral sampled --backend opengl-8bit-dither --size 32x24 -o "$tmp/slgl.png" --stats
 else
   expect 3 "OpenGL back ends were not built" -- render "$tmp/ok.json" --method slicing --slice-integral sampled --backend opengl --size 32x24
@@ -170,5 +170,23 @@ if j["cells_by_type"] != {"tetra": 0, "hexahedron": 64, "wedge": 0, "pyramid": 0
 if j["fields"]["scalar"][1] != 1.0: bad["fields"] = j["fields"]
 if bad: print("FAIL: info --json", bad); sys.exit(1)
 PY
+# docs/reliability.md: bad files of every kind get exit 1 and a message naming file and element.
+mkdir -p "$tmp/afolder"
+expect 1 "afolder: is a folder, not a scene file" -- render "$tmp/afolder"
+expect 1 "afolder: is a folder, not a mesh file" -- info "$tmp/afolder"
+expect 1 "nosuch.json: no such scene file" -- render "$tmp/nosuch.json"
+expect 0 "wrote .*new/sub/box.vtk" -- generate box -n 2 -o "$tmp/new/sub/box.vtk"
+expect 1 "x.vtu: cannot be written" -- generate box -n 2 -o /proc/x.vtu
+expect 1 "a.stl: cannot write '.stl' files" -- generate box -n 2 -o "$tmp/a.stl"
+printf '4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 nan 0\n4 0 0 1\n' > "$tmp/t.node"; printf '1 4 0\n1 1 2 3 4\n' > "$tmp/t.ele"
+expect 1 "t.node: line 4: point 3 has a non-finite coordinate" -- info "$tmp/t.node"
+printf '4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n' > "$tmp/t.node"; printf '1 4 0\n1 1 2 3 -7\n' > "$tmp/t.ele"
+expect 1 "t.ele: line 2: tetrahedron 0 refers to point -7, out of range \[1, 5\)" -- info "$tmp/t.node"
+printf '1 4 0\n1 1 2\n3 4\n' > "$tmp/t.ele"
+expect 1 "t.ele: line 2: the record ends where a point id was expected" -- info "$tmp/t.node"
+printf '# vtk DataFile Version 3.0\nx\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS 2000000000 double\n' > "$tmp/huge.vtk"
+expect 1 "huge.vtk: its header declares 2000000000 points and 0 cells: reading them needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- info "$tmp/huge.vtk" --max-memory 4
+expect 1 "huge.vtk: its header declares" -- sortbench "$tmp/huge.vtk" --max-memory 4
+expect 2 "--progressive renders one view" -- render "$tmp/ok.json" --method slicing --progressive 8,16 --frames 2
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <tuple>
 
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
@@ -112,18 +113,25 @@ void write_outputs(const Image& image, const glm::dvec3& background, const std::
 
 int run_render(const RenderArgs& a) {
   const auto t_load = std::chrono::steady_clock::now();
+  // The command line first (exit 2 on a bad value), then the scene (exit 1).
+  const RenderSettings settings = usage([&] { return settings_from(a); });
+  const std::unique_ptr<Renderer> renderer = usage([&] {
+    auto r = make_renderer(settings);
+    refuse_unused(*r, a.given);
+    return r;
+  });
+  const std::vector<int> levels =
+      a.progressive.empty() ? std::vector<int>{} : usage([&] { return parse_levels(a.progressive); });
+  if (!levels.empty() && a.frames > 1) throw UsageError("--progressive renders one view: it does not go with --frames");
+  int width = 0, height = 0;
+  if (!a.size.empty()) usage([&] { parse_size(a.size, width, height); });
   Scene scene = load_scene(a.scene);
-  if (!a.size.empty()) parse_size(a.size, scene.width, scene.height);
+  if (width > 0) std::tie(scene.width, scene.height) = std::tie(width, height);
   if (!a.field.empty()) scene.field = a.field;
   scene.reader.max_memory_gib = a.max_memory_gib;
-  const RenderSettings settings = settings_from(a);
-  const std::unique_ptr<Renderer> renderer = make_renderer(settings);
-  refuse_unused(*renderer, a.given);
-  const std::vector<int> levels = a.progressive.empty() ? std::vector<int>{} : parse_levels(a.progressive);
-  if (!levels.empty() && a.frames > 1) throw InputError("--progressive renders one view: it does not go with --frames");
   if (settings.mode == RenderMode::slicing)
     for (int n : levels.empty() ? std::vector<int>{settings.slicing.slices} : levels)
-      check_slices(n, scene.width, scene.height);
+      usage([&] { check_slices(n, scene.width, scene.height); });
   const ImageSize size{scene.width, scene.height};
   // Refuse what would not fit, before allocating it: from the file's header before reading it,
   // and again from the mesh as read.

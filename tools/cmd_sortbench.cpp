@@ -172,12 +172,12 @@ void print_row(const nlohmann::json& row, bool checked, bool every_pixel) {
 
 int run_sortbench(const SortbenchArgs& a) {
   int w = 0, h = 0;
-  parse_size(a.size, w, h);
+  usage([&] { parse_size(a.size, w, h); });
   std::vector<SortMethod> methods;
-  for (const auto& s : split(a.sorts)) methods.push_back(parse_sort_method(s));
-  if (methods.empty()) throw InputError("--sorts: no sort named; known: " + sort_method_names());
-  const Tetrahedralize tetrahedralize = parse_tetrahedralize(a.tetrahedralize);
-  const GapMethod gaps = parse_gap_method(a.gaps);
+  for (const auto& s : split(a.sorts)) methods.push_back(usage([&] { return parse_sort_method(s); }));
+  if (methods.empty()) throw UsageError("--sorts: no sort named; known: " + sort_method_names());
+  const Tetrahedralize tetrahedralize = usage([&] { return parse_tetrahedralize(a.tetrahedralize); });
+  const GapMethod gaps = usage([&] { return parse_gap_method(a.gaps); });
   std::vector<Projection> projections;
   if (a.projection == "ortho" || a.projection == "both") projections.push_back(Projection::Orthographic);
   if (a.projection == "persp" || a.projection == "both") projections.push_back(Projection::Perspective);

@@ -6,6 +6,8 @@
 
 #include <CLI/CLI.hpp>
 
+#include "base/error.hpp"
+
 namespace cellproj {
 
 // Exit codes (docs/cli.md).
@@ -13,6 +15,23 @@ constexpr int kExitOk = 0;
 constexpr int kExitInput = 1;     // bad input: mesh, scene, transfer function, camera, field
 constexpr int kExitUsage = 2;     // bad command line
 constexpr int kExitInternal = 3;  // a bug or an exhausted resource
+
+// A bad command-line value (an unknown --method, a malformed --size, an option the method does not
+// read): exit code 2, where the same value from a scene file is bad input (1).
+class UsageError : public Error {
+ public:
+  using Error::Error;
+};
+
+// Runs f, turning the InputError of a value the command line gave into a UsageError.
+template <class F>
+auto usage(F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    throw UsageError(e.what());
+  }
+}
 
 using Action = std::function<int()>;
 

@@ -26,6 +26,9 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("sortbench")) return sortbench();
     if (app.got_subcommand("compare")) return compare();
     return generate();
+  } catch (const UsageError& e) {
+    std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    return kExitUsage;
   } catch (const InputError& e) {
     std::fprintf(stderr, "cellproj: error: %s\n", e.what());
     return kExitInput;
