@@ -32,6 +32,34 @@ std::string pick_field(const Scene& s, const Mesh& m) {
                                                     : "give \"field\": the mesh has several: " + list));
 }
 
+// What of the box [lo, hi] the camera sees, as a warning ("" when some of it is in view and none
+// of it behind an orthographic eye): a blank picture should not come without a word.
+std::string view_warning(const Camera& camera, const glm::dvec3& lo, const glm::dvec3& hi, int width, int height) {
+  const PixelRays rays(camera, width, height);
+  int behind = 0, left = 0, right = 0, above = 0, below = 0;
+  for (int k = 0; k < 8; ++k) {
+    const glm::dvec3 p{k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z};
+    double x = 0, y = 0, z = 0;
+    rays.project(p, x, y, z);
+    if (z <= 0) {
+      ++behind;
+      continue;
+    }
+    left += x < 0;
+    right += x > width;
+    above += y < 0;
+    below += y > height;
+  }
+  if (behind == 8) return "nothing of the mesh is in view: it lies wholly behind the camera (the picture is empty)";
+  if (behind == 0 && (left == 8 || right == 8 || above == 8 || below == 8))
+    return "nothing of the mesh is in view: its bounding box lies outside the camera's field of view (the picture is "
+           "empty)";
+  if (behind > 0 && !rays.perspective())
+    return "part of the mesh lies behind the orthographic camera's eye plane and is drawn as if in front of it; move "
+           "the eye back along the view direction";
+  return "";
+}
+
 }  // namespace
 
 PreparedScene prepare_scene(const Scene& s) {
@@ -47,7 +75,10 @@ PreparedScene prepare_scene(const Scene& s) {
   p.camera =
       s.camera ? *s.camera
                : frame_box(blo, bhi, Projection::Orthographic, {0.6, 0.5, 1.0}, {0, 1, 0}, double(s.width) / s.height);
+  check_camera(p.camera, where(s.source, "the camera framing " + s.mesh + "'s bounds"));
   p.warnings = p.loaded.report.warnings(s.mesh);
+  if (const std::string w = view_warning(p.camera, blo, bhi, s.width, s.height); !w.empty())
+    p.warnings.push_back(where(s.source, w));
   for (const auto& n : p.loaded.mesh.notes) p.warnings.push_back(s.mesh + ": " + n);
   if (p.field_min == p.field_max)
     p.warnings.push_back(s.mesh + ": field '" + field + "' is constant (" + std::to_string(p.field_min) + ")");

@@ -188,5 +188,14 @@ printf '# vtk DataFile Version 3.0\nx\nBINARY\nDATASET UNSTRUCTURED_GRID\nPOINTS
 expect 1 "huge.vtk: its header declares 2000000000 points and 0 cells: reading them needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- info "$tmp/huge.vtk" --max-memory 4
 expect 1 "huge.vtk: its header declares" -- sortbench "$tmp/huge.vtk" --max-memory 4
 expect 2 "--progressive renders one view" -- render "$tmp/ok.json" --method slicing --progressive 8,16 --frames 2
+# A camera that sees nothing of the mesh says so; an orthographic eye inside the mesh too.
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "camera": {"projection": "perspective", "eye": [0, 0, 5], "target": [0, 0, 10], "up": [0, 1, 0]}}' > "$tmp/away.json"
+expect 0 "away.json: nothing of the mesh is in view: it lies wholly behind the camera" -- render "$tmp/away.json" --size 16x16 -o "$tmp/away.png"
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "camera": {"projection": "perspective", "eye": [0, 0, 5], "target": [5, 0, 3], "up": [0, 1, 0], "fov_y": 20}}' > "$tmp/side.json"
+expect 0 "side.json: nothing of the mesh is in view: its bounding box lies outside the camera's field of view" -- render "$tmp/side.json" --size 16x16 -o "$tmp/side.png"
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "camera": {"projection": "orthographic", "eye": [0, 0, 0], "target": [0, 0, -1], "up": [0, 1, 0]}}' > "$tmp/oin.json"
+expect 0 "oin.json: part of the mesh lies behind the orthographic camera's eye plane" -- render "$tmp/oin.json" --size 16x16 -o "$tmp/oin.png"
+"$exe" render "$tmp/ok.json" --size 16x16 -o "$tmp/ok3.png" 2>"$tmp/err" >/dev/null
+! grep -q "in view\|eye plane" "$tmp/err" || { echo "FAIL: the default camera sees the mesh, yet render warns"; failed=$((failed+1)); }
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

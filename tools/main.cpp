@@ -1,6 +1,7 @@
 // cellproj: direct volume rendering of unstructured and curvilinear grids.
 #include <cstdio>
 #include <new>
+#include <string>
 
 #include <nlohmann/json.hpp>
 
@@ -39,7 +40,12 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "cellproj: error: %s\n", e.what());
     return kExitInput;
   } catch (const std::bad_alloc&) {
-    std::fprintf(stderr, "cellproj: error: out of memory\n");
+    std::string command;
+    for (int i = 1; i < argc; ++i) command += std::string(i > 1 ? " " : "") + argv[i];
+    std::fprintf(stderr,
+                 "cellproj: error: out of memory in 'cellproj %s': use a smaller --size or mesh, or lower "
+                 "--max-memory so that the estimate refuses it up front\n",
+                 command.c_str());
     return kExitInternal;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cellproj: internal error: %s\n", e.what());
