@@ -13,7 +13,10 @@
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <mutex>
 #include <new>
+
+#include <vtkSMPTools.h>
 
 #ifdef CELLPROJ_FUZZING
 #include <sanitizer/common_interface_defs.h>
@@ -177,6 +180,18 @@ Mesh read_mesh_from(PipeReader& in) {
   __sanitizer_set_death_callback(nullptr);
   for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) std::signal(sig, SIG_DFL);
 #endif
+  // A crash must end the child whatever the caller did with these signals (a parent that ignores
+  // or blocks SIGSEGV would otherwise see a raised one return, and a half-read mesh come back).
+  sigset_t crash;
+  sigemptyset(&crash);
+  for (int sig : {SIGSEGV, SIGBUS, SIGABRT, SIGFPE, SIGILL}) {
+    sigaddset(&crash, sig);
+    struct sigaction now {};
+    if (sigaction(sig, nullptr, &now) == 0 && now.sa_handler == SIG_IGN) std::signal(sig, SIG_DFL);
+  }
+  sigprocmask(SIG_UNBLOCK, &crash, nullptr);
+  // TBB's workers were not copied by fork(): VTK's parallel loops run on this thread alone.
+  vtkSMPTools::SetBackend("Sequential");
   dup2(err_fd, STDERR_FILENO);  // what the library prints as it fails, for the parent's message
 #ifndef CELLPROJ_ASAN
   if (isolation.memory_limit > 0) {
@@ -289,6 +304,25 @@ std::string death(int status, int err_fd, const Isolation& isolation) {
   return why;
 }
 
+// One forked read at a time in this process: fork() copies only the calling thread, so another
+// thread's read in flight would leave its locks held, forever, in the child.
+std::mutex& isolated_read_lock() {
+  static std::mutex m;
+  return m;
+}
+
+// GCC 12's AddressSanitizer does not take its allocator's locks around fork(): a child forked while
+// another thread allocates can wait forever. Sanitizer builds read in-process when threads run.
+bool fork_is_unsafe() {
+#ifdef CELLPROJ_ASAN
+  std::ifstream status("/proc/self/status");
+  std::string line;
+  while (std::getline(status, line))
+    if (line.rfind("Threads:", 0) == 0) return std::atoi(line.c_str() + 8) > 1;
+#endif
+  return false;
+}
+
 }  // namespace
 
 std::uint64_t available_memory_bytes() {
@@ -305,6 +339,8 @@ std::uint64_t available_memory_bytes() {
 
 Mesh read_isolated(const std::string& path, const std::string& reader, const Isolation& isolation,
                    const std::function<Mesh()>& read) {
+  const std::lock_guard<std::mutex> one_at_a_time(isolated_read_lock());
+  if (fork_is_unsafe()) return read();
   int fds[2];
   if (pipe(fds) != 0) throw ResourceError(where(path, std::string("cannot make a pipe: ") + std::strerror(errno)));
   const int err_fd = memfd_create("cellproj-reader-stderr", 0);

@@ -24,6 +24,8 @@ std::uint64_t available_memory_bytes();
 // child throws come back as the same kind (InputError, ResourceError) with the same message; a
 // child that dies (a signal, an exit without a result, the memory limit) becomes an InputError
 // that names `path`, `reader` (e.g. "VTK's legacy reader") and how it died.
+// One isolated read runs at a time per process (fork copies only the calling thread); a
+// sanitizer build with other threads running reads in-process instead (docs/reliability.md).
 Mesh read_isolated(const std::string& path, const std::string& reader, const Isolation& isolation,
                    const std::function<Mesh()>& read);
 
