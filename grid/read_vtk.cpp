@@ -30,6 +30,7 @@
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
+#include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
@@ -328,11 +329,22 @@ Mesh assemble_leaves(std::vector<Leaf> leaves, const std::string& path, const st
   return mesh;
 }
 
+// A polyhedron's cell is stored as a face stream, not as the point list the counts below assume;
+// such a file is left to the conversion, which names the cell type.
+bool has_polyhedra(vtkDataSet* ds) {
+  auto* ug = vtkUnstructuredGrid::SafeDownCast(ds);
+  if (!ug || !ug->GetCellTypesArray()) return false;
+  vtkUnsignedCharArray* types = ug->GetCellTypesArray();
+  for (vtkIdType i = 0; i < types->GetNumberOfValues(); ++i)
+    if (types->GetValue(i) == VTK_POLYHEDRON) return true;
+  return false;
+}
+
 // VTK's legacy reader fills a truncated ASCII array with zeros without a word. The values the
 // returned dataset holds must all be in the file: count the numbers on its data lines.
 void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
   auto* ds = vtkDataSet::SafeDownCast(obj);
-  if (!ds) return;
+  if (!ds || has_polyhedra(ds)) return;
   std::ifstream in(path);
   std::string line;
   for (int i = 0; i < 3 && std::getline(in, line); ++i) {
@@ -366,7 +378,7 @@ void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
 // arrays of their declared type from 5 on.
 void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
   auto* ds = vtkDataSet::SafeDownCast(obj);
-  if (!ds) return;
+  if (!ds || has_polyhedra(ds)) return;
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::uintmax_t needed = 0;  // a lower bound of the file's size
