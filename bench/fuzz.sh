@@ -13,6 +13,7 @@ cd "$(dirname "$0")/.."
 seconds=${1:?usage: bench/fuzz.sh SECONDS [HARNESS...]}; shift
 harnesses=(${@:-vtu vtk exodus cgns plot3d tetgen off points scene})
 dir=build-fuzz
+bash scripts/setup.sh --fuzz
 CC=clang CXX=clang++ cmake -S . -B $dir -DCMAKE_BUILD_TYPE=RelWithDebInfo -DCELLPROJ_FUZZ=ON -DCELLPROJ_BUILD_TESTS=OFF >/dev/null
 cmake --build $dir --target fuzzers -j"$(nproc)" >/dev/null
 rm -rf $dir/seeds && $dir/bin/fuzz_seeds $dir/seeds >/dev/null

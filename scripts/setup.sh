@@ -1,12 +1,15 @@
 #!/usr/bin/env bash
 # Installs the Debian packages cellproj builds against, when missing. Idempotent: with everything
 # present it only asks dpkg (well under a second). apt-get as root, sudo otherwise.
+#   scripts/setup.sh          what the build and tests need
+#   scripts/setup.sh --fuzz   and clang's libFuzzer, for bench/fuzz.sh
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config python3
   libvtk9-dev libcgal-dev libtet1.5-dev libglm-dev libtbb-dev libnetcdf-dev zlib1g-dev libpng-dev
   libosmesa6-dev libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
 )
+[ "${1:-}" = "--fuzz" ] && packages+=(clang libclang-rt-dev)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
