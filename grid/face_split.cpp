@@ -115,10 +115,9 @@ std::vector<char> CellFolds::problem_cells(const Viewpoint& view, std::int64_t* 
         for (std::int64_t c = r.begin(); c < r.end(); ++c) {
           if (mesh_.type(c) == CellType::Tetra) continue;
           const std::int64_t* ids = mesh_.cell(c);
-          bool behind = false;
-          if (view.perspective)
-            for (int k = 0; k < mesh_.cell_size(c) && !behind; ++k)
-              behind = !(glm::dot(pts(ids[k]) - view.eye, view.dir) > 0.0);
+          bool behind = false;  // at or behind the eye, or the orthographic eye's plane
+          for (int k = 0; k < mesh_.cell_size(c) && !behind; ++k)
+            behind = !(glm::dot(pts(ids[k]) - view.eye, view.dir) > 0.0);
           bool folded = false;
           for (std::int64_t f = start_[c]; f < start_[c + 1] && !behind && !folded; ++f) {
             const Fold& fold = folds_[f];

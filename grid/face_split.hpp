@@ -36,8 +36,8 @@ class CellFolds {
   // The mesh's arrays must outlive it; points = recentre(mesh).
   CellFolds(const MeshView& mesh, std::shared_ptr<const RecentredPoints> points);
   // Per cell: 1 when the cell is not a tetrahedron and, seen from `view`, one of its folds lies on
-  // the contour (its two triangles face opposite ways), or (perspective) one of its vertices is not
-  // in front of the eye (such a cell is ray cast through its tetrahedra). Parallel over cells.
+  // the contour (its two triangles face opposite ways), or one of its vertices is not in front of
+  // the eye or its plane (such a cell is ray cast through its tetrahedra). Parallel over cells.
   std::vector<char> problem_cells(const Viewpoint& view, std::int64_t* count = nullptr) const;
   std::int64_t folds() const { return static_cast<std::int64_t>(folds_.size()); }
 

@@ -21,7 +21,7 @@ namespace cellproj {
 namespace {
 
 // Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind the
-// eye in perspective covers the whole image.
+// eye covers the whole image.
 std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
   std::vector<float> area(static_cast<std::size_t>(cells.n_cells));
   const double w = rays.width(), h = rays.height();
@@ -33,7 +33,7 @@ std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& sc
           bool behind = false;
           for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
             const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
-            behind = behind || (rays.perspective() && !(v.z > 0.0));
+            behind = behind || behind_eye(v.z);
             x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
           }
           const double dx = std::clamp(x1, 0.0, w) - std::clamp(x0, 0.0, w),
@@ -52,21 +52,21 @@ std::vector<std::uint8_t> small_cells(const MeshView& cells, const ScreenPoints&
   std::vector<std::uint8_t> small(static_cast<std::size_t>(cells.n_cells), 0);
   const int limit = static_cast<int>(std::min(std::ceil(threshold), 1e9));
   std::atomic<std::int64_t> n_small{0}, none{0};
-  tbb::parallel_for(
-      tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-        std::int64_t here = 0, empty = 0;
-        for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-          const std::int64_t* id = cells.cell(c);
-          const ScreenVertex* v[8];
-          const int n = std::min(cells.cell_size(c), 8);
-          for (int k = 0; k < n; ++k) v[k] = &screen.v[static_cast<std::size_t>(id[k])];
-          const int covered = covered_pixels(v, n, rays.width(), rays.height(), rays.perspective(), std::max(limit, 1));
-          if (covered < 0) continue;  // reaching behind the eye: projected (ray cast)
-          empty += covered == 0;
-          if (covered < threshold) small[static_cast<std::size_t>(c)] = 1, ++here;
-        }
-        n_small += here, none += empty;
-      });
+  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096),
+                    [&](const tbb::blocked_range<std::int64_t>& r) {
+                      std::int64_t here = 0, empty = 0;
+                      for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+                        const std::int64_t* id = cells.cell(c);
+                        const ScreenVertex* v[8];
+                        const int n = std::min(cells.cell_size(c), 8);
+                        for (int k = 0; k < n; ++k) v[k] = &screen.v[static_cast<std::size_t>(id[k])];
+                        const int covered = covered_pixels(v, n, rays.width(), rays.height(), std::max(limit, 1));
+                        if (covered < 0) continue;  // reaching behind the eye: projected (ray cast)
+                        empty += covered == 0;
+                        if (covered < threshold) small[static_cast<std::size_t>(c)] = 1, ++here;
+                      }
+                      n_small += here, none += empty;
+                    });
   counters.small_cells = n_small, counters.covering_no_pixel = none;
   return small;
 }

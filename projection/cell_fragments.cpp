@@ -115,11 +115,11 @@ void CellFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& cou
     if (glm::dot(n[f], p[f] - a) > 0) n[f] = -n[f];
     c[f] = glm::dot(n[f], a);
   }
-  const glm::dvec3& eye = rays_.camera().eye;  // recentred
   std::int64_t emitted = 0;
   for (int j = 0; j < rays_.height(); ++j)
     for (int i = 0; i < rays_.width(); ++i) {
-      const glm::dvec3 d = rays_.ray(i + 0.5, j + 0.5).dir;           // from the eye
+      const Ray r = rays_.ray(i + 0.5, j + 0.5);  // from the eye, or from its plane (recentred)
+      const glm::dvec3 &eye = r.origin, &d = r.dir;
       double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();  // from the eye on
       for (int f = 0; f < 4 && t0 < t1; ++f) {
         const double den = glm::dot(n[f], d), num = c[f] - glm::dot(n[f], eye);
@@ -143,7 +143,7 @@ CellFragments::Seen CellFragments::classify(const Tet& tet, ScreenVertex v[4], P
   ++counters.tets;
   for (int k = 0; k < 4; ++k) {
     v[k] = screen_.v[static_cast<std::size_t>(tet[k])];
-    if (rays_.perspective() && !(v[k].z > 0.0)) {
+    if (behind_eye(v[k].z)) {
       ++counters.behind_eye;
       return Seen::behind_eye;  // project() ray casts it; the OpenGL back ends leave it out
     }
@@ -196,7 +196,7 @@ CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellT
   for (int k = 0; k < n; ++k) {
     v[k] = screen_.v[static_cast<std::size_t>(ids[k])];
     p.smin = std::min(p.smin, v[k].s), p.smax = std::max(p.smax, v[k].s);
-    if (rays_.perspective() && !(v[k].z > 0.0)) {
+    if (behind_eye(v[k].z)) {
       ++counters.behind_eye;  // split into tetrahedra for the view (--tetrahedralize problem), or not drawn
       return Seen::behind_eye;
     }

@@ -25,7 +25,7 @@ struct ProjectionCounters {
   std::int64_t subdivisions_looked_up = 0;  // cells whose projection topology was known (the fast path)
   std::int64_t class1 = 0, class2 = 0;
   std::int64_t empty = 0;       // zero projected area (slivers seen edge-on, zero-volume cells)
-  std::int64_t behind_eye = 0;  // perspective: a vertex at or behind the eye: ray cast per pixel (GL, and whole
+  std::int64_t behind_eye = 0;  // a vertex at or behind the eye (or its plane): ray cast per pixel (GL, and whole
                                 // cells other than tetrahedra: not drawn)
   std::int64_t fragments = 0;
   std::int64_t breakpoint_cells = 0;  // cells whose scalar range holds a breakpoint (cut by pt-breakpoints)
@@ -63,7 +63,7 @@ class CellFragments {
   // `table` is needed by pt_table only, `optics` by pt_linear and pt_table. All referenced objects
   // must outlive this.
   // `points` (the recentred points the screen positions came from) serves the cells that reach
-  // behind the eye in perspective, which are ray cast instead of projected.
+  // behind the eye (or the orthographic eye plane), which are ray cast instead of projected.
   // `rays` is the frame's PixelRays on the recentred camera, the one `screen` was made with.
   CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                 const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,

@@ -55,8 +55,8 @@ std::string view_warning(const Camera& camera, const glm::dvec3& lo, const glm::
     return "nothing of the mesh is in view: its bounding box lies outside the camera's field of view (the picture is "
            "empty)";
   if (behind > 0 && !rays.perspective())
-    return "part of the mesh lies behind the orthographic camera's eye plane and is drawn as if in front of it; move "
-           "the eye back along the view direction";
+    return "part of the mesh lies behind the orthographic camera's eye plane and is not drawn; move the eye back "
+           "along the view direction to see it all";
   return "";
 }
 

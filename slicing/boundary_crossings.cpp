@@ -48,7 +48,7 @@ BoundaryCrossings::BoundaryCrossings(const std::vector<BoundaryTriangle>& triang
     for (int k = 0; k < 3; ++k) {
       const std::size_t v = static_cast<std::size_t>(triangles[t][static_cast<std::size_t>(k)]);
       const glm::dvec4& a = f.screen[v];
-      q.drawn = q.drawn && (!f.perspective || a.z >= f.near);
+      q.drawn = q.drawn && a.z >= f.near;  // in front of the eye (or its plane)
       q.w[k] = f.perspective ? 1.0 / a.z : 1.0;
       q.p[k] = {a.x * q.w[k], a.y * q.w[k]};
       q.hw[k] = f.height[v] * q.w[k];

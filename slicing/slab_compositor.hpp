@@ -78,7 +78,7 @@ struct Compositor {
   const PixelLengths& lengths;
   const PreintegratedTable* table;
   const BoundaryCrossings& boundary;
-  double eye_height;  // perspective: the eye's height along the normal (infinity in orthographic views)
+  double eye_height;  // the eye's height along the normal (infinity for an orthographic axis stack)
   int width, height;
 
   // `splats` (empty, or one per slice, null where none): each plane's splat layer, composited over

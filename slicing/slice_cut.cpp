@@ -84,7 +84,7 @@ void cut_cell(const SliceCells& cells, std::int64_t c, const FramePoints& f, con
         const glm::dvec4& a = f.screen[static_cast<std::size_t>(e.lo)];
         const glm::dvec4& b = f.screen[static_cast<std::size_t>(e.hi)];
         poly[i] = (1.0 - t) * a + t * b;  // exact at both ends
-        near = near || (f.perspective && !(poly[i].z >= f.near));
+        near = near || !(poly[i].z >= f.near);
       }
       if (!near) {
         emit(poly, n, f.perspective, o);

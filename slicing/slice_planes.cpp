@@ -44,7 +44,9 @@ SlicePlanes::SlicePlanes(const RecentredPoints& points, const PixelRays& rays, S
   normal_ = slice_normal(axis_, rays);
   const glm::dvec3 along = axis_ == SliceAxis::view ? normal_ : glm::abs(normal_);  // the lattice's direction
   flipped_ = along != normal_;
-  if (rays.perspective()) eye_height_ = glm::dot(rays.camera().eye, normal_);
+  // The eye's height: in perspective, and in orthographic views for the planes parallel to the eye's
+  // plane (an orthographic axis stack crossing that plane has its polygons clipped instead).
+  if (rays.perspective() || axis_ == SliceAxis::view) eye_height_ = glm::dot(rays.camera().eye, normal_);
   double lo = 0.0, hi = 0.0;
   if (axis_ != SliceAxis::view) {  // the mesh's extent along the axis: its bounding box, whatever the view
     const int k = static_cast<int>(axis_) - static_cast<int>(SliceAxis::x);
@@ -56,14 +58,14 @@ SlicePlanes::SlicePlanes(const RecentredPoints& points, const PixelRays& rays, S
     }
     // The view family spends its planes on what lies in front of the eye (an eye inside the mesh
     // would leave the planes behind it unused); an axis stack keeps its lattice.
-    if (rays.perspective() && eye_height_ > lo) hi = std::min(hi, eye_height_ - 1e-9 * (hi - lo));
+    if (std::isfinite(eye_height_) && eye_height_ > lo) hi = std::min(hi, eye_height_ - 1e-9 * (hi - lo));
   }
   lo_ = lo, extent_ = hi - lo;
   if (!(extent_ > 0.0)) extent_ = std::max(1.0, std::abs(lo)) * 1e-300;  // a flat mesh: no plane crosses it
   height_.resize(static_cast<std::size_t>(count_) + 2);
   for (int j = 0; j <= count_ + 1; ++j) height_[static_cast<std::size_t>(j)] = height_of(j);
-  // Planes at or behind the eye are never drawn (perspective; their polygons would be clipped away).
-  visible_end_ = rays.perspective() ? first_above(std::nextafter(eye_height_, -INFINITY)) : count_ + 1;
+  // Planes at or behind the eye are never drawn (their polygons would be clipped away).
+  visible_end_ = std::isfinite(eye_height_) ? first_above(std::nextafter(eye_height_, -INFINITY)) : count_ + 1;
   front_end_ = std::min(height(visible_end_), eye_height_);
 }
 

@@ -43,12 +43,13 @@ class SlicePlanes {
   int first_above(double h) const;
   // The planes j with lo < height(j) <= hi: [first, last] (empty when last < first).
   void crossing(double lo, double hi, int& first, int& last) const;
-  // Planes j >= visible_end() lie at or behind the eye (perspective), count() + 1 when none does.
+  // Planes j >= visible_end() lie at or behind the eye (perspective, or the view family's planes
+  // in orthographic views), count() + 1 when none does.
   int visible_end() const { return visible_end_; }
   // The front end of the slab in front of the last visible plane: the next plane's height, or the
   // eye's where that lies beyond the eye (perspective).
   double front_end() const { return front_end_; }
-  double eye_height() const { return eye_height_; }  // infinity in orthographic views
+  double eye_height() const { return eye_height_; }  // infinity for an orthographic axis stack
 
  private:
   double lattice(int k) const;  // lo_ + extent_ * k / count_, k reduced by its gcd with count_

@@ -32,11 +32,11 @@ int convex_hull(glm::dvec2* p, int n, glm::dvec2* h) {
 
 }  // namespace
 
-int covered_pixels(const ScreenVertex* const* v, int n, int width, int height, bool perspective, int limit) {
+int covered_pixels(const ScreenVertex* const* v, int n, int width, int height, int limit) {
   glm::dvec2 p[8], h[17];
   n = std::min(n, 8);
   for (int k = 0; k < n; ++k) {
-    if (perspective && !(v[k]->z > 0.0)) return -1;
+    if (behind_eye(v[k]->z)) return -1;
     p[k] = glm::dvec2(v[k]->x, v[k]->y);
   }
   const int m = convex_hull(p, n, h);

@@ -10,8 +10,8 @@ namespace cellproj {
 
 // The pixel centres of a width x height image the convex hull of the cell's n projected vertices
 // covers, by the coverage rule of view/raster.hpp, counted up to `limit` (a count of `limit` means
-// at least that many). -1 when a vertex is at or behind the eye (perspective: `perspective`).
-int covered_pixels(const ScreenVertex* const* v, int n, int width, int height, bool perspective, int limit);
+// at least that many). -1 when a vertex is at or behind the eye (or its plane: behind_eye).
+int covered_pixels(const ScreenVertex* const* v, int n, int width, int height, int limit);
 
 struct SplatCounters {
   std::int64_t small_cells = 0;         // cells the rule called small in this frame

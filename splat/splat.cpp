@@ -52,7 +52,7 @@ Footprint project_splat(const CellMoments& m, const SplatOptics& optics, const P
   double x, y, z;
   rays.project(m.centre, x, y, z);
   f.depth = z, f.world = m.centre;
-  f.behind_eye = rays.perspective() && !(z > 0.0);
+  f.behind_eye = behind_eye(z);
   if (f.behind_eye || !(optics.optical_depth > 0.0)) return f;
   const std::array<glm::dvec3, 3> j = rays.ray_space_jacobian(m.centre);
   const glm::dmat3 sigma = kKernelScale * m.covariance;

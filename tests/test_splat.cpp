@@ -206,12 +206,12 @@ TEST(Splat, TheRuleCountsThePixelCentresTheHullCovers) {
             }
         brute += in;
       }
-    EXPECT_EQ(covered_pixels(p, n, 16, 16, false, 1000), brute) << "trial " << trial;
-    EXPECT_EQ(covered_pixels(p, n, 16, 16, false, 3), std::min(brute, 3));
+    EXPECT_EQ(covered_pixels(p, n, 16, 16, 1000), brute) << "trial " << trial;
+    EXPECT_EQ(covered_pixels(p, n, 16, 16, 3), std::min(brute, 3));
   }
   ScreenVertex behind[4] = {{1, 1, 1, 0}, {2, 1, 1, 0}, {1, 2, 1, 0}, {1, 1, -1, 0}};
   const ScreenVertex* b[4] = {&behind[0], &behind[1], &behind[2], &behind[3]};
-  EXPECT_EQ(covered_pixels(b, 4, 16, 16, true, 4), -1);
+  EXPECT_EQ(covered_pixels(b, 4, 16, 16, 4), -1);
 }
 
 namespace {

@@ -43,6 +43,10 @@ struct Ray {
   glm::dvec3 origin, dir;  // dir has unit length; t along it is world distance from the origin
 };
 
+// Whether a point of view depth z (from the eye, or from the eye's plane in orthographic
+// projection) is out of sight: nothing at or behind the eye is drawn, in either projection.
+inline bool behind_eye(double z) { return !(z > 0.0); }
+
 // A camera fixed to an image size: the rays of its pixels and the projection of points onto them.
 // In perspective rays start at the eye; in orthographic projection they start on the plane through
 // the eye perpendicular to the view direction.

@@ -18,7 +18,7 @@ ScreenPoints project_points(const RecentredPoints& points, const double* scalar,
       ScreenVertex& v = s.v[static_cast<std::size_t>(p)];
       rays.project(points(p), v.x, v.y, v.z);
       v.s = scalar ? scalar[p] : 0.0;
-      local += rays.perspective() && !(v.z > 0.0);
+      local += behind_eye(v.z);
     }
     behind += local;
   });

@@ -18,7 +18,7 @@ struct ScreenVertex {
 // One 32-byte record per point, since a tetrahedron gathers all four values of each of its vertices.
 struct ScreenPoints {
   std::vector<ScreenVertex> v;
-  std::int64_t behind_eye = 0;  // perspective: points with z <= 0
+  std::int64_t behind_eye = 0;  // points with z <= 0, at or behind the eye (or its plane)
 };
 // `rays` must be built on recentred(camera, points.centre). Parallel over points (oneTBB, in the
 // caller's task arena); `scalar` may be null (zeros).
