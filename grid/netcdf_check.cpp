@@ -1,7 +1,10 @@
 #include "grid/netcdf_check.hpp"
 
+#include <cstdint>
 #include <filesystem>
+#include <fstream>
 #include <limits>
+#include <optional>
 #include <vector>
 
 #include <netcdf.h>
@@ -9,6 +12,111 @@
 #include "base/error.hpp"
 
 namespace cellproj {
+namespace {
+
+// Big-endian fields of a classic netCDF header (CDF-1, CDF-2 64-bit offset, CDF-5), bounds-checked.
+struct HeaderCursor {
+  const std::vector<unsigned char>& bytes;
+  std::size_t at = 0;
+  bool ok = true;
+  std::uint64_t read(int n) {
+    if (!ok || at + static_cast<std::size_t>(n) > bytes.size()) return ok = false, 0;
+    std::uint64_t v = 0;
+    for (int k = 0; k < n; ++k) v = v << 8 | bytes[at++];
+    return v;
+  }
+  void skip(std::uint64_t n) {
+    if (!ok || n > bytes.size() - at)
+      ok = false;
+    else
+      at += static_cast<std::size_t>(n);
+  }
+};
+
+std::uint64_t type_size(std::uint64_t type) {
+  static constexpr int kSize[12] = {0, 1, 1, 2, 4, 4, 8, 1, 2, 4, 8, 8};  // NC_BYTE .. NC_UINT64
+  return type < 12 ? static_cast<std::uint64_t>(kSize[type]) : 0;
+}
+
+struct DataEnd {
+  std::uint64_t end = 0;  // the first byte after every variable's data, as the header places them
+  std::string variable;   // the variable ending there
+};
+
+// Where the header puts each variable ("begin"), which the library does not tell: the header
+// walked as the classic format specifies (NetCDF Users Guide, "File Format Specification"):
+// magic numrecs dim_list gatt_list var_list, each var = name dimids vatt_list nc_type vsize begin.
+// Unpadded sizes, so that a last variable written without its padding still counts as complete.
+std::optional<DataEnd> classic_data_end(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::vector<unsigned char> bytes(1 << 20);  // a header larger than this is left to the sum check
+  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
+  bytes.resize(static_cast<std::size_t>(in.gcount()));
+  HeaderCursor c{bytes};
+  if (c.read(3) != 0x434446) return std::nullopt;  // "CDF"
+  const std::uint64_t version = c.read(1);
+  if (version != 1 && version != 2 && version != 5) return std::nullopt;
+  const int word = version == 5 ? 8 : 4, offset = version == 1 ? 4 : 8;
+  const std::uint64_t numrecs = c.read(word);
+  const bool streaming = numrecs == (word == 8 ? ~0ull : 0xFFFFFFFFull);
+  auto name = [&] {
+    const std::uint64_t n = c.read(word);
+    const std::size_t from = c.at;
+    c.skip((n + 3) / 4 * 4);
+    return c.ok ? std::string(bytes.begin() + from, bytes.begin() + from + n) : std::string();
+  };
+  auto attributes = [&] {
+    c.read(4);  // NC_ATTRIBUTE, or ZERO when absent
+    for (std::uint64_t a = 0, n = c.read(word); a < n && c.ok; ++a) {
+      name();
+      const std::uint64_t size = type_size(c.read(4)), count = c.read(word);
+      if (size == 0 || count > bytes.size()) return void(c.ok = false);
+      c.skip((count * size + 3) / 4 * 4);
+    }
+  };
+  std::vector<std::uint64_t> dim;
+  c.read(4);  // NC_DIMENSION, or ZERO when absent
+  for (std::uint64_t d = 0, n = c.read(word); d < n && c.ok && n <= bytes.size(); ++d)
+    name(), dim.push_back(c.read(word));
+  attributes();
+  struct Var {
+    std::string name;
+    std::uint64_t begin, record_bytes;  // record_bytes: the bytes of one record (or of all, if fixed)
+    bool record;
+  };
+  std::vector<Var> vars;
+  c.read(4);  // NC_VARIABLE, or ZERO when absent
+  for (std::uint64_t v = 0, n = c.read(word); v < n && c.ok && n <= bytes.size(); ++v) {
+    Var var{name(), 0, 1, false};
+    for (std::uint64_t k = 0, nd = c.read(word); k < nd && c.ok && nd <= bytes.size(); ++k) {
+      const std::uint64_t id = c.read(word);
+      if (id >= dim.size()) return std::nullopt;
+      if (k == 0 && dim[id] == 0)
+        var.record = true;
+      else if (dim[id] != 0)
+        var.record_bytes = dim[id] > (1ull << 62) / var.record_bytes ? 1ull << 62 : var.record_bytes * dim[id];
+    }
+    attributes();
+    var.record_bytes *= type_size(c.read(4));
+    c.read(word);  // vsize, padded and 32 bits only in CDF-1 and CDF-2: computed above instead
+    var.begin = c.read(offset);
+    vars.push_back(var);
+  }
+  if (!c.ok) return std::nullopt;
+  std::uint64_t record_size = 0;  // one record of every record variable, padded (one alone: unpadded)
+  int records = 0;
+  for (const Var& v : vars) record_size += v.record ? (v.record_bytes + 3) / 4 * 4 : 0, records += v.record;
+  DataEnd out;
+  for (const Var& v : vars) {
+    if (v.record && (streaming || numrecs == 0)) continue;
+    const std::uint64_t end =
+        v.begin + (v.record ? (numrecs - 1) * (records == 1 ? v.record_bytes : record_size) : 0) + v.record_bytes;
+    if (end > out.end) out = {end, v.name};
+  }
+  return out;
+}
+
+}  // namespace
 
 void check_netcdf_readable(const std::string& path) {
   int id = -1;
@@ -46,7 +154,14 @@ void check_netcdf_readable(const std::string& path) {
       elements(v, count, size);
       data_bytes += (static_cast<std::uintmax_t>(count) * size + 3) / 4 * 4;
     }
-    if (const std::uintmax_t file = std::filesystem::file_size(path); file < data_bytes) {
+    const std::uintmax_t file = std::filesystem::file_size(path);
+    if (const auto placed = classic_data_end(path); placed && file < placed->end) {
+      nc_close(id);
+      throw InputError(where(path, "truncated: the header places variable '" + placed->variable + "' up to byte " +
+                                       std::to_string(placed->end) + ", the file has " + std::to_string(file) +
+                                       " bytes"));
+    }
+    if (file < data_bytes) {
       nc_close(id);
       throw InputError(where(path, "truncated: the header describes " + std::to_string(data_bytes) +
                                        " bytes of data, the file has " + std::to_string(file) + " bytes in all"));

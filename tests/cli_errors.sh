@@ -197,9 +197,13 @@ echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinc
 expect 0 "oin.json: part of the mesh lies behind the orthographic camera's eye plane" -- render "$tmp/oin.json" --size 16x16 -o "$tmp/oin.png"
 "$exe" render "$tmp/ok.json" --size 16x16 -o "$tmp/ok3.png" 2>"$tmp/err" >/dev/null
 ! grep -q "in view\|eye plane" "$tmp/err" || { echo "FAIL: the default camera sees the mesh, yet render warns"; failed=$((failed+1)); }
-# Exodus cut in half: called truncated, not corrupt connectivity (netCDF reads fill values past the end).
+# Exodus cut in half: called truncated, not corrupt connectivity (netCDF reads fill values past the end);
+# cut by 64 bytes, inside the field's values: truncated too, not a field of zeros.
 "$exe" generate mixed -n 2 -o "$tmp/m.exo" >/dev/null && head -c $(( $(stat -c %s "$tmp/m.exo") / 2 )) "$tmp/m.exo" > "$tmp/half.exo"
-expect 1 "half.exo: truncated: the header describes [0-9]+ bytes of data, the file has [0-9]+ bytes in all" -- info "$tmp/half.exo"
+expect 1 "half.exo: truncated: the header places variable '[a-z_0-9]+' up to byte [0-9]+, the file has [0-9]+ bytes" -- info "$tmp/half.exo"
+head -c $(( $(stat -c %s "$tmp/m.exo") - 64 )) "$tmp/m.exo" > "$tmp/short.exo"
+expect 1 "short.exo: truncated: the header places variable 'vals_nod_var1' up to byte [0-9]+, the file has [0-9]+ bytes" -- info "$tmp/short.exo"
+expect 0 "points 29, cells 26" -- info "$tmp/m.exo"
 # A legacy file whose cell is a polyhedron (42): the cell type is named, not a miscounted truncation.
 "$exe" generate box-tets -n 1 -o "$tmp/t.vtk" >/dev/null && awk 'f&&/^10$/&&!d{print "42";d=1;next} /CELL_TYPES/{f=1} {print}' "$tmp/t.vtk" >"$tmp/poly.vtk"
 expect 1 "poly.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(first: cell 0\\)" -- info "$tmp/poly.vtk"
