@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include "grid/netcdf_check.hpp"
+
 namespace fs = std::filesystem;
 
 namespace cellproj {
@@ -96,6 +98,11 @@ HeaderCounts header_counts(const std::string& path) {
     double points = 0, cells = 0;
     in >> points >> cells;
     return in ? HeaderCounts{saturated(points), saturated(cells)} : HeaderCounts{};
+  }
+  if (ext == ".exo" || ext == ".ex2" || ext == ".e" || ext == ".exii") {
+    const auto h = read_classic_header(path);
+    return h ? HeaderCounts{saturated(double(h->dim("num_nodes"))), saturated(double(h->dim("num_elem")))}
+             : HeaderCounts{};
   }
   if (ext == ".node" || ext == ".ele") {
     const fs::path base = fs::path(path).replace_extension();

@@ -38,16 +38,13 @@ std::uint64_t type_size(std::uint64_t type) {
   return type < 12 ? static_cast<std::uint64_t>(kSize[type]) : 0;
 }
 
-struct DataEnd {
-  std::uint64_t end = 0;  // the first byte after every variable's data, as the header places them
-  std::string variable;   // the variable ending there
-};
+}  // namespace
 
-// Where the header puts each variable ("begin"), which the library does not tell: the header
-// walked as the classic format specifies (NetCDF Users Guide, "File Format Specification"):
-// magic numrecs dim_list gatt_list var_list, each var = name dimids vatt_list nc_type vsize begin.
-// Unpadded sizes, so that a last variable written without its padding still counts as complete.
-std::optional<DataEnd> classic_data_end(const std::string& path) {
+// The header walked as the classic format specifies (NetCDF Users Guide, "File Format
+// Specification"): magic numrecs dim_list gatt_list var_list, each var = name dimids vatt_list
+// nc_type vsize begin. Unpadded sizes, so that a last variable written without its padding still
+// counts as complete.
+std::optional<ClassicHeader> read_classic_header(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::vector<unsigned char> bytes(1 << 20);  // a header larger than this is left to the sum check
   in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
@@ -61,6 +58,7 @@ std::optional<DataEnd> classic_data_end(const std::string& path) {
   const bool streaming = numrecs == (word == 8 ? ~0ull : 0xFFFFFFFFull);
   auto name = [&] {
     const std::uint64_t n = c.read(word);
+    if (n > bytes.size()) c.ok = false;
     const std::size_t from = c.at;
     c.skip((n + 3) / 4 * 4);
     return c.ok ? std::string(bytes.begin() + from, bytes.begin() + from + n) : std::string();
@@ -74,10 +72,14 @@ std::optional<DataEnd> classic_data_end(const std::string& path) {
       c.skip((count * size + 3) / 4 * 4);
     }
   };
+  ClassicHeader out;
   std::vector<std::uint64_t> dim;
   c.read(4);  // NC_DIMENSION, or ZERO when absent
-  for (std::uint64_t d = 0, n = c.read(word); d < n && c.ok && n <= bytes.size(); ++d)
-    name(), dim.push_back(c.read(word));
+  for (std::uint64_t d = 0, n = c.read(word); d < n && c.ok && n <= bytes.size(); ++d) {
+    std::string dim_name = name();
+    dim.push_back(c.read(word));
+    out.dims.emplace_back(std::move(dim_name), dim.back());
+  }
   attributes();
   struct Var {
     std::string name;
@@ -106,17 +108,20 @@ std::optional<DataEnd> classic_data_end(const std::string& path) {
   std::uint64_t record_size = 0;  // one record of every record variable, padded (one alone: unpadded)
   int records = 0;
   for (const Var& v : vars) record_size += v.record ? (v.record_bytes + 3) / 4 * 4 : 0, records += v.record;
-  DataEnd out;
   for (const Var& v : vars) {
     if (v.record && (streaming || numrecs == 0)) continue;
     const std::uint64_t end =
         v.begin + (v.record ? (numrecs - 1) * (records == 1 ? v.record_bytes : record_size) : 0) + v.record_bytes;
-    if (end > out.end) out = {end, v.name};
+    if (end > out.data_end) out.data_end = end, out.last_variable = v.name;
   }
   return out;
 }
 
-}  // namespace
+std::uint64_t ClassicHeader::dim(const std::string& name) const {
+  for (const auto& [n, len] : dims)
+    if (n == name) return len;
+  return 0;
+}
 
 void check_netcdf_readable(const std::string& path) {
   int id = -1;
@@ -155,10 +160,10 @@ void check_netcdf_readable(const std::string& path) {
       data_bytes += (static_cast<std::uintmax_t>(count) * size + 3) / 4 * 4;
     }
     const std::uintmax_t file = std::filesystem::file_size(path);
-    if (const auto placed = classic_data_end(path); placed && file < placed->end) {
+    if (const auto placed = read_classic_header(path); placed && file < placed->data_end) {
       nc_close(id);
-      throw InputError(where(path, "truncated: the header places variable '" + placed->variable + "' up to byte " +
-                                       std::to_string(placed->end) + ", the file has " + std::to_string(file) +
+      throw InputError(where(path, "truncated: the header places variable '" + placed->last_variable + "' up to byte " +
+                                       std::to_string(placed->data_end) + ", the file has " + std::to_string(file) +
                                        " bytes"));
     }
     if (file < data_bytes) {

@@ -1,7 +1,23 @@
 #pragma once
+#include <cstdint>
+#include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 namespace cellproj {
+
+// What a classic netCDF header (CDF-1, CDF-2 64-bit offset, CDF-5) says, read by our own
+// bounds-checked walk, so that the parent process can ask it before any library parses the file.
+struct ClassicHeader {
+  std::vector<std::pair<std::string, std::uint64_t>> dims;  // name, length (0: the record dimension)
+  std::uint64_t data_end = 0;  // the first byte after every variable's data, where the header places it
+  std::string last_variable;   // the variable ending there
+  std::uint64_t dim(const std::string& name) const;  // 0 when absent
+};
+// nullopt when the file is not classic netCDF (netCDF-4 is HDF5) or its header is malformed.
+std::optional<ClassicHeader> read_classic_header(const std::string& path);
+
 // Checks a netCDF file (Exodus II is netCDF) before VTK's Exodus reader, which does not check and
 // crashes on a truncated file: a classic file must hold every byte its header places, every
 // variable must read, and element connectivity must name existing nodes. Throws InputError.
