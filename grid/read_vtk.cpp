@@ -36,6 +36,7 @@
 
 #include "base/error.hpp"
 #include "grid/geometry.hpp"
+#include "grid/legacy_vtk_check.hpp"
 #include "grid/netcdf_check.hpp"
 #include "grid/read_mesh.hpp"
 
@@ -137,6 +138,29 @@ std::vector<Leaf> leaves_of(vtkDataObject* obj) {
   return out;
 }
 
+// VTK's readers take a cell array's offsets and types as the file gives them, and GetCellPoints
+// then reads wherever garbled offsets point: they must start at 0, never decrease and end at the
+// connectivity's length, with a type for every cell.
+void check_cell_array(vtkDataSet* ds) {
+  auto* ug = vtkUnstructuredGrid::SafeDownCast(ds);
+  if (!ug || !ug->GetCells()) return;
+  vtkCellArray* cells = ug->GetCells();
+  vtkDataArray* offsets = cells->GetOffsetsArray();
+  const vtkIdType n = cells->GetNumberOfCells(), ids = cells->GetNumberOfConnectivityIds();
+  if (n > 0 && (!ug->GetCellTypesArray() || ug->GetCellTypesArray()->GetNumberOfValues() < n))
+    throw InputError("the file has " + std::to_string(n) + " cells but " +
+                     std::to_string(ug->GetCellTypesArray() ? ug->GetCellTypesArray()->GetNumberOfValues() : 0) +
+                     " cell types");
+  if (n == 0 || !offsets) return;
+  auto at = [&](vtkIdType c) { return static_cast<vtkIdType>(offsets->GetTuple1(c)); };
+  if (at(0) != 0) throw InputError("the cell offsets start at " + std::to_string(at(0)) + ", not 0");
+  for (vtkIdType c = 0; c < n; ++c)
+    if (at(c + 1) < at(c) || at(c + 1) > ids)
+      throw InputError("cell " + std::to_string(c) + "'s point ids run from offset " + std::to_string(at(c)) + " to " +
+                       std::to_string(at(c + 1)) + ", outside the " + std::to_string(ids) +
+                       " connectivity ids or backwards");
+}
+
 // Where each leaf's points and cells went in the assembled mesh.
 struct LeafMap {
   std::vector<std::int64_t> point;  // leaf point -> mesh point
@@ -170,6 +194,7 @@ std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& me
         map.point[p] = mesh.add_point({x[0], x[1], x[2]});
       }
     }
+    check_cell_array(ds);
     map.cell.assign(static_cast<std::size_t>(ds->GetNumberOfCells()), -1);
     for (vtkIdType c = 0; c < ds->GetNumberOfCells(); ++c) {
       const int type = ds->GetCellType(c);
@@ -486,6 +511,7 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     return mesh;
   }
   if (format == "vtk-legacy") {
+    check_legacy_cells(path);
     auto r = vtkSmartPointer<vtkDataSetReader>::New();
     r->SetFileName(path.c_str());
     r->ReadAllScalarsOn();

@@ -209,5 +209,13 @@ expect 1 "huge.exo: its header declares 2000000000 points and 26 cells: reading 
 # A legacy file whose cell is a polyhedron (42): the cell type is named, not a miscounted truncation.
 "$exe" generate box-tets -n 1 -o "$tmp/t.vtk" >/dev/null && awk 'f&&/^10$/&&!d{print "42";d=1;next} /CELL_TYPES/{f=1} {print}' "$tmp/t.vtk" >"$tmp/poly.vtk"
 expect 1 "poly.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(first: cell 0\\)" -- info "$tmp/poly.vtk"
+# Legacy .vtk structure VTK's reader follows without bounds: a cell count past the CELLS block, a
+# garbled version line (a format-5 body read as the older layout), offsets pointing anywhere.
+printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n9 0 1 2 3\nCELL_TYPES 1\n10\n' >"$tmp/count.vtk"
+expect 1 "count.vtk: cell 0 has 9 points, more than the 4 numbers left in the CELLS block \\(1 cells, 5 numbers\\)" -- info "$tmp/count.vtk"
+sed 's/Version 5.1/Version 5x1/' "$tmp/t.vtk" >"$tmp/version.vtk"
+expect 1 "version.vtk: line 1: the version is garbled" -- info "$tmp/version.vtk"
+awk '/^OFFSETS/{print; getline; $2=99; print; next} {print}' "$tmp/t.vtk" >"$tmp/offsets.vtk"
+expect 1 "offsets.vtk: cell 0's point ids run from offset 0 to 99, outside the [0-9]+ connectivity ids or backwards" -- info "$tmp/offsets.vtk"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
