@@ -7,7 +7,9 @@
 #include <fstream>
 #include <sstream>
 
+#include "base/error.hpp"
 #include "grid/netcdf_check.hpp"
+#include "grid/text_scanner.hpp"
 
 namespace fs = std::filesystem;
 
@@ -93,11 +95,14 @@ HeaderCounts header_counts(const std::string& path) {
                  [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
   if (ext == ".vtu" || ext == ".vts") return xml_counts(path, ext);
   if (ext == ".vtk") return legacy_counts(path);
-  if (ext == ".off") {
-    std::ifstream in(path);
-    double points = 0, cells = 0;
-    in >> points >> cells;
-    return in ? HeaderCounts{saturated(points), saturated(cells)} : HeaderCounts{};
+  if (ext == ".off") {  // the reader's own scanner, so that comments count as they do there
+    try {
+      TextScanner in(path);
+      const std::int64_t points = in.integer("the vertex count");
+      return {points, in.integer("the tetrahedron count")};
+    } catch (const Error&) {
+      return {};  // the reader's message
+    }
   }
   if (ext == ".exo" || ext == ".ex2" || ext == ".e" || ext == ".exii") {
     const auto h = read_classic_header(path);

@@ -21,10 +21,13 @@ Mesh read_off(const std::string& path) {
   if (nv < 4 || nt < 1)
     throw InputError(where(path, "header says " + std::to_string(nv) + " vertices and " + std::to_string(nt) +
                                      " tetrahedra; expected 'nverts ntets' with at least 4 and 1"));
+  // Reserved no further than the file can hold (four numbers a vertex, 2 bytes at least each), so
+  // that a garbled count ends as "truncated" at the end of the file rather than in the allocator.
+  const auto held = static_cast<std::int64_t>(std::filesystem::file_size(path)) / 8;
   Mesh m;
-  m.points.reserve(static_cast<std::size_t>(3 * nv));
+  m.points.reserve(static_cast<std::size_t>(3 * std::min(nv, held)));
   std::vector<double> values;
-  values.reserve(static_cast<std::size_t>(nv));
+  values.reserve(static_cast<std::size_t>(std::min(nv, held)));
   for (std::int64_t v = 0; v < nv; ++v) {
     const double x = in.number("a vertex x"), y = in.number("a vertex y"), z = in.number("a vertex z");
     m.add_point({x, y, z});

@@ -217,5 +217,8 @@ sed 's/Version 5.1/Version 5x1/' "$tmp/t.vtk" >"$tmp/version.vtk"
 expect 1 "version.vtk: line 1: the version is garbled" -- info "$tmp/version.vtk"
 awk '/^OFFSETS/{print; getline; $2=99; print; next} {print}' "$tmp/t.vtk" >"$tmp/offsets.vtk"
 expect 1 "offsets.vtk: cell 0's point ids run from offset 0 to 99, outside the [0-9]+ connectivity ids or backwards" -- info "$tmp/offsets.vtk"
+# An .off count behind a comment: the header check reads it as the reader does.
+printf '822222212 # a garbled count\n6\n0 0 0 1\n' >"$tmp/count.off"
+expect 1 "count.off: its header declares 822222212 points and 6 cells: reading them needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- info "$tmp/count.off" --max-memory 4
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
