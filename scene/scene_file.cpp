@@ -62,7 +62,7 @@ Scene load_scene(const std::string& path) {
   nlohmann::json j;
   try {
     j = nlohmann::json::parse(in);
-  } catch (const nlohmann::json::parse_error& e) {
+  } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range: a number beyond a double
     throw InputError(where(path, std::string("not valid JSON: ") + e.what()));
   }
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));

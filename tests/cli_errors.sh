@@ -220,5 +220,8 @@ expect 1 "offsets.vtk: cell 0's point ids run from offset 0 to 99, outside the [
 # An .off count behind a comment: the header check reads it as the reader does.
 printf '822222212 # a garbled count\n6\n0 0 0 1\n' >"$tmp/count.off"
 expect 1 "count.off: its header declares 822222212 points and 6 cells: reading them needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- info "$tmp/count.off" --max-memory 4
+# A number beyond a double in a scene: named as the scene file's JSON error, like a syntax error.
+echo '{"mesh": "box.vtu", "camera": {"height": 8e898}}' >"$tmp/big.json"
+expect 1 "big.json: not valid JSON: .*number overflow" -- render "$tmp/big.json"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -3,7 +3,6 @@
 #include <new>
 #include <string>
 
-#include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
 #include "tools/commands.hpp"
@@ -36,9 +35,6 @@ int main(int argc, char** argv) {
   } catch (const ResourceError& e) {
     std::fprintf(stderr, "cellproj: error: %s\n", e.what());
     return kExitInternal;
-  } catch (const nlohmann::json::exception& e) {
-    std::fprintf(stderr, "cellproj: error: %s\n", e.what());
-    return kExitInput;
   } catch (const std::bad_alloc&) {
     std::string command;
     for (int i = 1; i < argc; ++i) command += std::string(i > 1 ? " " : "") + argv[i];
