@@ -3,7 +3,6 @@
 #include <new>
 #include <string>
 
-
 #include "base/error.hpp"
 #include "tools/commands.hpp"
 
