@@ -1,5 +1,6 @@
 #include "grid/netcdf_check.hpp"
 
+#include <algorithm>
 #include <cstdint>
 #include <filesystem>
 #include <fstream>
@@ -131,6 +132,36 @@ void check_netcdf_readable(const std::string& path) {
   nc_inq_nvars(id, &nvars);
   std::size_t nodes = 0;
   if (int dim; nc_inq_dimid(id, "num_nodes", &dim) == NC_NOERR) nc_inq_dimlen(id, dim, &nodes);
+  // Exodus II's element blocks, which VTK's reader indexes without asking whether they exist: for
+  // each of num_el_blk blocks, num_el_in_blkN, num_nod_per_elN and connectN.
+  // A null block (eb_status 0, no elements) has none of them: netCDF has no empty dimensions.
+  std::size_t blocks = 0;
+  if (int dim; nc_inq_dimid(id, "num_el_blk", &dim) == NC_NOERR) nc_inq_dimlen(id, dim, &blocks);
+  blocks = std::min<std::size_t>(blocks, 1000000);
+  std::vector<int> status(blocks, 1);
+  if (int var; blocks > 0 && nc_inq_varid(id, "eb_status", &var) == NC_NOERR) {
+    std::size_t len = 0;
+    int dim = 0, ndims = 0;
+    if (nc_inq_varndims(id, var, &ndims) == NC_NOERR && ndims == 1 && nc_inq_vardimid(id, var, &dim) == NC_NOERR &&
+        nc_inq_dimlen(id, dim, &len) == NC_NOERR && len == blocks)
+      nc_get_var_int(id, var, status.data());
+  }
+  for (std::size_t b = 1; b <= blocks; ++b) {
+    if (status[b - 1] == 0) continue;
+    const std::string n = std::to_string(b);
+    int found = 0;
+    for (const std::string& dim : {"num_el_in_blk" + n, "num_nod_per_el" + n})
+      if (nc_inq_dimid(id, dim.c_str(), &found) != NC_NOERR) {
+        nc_close(id);
+        throw InputError(where(
+            path, "corrupt: element block " + n + " of " + std::to_string(blocks) + " has no dimension '" + dim + "'"));
+      }
+    if (nc_inq_varid(id, ("connect" + n).c_str(), &found) != NC_NOERR) {
+      nc_close(id);
+      throw InputError(where(path, "corrupt: element block " + n + " of " + std::to_string(blocks) +
+                                       " has no connectivity variable 'connect" + n + "'"));
+    }
+  }
   // What the header promises, before anything is read: netCDF reads past the end of a truncated
   // classic file as fill values, silently (and VTK then sees node 0 in the connectivity).
   auto elements = [&](int v, std::size_t& count, std::size_t& size) {

@@ -204,6 +204,8 @@ expect 1 "half.exo: truncated: the header places variable '[a-z_0-9]+' up to byt
 head -c $(( $(stat -c %s "$tmp/m.exo") - 64 )) "$tmp/m.exo" > "$tmp/short.exo"
 expect 1 "short.exo: truncated: the header places variable 'vals_nod_var1' up to byte [0-9]+, the file has [0-9]+ bytes" -- info "$tmp/short.exo"
 expect 0 "points 29, cells 26" -- info "$tmp/m.exo"
+sed 's/num_el_in_blk2/num_el_in_blk0/' "$tmp/m.exo" >"$tmp/block.exo"  # VTK's Exodus reader crashed on it
+expect 1 "block.exo: corrupt: element block 2 of 4 has no dimension 'num_el_in_blk2'" -- info "$tmp/block.exo"
 python3 -c "import sys; b=bytearray(open(sys.argv[1],'rb').read()); j=b.index(b'num_nodes')+12; b[j:j+4]=(2000000000).to_bytes(4,'big'); open(sys.argv[2],'wb').write(b)" "$tmp/m.exo" "$tmp/huge.exo"
 expect 1 "huge.exo: its header declares 2000000000 points and 26 cells: reading them needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- info "$tmp/huge.exo" --max-memory 4
 # A legacy file whose cell is a polyhedron (42): the cell type is named, not a miscounted truncation.
