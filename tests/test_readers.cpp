@@ -9,6 +9,7 @@
 #include <gtest/gtest.h>
 #include <vtkLogger.h>
 
+#include "base/bytes.hpp"
 #include "base/error.hpp"
 #include "grid/isolated_read.hpp"
 #include "grid/read_mesh.hpp"
@@ -337,4 +338,11 @@ TEST(IsolatedRead, TheHeaderIsCheckedAgainstTheMemoryLimitFirst) {
   o.max_memory_gib = 4;
   EXPECT_NE(read_error(dir.file("huge.vtk"), o).find("its header declares 2000000000 points and 0 cells"),
             std::string::npos);
+}
+
+TEST(MemoryBudget, SizesInMessagesReadInTheirUnit) {
+  EXPECT_EQ(format_bytes(3ull << 30), "3.0 GiB");
+  EXPECT_EQ(format_bytes((1ull << 30) / 10), "0.1 GiB");
+  EXPECT_EQ(format_bytes(2306867), "2.2 MiB");  // "0.0 GiB" said nothing
+  EXPECT_EQ(format_bytes(0), "0.0 MiB");
 }
