@@ -20,8 +20,9 @@
 namespace cellproj {
 namespace {
 
-// Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind the
-// eye covers the whole image.
+// Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind a
+// perspective eye has no image box and is ray cast over the whole image (an orthographic one only
+// over its box).
 std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
   std::vector<float> area(static_cast<std::size_t>(cells.n_cells));
   const double w = rays.width(), h = rays.height();
@@ -33,7 +34,7 @@ std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& sc
           bool behind = false;
           for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
             const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
-            behind = behind || behind_eye(v.z);
+            behind = behind || (rays.perspective() && behind_eye(v.z));
             x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
           }
           const double dx = std::clamp(x1, 0.0, w) - std::clamp(x0, 0.0, w),

@@ -115,9 +115,22 @@ void CellFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& cou
     if (glm::dot(n[f], p[f] - a) > 0) n[f] = -n[f];
     c[f] = glm::dot(n[f], a);
   }
+  // The pixels to try: in perspective every one (a point behind the eye has no image position); in
+  // orthographic projection those under the tetrahedron's image, one pixel wider.
+  int i0 = 0, i1 = rays_.width() - 1, j0 = 0, j1 = rays_.height() - 1;
+  if (!rays_.perspective()) {
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int k = 0; k < 4; ++k) {
+      const ScreenVertex& v = screen_.v[static_cast<std::size_t>(tet[k])];
+      x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+    }
+    auto lo = [](double v, int n) { return static_cast<int>(std::clamp(std::floor(v - 0.5), 0.0, double(n))); };
+    auto hi = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - 0.5), -1.0, double(n - 1))); };
+    i0 = lo(x0, rays_.width()), i1 = hi(x1, rays_.width()), j0 = lo(y0, rays_.height()), j1 = hi(y1, rays_.height());
+  }
   std::int64_t emitted = 0;
-  for (int j = 0; j < rays_.height(); ++j)
-    for (int i = 0; i < rays_.width(); ++i) {
+  for (int j = j0; j <= j1; ++j)
+    for (int i = i0; i <= i1; ++i) {
       const Ray r = rays_.ray(i + 0.5, j + 0.5);  // from the eye, or from its plane (recentred)
       const glm::dvec3 &eye = r.origin, &d = r.dir;
       double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();  // from the eye on
