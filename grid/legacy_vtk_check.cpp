@@ -73,8 +73,14 @@ void check_legacy_cells(const std::string& path) {
   const bool binary = line.rfind("BINARY", 0) == 0;
   if (!binary && line.rfind("ASCII", 0) != 0) return;  // VTK says what is wrong
   std::int64_t cells = -1, size = -1;
-  while (std::getline(in, line))
+  while (std::getline(in, line)) {
     if (line.rfind("CELLS ", 0) == 0 && (std::istringstream(line.substr(6)) >> cells >> size)) break;
+    std::int64_t points = 0;
+    std::string type;
+    if (binary && line.rfind("POINTS ", 0) == 0 && (std::istringstream(line.substr(7)) >> points >> type) &&
+        points > 0)  // the binary coordinates are no lines to look through
+      in.seekg(3 * points * (type == "double" ? 8 : type == "float" ? 4 : 0), std::ios::cur);
+  }
   if (cells < 0 || size < 0) return;  // no CELLS block, or VTK's message about its line
   if (major >= 5) {
     if (binary && cells >= 1) check_binary_arrays(in, path, cells, size);

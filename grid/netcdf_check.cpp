@@ -39,17 +39,11 @@ std::uint64_t type_size(std::uint64_t type) {
   return type < 12 ? static_cast<std::uint64_t>(kSize[type]) : 0;
 }
 
-}  // namespace
-
 // The header walked as the classic format specifies (NetCDF Users Guide, "File Format
 // Specification"): magic numrecs dim_list gatt_list var_list, each var = name dimids vatt_list
 // nc_type vsize begin. Unpadded sizes, so that a last variable written without its padding still
 // counts as complete.
-std::optional<ClassicHeader> read_classic_header(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::vector<unsigned char> bytes(1 << 20);  // a header larger than this is left to the sum check
-  in.read(reinterpret_cast<char*>(bytes.data()), static_cast<std::streamsize>(bytes.size()));
-  bytes.resize(static_cast<std::size_t>(in.gcount()));
+std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char>& bytes) {
   HeaderCursor c{bytes};
   if (c.read(3) != 0x434446) return std::nullopt;  // "CDF"
   const std::uint64_t version = c.read(1);
@@ -74,12 +68,10 @@ std::optional<ClassicHeader> read_classic_header(const std::string& path) {
     }
   };
   ClassicHeader out;
-  std::vector<std::uint64_t> dim;
   c.read(4);  // NC_DIMENSION, or ZERO when absent
   for (std::uint64_t d = 0, n = c.read(word); d < n && c.ok && n <= bytes.size(); ++d) {
     std::string dim_name = name();
-    dim.push_back(c.read(word));
-    out.dims.emplace_back(std::move(dim_name), dim.back());
+    out.dims.emplace_back(std::move(dim_name), c.read(word));
   }
   attributes();
   struct Var {
@@ -93,11 +85,12 @@ std::optional<ClassicHeader> read_classic_header(const std::string& path) {
     Var var{name(), 0, 1, false};
     for (std::uint64_t k = 0, nd = c.read(word); k < nd && c.ok && nd <= bytes.size(); ++k) {
       const std::uint64_t id = c.read(word);
-      if (id >= dim.size()) return std::nullopt;
-      if (k == 0 && dim[id] == 0)
+      if (id >= out.dims.size()) return std::nullopt;
+      const std::uint64_t len = out.dims[id].second;
+      if (k == 0 && len == 0)
         var.record = true;
-      else if (dim[id] != 0)
-        var.record_bytes = dim[id] > (1ull << 62) / var.record_bytes ? 1ull << 62 : var.record_bytes * dim[id];
+      else if (len != 0)
+        var.record_bytes = len > (1ull << 62) / var.record_bytes ? 1ull << 62 : var.record_bytes * len;
     }
     attributes();
     var.record_bytes *= type_size(c.read(4));
@@ -116,6 +109,22 @@ std::optional<ClassicHeader> read_classic_header(const std::string& path) {
     if (end > out.data_end) out.data_end = end, out.last_variable = v.name;
   }
   return out;
+}
+
+}  // namespace
+
+std::optional<ClassicHeader> read_classic_header(const std::string& path) {
+  // The header's size is not known before it is walked: read more until it fits (or 256 MB).
+  std::ifstream in(path, std::ios::binary);
+  std::vector<unsigned char> bytes;
+  for (std::size_t want = 1 << 16;; want *= 16) {
+    const std::size_t had = bytes.size();
+    bytes.resize(want);
+    in.read(reinterpret_cast<char*>(bytes.data() + had), static_cast<std::streamsize>(want - had));
+    bytes.resize(had + static_cast<std::size_t>(in.gcount()));
+    auto header = walk_classic_header(bytes);
+    if (header || bytes.size() < want || want >= (std::size_t(1) << 28)) return header;
+  }
 }
 
 std::uint64_t ClassicHeader::dim(const std::string& name) const {
@@ -162,8 +171,6 @@ void check_netcdf_readable(const std::string& path) {
                                        " has no connectivity variable 'connect" + n + "'"));
     }
   }
-  // What the header promises, before anything is read: netCDF reads past the end of a truncated
-  // classic file as fill values, silently (and VTK then sees node 0 in the connectivity).
   auto elements = [&](int v, std::size_t& count, std::size_t& size) {
     int ndims = 0;
     nc_type type;
@@ -181,26 +188,14 @@ void check_netcdf_readable(const std::string& path) {
     nc_inq_type(id, type, nullptr, &size);
     return type;
   };
-  int format = 0;
-  nc_inq_format(id, &format);
-  if (format == NC_FORMAT_CLASSIC || format == NC_FORMAT_64BIT_OFFSET || format == NC_FORMAT_CDF5) {
-    std::uintmax_t data_bytes = 0;  // the header promises at least this much data after it
-    for (int v = 0; v < nvars; ++v) {
-      std::size_t count = 0, size = 0;
-      elements(v, count, size);
-      data_bytes += (static_cast<std::uintmax_t>(count) * size + 3) / 4 * 4;
-    }
-    const std::uintmax_t file = std::filesystem::file_size(path);
-    if (const auto placed = read_classic_header(path); placed && file < placed->data_end) {
+  // What the header promises, before anything is read: netCDF reads past the end of a truncated
+  // classic file as fill values, silently (and VTK then sees node 0 in the connectivity).
+  if (const auto placed = read_classic_header(path)) {  // classic formats only: netCDF-4 is HDF5
+    if (const std::uintmax_t file = std::filesystem::file_size(path); file < placed->data_end) {
       nc_close(id);
       throw InputError(where(path, "truncated: the header places variable '" + placed->last_variable + "' up to byte " +
                                        std::to_string(placed->data_end) + ", the file has " + std::to_string(file) +
                                        " bytes"));
-    }
-    if (file < data_bytes) {
-      nc_close(id);
-      throw InputError(where(path, "truncated: the header describes " + std::to_string(data_bytes) +
-                                       " bytes of data, the file has " + std::to_string(file) + " bytes in all"));
     }
   }
   std::vector<unsigned char> buf;

@@ -369,7 +369,7 @@ bool has_polyhedra(vtkDataSet* ds) {
 // returned dataset holds must all be in the file: count the numbers on its data lines.
 void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
   auto* ds = vtkDataSet::SafeDownCast(obj);
-  if (!ds || has_polyhedra(ds)) return;
+  if (!ds) return;
   std::ifstream in(path);
   std::string line;
   for (int i = 0; i < 3 && std::getline(in, line); ++i) {
@@ -403,7 +403,7 @@ void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
 // arrays of their declared type from 5 on.
 void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
   auto* ds = vtkDataSet::SafeDownCast(obj);
-  if (!ds || has_polyhedra(ds)) return;
+  if (!ds) return;
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::uintmax_t needed = 0;  // a lower bound of the file's size
@@ -519,8 +519,10 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     r->ReadAllFieldsOn();
     r->Update();
     messages.throw_if_failed(path);
-    check_legacy_ascii_complete(path, r->GetOutputDataObject(0));
-    check_legacy_binary_complete(path, r->GetOutputDataObject(0));
+    if (!has_polyhedra(vtkDataSet::SafeDownCast(r->GetOutputDataObject(0)))) {
+      check_legacy_ascii_complete(path, r->GetOutputDataObject(0));
+      check_legacy_binary_complete(path, r->GetOutputDataObject(0));
+    }
     return run(r.Get(), path, messages);
   }
   if (format == "exodus") {
