@@ -50,7 +50,21 @@ Camera camera_from_json(const nlohmann::json& j, const std::string& source) {
   return c;
 }
 
+nlohmann::json camera_to_json(const Camera& c) {
+  const auto v = [](const glm::dvec3& x) { return nlohmann::json::array({x.x, x.y, x.z}); };
+  nlohmann::json j = {{"projection", c.projection == Projection::Perspective ? "perspective" : "orthographic"},
+                      {"eye", v(c.eye)},
+                      {"target", v(c.target)},
+                      {"up", v(c.up)}};
+  if (c.projection == Projection::Perspective)
+    j["fov_y"] = c.fov_y;
+  else
+    j["height"] = c.height;
+  return j;
+}
+
 Camera orbit(const Camera& c, double degrees) {
+  if (degrees == 0.0) return c;  // bit for bit: target + (eye - target) need not round back to eye
   const glm::dvec3 axis = glm::normalize(c.up);
   const double a = degrees * kPi / 180.0;
   const glm::dvec3 v = c.eye - c.target;  // Rodrigues' rotation about the up axis

@@ -12,6 +12,9 @@ namespace cellproj {
 // InputError naming `source` and the key, and check_camera's errors.
 Camera camera_from_json(const nlohmann::json& j, const std::string& source);
 
+// The camera as camera_from_json reads it (doubles printed so that they read back bit for bit).
+nlohmann::json camera_to_json(const Camera& camera);
+
 // The camera turned by `degrees` about the up axis through the target (frame f of --frames: f degrees).
 Camera orbit(const Camera& camera, double degrees);
 

@@ -7,6 +7,7 @@
 
 #include "base/error.hpp"
 #include "grid/validate.hpp"
+#include "scene/quick_scene.hpp"
 #include "scene/transfer_function_json.hpp"
 
 namespace cellproj {
@@ -19,6 +20,18 @@ std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& m) {
     hi = glm::max(hi, x);
   }
   return {lo, hi};
+}
+
+ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
+  ColorBar bar;
+  bar.lo = p.field_min;
+  bar.hi = p.field_max;
+  bar.title = p.field;
+  bar.text = text_color_for(background);
+  constexpr int kSamples = 256;
+  for (int k = 0; k < kSamples; ++k)
+    bar.colors.push_back(glm::clamp(p.tf.color(bar.lo + (k + 0.5) / kSamples * (bar.hi - bar.lo)), 0.0, 1.0));
+  return bar;
 }
 
 namespace {
@@ -62,8 +75,9 @@ std::string view_warning(const Camera& camera, const glm::dvec3& lo, const glm::
 
 }  // namespace
 
-PreparedScene prepare_scene(const Scene& s) {
-  LoadedMesh loaded = load_mesh(s.mesh, s.reader);
+PreparedScene prepare_scene(const Scene& s) { return prepare_scene(s, load_mesh(s.mesh, s.reader)); }
+
+PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {
   const std::string field = pick_field(s, loaded.mesh);
   const PointField& f = loaded.mesh.field(field);
   check_finite(s.mesh, f);
@@ -72,9 +86,7 @@ PreparedScene prepare_scene(const Scene& s) {
   TransferFunction tf = transfer_function_from_json(s.transfer_function, s.source, s.base_dir, *lo, *hi);
   PreparedScene p{std::move(loaded), field, *lo, *hi, std::move(tf), Camera{}, {}};
   const auto [blo, bhi] = bounds(p.loaded.mesh);
-  p.camera =
-      s.camera ? *s.camera
-               : frame_box(blo, bhi, Projection::Orthographic, {0.6, 0.5, 1.0}, {0, 1, 0}, double(s.width) / s.height);
+  p.camera = s.camera ? *s.camera : view_camera(s.view, blo, bhi, double(s.width) / s.height);
   check_camera(p.camera, where(s.source, "the camera framing " + s.mesh + "'s bounds"));
   p.warnings = p.loaded.report.warnings(s.mesh);
   if (const std::string w = view_warning(p.camera, blo, bhi, s.width, s.height); !w.empty())

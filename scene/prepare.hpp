@@ -8,6 +8,7 @@
 #include "optics/transfer_function.hpp"
 #include "scene/scene_file.hpp"
 #include "view/camera.hpp"
+#include "view/color_bar.hpp"
 
 namespace cellproj {
 
@@ -21,6 +22,12 @@ struct PreparedScene {
 };
 
 PreparedScene prepare_scene(const Scene& scene);
+// The same with the scene's mesh already read (as `cellproj render MESH` does, to make its scene).
+PreparedScene prepare_scene(const Scene& scene, LoadedMesh loaded);
+
+// The legend of the picture: the transfer function's colours over the field's range, the field's
+// name, text that reads on `background`.
+ColorBar color_bar(const PreparedScene& scene, const glm::dvec3& background);
 
 // The box of the points, as {lo, hi}.
 std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& mesh);

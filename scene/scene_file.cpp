@@ -52,6 +52,31 @@ void parse_size(const std::string& t, int& w, int& h) {
   }
 }
 
+glm::dvec3 parse_color(const std::string& t, const std::string& what) {
+  if (t == "black") return glm::dvec3(0.0);
+  if (t == "white") return glm::dvec3(1.0);
+  glm::dvec3 c(0.0);
+  if (t.size() == 7 && t[0] == '#' && t.find_first_not_of("0123456789abcdefABCDEF", 1) == std::string::npos) {
+    for (int k = 0; k < 3; ++k) c[k] = std::stoi(t.substr(1 + 2 * k, 2), nullptr, 16) / 255.0;
+    return c;
+  }
+  std::size_t at = 0;
+  for (int k = 0; k < 3; ++k) {
+    const std::size_t end = k < 2 ? t.find(',', at) : t.size();
+    std::size_t used = 0;
+    bool ok = end != std::string::npos && end > at;
+    try {
+      if (ok) c[k] = std::stod(t.substr(at, end - at), &used);
+    } catch (const std::exception&) {
+      ok = false;
+    }
+    if (!ok || used != end - at || !(c[k] >= 0 && c[k] <= 1))
+      throw InputError(what + ": expected R,G,B with each in [0, 1], #rrggbb, black or white; got '" + t + "'");
+    at = end + 1;
+  }
+  return c;
+}
+
 Scene load_scene(const std::string& path) {
   if (std::filesystem::is_directory(path)) throw InputError(where(path, "is a folder, not a scene file"));
   std::ifstream in(path);
@@ -65,11 +90,15 @@ Scene load_scene(const std::string& path) {
   } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range: a number beyond a double
     throw InputError(where(path, std::string("not valid JSON: ") + e.what()));
   }
+  return scene_from_json(j, path, fs::path(path).parent_path().string());
+}
+
+Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
   only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image"});
   Scene s;
   s.source = path;
-  s.base_dir = fs::path(path).parent_path().string();
+  s.base_dir = base_dir;
   if (!j.contains("mesh")) throw InputError(where(path, "missing \"mesh\" (the mesh file)"));
   fs::path mesh = text(j["mesh"], path + ": mesh");
   s.mesh = mesh.is_relative() ? (fs::path(s.base_dir) / mesh).lexically_normal().string() : mesh.string();

@@ -18,7 +18,8 @@ struct Scene {
   ReadOptions reader;
   std::string field;                 // empty: the mesh's only field
   nlohmann::json transfer_function;  // parsed once the field's range is known
-  std::optional<Camera> camera;      // absent: frame the mesh
+  std::optional<Camera> camera;      // absent: frame the mesh from `view`
+  std::string view;                  // a named view (scene/quick_scene.hpp); empty: the default framing
   int width = 512, height = 512;
   glm::dvec3 background{0.0};
   std::string base_dir;  // the scene file's folder
@@ -26,8 +27,12 @@ struct Scene {
 
 // Throws InputError naming the file and the key for unknown keys, wrong types and missing keys.
 Scene load_scene(const std::string& path);
+// The same from a parsed scene: `source` names it in messages, relative paths are taken from `base_dir`.
+Scene scene_from_json(const nlohmann::json& j, const std::string& source, const std::string& base_dir);
 
 // "WxH" -> width, height; throws InputError.
 void parse_size(const std::string& text, int& width, int& height);
+// "R,G,B" (each in [0, 1]), "#rrggbb", "black" or "white"; InputError naming `what` otherwise.
+glm::dvec3 parse_color(const std::string& text, const std::string& what);
 
 }  // namespace cellproj

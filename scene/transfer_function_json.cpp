@@ -6,6 +6,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "optics/colormaps.hpp"
 
 namespace cellproj {
 namespace {
@@ -30,9 +31,24 @@ std::vector<ColorPoint> color_points(const nlohmann::json& arr, const std::strin
 // A ParaView preset: [{"Name": ..., "RGBPoints": [x, r, g, b, ...]}, ...] (or one such object).
 std::vector<ColorPoint> paraview_preset(const nlohmann::json& spec, const std::string& key, const std::string& base_dir,
                                         double lo, double hi) {
-  if (!spec.is_object() || !spec.contains("file")) throw InputError(key + ": expected {\"file\": ..., \"name\": ...}");
+  if (!spec.is_object() || !(spec.contains("file") || spec.contains("name")))
+    throw InputError(key + ": expected {\"name\": ...} (a built-in map) or {\"file\": ..., \"name\": ...}");
   for (const auto& [k, v] : spec.items())
     if (k != "file" && k != "name" && k != "range") throw InputError(key + ": unknown key '" + k + "'");
+  if (spec.contains("range")) {
+    const auto& r = spec["range"];
+    if (!r.is_array() || r.size() != 2) throw InputError(key + ".range: expected [s0, s1]");
+    lo = number(r[0], key + ".range");
+    hi = number(r[1], key + ".range");
+  }
+  if (!spec.contains("file")) {
+    if (!spec["name"].is_string()) throw InputError(key + ".name: expected a string, got " + spec["name"].dump());
+    try {
+      return colormap(spec["name"].get<std::string>(), lo, hi);
+    } catch (const InputError& e) {
+      throw InputError(key + ".name: " + e.what());
+    }
+  }
   if (!spec["file"].is_string()) throw InputError(key + ".file: expected a string, got " + spec["file"].dump());
   std::filesystem::path file = spec["file"].get<std::string>();
   if (file.is_relative()) file = std::filesystem::path(base_dir) / file;
@@ -62,12 +78,6 @@ std::vector<ColorPoint> paraview_preset(const nlohmann::json& spec, const std::s
   const auto& pts = (*map)["RGBPoints"];
   if (!pts.is_array() || pts.size() < 4 || pts.size() % 4)
     throw InputError(file.string() + ": RGBPoints must hold x, r, g, b quadruples");
-  if (spec.contains("range")) {
-    const auto& r = spec["range"];
-    if (!r.is_array() || r.size() != 2) throw InputError(key + ".range: expected [s0, s1]");
-    lo = number(r[0], key + ".range");
-    hi = number(r[1], key + ".range");
-  }
   const std::string at = file.string() + ": RGBPoints";
   const double x0 = number(pts[0], at), x1 = number(pts[pts.size() - 4], at);
   std::vector<ColorPoint> out;

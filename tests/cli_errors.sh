@@ -15,7 +15,7 @@ expect() {  # expect CODE REGEX -- ARGS...
 }
 
 expect 2 "subcommand" -- 
-for sub in render info generate sortbench compare; do expect 0 "Usage" -- $sub --help; done
+for sub in render info generate sortbench compare scene; do expect 0 "Usage" -- $sub --help; done
 expect 1 "missing.vtu: no such file" -- info "$tmp/missing.vtu"
 touch "$tmp/mesh.stl"
 expect 1 "unknown mesh format '.stl'" -- info "$tmp/mesh.stl"
@@ -170,9 +170,28 @@ if j["cells_by_type"] != {"tetra": 0, "hexahedron": 64, "wedge": 0, "pyramid": 0
 if j["fields"]["scalar"][1] != 1.0: bad["fields"] = j["fields"]
 if bad: print("FAIL: info --json", bad); sys.exit(1)
 PY
+# A mesh without a scene (docs/cli.md, "A first picture"): bad looks are usage errors, and the
+# scene `cellproj scene` writes renders the same bits as the mesh given directly.
+expect 2 "--view: unknown view 'up'" -- render "$tmp/box.vtu" --view up --size 32x24
+expect 2 "--colormap: unknown colour map 'nope'" -- render "$tmp/box.vtu" --colormap nope --size 32x24
+expect 2 "--opacity: expected ramp, reverse, flat" -- render "$tmp/box.vtu" --opacity 0.5=x --size 32x24
+expect 2 "--depth: expected a positive optical depth" -- render "$tmp/box.vtu" --depth -1 --size 32x24
+expect 2 "--background: expected R,G,B" -- render "$tmp/box.vtu" --background 2,0,0 --size 32x24
+expect 2 "is a scene file: edit its transfer_function" -- render "$tmp/ok.json" --opacity flat
+expect 2 "a frame pattern takes one %d" -- render "$tmp/box.vtu" -o "$tmp/f%s.png" --frames 2
+expect 2 "needs --frames N" -- render "$tmp/box.vtu" -o "$tmp/f%03d.png"
+expect 2 "--orbit turns the camera over --frames" -- render "$tmp/box.vtu" --orbit 90
+expect 0 "wrote .*q.json" -- scene "$tmp/box.vtu" -o "$tmp/q/q.json" --view +y --colormap viridis --size 40x30
+grep -q '"mesh": "../box.vtu"' "$tmp/q/q.json" || { echo "FAIL: scene names the mesh relative to it"; failed=$((failed+1)); }
+expect 0 "wrote" -- render "$tmp/q/q.json" --npy "$tmp/q/a.npy"
+expect 0 "wrote" -- render "$tmp/box.vtu" --view +y --colormap viridis --size 40x30 --npy "$tmp/q/b.npy"
+cmp -s "$tmp/q/a.npy" "$tmp/q/b.npy" || { echo "FAIL: render MESH differs from render \$(scene MESH)"; failed=$((failed+1)); }
+expect 0 "frame 3/3" -- render "$tmp/q/q.json" --orbit 360 --frames 3 -o "$tmp/turn/f_%02d.png" --legend
+[ -f "$tmp/turn/f_02.png" ] || { echo "FAIL: turntable frames"; failed=$((failed+1)); }
 # docs/reliability.md: bad files of every kind get exit 1 and a message naming file and element.
-mkdir -p "$tmp/afolder"
-expect 1 "afolder: is a folder, not a scene file" -- render "$tmp/afolder"
+mkdir -p "$tmp/afolder" "$tmp/afolder.json"
+expect 1 "afolder: is a folder, not a mesh file" -- render "$tmp/afolder"  # no .json: taken as a mesh
+expect 1 "afolder.json: is a folder, not a scene file" -- render "$tmp/afolder.json"
 expect 1 "afolder: is a folder, not a mesh file" -- info "$tmp/afolder"
 expect 1 "nosuch.json: no such scene file" -- render "$tmp/nosuch.json"
 expect 0 "wrote .*new/sub/box.vtk" -- generate box -n 2 -o "$tmp/new/sub/box.vtk"

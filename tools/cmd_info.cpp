@@ -12,6 +12,7 @@
 #include "grid/topology.hpp"
 #include "scene/prepare.hpp"
 #include "tools/commands.hpp"
+#include "tools/mesh_options.hpp"
 
 namespace cellproj {
 namespace {
@@ -155,13 +156,7 @@ Action add_info(CLI::App& app) {
   cmd->add_option("mesh", args->mesh,
                   "Mesh file (.vtu .pvtu .vts .vtk .exo/.ex2/.e .cgns[.gz] PLOT3D .node/.ele .off .xyzs .vtp)")
       ->required();
-  cmd->add_option("--format", args->reader.format,
-                  "Override the format chosen by extension: vtk-xml, vtk-legacy, "
-                  "exodus, cgns, plot3d, tetgen, off, points");
-  cmd->add_option("--q", args->reader.q_file, "PLOT3D solution (q) file");
-  cmd->add_option("--zone", args->reader.zone, "CGNS: read only this zone");
-  cmd->add_option("--time-step", args->reader.time_step, "Exodus II: time step of the fields (from 0)")
-      ->check(CLI::NonNegativeNumber);
+  add_reader_options(*cmd, args->reader);
   add_max_memory_option(*cmd, args->reader.max_memory_gib, "Refuse meshes");
   cmd->add_flag("--json", args->json, "Print one JSON object instead of text");
   cmd->add_flag("--overlaps", args->overlaps,

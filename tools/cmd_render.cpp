@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <memory>
+#include <optional>
 #include <tuple>
 
 #include <tbb/info.h>
@@ -15,9 +16,11 @@
 #include "scene/camera_json.hpp"
 #include "scene/names.hpp"
 #include "scene/prepare.hpp"
+#include "scene/render_options.hpp"
 #include "scene/scene_file.hpp"
 #include "tools/commands.hpp"
 #include "tools/memory_budget.hpp"
+#include "tools/mesh_options.hpp"
 #include "tools/progress.hpp"
 #include "tools/timing.hpp"
 
@@ -25,42 +28,17 @@ namespace cellproj {
 namespace {
 
 struct RenderArgs {
-  std::string scene, png, npy, method = "pt-breakpoints", size, field, interpolation = "isoparametric", sort = "auto",
-                               gaps = "auto", backend = "software", tetrahedralize = "problem", slice_axis = "auto",
-                               slice_integral = "preintegrated", progressive, small_cells = "draw";
-  int threads = 0, frames = 1, table_size = 256, slices = 256;
-  std::vector<std::string> given;                     // the render settings given on the command line, by name
-  double max_memory_gib = 0.0;                        // 0: the machine's available memory
-  double splat_threshold = SplatOptions{}.threshold;  // NaN: the method's default
-  double splat_prefilter = SplatOptions{}.prefilter;
+  std::string input, png, npy, size, field, progressive, view, background;
+  RenderOptions options;                // the render settings, by their command-line names
+  ReadOptions reader;                   // for a mesh given instead of a scene
+  QuickLook look;                       // the same
+  std::vector<std::string> look_given;  // --colormap, --opacity, --depth when given
+  int threads = 0, frames = 1;
+  double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
+  bool legend = false;
+  double max_memory_gib = 0.0;  // 0: the machine's available memory
   bool stats = false;
 };
-
-RenderSettings settings_from(const RenderArgs& a) {
-  RenderSettings s;
-  try {
-    parse_render_method(a.method, s);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--method: ") + e.what());
-  }
-  // Every option is checked, also those the chosen method does not use: a typo never passes silently.
-  s.projection.sort = parse_sort_method(a.sort);
-  s.projection.gaps = parse_gap_method(a.gaps);
-  s.projection.table_size = a.table_size;
-  s.projection.backend = parse_backend(a.backend);
-  s.tetrahedralize = parse_tetrahedralize(a.tetrahedralize);
-  s.interpolation = parse_cell_interpolation(a.interpolation);
-  s.slicing.slices = a.slices;
-  s.slicing.axis = parse_slice_axis(a.slice_axis);
-  s.slicing.integral = parse_slice_integral(a.slice_integral);
-  s.slicing.table_size = a.table_size;
-  s.slicing.backend = s.projection.backend;
-  s.projection.splat.small_cells = parse_small_cells(a.small_cells);
-  s.projection.splat.threshold = a.splat_threshold;
-  s.projection.splat.prefilter = a.splat_prefilter;
-  s.slicing.splat = s.projection.splat;
-  return s;
-}
 
 // "16,64,256": the plane counts of --progressive.
 std::vector<int> parse_levels(const std::string& text) {
@@ -91,69 +69,165 @@ std::string level_path(const std::string& path, int slices) {
   return (p.parent_path() / (p.stem().string() + "-" + std::to_string(slices) + p.extension().string())).string();
 }
 
-// An option given for a renderer that does not read it is an error, not silently ignored.
-void refuse_unused(const Renderer& renderer, const std::vector<std::string>& given) {
-  const std::vector<std::string> used = renderer.settings_used();
-  std::string list;
-  for (const auto& u : used) list += (list.empty() ? "" : ", --") + u;
-  for (const auto& g : given)
-    if (std::find(used.begin(), used.end(), g) == used.end())
-      throw InputError("--" + g + " does not apply to --method " + renderer.name() + ", which reads --" + list);
-}
-
-// The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`.
-void write_outputs(const Image& image, const glm::dvec3& background, const std::string& png, const std::string& npy,
-                   const std::string& what) {
-  if (!png.empty()) write_png(image, background, png);
+// The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`;
+// the colour legend drawn on the PNG when given.
+void write_outputs(const Image& image, const glm::dvec3& background, const ColorBar* legend, const std::string& png,
+                   const std::string& npy, const std::string& what) {
+  if (!png.empty()) {
+    Rgb8Image rgb = to_rgb8(image, background);
+    if (legend) draw_color_bar(rgb, *legend);
+    write_png(rgb, png);
+  }
   if (!npy.empty()) write_npy(image, npy);
   for (const std::string& out : {png, npy})
     if (!out.empty()) std::printf("wrote %s (%s)\n", out.c_str(), what.c_str());
   std::fflush(stdout);
 }
 
+// Where the frames go: one PNG (and .npy), or with a printf pattern (frame_%04d.png) one per frame.
+struct FramePaths {
+  std::string png, npy;
+  bool sequence = false;
+  std::string png_of(int f) const { return sequence ? frame_path(png, f) : png; }
+  std::string npy_of(int f) const { return sequence ? frame_path(npy, f) : npy; }
+  static std::string frame_path(const std::string& pattern, int f) {
+    if (pattern.empty()) return pattern;
+    std::vector<char> out(pattern.size() + 32);
+    std::snprintf(out.data(), out.size(), pattern.c_str(), f);
+    return out.data();
+  }
+};
+
+// True for a pattern with one %d (flags and width allowed, "%04d"); InputError for any other %.
+bool is_frame_pattern(const std::string& path, const char* option) {
+  int conversions = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i] != '%') continue;
+    std::size_t j = i + 1;
+    while (j < path.size() && (std::isdigit(static_cast<unsigned char>(path[j])) || path[j] == '0')) ++j;
+    if (j >= path.size() || path[j] != 'd' || ++conversions > 1)
+      throw InputError(std::string(option) + ": '" + path +
+                       "': a frame pattern takes one %d (e.g. frame_%04d.png) and no other %");
+    i = j;
+  }
+  return conversions == 1;
+}
+
+FramePaths frame_paths(const std::string& png, const std::string& npy, const std::string& input, int frames) {
+  FramePaths p{png, npy};
+  if (p.png.empty() && p.npy.empty()) p.png = std::filesystem::path(input).stem().string() + ".png";
+  const bool png_seq = is_frame_pattern(p.png, "-o"), npy_seq = is_frame_pattern(p.npy, "--npy");
+  if (!p.png.empty() && !p.npy.empty() && png_seq != npy_seq)
+    throw InputError("-o and --npy: give both as frame patterns (frame_%04d.png, frame_%04d.npy) or neither");
+  p.sequence = png_seq || npy_seq;
+  if (p.sequence && frames < 2) throw InputError("a frame pattern in -o or --npy needs --frames N (N >= 2)");
+  for (const std::string& out : {p.png, p.npy}) {
+    if (out.empty()) continue;
+    const auto dir = std::filesystem::path(out).parent_path();
+    if (!dir.empty()) std::filesystem::create_directories(dir);
+  }
+  return p;
+}
+
+// The scene of the input: a scene file with the command line's overrides, or a mesh with the
+// default scene of `cellproj scene`. The mesh is read once either way.
+struct Input {
+  Scene scene;
+  PreparedScene prepared;
+};
+
+Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSettings& settings,
+                 const std::vector<int>& levels) {
+  int width = 0, height = 0;
+  if (!a.size.empty()) usage([&] { parse_size(a.size, width, height); });
+  const bool scene_file = is_scene_file(a.input);
+  if (scene_file && !a.look_given.empty() && a.look_given != std::vector<std::string>{"colormap"})
+    throw UsageError("--opacity and --depth make the extinction of a mesh rendered without a scene; " + a.input +
+                     " is a scene file: edit its transfer_function");
+  std::optional<glm::dvec3> background;
+  if (!a.background.empty()) background = usage([&] { return parse_color(a.background, "--background"); });
+  if (!a.view.empty()) usage([&] { return view_camera(a.view, {0, 0, 0}, {1, 1, 1}, 1.0); });  // the name, now
+
+  Scene scene;
+  if (scene_file) {
+    scene = load_scene(a.input);
+    if (!a.field.empty()) scene.field = a.field;
+    if (!a.look_given.empty()) {  // --colormap: the scene's colours replaced by the map over the field's range
+      usage([&] { return colormap(a.look.colormap, 0, 1); });
+      scene.transfer_function.erase("color");
+      scene.transfer_function["color_preset"] = {{"name", a.look.colormap}};
+    }
+  } else {
+    scene.source = a.input;
+    scene.mesh = a.input;
+    scene.reader = a.reader;
+  }
+  if (width > 0) std::tie(scene.width, scene.height) = std::tie(width, height);
+  scene.reader.max_memory_gib = a.max_memory_gib;
+  if (background) scene.background = *background;
+  if (settings.mode == RenderMode::slicing)
+    for (int n : levels.empty() ? std::vector<int>{settings.slicing.slices} : levels)
+      usage([&] { check_slices(n, scene.width, scene.height); });
+  // Refuse what would not fit, before allocating it: from the file's header before reading it,
+  // and again from the mesh as read.
+  const ImageSize size{scene.width, scene.height};
+  const auto size_text = std::to_string(scene.width) + "x" + std::to_string(scene.height);
+  if (const HeaderCounts h = header_counts(scene.mesh); h.cells > 0)
+    refuse_beyond_memory(
+        estimate_mesh_bytes(h) + renderer.estimate_bytes({h.points, h.cells, h.cells}, size), a.max_memory_gib,
+        "reading " + scene.mesh + " (" + std::to_string(h.cells) + " cells) and rendering " + size_text, a.input);
+  LoadedMesh loaded = read_with_progress(scene.mesh, scene.reader);
+  if (!scene_file) {
+    QuickLook look = a.look;
+    look.field = a.field;
+    std::tie(look.width, look.height) = std::tie(scene.width, scene.height);
+    const glm::dvec3 bg = scene.background;
+    scene = usage([&] { return scene_from_json(quick_scene(loaded, a.input, a.reader, look), a.input, ""); });
+    scene.reader.max_memory_gib = a.max_memory_gib;
+    scene.background = bg;
+  }
+  if (!a.view.empty()) {
+    scene.camera.reset();
+    scene.view = a.view;
+  }
+  PreparedScene prepared = prepare_scene(scene, std::move(loaded));
+  refuse_beyond_memory(renderer.estimate_bytes(size_of(prepared.loaded.mesh.view()), size), a.max_memory_gib,
+                       "rendering " + size_text + " of " + std::to_string(prepared.loaded.mesh.n_cells()) + " cells",
+                       a.input);
+  return {std::move(scene), std::move(prepared)};
+}
+
 int run_render(const RenderArgs& a) {
   const auto t_load = std::chrono::steady_clock::now();
   // The command line first (exit 2 on a bad value), then the scene (exit 1).
-  const RenderSettings settings = usage([&] { return settings_from(a); });
+  const RenderSettings settings = usage([&] { return settings_from(a.options); });
   const std::unique_ptr<Renderer> renderer = usage([&] {
     auto r = make_renderer(settings);
-    refuse_unused(*r, a.given);
+    refuse_unused(*r, a.options.given);
     return r;
   });
   const std::vector<int> levels =
       a.progressive.empty() ? std::vector<int>{} : usage([&] { return parse_levels(a.progressive); });
   if (!levels.empty() && a.frames > 1) throw UsageError("--progressive renders one view: it does not go with --frames");
-  int width = 0, height = 0;
-  if (!a.size.empty()) usage([&] { parse_size(a.size, width, height); });
-  Scene scene = load_scene(a.scene);
-  if (width > 0) std::tie(scene.width, scene.height) = std::tie(width, height);
-  if (!a.field.empty()) scene.field = a.field;
-  scene.reader.max_memory_gib = a.max_memory_gib;
-  if (settings.mode == RenderMode::slicing)
-    for (int n : levels.empty() ? std::vector<int>{settings.slicing.slices} : levels)
-      usage([&] { check_slices(n, scene.width, scene.height); });
-  const ImageSize size{scene.width, scene.height};
-  // Refuse what would not fit, before allocating it: from the file's header before reading it,
-  // and again from the mesh as read.
-  const auto size_text = std::to_string(scene.width) + "x" + std::to_string(scene.height);
-  if (const HeaderCounts h = header_counts(scene.mesh); h.cells > 0)
-    refuse_beyond_memory(
-        estimate_mesh_bytes(h) + renderer->estimate_bytes({h.points, h.cells, h.cells}, size), a.max_memory_gib,
-        "reading " + scene.mesh + " (" + std::to_string(h.cells) + " cells) and rendering " + size_text, a.scene);
-  const PreparedScene prepared = prepare_scene(scene);
+  const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
+  if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
+  const Input input = load_input(a, *renderer, settings, levels);
+  const Scene& scene = input.scene;
+  const PreparedScene& prepared = input.prepared;
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
   const double load_seconds = seconds_since(t_load);
   const Mesh& mesh = prepared.loaded.mesh;
-  refuse_beyond_memory(renderer->estimate_bytes(size_of(mesh.view()), size), a.max_memory_gib,
-                       "rendering " + size_text + " of " + std::to_string(mesh.n_cells()) + " cells", a.scene);
-
-  std::string png = a.png;
-  if (png.empty() && a.npy.empty()) png = std::filesystem::path(a.scene).stem().string() + ".png";
-  for (const std::string& out : {png, a.npy}) {
-    if (out.empty()) continue;
-    const auto dir = std::filesystem::path(out).parent_path();
-    if (!dir.empty()) std::filesystem::create_directories(dir);
-  }
+  const ImageSize size{scene.width, scene.height};
+  const ColorBar legend = color_bar(prepared, scene.background);
+  const auto write = [&](const Image& img, const std::string& png, const std::string& npy, const std::string& what) {
+    write_outputs(img, scene.background, a.legend ? &legend : nullptr, png, npy, what);
+  };
+  const auto frame_what = [&](int f, double seconds) {
+    char what[128];
+    std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %.3f s", f + 1, a.frames, scene.width, scene.height,
+                  a.options.method.c_str(), seconds);
+    return std::string(what);
+  };
 
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   tbb::task_arena arena(threads);
@@ -173,10 +247,9 @@ int run_render(const RenderArgs& a) {
                            char what[96];
                            std::snprintf(what, sizeof what, "%dx%d, slicing, %d slices, %.3f s", scene.width,
                                          scene.height, slices, r.seconds);
-                           write_outputs(img, scene.background, level_path(png, slices), level_path(a.npy, slices),
-                                         what);
+                           write(img, level_path(paths.png, slices), level_path(paths.npy, slices), what);
                            if (a.stats) {
-                             nlohmann::json j = {{"method", a.method}, {"level_slices", slices}};
+                             nlohmann::json j = {{"method", a.options.method}, {"level_slices", slices}};
                              j.update(report_json(r));
                              std::fprintf(stderr, "%s\n", j.dump().c_str());
                            }
@@ -188,24 +261,31 @@ int run_render(const RenderArgs& a) {
       const auto t_frame = std::chrono::steady_clock::now();
       ProgressBar bar(a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering");
       report = {};
-      Image img = renderer->render(volume, field, prepared.tf, orbit(prepared.camera, f), size, &report,
+      // --orbit D: a turntable of D degrees over the frames; without it, a degree per frame (a timing run).
+      const double degrees = a.orbit != 0.0 ? f * a.orbit / a.frames : f;
+      Image img = renderer->render(volume, field, prepared.tf, orbit(prepared.camera, degrees), size, &report,
                                    [&](double d) { bar(d); });
       render_seconds += report.seconds;
       frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own
-      if (f == 0) first = std::move(img);
+      if (paths.sequence)
+        write(img, paths.png_of(f), paths.npy_of(f), frame_what(f, report.seconds));
+      else if (f == 0)
+        first = std::move(img);
     }
   });
   for (const auto& w : report.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());  // the last frame's
   if (!levels.empty()) return kExitOk;
 
   const double frame_seconds = median(frame_times);
-  char what[128];
-  std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, a.method.c_str(),
-                frame_seconds);
-  write_outputs(first, scene.background, png, a.npy, what);
+  if (!paths.sequence) {
+    char what[128];
+    std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, a.options.method.c_str(),
+                  frame_seconds);
+    write(first, paths.png, paths.npy, what);
+  }
 
   if (a.stats) {
-    nlohmann::json s = {{"method", a.method},
+    nlohmann::json s = {{"method", a.options.method},
                         {"mesh", scene.mesh},
                         {"field", prepared.field},
                         {"cells", mesh.n_cells()},
@@ -229,25 +309,41 @@ int run_render(const RenderArgs& a) {
 
 Action add_render(CLI::App& app) {
   auto args = std::make_shared<RenderArgs>();
-  CLI::App* cmd = app.add_subcommand("render", "Render a scene file to a PNG (and/or a float .npy)");
-  cmd->add_option("scene", args->scene, "Scene file (JSON, see docs/scene.md)")->required();
-  cmd->add_option("-o,--output", args->png, "PNG to write (default: SCENE's name with .png, in the current folder)");
-  cmd->add_option("--npy", args->npy, "Also write the premultiplied float RGBA image as .npy (H, W, 4)");
+  CLI::App* cmd = app.add_subcommand(
+      "render", "Render a scene file, or a mesh with a default scene, to a PNG (and/or a float .npy)");
+  cmd->add_option("input", args->input,
+                  "Scene file (.json, see docs/scene.md), or a mesh file (any format `info` reads) rendered with the "
+                  "scene `cellproj scene MESH` writes")
+      ->required();
+  cmd->add_option("-o,--output", args->png,
+                  "PNG to write (default: INPUT's name with .png, in the current folder); with --frames, a pattern "
+                  "such as out/frame_%04d.png writes every frame");
+  cmd->add_option("--npy", args->npy,
+                  "Also write the premultiplied float RGBA image as .npy (H, W, 4); a pattern as for -o");
+  add_reader_options(*cmd, args->reader);
+  const std::vector<CLI::Option*> look = add_look_options(*cmd, args->look);
+  cmd->add_option("--view", args->view,
+                  "Frame the mesh from a named view, replacing the scene's camera: " + view_names() +
+                      " (ParaView's: +x looks along +x)");
+  cmd->add_option("--background", args->background, "Background colour: R,G,B in [0, 1], #rrggbb, black or white");
+  cmd->add_flag("--legend", args->legend, "Draw the colour legend (field name and range) on the PNG");
+  cmd->add_option("--orbit", args->orbit,
+                  "Turn the camera this many degrees about its up axis over --frames N (a turntable: 360)");
   // The render settings, by the names Renderer::settings_used() gives.
   std::vector<std::pair<std::string, CLI::Option*>> settings;
   settings.emplace_back(
       "method",
-      cmd->add_option("--method", args->method,
+      cmd->add_option("--method", args->options.method,
                       "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
                       "pt-table, pt-linear (fastest), exact (the reference ray integrator), or slicing (cells cut on "
                       "parallel planes, no sort); see docs/methods.md"));
-  settings.emplace_back("slices", cmd->add_option("--slices", args->slices,
+  settings.emplace_back("slices", cmd->add_option("--slices", args->options.slices,
                                                   "slicing: number of planes (default 256; at most 16 per pixel of "
                                                   "the image's longer side)"));
-  settings.emplace_back("slice-axis", cmd->add_option("--slice-axis", args->slice_axis,
+  settings.emplace_back("slice-axis", cmd->add_option("--slice-axis", args->options.slice_axis,
                                                       "slicing: the plane family, " + slice_axis_names() +
                                                           " (auto: the axis-aligned stack closest to the view)"));
-  settings.emplace_back("slice-integral", cmd->add_option("--slice-integral", args->slice_integral,
+  settings.emplace_back("slice-integral", cmd->add_option("--slice-integral", args->options.slice_integral,
                                                           "slicing: " + slice_integral_names() +
                                                               " (default: the segment between two planes looked up "
                                                               "from the scalar at both ends)"));
@@ -257,58 +353,61 @@ Action add_render(CLI::App& app) {
                                         "16,64,256, writing OUT-16.png, OUT-64.png, ... as each completes"));
   settings.emplace_back(
       "small-cells",
-      cmd->add_option("--small-cells", args->small_cells,
+      cmd->add_option("--small-cells", args->options.small_cells,
                       "projection and slicing: what small cells get, " + small_cells_names() +
                           " (default draw; splat and skip need the software back end); docs/methods.md, Splatting"));
   settings.emplace_back("splat-threshold",
-                        cmd->add_option("--splat-threshold", args->splat_threshold,
+                        cmd->add_option("--splat-threshold", args->options.splat_threshold,
                                         "Which cells are small: projection, those covering fewer pixel centres "
                                         "(default 2); slicing, those of less volume than this times the spacing "
                                         "cubed (default 1)"));
   settings.emplace_back("splat-prefilter",
-                        cmd->add_option("--splat-prefilter", args->splat_prefilter,
+                        cmd->add_option("--splat-prefilter", args->options.splat_prefilter,
                                         "Standard deviation in pixels of the splats' anti-aliasing pre-filter "
                                         "(default 0.7; 0.3 to 4)"));
-  settings.emplace_back("sort", cmd->add_option("--sort", args->sort,
+  settings.emplace_back("sort", cmd->add_option("--sort", args->options.sort,
                                                 "Visibility sort for the projection methods: " + sort_method_names()));
   settings.emplace_back(
       "gaps",
-      cmd->add_option("--gaps", args->gaps,
+      cmd->add_option("--gaps", args->options.gaps,
                       "How mpvo-abuffer finds the relations across gaps: " + gap_method_names() + " (as sortbench's)"));
   settings.emplace_back(
       "backend",
-      cmd->add_option("--backend", args->backend,
+      cmd->add_option("--backend", args->options.backend,
                       "Where the projection methods and slicing rasterize: software (default), or for pt-linear, "
                       "pt-table and slicing with --slice-integral sampled opengl (OSMesa, float target), "
                       "opengl-8bit, opengl-8bit-dither"));
   settings.emplace_back(
       "tetrahedralize",
       cmd->add_option(
-          "--tetrahedralize", args->tetrahedralize,
+          "--tetrahedralize", args->options.tetrahedralize,
           "Which cells other than tetrahedra the projection methods split into tetrahedra: problem (default; "
           "per view, those with a folded non-planar face), all, or none (every cell whole)"));
-  settings.emplace_back("table-size", cmd->add_option("--table-size", args->table_size,
+  settings.emplace_back("table-size", cmd->add_option("--table-size", args->options.table_size,
                                                       "pt-table: nodes per axis of the opacity table; slicing: "
                                                       "of the preintegrated table (default 256)")
                                           ->check(CLI::Range(2, 8192)));
   settings.emplace_back(
       "interpolation",
       cmd->add_option(
-             "--interpolation", args->interpolation,
+             "--interpolation", args->options.interpolation,
              "Field inside hexahedra, wedges and pyramids for exact: isoparametric (default) or canonical-tets")
           ->check(CLI::IsMember({"isoparametric", "canonical-tets"})));
   cmd->add_option("--size", args->size, "Image size WxH, overriding the scene");
   cmd->add_option("--field", args->field, "Point field to render, overriding the scene");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
-  cmd->add_option("--frames", args->frames,
-                  "Render N frames, turning the camera 1 degree about its up axis each frame; "
-                  "report the median frame time")
+  cmd->add_option(
+         "--frames", args->frames,
+         "Render N frames: a turntable with --orbit and a pattern in -o, else a timing run turning the camera 1 "
+         "degree per frame (the median frame time in --stats)")
       ->check(CLI::Range(1, 100000));
   add_max_memory_option(*cmd, args->max_memory_gib, "Refuse renders");
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
-  return [args, settings] {
+  return [args, settings, look] {
     for (const auto& [name, option] : settings)
-      if (option->count() > 0) args->given.push_back(name);
+      if (option->count() > 0) args->options.given.push_back(name);
+    for (CLI::Option* option : look)
+      if (option->count() > 0) args->look_given.push_back(option->get_name().substr(2));
     return run_render(*args);
   };
 }

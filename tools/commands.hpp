@@ -50,5 +50,6 @@ Action add_info(CLI::App& app);
 Action add_generate(CLI::App& app);
 Action add_sortbench(CLI::App& app);
 Action add_compare(CLI::App& app);
+Action add_scene(CLI::App& app);
 
 }  // namespace cellproj

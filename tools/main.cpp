@@ -12,7 +12,7 @@ int main(int argc, char** argv) {
   app.require_subcommand(1);
   app.set_version_flag("--version", "cellproj 0.1.0");
   const Action render = add_render(app), info = add_info(app), generate = add_generate(app),
-               sortbench = add_sortbench(app), compare = add_compare(app);
+               sortbench = add_sortbench(app), compare = add_compare(app), scene = add_scene(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -24,6 +24,7 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("info")) return info();
     if (app.got_subcommand("sortbench")) return sortbench();
     if (app.got_subcommand("compare")) return compare();
+    if (app.got_subcommand("scene")) return scene();
     return generate();
   } catch (const UsageError& e) {
     std::fprintf(stderr, "cellproj: error: %s\n", e.what());

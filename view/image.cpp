@@ -13,7 +13,20 @@
 
 namespace cellproj {
 
-void write_png(const Image& img, const glm::dvec3& bg, const std::string& path) {
+Rgb8Image to_rgb8(const Image& img, const glm::dvec3& bg) {
+  Rgb8Image out{img.width, img.height,
+                std::vector<unsigned char>(static_cast<std::size_t>(img.width) * img.height * 3)};
+  for (std::size_t p = 0; p < out.rgb.size() / 3; ++p) {
+    const float* c = img.rgba.data() + 4 * p;
+    for (int k = 0; k < 3; ++k) {
+      const double v = std::clamp(c[k] + (1.0 - c[3]) * bg[k], 0.0, 1.0);
+      out.rgb[3 * p + k] = static_cast<unsigned char>(std::lround(v * 255.0));
+    }
+  }
+  return out;
+}
+
+void write_png(const Rgb8Image& img, const std::string& path) {
   std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "wb"), &std::fclose);
   if (!f) throw InputError(where(path, "cannot open for writing"));
   png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
@@ -22,7 +35,6 @@ void write_png(const Image& img, const glm::dvec3& bg, const std::string& path) 
     png_destroy_write_struct(&png, nullptr);
     throw InputError(where(path, "libpng could not start"));
   }
-  std::vector<png_byte> row(static_cast<std::size_t>(img.width) * 3);
   if (setjmp(png_jmpbuf(png))) {
     png_destroy_write_struct(&png, &info);
     throw InputError(where(path, "libpng failed while writing"));
@@ -31,16 +43,8 @@ void write_png(const Image& img, const glm::dvec3& bg, const std::string& path) 
   png_set_IHDR(png, info, img.width, img.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
                PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(png, info);
-  for (int j = 0; j < img.height; ++j) {
-    for (int i = 0; i < img.width; ++i) {
-      const float* p = img.pixel(i, j);
-      for (int k = 0; k < 3; ++k) {
-        const double v = std::clamp(p[k] + (1.0 - p[3]) * bg[k], 0.0, 1.0);
-        row[3 * i + k] = static_cast<png_byte>(std::lround(v * 255.0));
-      }
-    }
-    png_write_row(png, row.data());
-  }
+  for (int j = 0; j < img.height; ++j)
+    png_write_row(png, const_cast<png_bytep>(img.rgb.data() + static_cast<std::size_t>(j) * img.width * 3));
   png_write_end(png, nullptr);
   png_destroy_write_struct(&png, &info);
 }

@@ -18,8 +18,19 @@ struct Image {
   const float* pixel(int i, int j) const { return rgba.data() + (static_cast<std::size_t>(j) * width + i) * 4; }
 };
 
-// 8-bit RGB: colour + (1 - alpha) * background, clamped to [0, 1]. Throws InputError if unwritable.
-void write_png(const Image& image, const glm::dvec3& background, const std::string& path);
+// The picture for people: 8-bit RGB, row-major from the top.
+struct Rgb8Image {
+  int width = 0, height = 0;
+  std::vector<unsigned char> rgb;  // 3 bytes per pixel
+  unsigned char* pixel(int i, int j) { return rgb.data() + (static_cast<std::size_t>(j) * width + i) * 3; }
+};
+// colour + (1 - alpha) * background, clamped to [0, 1], rounded to 8 bits.
+Rgb8Image to_rgb8(const Image& image, const glm::dvec3& background);
+// Throws InputError if unwritable.
+void write_png(const Rgb8Image& image, const std::string& path);
+inline void write_png(const Image& image, const glm::dvec3& background, const std::string& path) {
+  write_png(to_rgb8(image, background), path);
+}
 // float32, shape (height, width, 4), little-endian, C order.
 void write_npy(const Image& image, const std::string& path);
 Image read_npy(const std::string& path);

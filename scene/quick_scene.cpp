@@ -1,0 +1,122 @@
+#include "scene/quick_scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+
+#include <glm/geometric.hpp>
+
+#include "base/error.hpp"
+#include "optics/colormaps.hpp"
+#include "scene/camera_json.hpp"
+#include "scene/prepare.hpp"
+
+namespace cellproj {
+namespace {
+
+struct NamedView {
+  const char* name;
+  glm::dvec3 from, up;  // towards the eye, and the camera's up
+};
+
+// ParaView's view buttons: "+x" looks along +x (the eye on the -x side), z up; "+z" and "-z", y up.
+const NamedView kViews[] = {
+    {"+x", {-1, 0, 0}, {0, 0, 1}}, {"-x", {1, 0, 0}, {0, 0, 1}},  {"+y", {0, -1, 0}, {0, 0, 1}},
+    {"-y", {0, 1, 0}, {0, 0, 1}},  {"+z", {0, 0, -1}, {0, 1, 0}}, {"-z", {0, 0, 1}, {0, 1, 0}},
+    {"iso", {1, 1, 1}, {0, 0, 1}},
+};
+
+std::string field_of(const LoadedMesh& loaded, const std::string& field) {
+  const Mesh& m = loaded.mesh;
+  if (!field.empty()) return m.field(field).name;  // throws, listing the fields
+  if (m.fields.size() == 1) return m.fields.front().name;
+  std::string list;
+  for (const auto& f : m.fields) list += (list.empty() ? "" : ", ") + f.name;
+  throw InputError(m.fields.empty() ? m.source + ": the mesh has no point fields to render"
+                                    : "--field: " + m.source + " has several fields, give one of: " + list);
+}
+
+// [[s, kappa], ...] for look.opacity over [lo, hi], kappa such that kappa * diagonal is the depth.
+nlohmann::json extinction(const QuickLook& look, double lo, double hi, double diagonal) {
+  if (!(look.depth > 0) || !std::isfinite(look.depth))
+    throw InputError("--depth: expected a positive optical depth, got " + std::to_string(look.depth));
+  const double per_length = 1.0 / (diagonal > 0 ? diagonal : 1.0), k = look.depth * per_length;
+  if (look.opacity == "ramp") return {{lo, 0.0}, {hi, k}};
+  if (look.opacity == "reverse") return {{lo, k}, {hi, 0.0}};
+  if (look.opacity == "flat") return {{lo, k}, {hi, k}};
+  nlohmann::json points = nlohmann::json::array();
+  std::size_t at = 0;
+  const std::string& t = look.opacity;
+  while (at < t.size()) {
+    const std::size_t comma = std::min(t.find(',', at), t.size());
+    const std::string item = t.substr(at, comma - at);
+    const std::size_t eq = item.find('=');
+    try {
+      std::size_t a = 0, b = 0;
+      if (eq == std::string::npos) throw std::invalid_argument("no =");
+      const double s = std::stod(item.substr(0, eq), &a), depth = std::stod(item.substr(eq + 1), &b);
+      if (a != eq || b != item.size() - eq - 1 || !std::isfinite(s) || !(depth >= 0) || !std::isfinite(depth))
+        throw std::invalid_argument("bad");
+      points.push_back({s, depth * per_length});
+    } catch (const std::exception&) {
+      throw InputError("--opacity: expected ramp, reverse, flat or S=DEPTH,S=DEPTH,... (DEPTH >= 0), got '" + item +
+                       "' in '" + t + "'");
+    }
+    at = comma + 1;
+  }
+  if (points.empty()) throw InputError("--opacity: empty; give ramp, reverse, flat or S=DEPTH,S=DEPTH,...");
+  return points;
+}
+
+}  // namespace
+
+std::string view_names() {
+  std::string list;
+  for (const NamedView& v : kViews) list += (list.empty() ? "" : ", ") + std::string(v.name);
+  return list;
+}
+
+Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dvec3& hi, double aspect) {
+  if (view.empty()) return frame_box(lo, hi, Projection::Orthographic, {0.6, 0.5, 1.0}, {0, 1, 0}, aspect);
+  for (const NamedView& v : kViews)
+    if (view == v.name) return frame_box(lo, hi, Projection::Orthographic, v.from, v.up, aspect);
+  throw InputError("--view: unknown view '" + view + "' (known: " + view_names() + ")");
+}
+
+nlohmann::json quick_scene(const LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
+                           const QuickLook& look, const std::string& scene_dir) {
+  const std::string field = field_of(loaded, look.field);
+  const auto& values = loaded.mesh.field(field).values;
+  check_finite(mesh_path, loaded.mesh.field(field));
+  const auto [lo_it, hi_it] = std::minmax_element(values.begin(), values.end());
+  const double lo = *lo_it, hi = *hi_it;
+  try {
+    colormap(look.colormap, lo, hi);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--colormap: ") + e.what());
+  }
+  const auto [blo, bhi] = bounds(loaded.mesh);
+  const Camera camera = view_camera(look.view, blo, bhi, double(look.width) / look.height);
+  namespace fs = std::filesystem;
+  std::string mesh = fs::absolute(mesh_path).lexically_normal().string();
+  if (!scene_dir.empty()) {  // relative when the scene sits next to the mesh or near it, so the two can move together
+    const std::string relative = fs::absolute(mesh_path).lexically_relative(fs::absolute(scene_dir)).string();
+    if (!relative.empty() && relative.rfind("../..", 0) != 0) mesh = relative;
+  }
+  nlohmann::json scene = {{"mesh", mesh},
+                          {"field", field},
+                          {"transfer_function",
+                           {{"color_preset", {{"name", look.colormap}, {"range", {lo, hi}}}},
+                            {"extinction", extinction(look, lo, hi, glm::length(bhi - blo))}}},
+                          {"camera", camera_to_json(camera)},
+                          {"image", {{"width", look.width}, {"height", look.height}}}};
+  nlohmann::json r = nlohmann::json::object();
+  if (!reader.format.empty()) r["format"] = reader.format;
+  if (!reader.q_file.empty()) r["q_file"] = fs::absolute(reader.q_file).lexically_normal().string();
+  if (!reader.zone.empty()) r["zone"] = reader.zone;
+  if (reader.time_step != 0) r["time_step"] = reader.time_step;
+  if (!r.empty()) scene["reader"] = r;
+  return scene;
+}
+
+}  // namespace cellproj

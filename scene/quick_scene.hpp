@@ -1,0 +1,36 @@
+#pragma once
+// A scene made from a mesh alone, for `cellproj render MESH` and `cellproj scene MESH`: a field, a
+// built-in colour map over its range, an extinction ramp whose optical depth across the mesh is
+// given, and a camera framing the mesh from a named view.
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "grid/read_mesh.hpp"
+#include "view/camera.hpp"
+
+namespace cellproj {
+
+struct QuickLook {
+  std::string field;                      // empty: the mesh's only field (InputError listing them otherwise)
+  std::string colormap = "Cool to Warm";  // optics/colormaps.hpp
+  // Extinction over the field's range: ramp (0 at the minimum, most at the maximum), reverse, flat,
+  // or explicit points "S=K,S=K,..." (K the optical depth across the mesh's diagonal at S).
+  std::string opacity = "ramp";
+  double depth = 20.0;  // optical depth across the mesh's diagonal where the extinction is largest
+  std::string view;     // +x, -x, +y, -y, +z, -z, iso; empty: the scene files' default framing
+  int width = 512, height = 512;
+};
+
+// The camera framing the box [lo, hi] from `view` (as QuickLook::view), orthographic; InputError
+// listing the views for an unknown name.
+Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dvec3& hi, double aspect);
+std::string view_names();
+
+// The scene (as docs/scene.md) for `loaded`, read from `mesh_path` with `reader`, with the mesh's
+// path written relative to `scene_dir` (absolute when empty). InputError for a bad look, naming
+// the option.
+nlohmann::json quick_scene(const LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
+                           const QuickLook& look, const std::string& scene_dir = "");
+
+}  // namespace cellproj

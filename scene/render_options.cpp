@@ -1,0 +1,110 @@
+#include "scene/render_options.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "base/error.hpp"
+#include "scene/names.hpp"
+
+namespace cellproj {
+namespace {
+
+// The text of one option as a value of its type, the whole text used.
+template <class T>
+T number_of(const std::string& name, const std::string& text) {
+  std::size_t used = 0;
+  T value{};
+  try {
+    if constexpr (std::is_same_v<T, int>)
+      value = std::stoi(text, &used);
+    else
+      value = std::stod(text, &used);
+  } catch (const std::exception&) {
+    used = 0;
+  }
+  if (text.empty() || used != text.size())
+    throw InputError("--" + name + ": expected " + (std::is_same_v<T, int> ? "an integer" : "a number") + ", got '" +
+                     text + "'");
+  return value;
+}
+
+template <class F>
+auto named(const char* option, F&& f) {
+  try {
+    return f();
+  } catch (const InputError& e) {
+    throw InputError(std::string("--") + option + ": " + e.what());
+  }
+}
+
+}  // namespace
+
+RenderSettings settings_from(const RenderOptions& o) {
+  RenderSettings s;
+  named("method", [&] { parse_render_method(o.method, s); });
+  s.projection.sort = named("sort", [&] { return parse_sort_method(o.sort); });
+  s.projection.gaps = named("gaps", [&] { return parse_gap_method(o.gaps); });
+  s.projection.backend = named("backend", [&] { return parse_backend(o.backend); });
+  s.tetrahedralize = named("tetrahedralize", [&] { return parse_tetrahedralize(o.tetrahedralize); });
+  s.interpolation = named("interpolation", [&] { return parse_cell_interpolation(o.interpolation); });
+  s.slicing.axis = named("slice-axis", [&] { return parse_slice_axis(o.slice_axis); });
+  s.slicing.integral = named("slice-integral", [&] { return parse_slice_integral(o.slice_integral); });
+  s.projection.splat.small_cells = named("small-cells", [&] { return parse_small_cells(o.small_cells); });
+  if (o.table_size < 2 || o.table_size > 8192)
+    throw InputError("--table-size: expected an integer in [2, 8192], got " + std::to_string(o.table_size));
+  s.projection.table_size = o.table_size;
+  s.slicing.table_size = o.table_size;
+  s.slicing.slices = o.slices;
+  s.slicing.backend = s.projection.backend;
+  s.projection.splat.threshold = o.splat_threshold;
+  s.projection.splat.prefilter = o.splat_prefilter;
+  s.slicing.splat = s.projection.splat;
+  return s;
+}
+
+std::vector<std::string> render_option_names() {
+  return {"method",         "sort",        "gaps",       "backend", "tetrahedralize",  "interpolation",  "slice-axis",
+          "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter"};
+}
+
+void set_option(RenderOptions& o, const std::string& given_name, const std::string& value) {
+  std::string name = given_name;
+  std::replace(name.begin(), name.end(), '_', '-');
+  std::string* text = name == "method"           ? &o.method
+                      : name == "sort"           ? &o.sort
+                      : name == "gaps"           ? &o.gaps
+                      : name == "backend"        ? &o.backend
+                      : name == "tetrahedralize" ? &o.tetrahedralize
+                      : name == "interpolation"  ? &o.interpolation
+                      : name == "slice-axis"     ? &o.slice_axis
+                      : name == "slice-integral" ? &o.slice_integral
+                      : name == "small-cells"    ? &o.small_cells
+                                                 : nullptr;
+  if (text)
+    *text = value;
+  else if (name == "table-size")
+    o.table_size = number_of<int>(name, value);
+  else if (name == "slices")
+    o.slices = number_of<int>(name, value);
+  else if (name == "splat-threshold")
+    o.splat_threshold = number_of<double>(name, value);
+  else if (name == "splat-prefilter")
+    o.splat_prefilter = number_of<double>(name, value);
+  else {
+    std::string list;
+    for (const auto& n : render_option_names()) list += (list.empty() ? "" : ", ") + n;
+    throw InputError("unknown render option '" + given_name + "' (known: " + list + ")");
+  }
+  if (std::find(o.given.begin(), o.given.end(), name) == o.given.end()) o.given.push_back(name);
+}
+
+void refuse_unused(const Renderer& renderer, const std::vector<std::string>& given) {
+  const std::vector<std::string> used = renderer.settings_used();
+  std::string list;
+  for (const auto& u : used) list += (list.empty() ? "" : ", --") + u;
+  for (const auto& g : given)
+    if (std::find(used.begin(), used.end(), g) == used.end())
+      throw InputError("--" + g + " does not apply to --method " + renderer.name() + ", which reads --" + list);
+}
+
+}  // namespace cellproj

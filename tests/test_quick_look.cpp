@@ -1,0 +1,90 @@
+// The pieces of a first picture without a scene: built-in colour maps, named views, the legend.
+#include <gtest/gtest.h>
+
+#include <glm/geometric.hpp>
+
+#include "base/error.hpp"
+#include "optics/colormaps.hpp"
+#include "scene/quick_scene.hpp"
+#include "scene/render_options.hpp"
+#include "view/color_bar.hpp"
+
+namespace cellproj {
+namespace {
+
+TEST(Colormaps, AreStretchedOverTheRangeAndFoundByEitherName) {
+  const auto viridis = colormap("Viridis (matplotlib)", -2.0, 6.0);
+  ASSERT_EQ(viridis.size(), 17u);
+  EXPECT_DOUBLE_EQ(viridis.front().s, -2.0);
+  EXPECT_DOUBLE_EQ(viridis.back().s, 6.0);
+  EXPECT_NEAR(viridis.front().rgb.r, 0.267, 1e-3);  // matplotlib's viridis(0) = (0.267, 0.005, 0.329)
+  EXPECT_NEAR(viridis.back().rgb.g, 0.906, 1e-3);   // viridis(1) = (0.993, 0.906, 0.144)
+  const auto alias = colormap("VIRIDIS", -2.0, 6.0);
+  EXPECT_EQ(alias.back().rgb, viridis.back().rgb);
+  const auto jet = colormap("jet", 0.0, 1.0);
+  EXPECT_NEAR(jet[3].s, 0.492063, 1e-6);             // ParaView's Jet knots, exactly
+  EXPECT_EQ(colormap("gray", 3.0, 3.0).size(), 1u);  // a constant field: one colour
+  EXPECT_THROW(colormap("nope", 0, 1), InputError);
+  for (const auto& name : colormap_list()) EXPECT_NO_THROW(TransferFunction(colormap(name, 0, 1), {{0, 1}}));
+}
+
+TEST(QuickLook, NamedViewsLookAlongTheirAxisAndFrameTheBox) {
+  const glm::dvec3 lo(-1, -2, -3), hi(1, 2, 3);
+  const Camera c = view_camera("+x", lo, hi, 1.0);
+  const glm::dvec3 dir = glm::normalize(c.target - c.eye);
+  EXPECT_NEAR(dir.x, 1.0, 1e-12);  // ParaView's +X: looking along +x
+  EXPECT_NEAR(c.up.z, 1.0, 1e-12);
+  EXPECT_GE(c.height, glm::length(hi - lo));  // the whole box's diagonal fits
+  EXPECT_NEAR(glm::normalize(view_camera("-z", lo, hi, 1.0).target - view_camera("-z", lo, hi, 1.0).eye).z, -1.0,
+              1e-12);
+  EXPECT_THROW(view_camera("up", lo, hi, 1.0), InputError);
+}
+
+TEST(RenderOptions, AreSetByEitherSpellingAndCheckedByName) {
+  RenderOptions o;
+  set_option(o, "table_size", "64");
+  set_option(o, "slice-axis", "view");
+  EXPECT_EQ(o.table_size, 64);
+  EXPECT_EQ(o.given, (std::vector<std::string>{"table-size", "slice-axis"}));
+  EXPECT_EQ(settings_from(o).projection.table_size, 64);
+  try {
+    set_option(o, "slices", "12x");
+    FAIL();
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("--slices: expected an integer, got '12x'"), std::string::npos);
+  }
+  EXPECT_THROW(set_option(o, "colour", "red"), InputError);
+  o.sort = "bogus";
+  EXPECT_THROW(settings_from(o), InputError);
+}
+
+TEST(ColorBar, DrawsTheColoursInOrderOnTheRightAndLeavesTheRestAlone) {
+  Rgb8Image img{200, 160, std::vector<unsigned char>(200 * 160 * 3, 7)};
+  ColorBar bar;
+  bar.colors = {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};  // low red, high blue
+  bar.lo = 0;
+  bar.hi = 1;
+  bar.title = "T";
+  if (default_font().empty()) GTEST_SKIP() << "no font found at build time";
+  draw_color_bar(img, bar);
+  // The left half holds no part of the legend.
+  for (int y = 0; y < img.height; ++y)
+    for (int x = 0; x < img.width / 2; ++x) ASSERT_EQ(img.pixel(x, y)[0], 7) << x << "," << y;
+  // Down the bar's middle column, blue above green above red.
+  int blue = -1, green = -1, red = -1;
+  for (int x = img.width / 2; x < img.width && red < 0; ++x)
+    for (int y = 0; y < img.height; ++y) {
+      const unsigned char* p = img.pixel(x, y);
+      if (p[2] == 255 && p[0] == 0 && blue < 0) blue = y;
+      if (p[1] == 255 && p[0] == 0 && blue >= 0 && green < 0) green = y;
+      if (p[0] == 255 && p[1] == 0 && green >= 0 && red < 0) red = y;
+    }
+  EXPECT_GE(blue, 0);
+  EXPECT_GT(green, blue);
+  EXPECT_GT(red, green);
+  bar.font = "/nonexistent.ttf";
+  EXPECT_THROW(draw_color_bar(img, bar), InputError);
+}
+
+}  // namespace
+}  // namespace cellproj

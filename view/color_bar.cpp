@@ -1,0 +1,126 @@
+#include "view/color_bar.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <memory>
+
+#include <ft2build.h>
+#include FT_FREETYPE_H
+
+#include "base/error.hpp"
+
+namespace cellproj {
+namespace {
+
+// One FreeType face at one pixel size, released with it.
+class Font {
+ public:
+  Font(const std::string& path, int pixels) {
+    if (path.empty())
+      throw InputError("--legend: no font was found when cellproj was built; install fonts-dejavu-core and rebuild");
+    if (FT_Init_FreeType(&library_)) throw InputError("--legend: FreeType could not start");
+    if (FT_New_Face(library_, path.c_str(), 0, &face_)) {
+      FT_Done_FreeType(library_);
+      throw InputError(where(path, "--legend: FreeType cannot load this font"));
+    }
+    FT_Set_Pixel_Sizes(face_, 0, static_cast<FT_UInt>(pixels));
+  }
+  ~Font() {
+    FT_Done_Face(face_);
+    FT_Done_FreeType(library_);
+  }
+  Font(const Font&) = delete;
+  Font& operator=(const Font&) = delete;
+
+  int ascender() const { return static_cast<int>(face_->size->metrics.ascender >> 6); }
+  int width(const std::string& text) {
+    int w = 0;
+    for (unsigned char c : text)
+      if (!FT_Load_Char(face_, c, FT_LOAD_DEFAULT)) w += static_cast<int>(face_->glyph->advance.x >> 6);
+    return w;
+  }
+  // Blends `text` in `color` with its baseline at y, starting at x, by each glyph's coverage.
+  void draw(Rgb8Image& img, int x, int y, const std::string& text, const glm::dvec3& color) {
+    for (unsigned char c : text) {
+      if (FT_Load_Char(face_, c, FT_LOAD_RENDER)) continue;
+      const FT_GlyphSlot g = face_->glyph;
+      for (unsigned r = 0; r < g->bitmap.rows; ++r)
+        for (unsigned q = 0; q < g->bitmap.width; ++q) {
+          const int px = x + g->bitmap_left + static_cast<int>(q), py = y - g->bitmap_top + static_cast<int>(r);
+          if (px < 0 || py < 0 || px >= img.width || py >= img.height) continue;
+          const double a = g->bitmap.buffer[r * g->bitmap.pitch + q] / 255.0;
+          unsigned char* p = img.pixel(px, py);
+          for (int k = 0; k < 3; ++k)
+            p[k] = static_cast<unsigned char>(std::lround(p[k] * (1 - a) + 255 * color[k] * a));
+        }
+      x += static_cast<int>(g->advance.x >> 6);
+    }
+  }
+
+ private:
+  FT_Library library_ = nullptr;
+  FT_Face face_ = nullptr;
+};
+
+void fill(Rgb8Image& img, int x0, int y0, int x1, int y1, const glm::dvec3& c) {
+  for (int y = std::max(0, y0); y < std::min(img.height, y1); ++y)
+    for (int x = std::max(0, x0); x < std::min(img.width, x1); ++x)
+      for (int k = 0; k < 3; ++k)
+        img.pixel(x, y)[k] = static_cast<unsigned char>(std::lround(std::clamp(c[k], 0.0, 1.0) * 255));
+}
+
+// v to 4 significant digits, with what is below a millionth of the range's span shown as 0.
+std::string label(double v, double span) {
+  if (std::abs(v) < 1e-6 * std::abs(span)) v = 0.0;
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", v);
+  return text;
+}
+
+}  // namespace
+
+std::string default_font() {
+#ifdef CELLPROJ_DEFAULT_FONT
+  return CELLPROJ_DEFAULT_FONT;
+#else
+  return "";
+#endif
+}
+
+glm::dvec3 text_color_for(const glm::dvec3& bg) {
+  const double luminance = 0.2126 * bg.r + 0.7152 * bg.g + 0.0722 * bg.b;  // Rec. 709
+  return glm::dvec3(luminance < 0.5 ? 1.0 : 0.0);
+}
+
+void draw_color_bar(Rgb8Image& img, const ColorBar& bar) {
+  if (bar.colors.empty()) return;
+  const int pixels = std::clamp(img.height / 32, 9, 48);
+  Font font(bar.font.empty() ? default_font() : bar.font, pixels);
+  const double span = bar.hi - bar.lo;
+  const std::string lo = label(bar.lo, span), mid = label(0.5 * (bar.lo + bar.hi), span), hi = label(bar.hi, span);
+  const int label_w = std::max({font.width(lo), font.width(mid), font.width(hi)});
+  const int margin = std::max(4, img.width / 40), bar_w = std::max(6, pixels), gap = std::max(3, pixels / 3);
+  const int x1 = img.width - margin - label_w - gap, x0 = x1 - bar_w;
+  const int top = margin + 2 * pixels, bottom = top + static_cast<int>(0.6 * img.height);
+  const int n = static_cast<int>(bar.colors.size());
+  for (int y = top; y < bottom; ++y) {  // high values at the top
+    const double t = 1.0 - (y - top + 0.5) / (bottom - top);
+    fill(img, x0, y, x1, y + 1, bar.colors[std::clamp(static_cast<int>(t * n), 0, n - 1)]);
+  }
+  fill(img, x0 - 1, top - 1, x1 + 1, top, bar.text);  // outline
+  fill(img, x0 - 1, bottom, x1 + 1, bottom + 1, bar.text);
+  fill(img, x0 - 1, top, x0, bottom, bar.text);
+  fill(img, x1, top, x1 + 1, bottom, bar.text);
+  const int half = font.ascender() / 2;
+  const int ys[3] = {bottom, (top + bottom) / 2, top};
+  const std::string* texts[3] = {&lo, &mid, &hi};
+  for (int k = 0; k < 3; ++k) {
+    fill(img, x1, ys[k], x1 + gap / 2 + 1, ys[k] + 1, bar.text);  // tick
+    font.draw(img, x1 + gap, ys[k] + half, *texts[k], bar.text);
+  }
+  const int title_w = font.width(bar.title);
+  font.draw(img, std::max(0, std::min(x0, img.width - margin - title_w)), top - pixels / 2 - 2, bar.title, bar.text);
+}
+
+}  // namespace cellproj

@@ -1,0 +1,30 @@
+#pragma once
+// A colour legend on the picture: the transfer function's colour bar with the field's name and
+// value range, its text set in a TrueType font through FreeType (Debian's fonts-dejavu-core).
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "view/image.hpp"
+
+namespace cellproj {
+
+struct ColorBar {
+  std::vector<glm::dvec3> colors;  // from the low end of the range to the high end, evenly spaced
+  double lo = 0, hi = 1;           // the values at the ends
+  std::string title;               // the field's name
+  glm::dvec3 text{1.0};            // colour of text, ticks and outline
+  std::string font;                // a .ttf/.otf file; empty: default_font()
+};
+
+// The font found when cellproj was built (DejaVu Sans), or "" when none was.
+std::string default_font();
+// A text colour that reads on `background`: white on dark, black on light.
+glm::dvec3 text_color_for(const glm::dvec3& background);
+
+// Draws the bar on the right of the image, 60% of its height, with the title above it and the
+// low, middle and high values beside it. Throws InputError when the font cannot be loaded.
+void draw_color_bar(Rgb8Image& image, const ColorBar& bar);
+
+}  // namespace cellproj
