@@ -12,15 +12,16 @@
 
 namespace cellproj {
 
-std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& m) {
+std::pair<glm::dvec3, glm::dvec3> bounds(const MeshView& m) {
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (std::int64_t p = 0; p < m.n_points(); ++p) {
-    const glm::dvec3 x(m.points[3 * p], m.points[3 * p + 1], m.points[3 * p + 2]);
-    lo = glm::min(lo, x);
-    hi = glm::max(hi, x);
+  for (std::int64_t p = 0; p < m.n_points; ++p) {
+    lo = glm::min(lo, m.point(p));
+    hi = glm::max(hi, m.point(p));
   }
   return {lo, hi};
 }
+
+std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& m) { return bounds(m.view()); }
 
 ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
   ColorBar bar;

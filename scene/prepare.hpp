@@ -31,5 +31,6 @@ ColorBar color_bar(const PreparedScene& scene, const glm::dvec3& background);
 
 // The box of the points, as {lo, hi}.
 std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& mesh);
+std::pair<glm::dvec3, glm::dvec3> bounds(const MeshView& mesh);
 
 }  // namespace cellproj

@@ -70,6 +70,16 @@ nlohmann::json extinction(const QuickLook& look, double lo, double hi, double di
 
 }  // namespace
 
+nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal) {
+  try {
+    colormap(look.colormap, lo, hi);
+  } catch (const InputError& e) {
+    throw InputError(std::string("--colormap: ") + e.what());
+  }
+  return {{"color_preset", {{"name", look.colormap}, {"range", {lo, hi}}}},
+          {"extinction", extinction(look, lo, hi, diagonal)}};
+}
+
 std::string view_names() {
   std::string list;
   for (const NamedView& v : kViews) list += (list.empty() ? "" : ", ") + std::string(v.name);
@@ -90,11 +100,6 @@ nlohmann::json quick_scene(const LoadedMesh& loaded, const std::string& mesh_pat
   check_finite(mesh_path, loaded.mesh.field(field));
   const auto [lo_it, hi_it] = std::minmax_element(values.begin(), values.end());
   const double lo = *lo_it, hi = *hi_it;
-  try {
-    colormap(look.colormap, lo, hi);
-  } catch (const InputError& e) {
-    throw InputError(std::string("--colormap: ") + e.what());
-  }
   const auto [blo, bhi] = bounds(loaded.mesh);
   const Camera camera = view_camera(look.view, blo, bhi, double(look.width) / look.height);
   namespace fs = std::filesystem;
@@ -105,9 +110,7 @@ nlohmann::json quick_scene(const LoadedMesh& loaded, const std::string& mesh_pat
   }
   nlohmann::json scene = {{"mesh", mesh},
                           {"field", field},
-                          {"transfer_function",
-                           {{"color_preset", {{"name", look.colormap}, {"range", {lo, hi}}}},
-                            {"extinction", extinction(look, lo, hi, glm::length(bhi - blo))}}},
+                          {"transfer_function", quick_transfer_function(look, lo, hi, glm::length(bhi - blo))},
                           {"camera", camera_to_json(camera)},
                           {"image", {{"width", look.width}, {"height", look.height}}}};
   nlohmann::json r = nlohmann::json::object();

@@ -27,6 +27,10 @@ struct QuickLook {
 Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dvec3& hi, double aspect);
 std::string view_names();
 
+// The transfer function (as docs/scene.md) of `look` for a field ranging over [lo, hi] on a mesh
+// whose bounding box has this diagonal.
+nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal);
+
 // The scene (as docs/scene.md) for `loaded`, read from `mesh_path` with `reader`, with the mesh's
 // path written relative to `scene_dir` (absolute when empty). InputError for a bad look, naming
 // the option.

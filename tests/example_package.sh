@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Installs cellproj into a scratch prefix, builds examples/ against it with find_package(cellproj)
-# as a user's project would, and runs the example. usage: example_package.sh BUILD_DIR SOURCE_DIR
+# as a user's project would, and runs the examples; imports the installed Python module.
+# usage: example_package.sh BUILD_DIR SOURCE_DIR [PYTHON]
 set -eu
-build=$1; src=$2
+build=$1; src=$2; python=${3:-}
 prefix=$build/test-install; work=$build/test-example
 rm -rf "$prefix" "$work"
 cmake --install "$build" --prefix "$prefix" >/dev/null
@@ -17,4 +18,14 @@ internal=$(find "$inc" -name '*.hpp' | grep -E 'cell_fragments|projected_|topolo
 for h in $(cd "$inc" && find . -name '*.hpp' | sed 's|^\./||'); do
   echo "#include \"$h\"" | c++ -std=c++17 -fsyntax-only -I"$inc" -x c++ - || { echo "$h does not compile alone"; exit 1; }
 done
-echo "2 passed, 0 failed"
+passed=2
+if [ -n "$python" ] && [ -d "$prefix/lib/python3/dist-packages/cellproj" ]; then
+  PYTHONPATH=$prefix/lib/python3/dist-packages "$python" -c "
+import cellproj, sys
+image = cellproj.render_scene(sys.argv[1], size=(32, 24))
+assert image.shape == (24, 32, 4) and image[..., 3].max() > 0, image.shape
+assert cellproj.__file__.startswith(sys.argv[2]), cellproj.__file__
+" "$src/scenes/default.json" "$prefix"
+  passed=$((passed + 1))
+fi
+echo "$passed passed, 0 failed"

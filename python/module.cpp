@@ -1,0 +1,281 @@
+// The Python module `cellproj` (docs/python.md): numpy meshes, readers, transfer functions,
+// cameras, and rendering to a float32 (H, W, 4) array with the GIL released. Front end only: every
+// choice is made by the same library calls the command line makes, so the pictures are the same.
+#include <pybind11/numpy.h>
+#include <pybind11/pybind11.h>
+#include <pybind11/stl.h>
+
+#include <algorithm>
+
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+#include <glm/geometric.hpp>
+
+#include "base/error.hpp"
+#include "optics/colormaps.hpp"
+#include "python/numpy_mesh.hpp"
+#include "render/renderer.hpp"
+#include "scene/camera_json.hpp"
+#include "scene/prepare.hpp"
+#include "scene/quick_scene.hpp"
+#include "scene/render_options.hpp"
+#include "scene/scene_file.hpp"
+#include "scene/transfer_function_json.hpp"
+
+namespace py = pybind11;
+using namespace cellproj;
+using cellproj::python::NumpyMesh;
+
+namespace {
+
+// The keyword arguments as render options (method=, sort=, table_size=, ...).
+RenderOptions options_from(const std::string& method, const py::kwargs& kwargs) {
+  RenderOptions o;
+  set_option(o, "method", method);
+  o.given.clear();  // the method itself is always "given"
+  for (const auto& [key, value] : kwargs) set_option(o, py::str(key), py::str(value));
+  return o;
+}
+
+ImageSize size_from(const std::pair<int, int>& size) {
+  if (size.first < 1 || size.second < 1 || size.first > 16384 || size.second > 16384)
+    throw InputError("size: expected (width, height) in [1, 16384], got (" + std::to_string(size.first) + ", " +
+                     std::to_string(size.second) + ")");
+  return {size.first, size.second};
+}
+
+py::array_t<float> to_numpy(Image&& image) {
+  auto* owned = new std::vector<float>(std::move(image.rgba));
+  py::capsule free(owned, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+  return py::array_t<float>({image.height, image.width, 4}, owned->data(), free);
+}
+
+Image from_numpy(const py::array_t<float, py::array::c_style | py::array::forcecast>& a) {
+  if (a.ndim() != 3 || a.shape(2) != 4) throw InputError("image: expected a float (H, W, 4) array");
+  Image img(static_cast<int>(a.shape(1)), static_cast<int>(a.shape(0)));
+  std::copy(a.data(), a.data() + a.size(), img.rgba.begin());
+  return img;
+}
+
+// Renders on `threads` workers (0: all cores) without the GIL.
+Image render_frame(const Renderer& renderer, const Volume& volume, const Field& field, const TransferFunction& tf,
+                   const Camera& camera, ImageSize size, int threads) {
+  py::gil_scoped_release release;
+  tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
+  return arena.execute([&] { return renderer.render(volume, field, tf, camera, size); });
+}
+
+glm::dvec3 vec(const std::vector<double>& v, const char* what) {
+  if (v.size() != 3) throw InputError(std::string(what) + ": expected 3 numbers");
+  return {v[0], v[1], v[2]};
+}
+
+// The transfer function `cellproj render MESH` gives the field (scene/quick_scene.hpp).
+TransferFunction default_tf(const NumpyMesh& mesh, const std::string& field, const QuickLook& look) {
+  const Field f = mesh.field(field);
+  const auto [lo, hi] = std::minmax_element(f.values, f.values + f.size);
+  const auto [blo, bhi] = bounds(mesh.view());
+  return transfer_function_from_json(quick_transfer_function(look, *lo, *hi, glm::length(bhi - blo)), "python", "", *lo,
+                                     *hi);
+}
+
+Camera make_camera(const std::vector<double>& eye, const std::vector<double>& target, const std::vector<double>& up,
+                   const std::string& projection, double fov_y, double height) {
+  Camera c;
+  if (projection == "perspective")
+    c.projection = Projection::Perspective;
+  else if (projection == "orthographic")
+    c.projection = Projection::Orthographic;
+  else
+    throw InputError("projection: expected 'perspective' or 'orthographic', got '" + projection + "'");
+  c.eye = vec(eye, "eye");
+  c.target = vec(target, "target");
+  c.up = vec(up, "up");
+  c.fov_y = fov_y;
+  c.height = height;
+  check_camera(c, "cellproj.Camera");
+  return c;
+}
+
+}  // namespace
+
+PYBIND11_MODULE(_cellproj, m) {
+  m.doc() = "cellproj: direct volume rendering of unstructured and curvilinear grids (docs/python.md)";
+  static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+  static py::exception<ResourceError> resource_error(m, "ResourceError", PyExc_RuntimeError);
+  py::register_exception_translator([](std::exception_ptr p) {
+    try {
+      if (p) std::rethrow_exception(p);
+    } catch (const InputError& e) {
+      input_error(e.what());
+    } catch (const ResourceError& e) {
+      resource_error(e.what());
+    }
+  });
+
+  py::class_<NumpyMesh>(m, "Mesh", "A mesh over numpy arrays (VTK's layout), validated and committed once")
+      .def(py::init([](py::array points, py::array connectivity, py::array offsets, py::array types, py::object scalars,
+                       std::string name) {
+             return std::make_unique<NumpyMesh>(points, connectivity, offsets, types, scalars, name);
+           }),
+           py::arg("points"), py::arg("connectivity"), py::arg("offsets"), py::arg("types"),
+           py::arg("scalars") = py::none(), py::arg("name") = "numpy arrays",
+           "points (N, 3) float64/float32; connectivity, offsets (n_cells + 1) int64/int32; types uint8 VTK "
+           "codes; scalars: one array (N,) or a dict name -> array")
+      .def_property_readonly("n_points", [](const NumpyMesh& s) { return s.view().n_points; })
+      .def_property_readonly("n_cells", [](const NumpyMesh& s) { return s.view().n_cells; })
+      .def_property_readonly("fields", &NumpyMesh::field_names)
+      .def_property_readonly("copies", &NumpyMesh::copies, "What was copied of the caller's arrays, and why")
+      .def_property_readonly("bounds",
+                             [](const NumpyMesh& s) {
+                               const auto [lo, hi] = bounds(s.view());
+                               return py::make_tuple(py::make_tuple(lo.x, lo.y, lo.z),
+                                                     py::make_tuple(hi.x, hi.y, hi.z));
+                             })
+      .def(
+          "field",
+          [](py::object self, const std::string& name) {
+            return self.cast<const NumpyMesh&>().field_array(name, self);
+          },
+          py::arg("name") = "", "A field's values, read-only, without a copy")
+      .def("add_field", &NumpyMesh::add_field, py::arg("name"), py::arg("values"))
+      .def("__repr__", [](const NumpyMesh& s) {
+        return "<cellproj.Mesh " + s.view().source + ": " + std::to_string(s.view().n_cells) + " cells, " +
+               std::to_string(s.view().n_points) + " points>";
+      });
+
+  m.def(
+      "read",
+      [](const std::string& path, const std::string& format, const std::string& q_file, const std::string& zone,
+         int time_step) {
+        ReadOptions o;
+        o.format = format;
+        o.q_file = q_file;
+        o.zone = zone;
+        o.time_step = time_step;
+        auto mesh = [&] {
+          py::gil_scoped_release release;
+          return std::make_shared<const Mesh>(load_mesh(path, o).mesh);
+        }();
+        return std::make_unique<NumpyMesh>(std::move(mesh));
+      },
+      py::arg("path"), py::arg("format") = "", py::arg("q_file") = "", py::arg("zone") = "", py::arg("time_step") = 0,
+      "Reads and validates a mesh file (any format `cellproj info` reads)");
+
+  py::class_<TransferFunction>(m, "TransferFunction",
+                               "Colour and extinction as piecewise-linear functions of the field")
+      .def(py::init([](std::vector<std::array<double, 2>> extinction,
+                       std::optional<std::vector<std::array<double, 4>>> color,
+                       std::optional<std::string> colormap_name, std::optional<std::pair<double, double>> range) {
+             std::vector<ColorPoint> c;
+             if (color.has_value() == colormap_name.has_value())
+               throw InputError("TransferFunction: give exactly one of color=[(s, r, g, b), ...] and colormap=NAME");
+             if (color)
+               for (const auto& p : *color) c.push_back({p[0], {p[1], p[2], p[3]}});
+             else {
+               if (!range) throw InputError("TransferFunction: colormap= needs range=(lo, hi)");
+               c = colormap(*colormap_name, range->first, range->second);
+             }
+             std::vector<ExtinctionPoint> e;
+             for (const auto& p : extinction) e.push_back({p[0], p[1]});
+             return TransferFunction(std::move(c), std::move(e), "TransferFunction");
+           }),
+           py::kw_only(), py::arg("extinction"), py::arg("color") = py::none(), py::arg("colormap") = py::none(),
+           py::arg("range") = py::none())
+      .def_static(
+          "default",
+          [](const NumpyMesh& mesh, const std::string& field, const std::string& colormap_name,
+             const std::string& opacity, double depth) {
+            QuickLook look;
+            look.colormap = colormap_name;
+            look.opacity = opacity;
+            look.depth = depth;
+            return default_tf(mesh, field, look);
+          },
+          py::arg("mesh"), py::arg("field") = "", py::arg("colormap") = QuickLook{}.colormap,
+          py::arg("opacity") = QuickLook{}.opacity, py::arg("depth") = QuickLook{}.depth,
+          "The transfer function `cellproj render MESH` uses: a colour map over the field's range and an extinction "
+          "ramp of the given optical depth across the mesh")
+      .def("color",
+           [](const TransferFunction& tf, double s) {
+             const glm::dvec3 c = tf.color(s);
+             return py::make_tuple(c.r, c.g, c.b);
+           })
+      .def("extinction", &TransferFunction::extinction);
+  m.def("colormaps", &colormap_list, "The built-in colour maps, by ParaView's names");
+
+  py::class_<Camera>(m, "Camera")
+      .def(py::init(&make_camera), py::arg("eye"), py::arg("target"), py::arg("up") = std::vector<double>{0, 0, 1},
+           py::arg("projection") = "perspective", py::arg("fov_y") = 30.0, py::arg("height") = 2.0)
+      .def_static(
+          "framing",
+          [](const NumpyMesh& mesh, const std::string& view, double aspect) {
+            const auto [lo, hi] = bounds(mesh.view());
+            return view_camera(view, lo, hi, aspect);
+          },
+          py::arg("mesh"), py::arg("view") = "", py::arg("aspect") = 1.0,
+          "An orthographic camera framing the mesh from a named view (+x, -x, +y, -y, +z, -z, iso; '' the default)")
+      .def("orbit", &orbit, py::arg("degrees"), "The camera turned about its up axis through the target")
+      .def_property_readonly("eye", [](const Camera& c) { return py::make_tuple(c.eye.x, c.eye.y, c.eye.z); })
+      .def_property_readonly("target",
+                             [](const Camera& c) { return py::make_tuple(c.target.x, c.target.y, c.target.z); })
+      .def_property_readonly("up", [](const Camera& c) { return py::make_tuple(c.up.x, c.up.y, c.up.z); });
+
+  m.def(
+      "render",
+      [](const NumpyMesh& mesh, std::optional<TransferFunction> tf, std::optional<Camera> camera,
+         std::pair<int, int> size, const std::string& field, const std::string& method, int threads,
+         const py::kwargs& kwargs) {
+        const RenderOptions options = options_from(method, kwargs);
+        const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(options));
+        refuse_unused(*renderer, options.given);
+        const ImageSize image_size = size_from(size);
+        const Field f = mesh.field(field);
+        if (!tf) tf = default_tf(mesh, f.name, QuickLook{});
+        if (!camera) {
+          const auto [lo, hi] = bounds(mesh.view());
+          camera = view_camera("", lo, hi, double(image_size.width) / image_size.height);
+        }
+        return to_numpy(render_frame(*renderer, mesh.volume(), f, *tf, *camera, image_size, threads));
+      },
+      py::arg("mesh"), py::arg("tf") = py::none(), py::arg("camera") = py::none(),
+      py::arg("size") = std::pair<int, int>{512, 512}, py::arg("field") = "", py::arg("method") = "pt-breakpoints",
+      py::arg("threads") = 0,
+      "Renders to a premultiplied float32 (H, W, 4) array; size=(width, height); other keywords are the CLI's render "
+      "options (sort=, slices=, table_size=, ...)");
+
+  m.def(
+      "render_scene",
+      [](const std::string& path, std::optional<std::pair<int, int>> size, const std::string& field,
+         const std::string& view, const std::string& method, int threads, const py::kwargs& kwargs) {
+        const RenderOptions options = options_from(method, kwargs);
+        const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(options));
+        refuse_unused(*renderer, options.given);
+        Scene scene = load_scene(path);
+        if (size) std::tie(scene.width, scene.height) = std::tie(size->first, size->second);
+        const ImageSize image_size = size_from({scene.width, scene.height});
+        if (!field.empty()) scene.field = field;
+        if (!view.empty()) {
+          scene.camera.reset();
+          scene.view = view;
+        }
+        const PreparedScene prepared = [&] {
+          py::gil_scoped_release release;
+          return prepare_scene(scene);
+        }();
+        const Mesh& mesh = prepared.loaded.mesh;
+        const Volume volume(mesh.view(), {/*trusted: load_mesh validated it*/ true});
+        return to_numpy(render_frame(*renderer, volume, field_of(mesh, prepared.field), prepared.tf, prepared.camera,
+                                     image_size, threads));
+      },
+      py::arg("path"), py::arg("size") = py::none(), py::arg("field") = "", py::arg("view") = "",
+      py::arg("method") = "pt-breakpoints", py::arg("threads") = 0,
+      "Renders a scene file as `cellproj render SCENE` does (the same array as its --npy)");
+
+  m.def(
+      "write_png",
+      [](const py::array_t<float, py::array::c_style | py::array::forcecast>& image, const std::string& path,
+         const std::vector<double>& background) { write_png(from_numpy(image), vec(background, "background"), path); },
+      py::arg("image"), py::arg("path"), py::arg("background") = std::vector<double>{0, 0, 0},
+      "Writes a render's array as an 8-bit PNG over the background colour");
+}

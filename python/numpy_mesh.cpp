@@ -1,0 +1,154 @@
+#include "python/numpy_mesh.hpp"
+
+#include <algorithm>
+
+#include "base/error.hpp"
+
+namespace cellproj::python {
+namespace {
+
+std::string dtype_name(const py::array& a) { return py::str(a.dtype()).cast<std::string>(); }
+
+// `a` as a C-contiguous array of T, converting (and saying so) unless it already is one.
+template <class T>
+py::array as(py::array a, const char* what, std::vector<std::string>& conversions) {
+  if (py::isinstance<py::array_t<T>>(a) && (a.flags() & py::array::c_style)) return a;
+  const std::string from = dtype_name(a);
+  py::array out = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (!out)
+    throw InputError(std::string(what) + ": cannot convert dtype " + from + " to " +
+                     py::str(py::dtype::of<T>()).cast<std::string>());
+  conversions.push_back(std::string(what) + ": " + from + (a.flags() & py::array::c_style ? "" : " (not contiguous)") +
+                        " copied as " + py::str(py::dtype::of<T>()).cast<std::string>());
+  return out;
+}
+
+void need_1d(const py::array& a, const char* what) {
+  if (a.ndim() != 1)
+    throw InputError(std::string(what) + ": expected a 1-D array, got " + std::to_string(a.ndim()) + " dimensions");
+}
+
+// Integer ids as int64 or int32 (both arrays alike), anything else converted to int64.
+bool ids_32bit(py::array& connectivity, py::array& offsets, std::vector<std::string>& conversions) {
+  const bool c32 = py::isinstance<py::array_t<std::int32_t>>(connectivity),
+             o32 = py::isinstance<py::array_t<std::int32_t>>(offsets);
+  for (const py::array* a : {&connectivity, &offsets})
+    if (a->dtype().kind() != 'i' && a->dtype().kind() != 'u')
+      throw InputError(std::string(a == &connectivity ? "connectivity" : "offsets") +
+                       ": expected integer ids, got dtype " + dtype_name(*a));
+  if (c32 && o32) {
+    connectivity = as<std::int32_t>(connectivity, "connectivity", conversions);
+    offsets = as<std::int32_t>(offsets, "offsets", conversions);
+    return true;
+  }
+  connectivity = as<std::int64_t>(connectivity, "connectivity", conversions);
+  offsets = as<std::int64_t>(offsets, "offsets", conversions);
+  return false;
+}
+
+}  // namespace
+
+NumpyMesh::NumpyMesh(py::array points, py::array connectivity, py::array offsets, py::array types, py::object scalars,
+                     std::string source) {
+  if (points.ndim() != 2 || points.shape(1) != 3) {
+    std::string shape;
+    for (py::ssize_t d = 0; d < points.ndim(); ++d) shape += (d ? ", " : "") + std::to_string(points.shape(d));
+    throw InputError(where(source, "points: expected shape (N, 3), got (" + shape + ")"));
+  }
+  need_1d(connectivity, "connectivity");
+  need_1d(offsets, "offsets");
+  need_1d(types, "types");
+  if (offsets.shape(0) != types.shape(0) + 1)
+    throw InputError(where(source, "offsets: expected one more entry than types (" +
+                                       std::to_string(types.shape(0) + 1) + "), got " +
+                                       std::to_string(offsets.shape(0)) +
+                                       " (VTK's layout: cell c is connectivity[offsets[c]:offsets[c+1]])"));
+  // Points as they are when float64 or float32 with packed x, y, z in each row.
+  PointArray point_array;
+  const bool row_packed = points.ndim() == 2 && points.strides(1) == points.itemsize() && points.strides(0) > 0;
+  if (py::isinstance<py::array_t<double>>(points) && row_packed)
+    point_array = PointArray::strided(static_cast<const double*>(points.data()), points.strides(0));
+  else if (py::isinstance<py::array_t<float>>(points) && row_packed)
+    point_array = PointArray::strided(static_cast<const float*>(points.data()), points.strides(0));
+  else {
+    points = as<double>(points, "points", conversions_);
+    point_array = PointArray(static_cast<const double*>(points.data()));
+  }
+  if (types.dtype().kind() != 'u' && types.dtype().kind() != 'i')
+    throw InputError(where(source, "types: expected VTK cell type codes (uint8), got dtype " + dtype_name(types)));
+  if (!py::isinstance<py::array_t<std::uint8_t>>(types)) {
+    const py::array_t<std::int64_t> wide = py::array_t<std::int64_t, py::array::forcecast>::ensure(types);
+    const auto* t = wide.data();
+    for (py::ssize_t c = 0; c < wide.size(); ++c)
+      if (t[c] < 0 || t[c] > 255)
+        throw InputError(where(source, "types: cell " + std::to_string(c) + " has type " + std::to_string(t[c]) +
+                                           ", not a VTK cell type code"));
+  }
+  types = as<std::uint8_t>(types, "types", conversions_);
+  const bool narrow = ids_32bit(connectivity, offsets, conversions_);
+  keep_ = {points, connectivity, offsets, types};
+  CellArrays cells;
+  cells.connectivity = connectivity.data();
+  cells.offsets = offsets.data();
+  cells.types = static_cast<const std::uint8_t*>(types.data());
+  cells.n_cells = types.shape(0);
+  cells.ids_32bit = narrow;
+  cells.connectivity_size = connectivity.shape(0);
+  volume_ = std::make_unique<Volume>(point_array, points.shape(0), cells, source);
+  if (py::isinstance<py::dict>(scalars)) {
+    for (const auto& [name, values] : scalars.cast<py::dict>())
+      add_field(py::str(name).cast<std::string>(), py::array::ensure(values));
+  } else if (!scalars.is_none()) {
+    add_field("scalars", py::array::ensure(scalars));
+  }
+}
+
+NumpyMesh::NumpyMesh(std::shared_ptr<const Mesh> read) : read_(std::move(read)) {
+  volume_ = std::make_unique<Volume>(read_->view(), VolumeOptions{/*trusted: load_mesh validated it*/ true});
+  for (const PointField& f : read_->fields)
+    fields_.push_back({f.name, {}, f.values.data(), static_cast<std::int64_t>(f.values.size())});
+}
+
+void NumpyMesh::add_field(const std::string& name, py::array values) {
+  if (!values) throw InputError("field '" + name + "': expected an array of one value per point");
+  need_1d(values, ("field '" + name + "'").c_str());
+  py::array_t<double> v = as<double>(values, ("field '" + name + "'").c_str(), conversions_);
+  const Field f{v.data(), static_cast<std::int64_t>(v.size()), name};
+  volume_->check(f);  // one finite value per point
+  fields_.erase(std::remove_if(fields_.begin(), fields_.end(), [&](const NamedField& x) { return x.name == name; }),
+                fields_.end());
+  fields_.push_back({name, v, v.data(), f.size});
+}
+
+std::vector<std::string> NumpyMesh::field_names() const {
+  std::vector<std::string> names;
+  for (const auto& f : fields_) names.push_back(f.name);
+  return names;
+}
+
+Field NumpyMesh::field(const std::string& name) const {
+  std::string list;
+  for (const auto& f : fields_) {
+    if (f.name == name || (name.empty() && fields_.size() == 1)) return {f.data, f.size, f.name};
+    list += (list.empty() ? "" : ", ") + f.name;
+  }
+  const std::string& source = view().source;
+  if (fields_.empty()) throw InputError(where(source, "the mesh has no point fields (give scalars=)"));
+  if (name.empty()) throw InputError(where(source, "give field=: the mesh has several: " + list));
+  throw InputError(where(source, "no point field '" + name + "' (the fields are: " + list + ")"));
+}
+
+py::array NumpyMesh::field_array(const std::string& name, py::handle owner) const {
+  const Field f = field(name);
+  py::array a(py::dtype::of<double>(), {f.size}, {sizeof(double)}, f.values, owner);
+  py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
+  return a;
+}
+
+std::vector<std::string> NumpyMesh::copies() const {
+  std::vector<std::string> out = conversions_;
+  for (const auto& c : volume_->copies()) out.push_back(c);
+  return out;
+}
+
+}  // namespace cellproj::python

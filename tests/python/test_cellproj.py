@@ -1,0 +1,157 @@
+"""The Python module against the command line (bit for bit) and its errors on bad arrays.
+
+Run by ctest (tests/CMakeLists.txt) with PYTHONPATH=build/python and CELLPROJ_EXE the CLI."""
+import os
+import subprocess
+import threading
+
+import numpy as np
+import pytest
+
+import cellproj
+
+EXE = os.environ["CELLPROJ_EXE"]
+SOURCE = os.environ["CELLPROJ_SOURCE_DIR"]
+DEFAULT_SCENE = os.path.join(SOURCE, "scenes", "default.json")
+DEFAULT_MESH = os.path.join(SOURCE, "scenes", "default.vtu")
+
+
+def cli(tmp_path, *args):
+    """The CLI's --npy image for `cellproj render ARGS`."""
+    out = tmp_path / "cli.npy"
+    subprocess.run([EXE, "render", *args, "--npy", str(out), "-o", str(tmp_path / "cli.png")], check=True,
+                   capture_output=True)
+    return np.load(out)
+
+
+@pytest.fixture(scope="module")
+def mixed(tmp_path_factory):
+    path = tmp_path_factory.mktemp("mesh") / "mixed.vtu"
+    subprocess.run([EXE, "generate", "mixed", "-n", "6", "-o", str(path)], check=True, capture_output=True)
+    return str(path)
+
+
+def test_render_scene_equals_the_cli_bit_for_bit(tmp_path):
+    image = cellproj.render_scene(DEFAULT_SCENE, size=(160, 120))
+    assert image.dtype == np.float32 and image.shape == (120, 160, 4)
+    assert image[..., 3].max() > 0.5  # something is drawn
+    assert np.array_equal(image, cli(tmp_path, DEFAULT_SCENE, "--size", "160x120"))
+
+
+@pytest.mark.parametrize("method,options,cli_options", [
+    ("slicing", {"slices": 64}, ["--slices", "64"]),
+    ("pt-table", {"table_size": 64}, ["--table-size", "64"]),
+    ("exact", {}, []),
+])
+def test_render_scene_with_options_equals_the_cli(tmp_path, method, options, cli_options):
+    image = cellproj.render_scene(DEFAULT_SCENE, size=(96, 96), method=method, threads=2, **options)
+    assert np.array_equal(image, cli(tmp_path, DEFAULT_SCENE, "--size", "96x96", "--method", method, *cli_options))
+
+
+def test_render_of_a_mesh_equals_the_cli_without_a_scene(tmp_path, mixed):
+    mesh = cellproj.read(mixed)
+    camera = cellproj.Camera.framing(mesh, "+y", aspect=128 / 96)
+    tf = cellproj.TransferFunction.default(mesh, colormap="viridis", depth=12)
+    image = cellproj.render(mesh, tf, camera, size=(128, 96))
+    assert np.array_equal(image, cli(tmp_path, mixed, "--size", "128x96", "--view", "+y", "--colormap", "viridis",
+                                     "--depth", "12"))
+    # Everything defaulted: the same as `cellproj render MESH`.
+    assert np.array_equal(cellproj.render(mesh, size=(64, 64)), cli(tmp_path, mixed, "--size", "64x64"))
+
+
+def test_numpy_arrays_render_as_the_file_they_came_from(mixed):
+    meshio = pytest.importorskip("meshio")
+    read = cellproj.read(mixed)
+    tf = cellproj.TransferFunction.default(read)
+    camera = cellproj.Camera.framing(read, "iso")
+    reference = cellproj.render(read, tf, camera, size=(80, 80))
+    from_meshio = cellproj.from_meshio(meshio.read(mixed))
+    assert from_meshio.n_cells == read.n_cells and from_meshio.fields == read.fields
+    assert np.array_equal(cellproj.render(from_meshio, tf, camera, size=(80, 80)), reference)
+    vtk = pytest.importorskip("vtkmodules.vtkIOXML")
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(mixed)
+    reader.Update()
+    from_vtk = cellproj.from_vtk(reader.GetOutput())
+    assert np.array_equal(cellproj.render(from_vtk, tf, camera, size=(80, 80)), reference)
+
+
+def tet(points=None, connectivity=(0, 1, 2, 3), offsets=(0, 4), types=(10,), **kw):
+    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float) if points is None else points
+    return cellproj.Mesh(points, np.asarray(connectivity), np.asarray(offsets), np.asarray(types, np.uint8),
+                         kw.get("scalars", np.array([0.0, 1.0, 2.0, 3.0])))
+
+
+def test_dtypes_taken_as_they_are_and_those_converted():
+    assert tet().copies == []  # float64 points, int64 ids, uint8 types, float64 scalars: no copy
+    wide = np.zeros((4, 5))
+    wide[:, :3] = [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]]
+    assert tet(points=wide[:, :3]).copies == []  # rows at a stride: read in place
+    assert tet(points=wide[:, :3].astype(np.float32)).copies == []
+    narrow = cellproj.Mesh(np.eye(4, 3), np.arange(4, dtype=np.int32), np.array([0, 4], np.int32),
+                           np.array([10], np.int16), np.arange(4, dtype=np.float32))
+    copies = " | ".join(narrow.copies)
+    assert "types: int16 copied as uint8" in copies and "float32 copied as float64" in copies
+    assert "32-bit ids widened" in copies
+    field = tet().field()
+    assert field.tolist() == [0.0, 1.0, 2.0, 3.0] and not field.flags.writeable
+
+
+@pytest.mark.parametrize("make,message", [
+    (lambda: tet(connectivity=(0, 1, 2, 9)), "refers to point 9, out of range"),
+    (lambda: tet(points=np.zeros((4, 2))), r"points: expected shape \(N, 3\), got \(4, 2\)"),
+    (lambda: tet(connectivity=(0.0, 1.0, 2.0, 3.0)), "expected integer ids, got dtype float64"),
+    (lambda: tet(offsets=(0, 4, 4)), "offsets: expected one more entry than types"),
+    (lambda: tet(offsets=(0, 5)), "offsets end at 5 but the connectivity has 4"),
+    (lambda: tet(types=(42,)), "unsupported cell types"),
+    (lambda: tet(scalars=np.zeros(3)), "field 'scalars' has 3 values for 4 points"),
+    (lambda: tet(points=np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, np.nan]])), "non-finite coordinate"),
+    (lambda: cellproj.render(tet(), sort="bogus"), "unknown sort 'bogus'"),
+    (lambda: cellproj.render(tet(), method="exact", sort="mpvo"), "--sort does not apply to --method exact"),
+    (lambda: cellproj.render(tet(), colour="red"), "unknown render option 'colour'"),
+    (lambda: cellproj.render(tet(), size=(0, 8)), "size: expected"),
+    (lambda: cellproj.read("/nonexistent/mesh.vtu"), "mesh.vtu: no such file"),
+    (lambda: cellproj.TransferFunction(extinction=[(0, -1)], color=[(0, 1, 1, 1)]), "must be finite and >= 0"),
+    (lambda: cellproj.TransferFunction(extinction=[(0, 1)]), "give exactly one of color"),
+    (lambda: cellproj.Camera(eye=(0, 0, 0), target=(0, 0, 0)), "eye and target are the same point"),
+    (lambda: cellproj.render_scene("/nonexistent.json"), "no such scene file"),
+])
+def test_bad_input_raises_input_error_with_the_message(make, message):
+    with pytest.raises(cellproj.InputError, match=message):
+        make()
+    assert issubclass(cellproj.InputError, ValueError)
+
+
+def test_exact_render_of_one_tetrahedron_has_its_analytic_optical_depth():
+    # Constant extinction k and colour c: a pixel's alpha is 1 - exp(-k * chord), its colour c * alpha.
+    m = tet(scalars=np.zeros(4))
+    tf = cellproj.TransferFunction(extinction=[(0, 2.0)], color=[(0, 0.5, 0.25, 1.0)])
+    camera = cellproj.Camera(eye=(0.1, 0.1, 5.0), target=(0.1, 0.1, 0.0), up=(0, 1, 0), projection="orthographic",
+                             height=0.01)
+    image = cellproj.render(m, tf, camera, size=(1, 1), method="exact")
+    chord = 1.0 - 0.1 - 0.1  # along z through (0.1, 0.1): from z = 0 to the face x + y + z = 1
+    alpha = 1.0 - np.exp(-2.0 * chord)
+    assert image[0, 0, 3] == pytest.approx(alpha, rel=1e-5)
+    assert image[0, 0, :3] == pytest.approx([0.5 * alpha, 0.25 * alpha, alpha], rel=1e-5)
+
+
+def test_renders_from_two_python_threads_equal_one_thread(mixed):
+    mesh = cellproj.read(mixed)
+    alone = cellproj.render(mesh, size=(96, 96), threads=1)
+    results = [None, None]
+
+    def work(k):
+        results[k] = cellproj.render(mesh, size=(96, 96), threads=2)
+
+    threads = [threading.Thread(target=work, args=(k,)) for k in range(2)]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    assert all(np.array_equal(r, alone) for r in results)
+
+
+def test_write_png_matches_the_cli_png(tmp_path):
+    image = cli(tmp_path, DEFAULT_SCENE, "--size", "64x48")
+    cellproj.write_png(image, str(tmp_path / "py.png"), background=(0.04, 0.04, 0.06))
+    assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
