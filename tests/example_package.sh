@@ -11,6 +11,7 @@ cmake -S "$src/examples" -B "$work" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_
 cmake --build "$work" -j2 >/dev/null
 "$work/solver_render" "$work/solver.png"
 test -s "$work/solver.png" && test -s "$work/solver_step1.png"
+"$work/render_c" "$work/render_c.png"
 # Only public headers are installed, and each compiles on its own against the installed tree.
 inc=$prefix/include/cellproj
 internal=$(find "$inc" -name '*.hpp' | grep -E 'cell_fragments|projected_|topology|split_sorter|ordered_pipeline|gl_' || true)
@@ -18,7 +19,7 @@ internal=$(find "$inc" -name '*.hpp' | grep -E 'cell_fragments|projected_|topolo
 for h in $(cd "$inc" && find . -name '*.hpp' | sed 's|^\./||'); do
   echo "#include \"$h\"" | c++ -std=c++17 -fsyntax-only -I"$inc" -x c++ - || { echo "$h does not compile alone"; exit 1; }
 done
-passed=2
+passed=3
 if [ -n "$python" ] && [ -d "$prefix/lib/python3/dist-packages/cellproj" ]; then
   PYTHONPATH=$prefix/lib/python3/dist-packages "$python" -c "
 import cellproj, sys
