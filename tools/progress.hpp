@@ -31,9 +31,12 @@ class ProgressBar {
     if (!lock) return;
     const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     if (elapsed < 1.0) return;
+    const int percent = static_cast<int>(done * 100);
+    if (percent == shown_percent_) return;  // redrawn when the number changes, not on every call
+    shown_percent_ = percent;
     const int width = 30, filled = static_cast<int>(done * width);
     std::fprintf(stderr, "\r%s [%s%s] %3d%%", label_.c_str(), std::string(filled, '#').c_str(),
-                 std::string(width - filled, ' ').c_str(), static_cast<int>(done * 100));
+                 std::string(width - filled, ' ').c_str(), percent);
     std::fflush(stderr);
     shown_ = true;
   }
@@ -42,6 +45,7 @@ class ProgressBar {
   std::string label_;
   bool enabled_;
   bool shown_ = false;
+  int shown_percent_ = -1;
   std::chrono::steady_clock::time_point start_;
   std::mutex mutex_;
 };
