@@ -6,6 +6,7 @@
 #include "base/timing.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "parallel/projection_renderer.hpp"
+#include "raycast/ray_reduction.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "slicing/slice_renderer.hpp"
 
@@ -137,6 +138,12 @@ class ProjectionMode final : public Renderer {
   Tetrahedralize mode_;
 };
 
+// The field checked and the exact renderer's preparation, made (and timed) on first use.
+const ExactRenderer& checked_exact(const Volume& volume, const Field& field, RenderReport* report) {
+  volume.check(field);
+  return timed_preparation(volume, report, [&]() -> const ExactRenderer& { return volume.exact(); });
+}
+
 class ExactMode final : public Renderer {
  public:
   explicit ExactMode(CellInterpolation interpolation) : interpolation_(interpolation) {}
@@ -146,9 +153,7 @@ class ExactMode final : public Renderer {
 
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                ImageSize size, RenderReport* report, const Progress& progress) const override {
-    volume.check(field);
-    const ExactRenderer& renderer =
-        timed_preparation(volume, report, [&]() -> const ExactRenderer& { return volume.exact(); });
+    const ExactRenderer& renderer = checked_exact(volume, field, report);
     ExactStats st;
     Image image = renderer.render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress);
     if (report) {
@@ -169,6 +174,38 @@ class ExactMode final : public Renderer {
 
  private:
   CellInterpolation interpolation_;
+};
+
+// MIP, MinIP and the mean along each ray, on the exact renderer's tracer (prepared once, shared).
+class ReductionMode final : public Renderer {
+ public:
+  explicit ReductionMode(RayReduction reduction) : reduction_(reduction) {}
+  std::string name() const override {
+    return reduction_ == RayReduction::maximum ? "mip" : reduction_ == RayReduction::minimum ? "minip" : "average";
+  }
+  std::vector<std::string> settings_used() const override { return {"method"}; }
+  void prepare(const Volume& volume) const override { volume.exact(); }
+
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+               ImageSize size, RenderReport* report, const Progress& progress) const override {
+    const ExactRenderer& renderer = checked_exact(volume, field, report);
+    ReductionStats st;
+    Image image =
+        reduce_rays(renderer.tracer(), field.values, tf, camera, size.width, size.height, reduction_, &st, progress);
+    if (report) {
+      report->seconds = st.seconds;
+      report->phase_seconds = {{"trace and reduce", st.seconds}};
+      report->add({{"segments", st.segments}, {"rays_hit", st.rays_hit}});
+    }
+    return image;
+  }
+
+  std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
+    return ExactMode(CellInterpolation::canonical_tets).estimate_bytes(v, size);  // the same tracer
+  }
+
+ private:
+  RayReduction reduction_;
 };
 
 // The slicing stats as a report.
@@ -289,6 +326,7 @@ std::unique_ptr<Renderer> make_renderer(const RenderSettings& s) {
     case RenderMode::projection: return std::make_unique<ProjectionMode>(s.projection, s.tetrahedralize);
     case RenderMode::exact: return std::make_unique<ExactMode>(s.interpolation);
     case RenderMode::slicing: return std::make_unique<SlicingMode>(s.slicing, s.tetrahedralize);
+    case RenderMode::reduction: return std::make_unique<ReductionMode>(s.reduction);
   }
   throw InputError("unknown render mode " + std::to_string(static_cast<int>(s.mode)));
 }

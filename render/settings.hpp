@@ -3,6 +3,7 @@
 // the default a user gets from `cellproj render` without options.
 #include "parallel/projection_options.hpp"
 #include "raycast/interpolation.hpp"
+#include "raycast/reduction.hpp"
 #include "slicing/slicing_options.hpp"
 #include "visibility/methods.hpp"
 
@@ -12,6 +13,7 @@ enum class RenderMode {
   projection,  // cell projection (parallel/, projection/): `projection.method` picks the rung of the ladder
   exact,       // the reference ray integrator (raycast/)
   slicing,     // plane slicing (slicing/): cells cut on parallel planes, composited without a sort
+  reduction,   // one value per ray (raycast/): maximum, minimum or mean intensity projection
 };
 
 struct RenderSettings {
@@ -20,6 +22,7 @@ struct RenderSettings {
   Tetrahedralize tetrahedralize = Tetrahedralize::problem;             // projection: which cells are split
   CellInterpolation interpolation = CellInterpolation::isoparametric;  // exact: the field inside cells
   SlicingOptions slicing;                                              // slices, family, integral, table size
+  RayReduction reduction = RayReduction::maximum;                      // reduction: which value of each ray
 };
 
 struct ImageSize {

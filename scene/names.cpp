@@ -85,6 +85,13 @@ const char* name_of(SmallCells mode) { return name_in(kSmallCells, mode); }
 std::string small_cells_names() { return names(kSmallCells); }
 
 void parse_render_method(const std::string& name, RenderSettings& settings) {
+  for (const auto& [reduction, n] : {std::pair{RayReduction::maximum, "mip"}, std::pair{RayReduction::minimum, "minip"},
+                                     std::pair{RayReduction::average, "average"}})
+    if (name == n) {
+      settings.mode = RenderMode::reduction;
+      settings.reduction = reduction;
+      return;
+    }
   if (name == "exact" || name == "slicing") {
     settings.mode = name == "exact" ? RenderMode::exact : RenderMode::slicing;
     return;
@@ -98,7 +105,7 @@ void parse_render_method(const std::string& name, RenderSettings& settings) {
   throw InputError("unknown method '" + name + "' (known: " + render_method_names() + ")");
 }
 
-std::string render_method_names() { return "exact, slicing, " + projection_method_names(); }
+std::string render_method_names() { return "exact, slicing, mip, minip, average, " + projection_method_names(); }
 
 nlohmann::json report_json(const RenderReport& report) {
   nlohmann::json j = nlohmann::json::object();

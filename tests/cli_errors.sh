@@ -188,6 +188,8 @@ expect 0 "wrote" -- render "$tmp/box.vtu" --view +y --colormap viridis --size 40
 cmp -s "$tmp/q/a.npy" "$tmp/q/b.npy" || { echo "FAIL: render MESH differs from render \$(scene MESH)"; failed=$((failed+1)); }
 expect 0 "frame 3/3" -- render "$tmp/q/q.json" --orbit 360 --frames 3 -o "$tmp/turn/f_%02d.png" --legend
 [ -f "$tmp/turn/f_02.png" ] || { echo "FAIL: turntable frames"; failed=$((failed+1)); }
+expect 2 "--sort does not apply to --method mip, which reads --method" -- render "$tmp/ok.json" --method mip --sort mpvo
+expect 0 "wrote .*mip" -- render "$tmp/box.vtu" --method mip --size 32x24 -o "$tmp/mip.png"
 # docs/reliability.md: bad files of every kind get exit 1 and a message naming file and element.
 mkdir -p "$tmp/afolder" "$tmp/afolder.json"
 expect 1 "afolder: is a folder, not a mesh file" -- render "$tmp/afolder"  # no .json: taken as a mesh

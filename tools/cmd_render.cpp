@@ -335,8 +335,8 @@ Action add_render(CLI::App& app) {
       "method",
       cmd->add_option("--method", args->options.method,
                       "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
-                      "pt-table, pt-linear (fastest), exact (the reference ray integrator), or slicing (cells cut on "
-                      "parallel planes, no sort); see docs/methods.md"));
+                      "pt-table, pt-linear (fastest), exact (the reference ray integrator), slicing (cells cut on "
+                      "parallel planes, no sort), or mip, minip, average (one value per ray); see docs/methods.md"));
   settings.emplace_back("slices", cmd->add_option("--slices", args->options.slices,
                                                   "slicing: number of planes (default 256; at most 16 per pixel of "
                                                   "the image's longer side)"));
