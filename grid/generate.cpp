@@ -148,7 +148,8 @@ Mesh make_graded(int n, double first, bool tetrahedra) {
 std::string generated_kinds() {
   return "box (hexahedra), box-tets (6 tetrahedra per hexahedron), swirl (non-convex curvilinear ring, hexahedra), "
          "swirl-tets, mixed (twisted box of hexahedra, wedges, pyramids and tetrahedra), graded (hexahedra of "
-         "[-1, 1]^3 thinning geometrically to 1e-4 towards the z axis, a hot filament along it), graded-tets";
+         "[-1, 1]^3 thinning geometrically to 1e-4 towards the z axis, a hot filament along it), graded-tets, shells (hexahedra of [-1, 1]^3, cos(3 pi r) inside the unit ball: iso-value 0 on the nested "
+         "spheres r = 1/6, 1/2, 5/6), shells-tets";
 }
 
 Mesh generate(const std::string& kind, int n) {
@@ -166,6 +167,9 @@ Mesh generate(const std::string& kind, int n) {
     set_field(m, "scalar", [](const glm::dvec3& x) { return 1.0 - glm::dot(x, x) / 3.0 + 0.3 * x.x * x.y * x.z; });
   } else if (kind == "graded" || kind == "graded-tets") {
     m = make_graded(n, kGradedFirstCell, kind == "graded-tets");
+  } else if (kind == "shells" || kind == "shells-tets") {
+    m = make_box(n, n, n, glm::dvec3(-1), glm::dvec3(1), kind == "shells-tets");
+    set_field(m, "scalar", [](const glm::dvec3& x) { return shells_field(glm::length(x)); });
   } else if (kind == "swirl" || kind == "swirl-tets") {
     m = swirl(n, kind == "swirl-tets");
   } else {

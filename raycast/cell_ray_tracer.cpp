@@ -114,6 +114,41 @@ CellRayTracer::CellRayTracer(const MeshView& mesh) : points_(recentre(mesh)) {
   }
 }
 
+glm::dvec3 CellRayTracer::gradient(std::uint32_t tet, const double* scalar) const {
+  // s(x) = s_a + G (x - a) with G's rows solving the three edges from vertex a.
+  const Tet& t = tets_[tet];
+  const RecentredPoints& P = points_;
+  const glm::dvec3 a = P(t[0]), e1 = P(t[1]) - a, e2 = P(t[2]) - a, e3 = P(t[3]) - a;
+  const double d1 = scalar[t[1]] - scalar[t[0]], d2 = scalar[t[2]] - scalar[t[0]], d3 = scalar[t[3]] - scalar[t[0]];
+  // grad = (d1 (e2 x e3) + d2 (e3 x e1) + d3 (e1 x e2)) / (e1 . (e2 x e3))
+  return (d1 * glm::cross(e2, e3) + d2 * glm::cross(e3, e1) + d3 * glm::cross(e1, e2)) / glm::dot(e1, glm::cross(e2, e3));
+}
+
+std::vector<glm::dvec3> CellRayTracer::point_gradients(const double* scalar) const {
+  std::vector<glm::dvec3> g(points_.xyz.size() / 3, glm::dvec3(0.0));
+  std::vector<double> weight(g.size(), 0.0);
+  for (std::uint32_t t = 0; t < tets_.size(); ++t) {
+    const Tet& tet = tets_[t];
+    const double v = tet_volume6(points_(tet[0]), points_(tet[1]), points_(tet[2]), points_(tet[3]));
+    const glm::dvec3 gt = gradient(t, scalar);
+    for (std::int64_t p : tet) g[p] += v * gt, weight[p] += v;
+  }
+  for (std::size_t p = 0; p < g.size(); ++p)
+    if (weight[p] > 0) g[p] /= weight[p];
+  return g;
+}
+
+glm::dvec3 CellRayTracer::interpolate(const std::vector<glm::dvec3>& per_point, std::uint32_t tet,
+                                      const glm::dvec3& x) const {
+  const Tet& t = tets_[tet];
+  const glm::dvec3 p[4] = {points_(t[0]), points_(t[1]), points_(t[2]), points_(t[3])};
+  const double v = tet_volume6(p[0], p[1], p[2], p[3]);
+  // Barycentric weight of vertex k: the volume of the tetrahedron with x in its place, over the whole.
+  const double w1 = tet_volume6(p[0], x, p[2], p[3]) / v, w2 = tet_volume6(p[0], p[1], x, p[3]) / v,
+               w3 = tet_volume6(p[0], p[1], p[2], x) / v;
+  return (1.0 - w1 - w2 - w3) * per_point[t[0]] + w1 * per_point[t[1]] + w2 * per_point[t[2]] + w3 * per_point[t[3]];
+}
+
 void CellRayTracer::trace(const Camera& camera, int width, int height, const double* scalar, const Visitor& visit,
                           const std::function<void(double)>& progress) const {
   const PixelRays rays(recentred(camera, points_.centre), width, height);
@@ -189,7 +224,7 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const dou
           double t0, t1;
           if (!tp.clip(r, t0, t1)) continue;
           pixel_lists[px].push_back(
-              {t0, t1, tp.scalar_at(r.origin + t0 * r.dir), tp.scalar_at(r.origin + t1 * r.dir), parent_[t]});
+              {t0, t1, tp.scalar_at(r.origin + t0 * r.dir), tp.scalar_at(r.origin + t1 * r.dir), parent_[t], t});
         }
     }
     for (int j = ty0; j < std::min(ty0 + kTile, height); ++j)

@@ -17,6 +17,7 @@ struct RaySegment {
   double t0, t1;      // world distance along the ray (from the eye, or the eye plane if orthographic)
   double s0, s1;      // the scalar at the segment's front and back ends
   std::int64_t cell;  // the mesh cell it crosses
+  std::uint32_t tet;  // the tracer's tetrahedron it crosses (CellRayTracer::gradient)
 };
 
 class CellRayTracer {
@@ -32,6 +33,15 @@ class CellRayTracer {
   using Visitor = std::function<void(int i, int j, const Ray& ray, const RaySegment* segments, std::size_t n)>;
   void trace(const Camera& camera, int width, int height, const double* scalar, const Visitor& visit,
              const std::function<void(double done)>& progress = {}) const;
+
+  // The gradient of the point field `scalar` in tetrahedron `tet` (a RaySegment's), constant there.
+  glm::dvec3 gradient(std::uint32_t tet, const double* scalar) const;
+
+  // Per point, the volume-weighted mean of the gradients of the tetrahedra around it: a smooth
+  // normal field for shading surfaces of the piecewise-linear field.
+  std::vector<glm::dvec3> point_gradients(const double* scalar) const;
+  // point_gradients interpolated linearly in tetrahedron `tet` at x (recentred, as the rays).
+  glm::dvec3 interpolate(const std::vector<glm::dvec3>& per_point, std::uint32_t tet, const glm::dvec3& x) const;
 
   std::int64_t tetrahedra() const { return static_cast<std::int64_t>(tets_.size()); }
   std::int64_t dropped_degenerate() const { return dropped_; }

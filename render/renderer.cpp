@@ -6,6 +6,7 @@
 #include "base/timing.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "parallel/projection_renderer.hpp"
+#include "raycast/iso_layers.hpp"
 #include "raycast/ray_reduction.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "slicing/slice_renderer.hpp"
@@ -208,6 +209,45 @@ class ReductionMode final : public Renderer {
   RayReduction reduction_;
 };
 
+// Volumetric depth peeling (Nagy and Klein) on the exact renderer's tracer: the n-th crossings of
+// an iso-value, blended, with silhouettes.
+class LayersMode final : public Renderer {
+ public:
+  explicit LayersMode(const LayerOptions& options) : options_(options) { check(options); }
+  std::string name() const override { return "layers"; }
+  std::vector<std::string> settings_used() const override {
+    return {"method", "iso", "layer", "layer-weights", "silhouettes", "silhouette-epsilon"};
+  }
+  void prepare(const Volume& volume) const override { volume.exact(); }
+
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+               ImageSize size, RenderReport* report, const Progress& progress) const override {
+    const ExactRenderer& renderer = checked_exact(volume, field, report);
+    LayerStats st;
+    Image image = render_layers(renderer.tracer(), field.values, field.size, tf, camera, size.width, size.height,
+                                options_, &st, progress);
+    if (report) {
+      report->seconds = st.seconds;
+      report->phase_seconds = {{"trace and peel", st.seconds}};
+      report->add("iso", options_.iso);
+      report->add("silhouettes", options_.silhouettes);
+      report->add({{"segments", st.segments},
+                   {"crossings", st.crossings},
+                   {"rays_with_layer", st.rays_with_layer},
+                   {"silhouette_pixels", st.silhouette_pixels},
+                   {"max_crossings_on_a_ray", st.max_crossings}});
+    }
+    return image;
+  }
+
+  std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
+    return ExactMode(CellInterpolation::canonical_tets).estimate_bytes(v, size);  // the same tracer
+  }
+
+ private:
+  LayerOptions options_;
+};
+
 // The slicing stats as a report.
 void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
   r.seconds = st.seconds;
@@ -327,6 +367,7 @@ std::unique_ptr<Renderer> make_renderer(const RenderSettings& s) {
     case RenderMode::exact: return std::make_unique<ExactMode>(s.interpolation);
     case RenderMode::slicing: return std::make_unique<SlicingMode>(s.slicing, s.tetrahedralize);
     case RenderMode::reduction: return std::make_unique<ReductionMode>(s.reduction);
+    case RenderMode::layers: return std::make_unique<LayersMode>(s.layers);
   }
   throw InputError("unknown render mode " + std::to_string(static_cast<int>(s.mode)));
 }

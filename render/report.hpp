@@ -10,6 +10,7 @@
 
 #include "projection/method.hpp"
 #include "raycast/interpolation.hpp"
+#include "raycast/layer_options.hpp"
 #include "slicing/slicing_options.hpp"
 #include "splat/splat_options.hpp"
 #include "visibility/methods.hpp"
@@ -19,7 +20,7 @@ namespace cellproj {
 // A counter, a time, a text, or a choice the renderer made (printed by its name, scene/names.hpp);
 // monostate where a value does not apply to this frame (JSON null).
 using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, Backend, SortMethod, GapMethod,
-                                 Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral, SmallCells>;
+                                 Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral, SmallCells, Silhouettes>;
 
 struct RenderReport {
   double seconds = 0.0;          // the frame, preparation excluded

@@ -3,6 +3,7 @@
 // the default a user gets from `cellproj render` without options.
 #include "parallel/projection_options.hpp"
 #include "raycast/interpolation.hpp"
+#include "raycast/layer_options.hpp"
 #include "raycast/reduction.hpp"
 #include "slicing/slicing_options.hpp"
 #include "visibility/methods.hpp"
@@ -14,6 +15,7 @@ enum class RenderMode {
   exact,       // the reference ray integrator (raycast/)
   slicing,     // plane slicing (slicing/): cells cut on parallel planes, composited without a sort
   reduction,   // one value per ray (raycast/): maximum, minimum or mean intensity projection
+  layers,      // the n-th crossings of an iso-value along each ray (raycast/iso_layers.hpp)
 };
 
 struct RenderSettings {
@@ -23,6 +25,7 @@ struct RenderSettings {
   CellInterpolation interpolation = CellInterpolation::isoparametric;  // exact: the field inside cells
   SlicingOptions slicing;                                              // slices, family, integral, table size
   RayReduction reduction = RayReduction::maximum;                      // reduction: which value of each ray
+  LayerOptions layers;                                                 // layers: iso-value, layers, silhouettes
 };
 
 struct ImageSize {

@@ -44,6 +44,10 @@ constexpr std::pair<SliceIntegral, const char*> kSliceIntegrals[] = {{SliceInteg
                                                                      {SliceIntegral::preintegrated, "preintegrated"}};
 constexpr std::pair<SmallCells, const char*> kSmallCells[] = {
     {SmallCells::splat, "splat"}, {SmallCells::draw, "draw"}, {SmallCells::skip, "skip"}};
+constexpr std::pair<Silhouettes, const char*> kSilhouettes[] = {{Silhouettes::none, "none"},
+                                                                {Silhouettes::visible, "visible"},
+                                                                {Silhouettes::hidden, "hidden"},
+                                                                {Silhouettes::both, "both"}};
 
 }  // namespace
 
@@ -84,6 +88,10 @@ SmallCells parse_small_cells(const std::string& n) { return from_name(kSmallCell
 const char* name_of(SmallCells mode) { return name_in(kSmallCells, mode); }
 std::string small_cells_names() { return names(kSmallCells); }
 
+Silhouettes parse_silhouettes(const std::string& n) { return from_name(kSilhouettes, n, "--silhouettes"); }
+const char* name_of(Silhouettes mode) { return name_in(kSilhouettes, mode); }
+std::string silhouettes_names() { return names(kSilhouettes); }
+
 void parse_render_method(const std::string& name, RenderSettings& settings) {
   for (const auto& [reduction, n] : {std::pair{RayReduction::maximum, "mip"}, std::pair{RayReduction::minimum, "minip"},
                                      std::pair{RayReduction::average, "average"}})
@@ -92,6 +100,10 @@ void parse_render_method(const std::string& name, RenderSettings& settings) {
       settings.reduction = reduction;
       return;
     }
+  if (name == "layers") {
+    settings.mode = RenderMode::layers;
+    return;
+  }
   if (name == "exact" || name == "slicing") {
     settings.mode = name == "exact" ? RenderMode::exact : RenderMode::slicing;
     return;
@@ -105,7 +117,7 @@ void parse_render_method(const std::string& name, RenderSettings& settings) {
   throw InputError("unknown method '" + name + "' (known: " + render_method_names() + ")");
 }
 
-std::string render_method_names() { return "exact, slicing, mip, minip, average, " + projection_method_names(); }
+std::string render_method_names() { return "exact, slicing, mip, minip, average, layers, " + projection_method_names(); }
 
 nlohmann::json report_json(const RenderReport& report) {
   nlohmann::json j = nlohmann::json::object();

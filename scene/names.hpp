@@ -46,6 +46,10 @@ SmallCells parse_small_cells(const std::string& name);
 const char* name_of(SmallCells mode);
 std::string small_cells_names();
 
+Silhouettes parse_silhouettes(const std::string& name);
+const char* name_of(Silhouettes mode);
+std::string silhouettes_names();
+
 // "exact", "slicing" or a projection method's name into settings.mode (and settings.projection.method).
 void parse_render_method(const std::string& name, RenderSettings& settings);
 std::string render_method_names();  // "exact, slicing, pt-linear, ..."

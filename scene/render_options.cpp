@@ -5,6 +5,7 @@
 
 #include "base/error.hpp"
 #include "scene/names.hpp"
+#include "scene/scene_file.hpp"
 
 namespace cellproj {
 namespace {
@@ -37,6 +38,36 @@ auto named(const char* option, F&& f) {
   }
 }
 
+// "1,2,3" or "0.5,0.25": the comma-separated numbers of option `name`.
+template <class T>
+std::vector<T> list_of(const std::string& name, const std::string& text) {
+  std::vector<T> values;
+  for (std::size_t at = 0; at <= text.size();) {
+    const std::size_t comma = std::min(text.find(',', at), text.size());
+    values.push_back(number_of<T>(name, text.substr(at, comma - at)));
+    at = comma + 1;
+  }
+  return values;
+}
+
+// --iso V or V:R,G,B (the layers' colour), --layer, --layer-weights, --silhouettes.
+LayerOptions layer_options(const RenderOptions& o, bool layers_mode) {
+  LayerOptions l;
+  if (o.iso.empty()) {
+    if (layers_mode) throw InputError("--method layers needs --iso V, the iso-value whose crossings it draws");
+  } else {
+    const std::size_t colon = o.iso.find(':');
+    l.iso = number_of<double>("iso", o.iso.substr(0, colon));
+    if (colon != std::string::npos) l.color = parse_color(o.iso.substr(colon + 1), "--iso's colour");
+  }
+  l.layers = list_of<int>("layer", o.layer);
+  if (!o.layer_weights.empty()) l.weights = list_of<double>("layer-weights", o.layer_weights);
+  l.silhouettes = named("silhouettes", [&] { return parse_silhouettes(o.silhouettes); });
+  l.silhouette_epsilon = o.silhouette_epsilon;
+  check(l);
+  return l;
+}
+
 }  // namespace
 
 RenderSettings settings_from(const RenderOptions& o) {
@@ -59,12 +90,14 @@ RenderSettings settings_from(const RenderOptions& o) {
   s.projection.splat.threshold = o.splat_threshold;
   s.projection.splat.prefilter = o.splat_prefilter;
   s.slicing.splat = s.projection.splat;
+  s.layers = layer_options(o, s.mode == RenderMode::layers);
   return s;
 }
 
 std::vector<std::string> render_option_names() {
   return {"method",         "sort",        "gaps",       "backend", "tetrahedralize",  "interpolation",  "slice-axis",
-          "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter"};
+          "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter",
+          "iso",            "layer",       "layer-weights", "silhouettes", "silhouette-epsilon"};
 }
 
 void set_option(RenderOptions& o, const std::string& given_name, const std::string& value) {
@@ -79,6 +112,10 @@ void set_option(RenderOptions& o, const std::string& given_name, const std::stri
                       : name == "slice-axis"     ? &o.slice_axis
                       : name == "slice-integral" ? &o.slice_integral
                       : name == "small-cells"    ? &o.small_cells
+                      : name == "iso"            ? &o.iso
+                      : name == "layer"          ? &o.layer
+                      : name == "layer-weights"  ? &o.layer_weights
+                      : name == "silhouettes"    ? &o.silhouettes
                                                  : nullptr;
   if (text)
     *text = value;
@@ -90,6 +127,8 @@ void set_option(RenderOptions& o, const std::string& given_name, const std::stri
     o.splat_threshold = number_of<double>(name, value);
   else if (name == "splat-prefilter")
     o.splat_prefilter = number_of<double>(name, value);
+  else if (name == "silhouette-epsilon")
+    o.silhouette_epsilon = number_of<double>(name, value);
   else {
     std::string list;
     for (const auto& n : render_option_names()) list += (list.empty() ? "" : ", ") + n;

@@ -13,10 +13,11 @@ namespace cellproj {
 struct RenderOptions {
   std::string method = "pt-breakpoints", sort = "auto", gaps = "auto", backend = "software", tetrahedralize = "problem",
               interpolation = "isoparametric", slice_axis = "auto", slice_integral = "preintegrated",
-              small_cells = "draw";
+              small_cells = "draw", iso, layer = "1", layer_weights, silhouettes = "none";
   int table_size = 256, slices = 256;
   double splat_threshold = SplatOptions{}.threshold;  // NaN: the method's default
   double splat_prefilter = SplatOptions{}.prefilter;
+  double silhouette_epsilon = LayerOptions{}.silhouette_epsilon;
   std::vector<std::string> given;  // the names set explicitly (set_option adds them), for refuse_unused
 };
 

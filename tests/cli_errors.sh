@@ -190,6 +190,10 @@ expect 0 "frame 3/3" -- render "$tmp/q/q.json" --orbit 360 --frames 3 -o "$tmp/t
 [ -f "$tmp/turn/f_02.png" ] || { echo "FAIL: turntable frames"; failed=$((failed+1)); }
 expect 2 "--sort does not apply to --method mip, which reads --method" -- render "$tmp/ok.json" --method mip --sort mpvo
 expect 0 "wrote .*mip" -- render "$tmp/box.vtu" --method mip --size 32x24 -o "$tmp/mip.png"
+expect 2 "--method layers needs --iso V" -- render "$tmp/box.vtu" --method layers
+expect 2 "--layer: give the layers in increasing order" -- render "$tmp/box.vtu" --method layers --iso 0.5 --layer 3,1
+expect 2 "--iso does not apply to --method exact" -- render "$tmp/box.vtu" --method exact --iso 0.5
+expect 0 "wrote .*layers" -- render "$tmp/box.vtu" --method layers --iso 0.5:1,0,0 --layer 1,2 --silhouettes both --size 32x24 -o "$tmp/layers.png"
 # docs/reliability.md: bad files of every kind get exit 1 and a message naming file and element.
 mkdir -p "$tmp/afolder" "$tmp/afolder.json"
 expect 1 "afolder: is a folder, not a mesh file" -- render "$tmp/afolder"  # no .json: taken as a mesh

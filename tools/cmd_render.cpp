@@ -336,7 +336,26 @@ Action add_render(CLI::App& app) {
       cmd->add_option("--method", args->options.method,
                       "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
                       "pt-table, pt-linear (fastest), exact (the reference ray integrator), slicing (cells cut on "
-                      "parallel planes, no sort), or mip, minip, average (one value per ray); see docs/methods.md"));
+                      "parallel planes, no sort), mip, minip, average (one value per ray), or layers (the n-th "
+                      "crossings of --iso along each ray); see docs/methods.md"));
+  settings.emplace_back("iso", cmd->add_option("--iso", args->options.iso,
+                                               "layers: the iso-value V, or V:R,G,B to give the layers' colour "
+                                               "(default: the colour map's at V)"));
+  settings.emplace_back("layer", cmd->add_option("--layer", args->options.layer,
+                                                 "layers: which crossings of V to draw, 1 the nearest: N, or "
+                                                 "increasing N1,N2,... blended (default 1)"));
+  settings.emplace_back("layer-weights",
+                        cmd->add_option("--layer-weights", args->options.layer_weights,
+                                        "layers: one weight per --layer, blended as their weighted mean where the "
+                                        "ray reaches them (default equal)"));
+  settings.emplace_back("silhouettes", cmd->add_option("--silhouettes", args->options.silhouettes,
+                                                       "layers: draw where the view grazes a layer: " +
+                                                           silhouettes_names() +
+                                                           " (visible: the front layer, black; hidden: layers "
+                                                           "behind it up to the deepest --layer, grey)"));
+  settings.emplace_back("silhouette-epsilon",
+                        cmd->add_option("--silhouette-epsilon", args->options.silhouette_epsilon,
+                                        "layers: a silhouette where |view . normal| is below this (default 0.2)"));
   settings.emplace_back("slices", cmd->add_option("--slices", args->options.slices,
                                                   "slicing: number of planes (default 256; at most 16 per pixel of "
                                                   "the image's longer side)"));

@@ -1,0 +1,241 @@
+// Volumetric depth peeling (--method layers, issue 20): the crossings of an iso-value along each
+// ray against the closed form on nested spheres, the shading against the spheres' analytic
+// normals, blending, silhouettes, robustness where a vertex value equals the iso-value.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include <glm/geometric.hpp>
+#include <tbb/task_arena.h>
+
+#include "base/error.hpp"
+#include "grid/generate.hpp"
+#include "raycast/iso_layers.hpp"
+#include "render/renderer.hpp"
+#include "scene/render_options.hpp"
+#include "tests/test_util.hpp"
+
+namespace cellproj {
+namespace {
+
+std::vector<IsoCrossing> crossings_of(const std::vector<RaySegment>& segs, double iso) {
+  std::vector<IsoCrossing> out;
+  iso_crossings(segs.data(), segs.size(), iso, 1e-12, [&](const IsoCrossing& c) { out.push_back(c); });
+  return out;
+}
+
+TEST(IsoLayers, CrossingsOfHandMadeRaysAreCountedOnceAndTouchesNotAtAll) {
+  // {t0, t1, s0, s1, cell, tet}
+  auto c = crossings_of({{0, 1, 0, 2, 0, 0}}, 1.0);  // a root inside a segment
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_DOUBLE_EQ(c[0].t, 0.5);
+  EXPECT_TRUE(c[0].entering);
+  c = crossings_of({{0, 1, 0, 1, 0, 0}, {1, 2, 1, 0, 1, 1}}, 1.0);  // touches V at a vertex, turns back
+  EXPECT_EQ(c.size(), 0u);
+  c = crossings_of({{0, 1, 0, 1, 0, 0}, {1, 2, 1, 2, 1, 1}}, 1.0);  // passes through V at a vertex
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_DOUBLE_EQ(c[0].t, 1.0);
+  c = crossings_of({{0, 1, 3, 1, 0, 0}, {1, 2, 1, 1, 1, 1}, {2, 3, 1, 0, 2, 2}}, 1.0);  // along V, then through
+  ASSERT_EQ(c.size(), 1u);
+  EXPECT_DOUBLE_EQ(c[0].t, 1.0);
+  EXPECT_FALSE(c[0].entering);
+  c = crossings_of({{0, 1, 3, 1, 0, 0}, {1, 2, 1, 1, 1, 1}, {2, 3, 1, 2, 2, 2}}, 1.0);  // along V, then back
+  EXPECT_EQ(c.size(), 0u);
+  // Rounding at a shared face: the two cells disagree about the side by an ulp; one crossing.
+  c = crossings_of({{0, 1, 0, 1 + 1e-16, 0, 0}, {1, 2, 1 - 1e-16, 2, 1, 1}}, 1.0);
+  EXPECT_EQ(c.size(), 1u);
+  // A gap (the ray outside a non-convex mesh) is no crossing, whichever side the ray re-enters on.
+  c = crossings_of({{0, 1, 2, 2, 0, 0}, {2, 3, 0, 0, 1, 1}}, 1.0);
+  EXPECT_EQ(c.size(), 0u);
+  c = crossings_of({{0, 1, 0, 2, 0, 0}, {2, 3, 2, 0, 1, 1}}, 1.0);  // one crossing in each part
+  ASSERT_EQ(c.size(), 2u);
+  EXPECT_DOUBLE_EQ(c[1].t, 2.5);
+  EXPECT_FALSE(c[1].entering);
+}
+
+// The ray of pixel (i, j), and its distance b from the centre of the shells and the t of closest approach.
+struct PixelRay {
+  Ray ray;
+  double b, tc;
+};
+PixelRay pixel_ray(const Camera& camera, int n, int i, int j) {
+  const Ray r = PixelRays(camera, n, n).ray(i + 0.5, j + 0.5);
+  const double tc = -glm::dot(r.origin, r.dir);
+  return {r, glm::length(r.origin + tc * r.dir), tc};
+}
+
+// Views of the shells: orthographic from above and obliquely, perspective from a corner.
+std::vector<Camera> shell_views() {
+  return {test::looking_down(2.2), test::view_from({2.0, -3.0, 4.0}, Projection::Orthographic, 2.2),
+          test::perspective({2.2, -2.6, 1.8}, {0.05, 0.02, 0}, 45)};
+}
+
+TEST(IsoLayers, CountsAndDepthsOnNestedShellsMatchTheClosedForm) {
+  // Iso-value 0 of `generate shells` is the spheres r = 1/6, 1/2, 5/6: a ray passing at b from the
+  // centre crosses each larger sphere at t = tc -/+ sqrt(r^2 - b^2). The piecewise-linear field
+  // moves the roots by O(h^2) away from the spheres' tangent rays; rays within 1.5 h of a tangent are
+  // not compared.
+  const int n = 40;
+  for (const char* kind : {"shells-tets", "shells"}) {
+    const Mesh m = generate(kind, 24);
+    const double h = 2.0 / 24;
+    const CellRayTracer tracer(m.view());
+    for (const Camera& camera : shell_views()) {
+      const LayerDepths d = layer_depths(tracer, test::field_values(m), 0.0, 1e-12, camera, n, n, 6);
+      int compared = 0;
+      double worst = 0.0;
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const PixelRay pr = pixel_ray(camera, n, i, j);
+          std::vector<double> expect;
+          bool near_tangent = false;
+          for (double r : kShellRadii) {
+            if (std::abs(pr.b - r) < 1.5 * h) near_tangent = true;
+            if (r > pr.b) expect.push_back(pr.tc - std::sqrt(r * r - pr.b * pr.b));
+          }
+          for (std::size_t k = expect.size(); k-- > 0;) expect.push_back(2 * pr.tc - expect[k]);
+          std::sort(expect.begin(), expect.end());
+          if (near_tangent) continue;
+          ++compared;
+          const std::size_t p = static_cast<std::size_t>(j) * n + i;
+          ASSERT_EQ(d.count[p], static_cast<int>(expect.size())) << kind << " pixel " << i << "," << j;
+          for (std::size_t k = 0; k < expect.size(); ++k) worst = std::max(worst, std::abs(d.t[p * 6 + k] - expect[k]));
+        }
+      EXPECT_GT(compared, n * n / 3) << kind;
+      EXPECT_LT(worst, 0.02) << kind << ": the depth of a crossing against the sphere's";
+    }
+  }
+}
+
+Image layers_image(const Mesh& m, const Camera& camera, int n, const LayerOptions& o, LayerStats* st = nullptr) {
+  const CellRayTracer tracer(m.view());
+  const TransferFunction tf = test::constant_tf(1.0, {0.9, 0.6, 0.3});
+  return render_layers(tracer, test::field_values(m), m.n_points(), tf, camera, n, n, o, st);
+}
+
+TEST(IsoLayers, EachLayerIsShadedByTheSpheresNormalAndBlendsAsItsWeightsSay) {
+  const Mesh m = generate("shells-tets", 24);
+  const int n = 48;
+  const Camera camera = test::perspective({2.2, -2.6, 1.8}, {0, 0, 0}, 45);
+  const glm::dvec3 base(0.9, 0.6, 0.3);
+  const CellRayTracer tracer(m.view());
+  const LayerDepths d = layer_depths(tracer, test::field_values(m), 0.0, 1e-12, camera, n, n, 3);
+  Image layer[4];
+  for (int k = 1; k <= 3; ++k) {
+    LayerOptions o;
+    o.layers = {k};
+    layer[k] = layers_image(m, camera, n, o);
+    double sum = 0.0;
+    int shaded = 0;
+    for (int j = 0; j < n; ++j)
+      for (int i = 0; i < n; ++i) {
+        const std::size_t p = static_cast<std::size_t>(j) * n + i;
+        const float* px = layer[k].pixel(i, j);
+        ASSERT_EQ(px[3], d.count[p] >= k ? 1.0f : 0.0f) << "layer " << k << " pixel " << i << "," << j;
+        if (d.count[p] < k) continue;
+        // An independent shade: the sphere's radial normal at the crossing found by the depths.
+        const PixelRay pr = pixel_ray(camera, n, i, j);
+        const glm::dvec3 at = pr.ray.origin + d.t[p * 3 + k - 1] * pr.ray.dir;
+        const glm::dvec3 expect = shade_layer(base, glm::normalize(at), pr.ray.dir);
+        for (int c = 0; c < 3; ++c) sum += std::abs(px[c] - expect[c]);
+        ++shaded;
+      }
+    ASSERT_GT(shaded, 50);
+    EXPECT_LT(sum / (3 * shaded), 0.03) << "layer " << k << ": mean shade error against the analytic normal";
+  }
+  LayerOptions o;
+  o.layers = {1, 3};
+  o.weights = {3.0, 1.0};
+  const Image blend = layers_image(m, camera, n, o);
+  for (std::size_t p = 0; p < static_cast<std::size_t>(n) * n; ++p) {
+    const float* b = blend.rgba.data() + 4 * p;
+    const float *l1 = layer[1].rgba.data() + 4 * p, *l3 = layer[3].rgba.data() + 4 * p;
+    for (int c = 0; c < 3; ++c) {
+      const double expect = l3[3] > 0 ? (3.0 * l1[c] + l3[c]) / 4.0 : l1[c];  // only the layers the ray reaches
+      ASSERT_NEAR(b[c], expect, 1e-6);
+    }
+  }
+}
+
+TEST(IsoLayers, SilhouettesLieWhereTheViewGrazesASphereVisibleOnTheFrontOneOnly) {
+  const Mesh m = generate("shells-tets", 32);
+  const int n = 64;
+  const Camera camera = test::looking_down(2.2);
+  LayerOptions o;
+  o.layers = {1, 2, 3};
+  o.silhouettes = Silhouettes::both;
+  LayerStats st;
+  const Image img = layers_image(m, camera, n, o, &st);
+  int visible = 0, hidden = 0;
+  const double h = 2.0 / 32, eps = o.silhouette_epsilon;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const float* px = img.pixel(i, j);
+      const bool grey = px[3] == 1.0f && px[0] == px[1] && px[1] == px[2] && px[0] > 0.3f && px[0] < 0.9f;
+      const bool black = px[3] == 1.0f && px[0] == 0.0f && px[1] == 0.0f && px[2] == 0.0f;
+      if (!grey && !black) continue;
+      // Where |d . n| < eps on a sphere of radius r: b in [r sqrt(1 - eps^2), r], widened by the mesh's h.
+      const double b = pixel_ray(camera, n, i, j).b;
+      int near = -1;
+      for (int s = 0; s < 3; ++s)
+        if (b > kShellRadii[s] * std::sqrt(1 - eps * eps) - 1.5 * h && b < kShellRadii[s] + 1.5 * h) near = s;
+      ASSERT_GE(near, 0) << "a silhouette pixel at b = " << b << " is near no sphere's contour";
+      if (black) {
+        EXPECT_EQ(near, 2) << "visible silhouettes are on the outer sphere, the front layer";
+        ++visible;
+      } else {
+        ++hidden;
+      }
+    }
+  EXPECT_GT(visible, 20);
+  EXPECT_GT(hidden, 10);
+  EXPECT_EQ(st.silhouette_pixels, visible + hidden);
+}
+
+TEST(IsoLayers, TheSamePictureFromOneAndTwoThreads) {
+  const Mesh m = generate("shells", 10);
+  LayerOptions o;
+  o.layers = {1, 2};
+  o.silhouettes = Silhouettes::hidden;
+  Image a, b;
+  tbb::task_arena(1).execute([&] { a = layers_image(m, test::view_from({2, -3, 4}, Projection::Perspective), 40, o); });
+  tbb::task_arena(2).execute([&] { b = layers_image(m, test::view_from({2, -3, 4}, Projection::Perspective), 40, o); });
+  EXPECT_EQ(a.rgba, b.rgba);
+}
+
+TEST(IsoLayers, BadOptionsAreRefusedNamingTheOption) {
+  const auto refused = [](std::vector<std::pair<std::string, std::string>> given, const std::string& says) {
+    RenderOptions o;
+    for (const auto& [name, value] : given) set_option(o, name, value);
+    try {
+      settings_from(o);
+      ADD_FAILURE() << "accepted; expected: " << says;
+    } catch (const InputError& e) {
+      EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
+    }
+  };
+  refused({{"method", "layers"}}, "needs --iso");
+  refused({{"method", "layers"}, {"iso", "x"}}, "--iso");
+  refused({{"method", "layers"}, {"iso", "0.5:1,2"}}, "colour");
+  refused({{"method", "layers"}, {"iso", "0"}, {"layer", "2,1"}}, "increasing");
+  refused({{"method", "layers"}, {"iso", "0"}, {"layer", "0"}}, "numbered from 1");
+  refused({{"method", "layers"}, {"iso", "0"}, {"layer", "1,2"}, {"layer-weights", "1"}}, "one per layer");
+  refused({{"method", "layers"}, {"iso", "0"}, {"layer-weights", "-1"}}, ">= 0");
+  refused({{"method", "layers"}, {"iso", "0"}, {"silhouettes", "some"}}, "--silhouettes");
+  refused({{"method", "layers"}, {"iso", "0"}, {"silhouette-epsilon", "2"}}, "--silhouette-epsilon");
+  RenderOptions o;
+  set_option(o, "method", "layers");
+  set_option(o, "iso", "0.25:1,0,0");
+  set_option(o, "layer", "1,3");
+  const RenderSettings s = settings_from(o);
+  EXPECT_EQ(s.mode, RenderMode::layers);
+  EXPECT_EQ(s.layers.iso, 0.25);
+  EXPECT_EQ(s.layers.layers, (std::vector<int>{1, 3}));
+  ASSERT_TRUE(s.layers.color.has_value());
+  EXPECT_EQ(s.layers.color->r, 1.0);
+}
+
+}  // namespace
+}  // namespace cellproj
