@@ -5,7 +5,6 @@
 #include <fstream>
 #include <iterator>
 #include <map>
-#include <mutex>
 #include <sstream>
 #include <unordered_map>
 
@@ -20,11 +19,8 @@
 #include <vtkExodusIIReader.h>
 #include <vtkIdList.h>
 #include <vtkInformation.h>
-#include <vtkLogger.h>
 #include <vtkMultiBlockDataSet.h>
 #include <vtkMultiBlockPLOT3DReader.h>
-#include <vtkObjectFactory.h>
-#include <vtkOutputWindow.h>
 #include <vtkPointData.h>
 #include <vtkPointSet.h>
 #include <vtkPoints.h>
@@ -39,76 +35,12 @@
 #include "grid/legacy_vtk_check.hpp"
 #include "grid/netcdf_check.hpp"
 #include "grid/read_mesh.hpp"
+#include "grid/vtk_messages.hpp"
 
 namespace fs = std::filesystem;
 
 namespace cellproj {
 namespace {
-
-// Collects VTK's error and warning text while a file is read, so that a failure becomes one
-// InputError instead of text on stderr.
-class CaptureWindow : public vtkOutputWindow {
- public:
-  static CaptureWindow* New();
-  vtkTypeMacro(CaptureWindow, vtkOutputWindow) void DisplayText(const char* text) override {
-    if (GetCurrentMessageType() == MESSAGE_TYPE_ERROR)
-      errors.push_back(clean(text));
-    else if (GetCurrentMessageType() != MESSAGE_TYPE_TEXT)
-      warnings.push_back(clean(text));
-  }
-  std::vector<std::string> errors, warnings;
-
- private:
-  // "ERROR: In file.cxx, line 12\nvtkReader (0x1): what\n\n" -> "what"
-  static std::string clean(std::string t) {
-    if (auto nl = t.find('\n'); t.rfind("ERROR", 0) == 0 || t.rfind("Warning", 0) == 0) t = t.substr(nl + 1);
-    if (auto p = t.find("): "); p != std::string::npos && p < 80) t = t.substr(p + 3);
-    while (!t.empty() && (t.back() == '\n' || t.back() == ' ')) t.pop_back();
-    return t;
-  }
-};
-vtkStandardNewMacro(CaptureWindow);
-
-// VTK's output window and logger are process-wide, so the reads that swap them take turns: this
-// lock is the one piece of process state cellproj keeps, and only for VTK's own.
-std::mutex& vtk_output_lock() {
-  static std::mutex m;
-  return m;
-}
-
-// While it lives, VTK's messages go to a CaptureWindow; the caller's output window and logger
-// verbosity come back afterwards.
-class VtkMessages {
- public:
-  VtkMessages()
-      : lock_(vtk_output_lock()),
-        previous_(vtkOutputWindow::GetInstance()),
-        window_(vtkSmartPointer<CaptureWindow>::New()),
-        verbosity_(vtkLogger::GetCurrentVerbosityCutoff()) {  // stderr's, the only sink unless the caller added one
-    vtkOutputWindow::SetInstance(window_);
-    // Some readers (CGNS) also log through vtkLogger straight to stderr.
-    vtkLogger::SetStderrVerbosity(vtkLogger::VERBOSITY_OFF);
-  }
-  ~VtkMessages() {
-    vtkOutputWindow::SetInstance(previous_);
-    vtkLogger::SetStderrVerbosity(verbosity_);
-  }
-  VtkMessages(const VtkMessages&) = delete;
-  VtkMessages& operator=(const VtkMessages&) = delete;
-
-  void throw_if_failed(const std::string& path) const {
-    if (window_->errors.empty()) return;
-    std::string what = window_->errors.front();
-    if (window_->errors.size() > 1) what += " (and " + std::to_string(window_->errors.size() - 1) + " more VTK errors)";
-    throw InputError(where(path, "cannot be read: " + what));
-  }
-
- private:
-  std::lock_guard<std::mutex> lock_;
-  vtkSmartPointer<vtkOutputWindow> previous_;
-  vtkSmartPointer<CaptureWindow> window_;
-  vtkLogger::Verbosity verbosity_;
-};
 
 struct Leaf {
   vtkDataSet* data;

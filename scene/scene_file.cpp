@@ -3,9 +3,11 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <sstream>
 #include <fstream>
 
 #include "base/error.hpp"
+#include "scene/render_options.hpp"
 
 namespace fs = std::filesystem;
 
@@ -93,9 +95,55 @@ Scene load_scene(const std::string& path) {
   return scene_from_json(j, path, fs::path(path).parent_path().string());
 }
 
+namespace {
+
+// {"iso": 0.5, "color": [1, 0, 0], "layer": [1, 2], "weights": [2, 1], "silhouettes": "both",
+// "silhouette_epsilon": 0.2} as the options --iso 0.5:1,0,0 --layer 1,2 ... (checked by their parser).
+std::vector<std::pair<std::string, std::string>> layer_options_from_json(const nlohmann::json& l, const std::string& at) {
+  if (!l.is_object()) throw InputError(at + ": expected an object");
+  only_keys(l, at, {"iso", "color", "layer", "weights", "silhouettes", "silhouette_epsilon"});
+  const auto number = [&](const nlohmann::json& v, const std::string& key) {
+    if (!v.is_number()) throw InputError(at + "." + key + ": expected a number, got " + v.dump());
+    std::ostringstream out;
+    out.precision(17);
+    out << v.get<double>();
+    return out.str();
+  };
+  const auto numbers = [&](const nlohmann::json& v, const std::string& key) {
+    if (!v.is_array() || v.empty()) throw InputError(at + "." + key + ": expected a list of numbers, got " + v.dump());
+    std::string list;
+    for (const auto& x : v) list += (list.empty() ? "" : ",") + number(x, key);
+    return list;
+  };
+  std::vector<std::pair<std::string, std::string>> o;
+  if (l.contains("iso")) {
+    std::string iso = number(l["iso"], "iso");
+    if (l.contains("color")) iso += ":" + numbers(l["color"], "color");
+    o.emplace_back("iso", iso);
+  } else if (l.contains("color")) {
+    throw InputError(at + ".color: goes with \"iso\"");
+  }
+  if (l.contains("layer")) o.emplace_back("layer", l["layer"].is_number() ? number(l["layer"], "layer") : numbers(l["layer"], "layer"));
+  if (l.contains("weights")) o.emplace_back("layer-weights", numbers(l["weights"], "weights"));
+  if (l.contains("silhouettes")) o.emplace_back("silhouettes", text(l["silhouettes"], at + ".silhouettes"));
+  if (l.contains("silhouette_epsilon")) o.emplace_back("silhouette-epsilon", number(l["silhouette_epsilon"], "silhouette_epsilon"));
+  RenderOptions check;  // the block's values checked now, so that a bad one names the scene
+  set_option(check, "method", "layers");
+  if (!l.contains("iso")) set_option(check, "iso", "0");
+  try {
+    for (const auto& [name, value] : o) set_option(check, name, value);
+    settings_from(check);
+  } catch (const InputError& e) {
+    throw InputError(at + ": " + e.what());
+  }
+  return o;
+}
+
+}  // namespace
+
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
-  only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image"});
+  only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
@@ -119,6 +167,7 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
   if (!j.contains("transfer_function")) throw InputError(where(path, "missing \"transfer_function\""));
   s.transfer_function = j["transfer_function"];
   if (j.contains("camera")) s.camera = camera_from_json(j["camera"], path);
+  if (j.contains("layers")) s.layer_options = layer_options_from_json(j["layers"], path + ": layers");
   if (j.contains("image")) {
     const auto& im = j["image"];
     const std::string at = path + ": image";

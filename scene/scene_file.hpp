@@ -2,6 +2,8 @@
 // A scene file (docs/scene.md): which mesh and field, the transfer function, the camera, the image.
 #include <optional>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
@@ -23,6 +25,9 @@ struct Scene {
   int width = 512, height = 512;
   glm::dvec3 background{0.0};
   std::string base_dir;  // the scene file's folder
+  // The "layers" block as render options by their command-line names ("iso" -> "0.5:1,0,0",
+  // "layer" -> "1,2"): what --method layers draws unless the command line says otherwise.
+  std::vector<std::pair<std::string, std::string>> layer_options;
 };
 
 // Throws InputError naming the file and the key for unknown keys, wrong types and missing keys.

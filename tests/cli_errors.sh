@@ -194,6 +194,31 @@ expect 2 "--method layers needs --iso V" -- render "$tmp/box.vtu" --method layer
 expect 2 "--layer: give the layers in increasing order" -- render "$tmp/box.vtu" --method layers --iso 0.5 --layer 3,1
 expect 2 "--iso does not apply to --method exact" -- render "$tmp/box.vtu" --method exact --iso 0.5
 expect 0 "wrote .*layers" -- render "$tmp/box.vtu" --method layers --iso 0.5:1,0,0 --layer 1,2 --silhouettes both --size 32x24 -o "$tmp/layers.png"
+# A scene's "layers" block gives what the options would; the command line overrides it.
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "layers": {"iso": 0.5, "color": [1, 0, 0], "layer": [1, 2], "silhouettes": "both"}}' > "$tmp/layers.json"
+expect 0 "wrote" -- render "$tmp/layers.json" --method layers --size 32x24 --npy "$tmp/l1.npy"
+expect 0 "wrote" -- render "$tmp/ok.json" --method layers --iso 0.5:1,0,0 --layer 1,2 --silhouettes both --size 32x24 --npy "$tmp/l2.npy"
+cmp -s "$tmp/l1.npy" "$tmp/l2.npy" || { echo "FAIL: the scene's layers block differs from the same options"; failed=$((failed+1)); }
+expect 0 "wrote" -- render "$tmp/layers.json" --method layers --layer 2 --size 32x24 --npy "$tmp/l3.npy"
+cmp -s "$tmp/l1.npy" "$tmp/l3.npy" && { echo "FAIL: --layer did not override the scene's"; failed=$((failed+1)); }
+expect 0 "wrote" -- render "$tmp/layers.json" --size 32x24 -o "$tmp/l4.png"  # other methods ignore the block
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "layers": {"iso": 0.5, "layer": [2, 1]}}' > "$tmp/badlayers.json"
+expect 1 "badlayers.json: layers: --layer: give the layers in increasing order" -- render "$tmp/badlayers.json" --method layers
+# Time series (docs/methods.md, "Time series"): playback with and without the background thread
+# gives the same bits; bad times, options and key frames are refused.
+expect 0 "6 key frames" -- generate box-tets -n 3 --steps 6 -o "$tmp/ser/s.pvd"
+expect 0 "frame 4/4, .*time 5" -- render "$tmp/ser/s.pvd" --animate 0:5:4 --size 24x20 --npy "$tmp/ser/a_%d.npy"
+expect 0 "frame 4/4" -- render "$tmp/ser/s.pvd" --animate 0:5:4 --size 24x20 --npy "$tmp/ser/b_%d.npy" --no-prefetch
+for f in 0 1 2 3; do cmp -s "$tmp/ser/a_$f.npy" "$tmp/ser/b_$f.npy" || { echo "FAIL: prefetch changed frame $f"; failed=$((failed+1)); }; done
+expect 0 "wrote" -- render "$tmp/ser/s.pvd" --time 5 --size 24x20 --npy "$tmp/ser/t5.npy"
+cmp -s "$tmp/ser/t5.npy" "$tmp/ser/a_3.npy" || { echo "FAIL: --time 5 differs from the animation's last frame"; failed=$((failed+1)); }
+expect 0 "wrote" -- render "$tmp/ser/s_%04d.vtu" --time 2.5 --size 24x20 -o "$tmp/ser/p.png"
+expect 1 "s.pvd: time 7.000000 is outside the series' times \[0.000000, 5.000000\]" -- render "$tmp/ser/s.pvd" --time 7
+expect 2 "--time renders one frame and --animate many" -- render "$tmp/ser/s.pvd" --time 1 --animate 0:1:2 -o "$tmp/ser/x_%d.png"
+expect 2 "--animate: expected T0:T1:FRAMES" -- render "$tmp/ser/s.pvd" --animate 0:1
+expect 1 "box.vtu: not a time series" -- render "$tmp/box.vtu" --time 1
+rm "$tmp/ser/s_0003.vtu"
+expect 1 "s_0003.vtu: no such file" -- render "$tmp/ser/s.pvd" --time 2.5
 # docs/reliability.md: bad files of every kind get exit 1 and a message naming file and element.
 mkdir -p "$tmp/afolder" "$tmp/afolder.json"
 expect 1 "afolder: is a folder, not a mesh file" -- render "$tmp/afolder"  # no .json: taken as a mesh

@@ -1,6 +1,8 @@
 // cellproj generate KIND -o FILE
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 
 #include "base/error.hpp"
 #include "grid/generate.hpp"
@@ -8,11 +10,46 @@
 #include "tools/commands.hpp"
 
 namespace cellproj {
+namespace {
+
+// A time series of `steps` key frames at times 0, 1, ...: the mesh's field times a wave travelling
+// along x, 1 + 0.5 sin(4x - 2 pi k / steps). `out` is a pattern with one %d (mesh_%04d.vtu), or a
+// .pvd written with its key frames NAME_0000.vtu, ... beside it. Returns the files written.
+std::vector<std::string> write_series(Mesh m, const std::string& out, int steps, bool binary) {
+  const bool pvd = std::filesystem::path(out).extension() == ".pvd";
+  if (!pvd && out.find('%') == std::string::npos)
+    throw InputError("--steps: -o must be a .pvd collection or a file pattern with one %d (mesh_%04d.vtu)");
+  const std::string pattern =
+      pvd ? (std::filesystem::path(out).parent_path() / (std::filesystem::path(out).stem().string() + "_%04d.vtu")).string()
+          : out;
+  const std::vector<double> base = m.fields.at(0).values;
+  std::vector<std::string> files;
+  std::string collection = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
+  for (int k = 0; k < steps; ++k) {
+    for (std::int64_t p = 0; p < m.n_points(); ++p)
+      m.fields[0].values[p] = base[p] * (1.0 + 0.5 * std::sin(4.0 * m.points[3 * p] - 2.0 * M_PI * k / steps));
+    char file[4096];
+    std::snprintf(file, sizeof file, pattern.c_str(), k);
+    write_mesh(m, file, binary);
+    files.push_back(file);
+    collection += "  <DataSet timestep=\"" + std::to_string(k) + "\" part=\"0\" file=\"" +
+                  std::filesystem::path(file).filename().string() + "\"/>\n";
+  }
+  if (pvd) {
+    std::ofstream f(out);
+    f << collection << "</Collection>\n</VTKFile>\n";
+    if (!f) throw InputError(where(out, "write failed"));
+    files.push_back(out);
+  }
+  return files;
+}
+
+}  // namespace
 
 Action add_generate(CLI::App& app) {
   struct Args {
     std::string kind, out;
-    int n = 16;
+    int n = 16, steps = 1;
     bool binary = false;
   };
   auto args = std::make_shared<Args>();
@@ -24,8 +61,19 @@ Action add_generate(CLI::App& app) {
                   "Output mesh: .vtu, .vtk (legacy), .exo (Exodus II), or for tetrahedra .node (TetGen) or .off")
       ->required();
   cmd->add_flag("--binary", args->binary, ".vtk: binary instead of ASCII");
+  cmd->add_option("--steps", args->steps,
+                  "Write a time series of this many key frames (times 0, 1, ...), the field times a wave travelling "
+                  "along x: -o a .pvd (its files beside it) or a pattern such as out/mesh_%04d.vtu")
+      ->check(CLI::Range(1, 100000));
   return [args] {
     const Mesh m = generate(args->kind, args->n);
+    if (args->steps > 1) {
+      const std::vector<std::string> files = write_series(m, args->out, args->steps, args->binary);
+      std::printf("wrote %s ... %s (%d key frames of %lld points, %lld cells)\n", files.front().c_str(),
+                  files.back().c_str(), args->steps, static_cast<long long>(m.n_points()),
+                  static_cast<long long>(m.n_cells()));
+      return kExitOk;
+    }
     write_mesh(m, args->out, args->binary);
     std::printf("wrote %s (%lld points, %lld cells)\n", args->out.c_str(), static_cast<long long>(m.n_points()),
                 static_cast<long long>(m.n_cells()));

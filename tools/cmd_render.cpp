@@ -7,11 +7,15 @@
 #include <optional>
 #include <tuple>
 
+#include <sys/resource.h>
+
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "grid/time_series.hpp"
+#include "render/playback.hpp"
 #include "render/renderer.hpp"
 #include "scene/camera_json.hpp"
 #include "scene/names.hpp"
@@ -38,6 +42,9 @@ struct RenderArgs {
   bool legend = false;
   double max_memory_gib = 0.0;  // 0: the machine's available memory
   bool stats = false;
+  std::optional<double> time;  // --time T: a series' frame at T
+  std::string animate;         // --animate T0:T1:FRAMES
+  bool no_prefetch = false;    // make each frame of a series in turn, not on a background thread
 };
 
 // "16,64,256": the plane counts of --progressive.
@@ -60,6 +67,13 @@ std::vector<int> parse_levels(const std::string& text) {
     at = comma + 1;
   }
   return levels;
+}
+
+// The process's peak resident memory so far, in MiB (getrusage).
+double peak_rss_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
 // out.png -> out-64.png: where level `slices` of --progressive goes.
@@ -134,7 +148,21 @@ FramePaths frame_paths(const std::string& png, const std::string& npy, const std
 struct Input {
   Scene scene;
   PreparedScene prepared;
+  std::unique_ptr<SeriesPlayer> player;  // a time series: its frames (prepared.loaded has no cells then)
+  SeriesFrame first;                     // the series' first frame
+  std::vector<double> times;             // the series' frame times
 };
+
+// A frame of a time series as a mesh to prepare the scene from: its points and its field (the
+// cells stay with the player, which renders every frame).
+LoadedMesh first_frame(const SeriesPlayer& player, const SeriesFrame& frame) {
+  LoadedMesh loaded;
+  loaded.mesh.source = player.series().source;
+  loaded.mesh.points = *frame.points;
+  loaded.mesh.fields.push_back({player.field_name(), frame.field, "a time series' frame"});
+  loaded.report = player.first_report();
+  return loaded;
+}
 
 Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSettings& settings,
                  const std::vector<int>& levels) {
@@ -172,11 +200,33 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   // and again from the mesh as read.
   const ImageSize size{scene.width, scene.height};
   const auto size_text = std::to_string(scene.width) + "x" + std::to_string(scene.height);
-  if (const HeaderCounts h = header_counts(scene.mesh); h.cells > 0)
+  // A time series: the key frames listed (no mesh read), and the first frame made.
+  std::unique_ptr<SeriesPlayer> player;
+  std::vector<double> times;
+  const bool series = is_series_path(scene.mesh) || a.time || !a.animate.empty();
+  std::string first_file = scene.mesh;
+  if (series) {
+    if (a.time && !a.animate.empty()) throw UsageError("--time renders one frame and --animate many: give one");
+    TimeSeries listed = list_series(scene.mesh, scene.reader);
+    first_file = listed.frames.front().path;
+    times = !a.animate.empty() ? usage([&] { return animation_times(a.animate); })
+                               : std::vector<double>(a.frames, a.time ? *a.time : listed.frames.front().time);
+    for (double t : {times.front(), times.back()}) locate(listed, t);  // in range, before any read
+    player = std::make_unique<SeriesPlayer>(std::move(listed), scene.field, scene.reader);
+  }
+  if (const HeaderCounts h = header_counts(first_file); h.cells > 0)
     refuse_beyond_memory(
-        estimate_mesh_bytes(h) + renderer.estimate_bytes({h.points, h.cells, h.cells}, size), a.max_memory_gib,
-        "reading " + scene.mesh + " (" + std::to_string(h.cells) + " cells) and rendering " + size_text, a.input);
-  LoadedMesh loaded = read_with_progress(scene.mesh, scene.reader);
+        estimate_mesh_bytes(h) * (series ? 2 : 1) + renderer.estimate_bytes({h.points, h.cells, h.cells}, size),
+        a.max_memory_gib,
+        "reading " + first_file + " (" + std::to_string(h.cells) + " cells" + (series ? ", two key frames" : "") +
+            ") and rendering " + size_text,
+        a.input);
+  // A series' colours and framing come from its first key frame whatever the time rendered, so that
+  // --time T and --animate give the same picture at T.
+  SeriesFrame first;
+  LoadedMesh loaded = player ? first_frame(*player, player->frame_at(player->series().frames.front().time))
+                             : read_with_progress(scene.mesh, scene.reader);
+  if (player) first = player->frame_at(times.front());
   if (!scene_file) {
     QuickLook look = a.look;
     look.field = a.field;
@@ -191,14 +241,27 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     scene.view = a.view;
   }
   PreparedScene prepared = prepare_scene(scene, std::move(loaded));
-  refuse_beyond_memory(renderer.estimate_bytes(size_of(prepared.loaded.mesh.view()), size), a.max_memory_gib,
-                       "rendering " + size_text + " of " + std::to_string(prepared.loaded.mesh.n_cells()) + " cells",
-                       a.input);
-  return {std::move(scene), std::move(prepared)};
+  const MeshView cells = player ? player->view(first) : prepared.loaded.mesh.view();
+  refuse_beyond_memory(renderer.estimate_bytes(size_of(cells), size), a.max_memory_gib,
+                       "rendering " + size_text + " of " + std::to_string(cells.n_cells) + " cells", a.input);
+  return {std::move(scene), std::move(prepared), std::move(player), std::move(first), std::move(times)};
 }
 
-int run_render(const RenderArgs& a) {
+int run_render(const RenderArgs& given) {
   const auto t_load = std::chrono::steady_clock::now();
+  RenderArgs a = given;
+  // A scene's "layers" block: the options of --method layers that the command line does not give.
+  // (A scene that does not load is reported here, exit 1, for --method layers, which needs it first.)
+  if (is_scene_file(a.input) && a.options.method == "layers")
+    for (const auto& [name, value] : load_scene(a.input).layer_options)
+      if (std::find(a.options.given.begin(), a.options.given.end(), name) == a.options.given.end()) {
+        set_option(a.options, name, value);
+        a.options.given.pop_back();  // a default, not the user's word
+      }
+  if (!a.animate.empty()) {  // --animate T0:T1:N renders N frames
+    if (a.frames != 1) throw UsageError("--animate T0:T1:FRAMES gives the number of frames: drop --frames");
+    a.frames = static_cast<int>(usage([&] { return animation_times(a.animate); }).size());
+  }
   // The command line first (exit 2 on a bad value), then the scene (exit 1).
   const RenderSettings settings = usage([&] { return settings_from(a.options); });
   const std::unique_ptr<Renderer> renderer = usage([&] {
@@ -209,6 +272,8 @@ int run_render(const RenderArgs& a) {
   const std::vector<int> levels =
       a.progressive.empty() ? std::vector<int>{} : usage([&] { return parse_levels(a.progressive); });
   if (!levels.empty() && a.frames > 1) throw UsageError("--progressive renders one view: it does not go with --frames");
+  if (!levels.empty() && (a.time || !a.animate.empty()))
+    throw UsageError("--progressive renders one mesh: it does not go with --time or --animate");
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
   const Input input = load_input(a, *renderer, settings, levels);
@@ -235,7 +300,37 @@ int run_render(const RenderArgs& a) {
   std::vector<double> frame_times;
   double prepare_seconds = 0.0, render_seconds = 0.0;
   RenderReport report;
+  PlaybackStats playback;
   arena.execute([&] {
+    // --orbit D: a turntable of D degrees over the frames; without it a playback (--animate) keeps
+    // its camera, and a timing run (--frames) turns a degree per frame.
+    const auto degrees = [&](int f) { return a.orbit != 0.0 ? f * a.orbit / a.frames : a.animate.empty() ? f : 0.0; };
+    if (input.player) {  // a time series: frame f at times[f], the next one made while f renders
+      auto t_frame = std::chrono::steady_clock::now();
+      std::unique_ptr<ProgressBar> bar;
+      playback = play_series(
+          *input.player, input.first, input.times, !a.no_prefetch, *renderer, prepared.tf,
+          [&](int f) { return orbit(prepared.camera, degrees(f)); }, size,
+          [&](int f, Image&& img, const RenderReport& r) {
+            report = r;
+            render_seconds += r.seconds;
+            frame_times.push_back(seconds_since(t_frame));
+            t_frame = std::chrono::steady_clock::now();
+            char what[64];
+            std::snprintf(what, sizeof what, ", time %g", input.times[f]);
+            if (paths.sequence)
+              write(img, paths.png_of(f), paths.npy_of(f), frame_what(f, r.seconds) + what);
+            else if (f == 0)
+              first = std::move(img);
+          },
+          [&](int f) -> Progress {
+            bar = std::make_unique<ProgressBar>(a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" +
+                                                                   std::to_string(a.frames)
+                                                             : "rendering");
+            return [&bar](double d) { (*bar)(d); };
+          });
+      return;
+    }
     const Volume volume(mesh.view(), {/*trusted: load_mesh validated it*/ true});
     const Field field = field_of(mesh, prepared.field);
     const auto t_prep = std::chrono::steady_clock::now();
@@ -261,9 +356,7 @@ int run_render(const RenderArgs& a) {
       const auto t_frame = std::chrono::steady_clock::now();
       ProgressBar bar(a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering");
       report = {};
-      // --orbit D: a turntable of D degrees over the frames; without it, a degree per frame (a timing run).
-      const double degrees = a.orbit != 0.0 ? f * a.orbit / a.frames : f;
-      Image img = renderer->render(volume, field, prepared.tf, orbit(prepared.camera, degrees), size, &report,
+      Image img = renderer->render(volume, field, prepared.tf, orbit(prepared.camera, degrees(f)), size, &report,
                                    [&](double d) { bar(d); });
       render_seconds += report.seconds;
       frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own
@@ -288,7 +381,7 @@ int run_render(const RenderArgs& a) {
     nlohmann::json s = {{"method", a.options.method},
                         {"mesh", scene.mesh},
                         {"field", prepared.field},
-                        {"cells", mesh.n_cells()},
+                        {"cells", input.player ? input.player->cells().n_cells() : mesh.n_cells()},
                         {"width", scene.width},
                         {"height", scene.height},
                         {"threads", threads},
@@ -300,6 +393,18 @@ int run_render(const RenderArgs& a) {
                         {"prepare_seconds", prepare_seconds},
                         {"render_seconds", render_seconds / a.frames}};
     s.update(report_json(report));  // the last frame's
+    if (input.player) {  // how much of making the frames the background thread hid behind the renders
+      const SeriesPlayer& p = *input.player;
+      s.update({{"key_frames", p.series().frames.size()},
+                {"key_frames_read", p.key_frames_read()},
+                {"key_frame_read_seconds", p.read_seconds()},
+                {"points_move", p.points_move()},
+                {"volumes", playback.volumes},
+                {"prefetch", !a.no_prefetch},
+                {"series_make_seconds", playback.make_seconds},
+                {"series_wait_seconds", playback.wait_seconds},
+                {"peak_rss_mib", peak_rss_mib()}});
+    }
     std::fprintf(stderr, "%s\n", s.dump().c_str());
   }
   return kExitOk;
@@ -420,6 +525,15 @@ Action add_render(CLI::App& app) {
          "Render N frames: a turntable with --orbit and a pattern in -o, else a timing run turning the camera 1 "
          "degree per frame (the median frame time in --stats)")
       ->check(CLI::Range(1, 100000));
+  cmd->add_option("--time", args->time,
+                  "A time series (the input's mesh a .pvd, a numbered pattern mesh_%04d.vtu, or an Exodus file with "
+                  "time steps): render the field interpolated linearly between the key frames around T");
+  cmd->add_option("--animate", args->animate,
+                  "A time series played: FRAMES frames from time T0 to T1 (T0:T1:FRAMES), written to a pattern in -o "
+                  "(out/%04d.png); with --orbit the camera turns meanwhile");
+  cmd->add_flag("--no-prefetch", args->no_prefetch,
+                "Time series: make each frame in turn instead of on a background thread while the previous renders "
+                "(to measure what the thread hides)");
   add_max_memory_option(*cmd, args->max_memory_gib, "Refuse renders");
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
   return [args, settings, look] {

@@ -1,0 +1,251 @@
+#include "grid/time_series.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <filesystem>
+#include <memory>
+#include <regex>
+
+#include <netcdf.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLDataElement.h>
+#include <vtkXMLUtilities.h>
+
+#include "base/error.hpp"
+#include "base/timing.hpp"
+#include "grid/netcdf_check.hpp"
+#include "grid/vtk_messages.hpp"
+
+namespace fs = std::filesystem;
+
+namespace cellproj {
+namespace {
+
+std::string lower_extension(const std::string& path) {
+  std::string ext = fs::path(path).extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  return ext;
+}
+
+// A ParaView collection: <VTKFile type="Collection"><Collection><DataSet timestep=".." file=".."/>.
+std::vector<KeyFrame> pvd_frames(const std::string& path) {
+  if (!fs::is_regular_file(path)) throw InputError(where(path, "no such file"));
+  vtkSmartPointer<vtkXMLDataElement> root;
+  {
+    VtkMessages messages;
+    root.TakeReference(vtkXMLUtilities::ReadElementFromFile(path.c_str()));
+    if (!root) messages.throw_if_failed(path);
+  }
+  if (!root) throw InputError(where(path, "not an XML file"));
+  const char* type = root->GetAttribute("type");
+  vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
+  if (std::string(root->GetName() ? root->GetName() : "") != "VTKFile" || !type ||
+      std::string(type) != "Collection" || !collection)
+    throw InputError(where(path, "not a ParaView collection (.pvd): expected <VTKFile type=\"Collection\"> holding "
+                                 "a <Collection>"));
+  std::vector<KeyFrame> frames;
+  const fs::path folder = fs::path(path).parent_path();
+  for (int k = 0; k < collection->GetNumberOfNestedElements(); ++k) {
+    vtkXMLDataElement* d = collection->GetNestedElement(k);
+    if (std::string(d->GetName()) != "DataSet") continue;
+    const std::string element = "DataSet " + std::to_string(frames.size());
+    const char* file = d->GetAttribute("file");
+    if (!file || !*file) throw InputError(where(path, element + " has no file attribute"));
+    if (const char* part = d->GetAttribute("part"); part && std::string(part) != "0")
+      throw InputError(where(path, element + " is part " + part +
+                                       " of its time step: collections of several parts per step are not read"));
+    double time = static_cast<double>(frames.size());
+    if (const char* t = d->GetAttribute("timestep")) {
+      char* end = nullptr;
+      time = std::strtod(t, &end);
+      if (end == t || *end != '\0' || !std::isfinite(time))
+        throw InputError(where(path, element + " has timestep=\"" + t + "\", not a finite number"));
+    }
+    const fs::path p = fs::path(file).is_absolute() ? fs::path(file) : folder / file;
+    frames.push_back({time, p.string(), 0});
+  }
+  return frames;
+}
+
+// The files "dir/mesh_%04d.vtu" names, by number: any run of digits that the pattern prints back.
+std::vector<KeyFrame> numbered_frames(const std::string& pattern) {
+  const fs::path folder = fs::path(pattern).parent_path();
+  const std::string name = fs::path(pattern).filename().string();
+  const std::regex conversion("%0?[0-9]*d");
+  std::smatch m;
+  if (!std::regex_search(name, m, conversion) || folder.string().find('%') != std::string::npos)
+    throw InputError(where(pattern, "a numbered series names its files with one %d in the file name, such as "
+                                    "mesh_%04d.vtu"));
+  const std::string prefix = m.prefix(), suffix = m.suffix();
+  if (suffix.find('%') != std::string::npos) throw InputError(where(pattern, "a file pattern takes one %d"));
+  std::vector<KeyFrame> frames;
+  std::error_code ec;
+  const fs::path dir = folder.empty() ? fs::path(".") : folder;
+  for (const auto& entry : fs::directory_iterator(dir, ec)) {
+    const std::string f = entry.path().filename().string();
+    if (f.size() <= prefix.size() + suffix.size() || f.compare(0, prefix.size(), prefix) != 0 ||
+        f.compare(f.size() - suffix.size(), suffix.size(), suffix) != 0)
+      continue;
+    const std::string digits = f.substr(prefix.size(), f.size() - prefix.size() - suffix.size());
+    if (digits.size() > 9 || !std::all_of(digits.begin(), digits.end(), ::isdigit)) continue;
+    const int number = std::stoi(digits);
+    char printed[512];
+    std::snprintf(printed, sizeof printed, name.c_str(), number);
+    if (f == printed) frames.push_back({static_cast<double>(number), (folder / f).string(), 0});
+  }
+  if (ec) throw InputError(where(pattern, "cannot list its folder: " + ec.message()));
+  return frames;
+}
+
+// An Exodus file's time steps, from its variable time_whole (netCDF, after the header is checked).
+std::vector<KeyFrame> exodus_frames(const std::string& path) {
+  check_netcdf_readable(path);
+  int id = 0;
+  if (int err = nc_open(path.c_str(), NC_NOWRITE, &id); err != NC_NOERR)
+    throw InputError(where(path, std::string("not a readable Exodus II file: ") + nc_strerror(err)));
+  std::vector<double> times;
+  int var = 0, dim = 0, ndims = 0;
+  std::size_t steps = 0;
+  if (nc_inq_varid(id, "time_whole", &var) == NC_NOERR && nc_inq_varndims(id, var, &ndims) == NC_NOERR &&
+      ndims == 1 && nc_inq_vardimid(id, var, &dim) == NC_NOERR && nc_inq_dimlen(id, dim, &steps) == NC_NOERR) {
+    times.resize(steps);
+    if (steps > 0 && nc_get_var_double(id, var, times.data()) != NC_NOERR) times.clear(), steps = 0;
+  }
+  nc_close(id);
+  std::vector<KeyFrame> frames;
+  for (std::size_t k = 0; k < times.size(); ++k) frames.push_back({times[k], path, static_cast<int>(k)});
+  if (frames.empty()) frames.push_back({0.0, path, 0});  // no time steps: the one state of the mesh
+  return frames;
+}
+
+}  // namespace
+
+bool is_series_path(const std::string& path) {
+  return lower_extension(path) == ".pvd" || fs::path(path).filename().string().find('%') != std::string::npos;
+}
+
+TimeSeries list_series(const std::string& path, const ReadOptions& options) {
+  TimeSeries s{path, {}};
+  const std::string ext = lower_extension(path);
+  if (ext == ".pvd")
+    s.frames = pvd_frames(path);
+  else if (path.find('%') != std::string::npos)
+    s.frames = numbered_frames(path);
+  else if (options.format == "exodus" || (options.format.empty() && format_for(path) == "exodus"))
+    s.frames = exodus_frames(path);
+  else
+    throw InputError(where(path, "not a time series: give a ParaView collection (.pvd), a numbered series "
+                                 "(mesh_%04d.vtu) or an Exodus file with time steps"));
+  if (s.frames.empty()) throw InputError(where(path, "names no key frame (no file of the series was found)"));
+  std::stable_sort(s.frames.begin(), s.frames.end(), [](const KeyFrame& a, const KeyFrame& b) { return a.time < b.time; });
+  for (std::size_t k = 1; k < s.frames.size(); ++k)
+    if (s.frames[k].time == s.frames[k - 1].time)
+      throw InputError(where(path, "two key frames at time " + std::to_string(s.frames[k].time) + " (" +
+                                       s.frames[k - 1].path + " and " + s.frames[k].path + ")"));
+  return s;
+}
+
+SeriesPosition locate(const TimeSeries& s, double t) {
+  const double first = s.frames.front().time, last = s.frames.back().time;
+  if (!(t >= first && t <= last))
+    throw InputError(where(s.source, "time " + std::to_string(t) + " is outside the series' times [" +
+                                         std::to_string(first) + ", " + std::to_string(last) + "]"));
+  const auto after = std::lower_bound(s.frames.begin(), s.frames.end(), t,
+                                      [](const KeyFrame& f, double time) { return f.time < time; });
+  const std::size_t k = static_cast<std::size_t>(after - s.frames.begin());
+  if (after->time == t) return {k, k, 0.0};
+  return {k - 1, k, (t - s.frames[k - 1].time) / (after->time - s.frames[k - 1].time)};
+}
+
+SeriesPlayer::SeriesPlayer(TimeSeries series, std::string field, ReadOptions reader)
+    : series_(std::move(series)), field_(std::move(field)), reader_(std::move(reader)) {
+  if (series_.frames.empty()) throw InputError(where(series_.source, "names no key frame"));
+}
+
+const SeriesPlayer::Held& SeriesPlayer::hold(std::size_t index, std::size_t keep) {
+  for (const Held& h : held_)
+    if (h.index == index) return h;
+  // Evict a key frame other than `keep`: the one further from `index`, which a playback left behind.
+  const auto distance = [&](const Held& h) {
+    return h.index == kNone ? ~std::size_t(0) : h.index > index ? h.index - index : index - h.index;
+  };
+  Held& slot = held_[0].index == keep   ? held_[1]
+               : held_[1].index == keep ? held_[0]
+               : distance(held_[0]) >= distance(held_[1]) ? held_[0]
+                                                          : held_[1];
+  const KeyFrame& kf = series_.frames[index];
+  const auto start = std::chrono::steady_clock::now();
+  ReadOptions options = reader_;
+  options.time_step = kf.time_step;
+  LoadedMesh loaded = load_mesh(kf.path, options);
+  Mesh& m = loaded.mesh;
+  const std::string what = "key frame " + std::to_string(index) + " (time " + std::to_string(kf.time) + ") of " +
+                           series_.source;
+  if (reads_ == 0) {
+    if (field_.empty()) {
+      if (m.fields.size() != 1)
+        throw InputError(where(kf.path, "has " + std::to_string(m.fields.size()) +
+                                            " point fields; name the one to play (--field or the scene's field)"));
+      field_ = m.fields.front().name;
+    }
+    first_report_ = loaded.report;
+    cells_.source = series_.source;
+    cells_.connectivity = std::move(m.connectivity);
+    cells_.offsets = std::move(m.offsets);
+    cells_.types = std::move(m.types);
+    first_points_ = std::make_shared<const std::vector<double>>(std::move(m.points));
+  } else {
+    if (m.types != cells_.types || m.offsets != cells_.offsets || m.connectivity != cells_.connectivity ||
+        m.points.size() != first_points_->size())
+      throw InputError(where(kf.path, what + ": its cells differ from the first key frame's; the key frames of a "
+                                             "series must share their points and cells (only their values may change)"));
+  }
+  slot.index = index;
+  if (reads_ == 0 || m.points == *first_points_) {
+    slot.points = first_points_;
+  } else {
+    slot.points = std::make_shared<const std::vector<double>>(std::move(m.points));
+    points_move_ = true;
+  }
+  const PointField* f = m.find_field(field_);
+  if (!f) m.field(field_);  // throws, listing the fields
+  slot.field = std::move(m.find_field(field_)->values);
+  ++reads_;
+  read_seconds_ += seconds_since(start);
+  return slot;
+}
+
+SeriesFrame SeriesPlayer::frame_at(double t) {
+  SeriesFrame out;
+  out.time = t;
+  out.position = locate(series_, t);
+  const SeriesPosition& p = out.position;
+  const Held& a = hold(p.before, p.after);
+  if (p.before == p.after) {  // exactly a key frame
+    out.points = a.points;
+    out.field = a.field;
+    return out;
+  }
+  const Held& b = hold(p.after, p.before);
+  const double w = p.weight;
+  out.field.resize(a.field.size());
+  for (std::size_t i = 0; i < out.field.size(); ++i) out.field[i] = (1.0 - w) * a.field[i] + w * b.field[i];
+  if (a.points == b.points) {
+    out.points = a.points;
+  } else {
+    auto points = std::make_shared<std::vector<double>>(a.points->size());
+    for (std::size_t i = 0; i < points->size(); ++i) (*points)[i] = (1.0 - w) * (*a.points)[i] + w * (*b.points)[i];
+    out.points = std::move(points);
+  }
+  return out;
+}
+
+MeshView SeriesPlayer::view(const SeriesFrame& frame) const {
+  MeshView v = cells_.view();
+  v.points = frame.points->data();
+  v.n_points = static_cast<std::int64_t>(frame.points->size() / 3);
+  return v;
+}
+
+}  // namespace cellproj
