@@ -213,6 +213,7 @@ for f in 0 1 2 3; do cmp -s "$tmp/ser/a_$f.npy" "$tmp/ser/b_$f.npy" || { echo "F
 expect 0 "wrote" -- render "$tmp/ser/s.pvd" --time 5 --size 24x20 --npy "$tmp/ser/t5.npy"
 cmp -s "$tmp/ser/t5.npy" "$tmp/ser/a_3.npy" || { echo "FAIL: --time 5 differs from the animation's last frame"; failed=$((failed+1)); }
 expect 0 "wrote" -- render "$tmp/ser/s_%04d.vtu" --time 2.5 --size 24x20 -o "$tmp/ser/p.png"
+expect 0 "s.pvd: a time series of 6 key frames, times 0.0 to 5.0" -- info "$tmp/ser/s.pvd"
 expect 1 "s.pvd: time 7.000000 is outside the series' times \[0.000000, 5.000000\]" -- render "$tmp/ser/s.pvd" --time 7
 expect 2 "--time renders one frame and --animate many" -- render "$tmp/ser/s.pvd" --time 1 --animate 0:1:2 -o "$tmp/ser/x_%d.png"
 expect 2 "--animate: expected T0:T1:FRAMES" -- render "$tmp/ser/s.pvd" --animate 0:1

@@ -9,6 +9,7 @@
 
 #include "grid/overlaps.hpp"
 #include "grid/read_mesh.hpp"
+#include "grid/time_series.hpp"
 #include "grid/topology.hpp"
 #include "scene/prepare.hpp"
 #include "tools/commands.hpp"
@@ -82,6 +83,11 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
 }
 
 void print_text(const nlohmann::json& j) {
+  if (const auto& s = j["series"]; !s.is_null())
+    std::printf("%s: a time series of %lld key frames, times %s to %s (render --time T or --animate); the "
+                "first key frame:\n",
+                s["source"].get<std::string>().c_str(), s["key_frames"].get<long long>(), s["times"].front().dump().c_str(),
+                s["times"].back().dump().c_str());
   std::printf("%s\n", j["file"].get<std::string>().c_str());
   std::printf("  points %lld, cells %lld:", j["points"].get<long long>(), j["cells"].get<long long>());
   for (const auto& [k, v] : j["cells_by_type"].items())
@@ -127,11 +133,31 @@ void print_text(const nlohmann::json& j) {
   }
 }
 
+// A time series' key frames (a .pvd, a numbered pattern, an Exodus file with several time steps),
+// or null; `described` becomes the key frame described below them (the first).
+nlohmann::json series_of(const InfoArgs& a, std::string& described) {
+  std::string format = a.reader.format;
+  if (format.empty()) try {
+      format = format_for(a.mesh);
+    } catch (const InputError&) {  // load_mesh says what is wrong with the name
+    }
+  if (!is_series_path(a.mesh) && format != "exodus") return nullptr;
+  const TimeSeries s = list_series(a.mesh, a.reader);
+  if (!is_series_path(a.mesh) && s.frames.size() < 2) return nullptr;
+  nlohmann::json times = nlohmann::json::array(), files = nlohmann::json::array();
+  for (const KeyFrame& f : s.frames) times.push_back(f.time), files.push_back(f.path);
+  if (is_series_path(a.mesh)) described = s.frames.front().path;
+  return {{"source", s.source}, {"key_frames", s.frames.size()}, {"times", times}, {"files", files}};
+}
+
 int run_info(const InfoArgs& a) {
   const auto t0 = std::chrono::steady_clock::now();
-  const LoadedMesh loaded = load_mesh(a.mesh, a.reader);
+  std::string described = a.mesh;
+  const nlohmann::json series = series_of(a, described);
+  const LoadedMesh loaded = load_mesh(described, a.reader);
   const double read = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   nlohmann::json j = describe(loaded, read);
+  j["series"] = series;
   j["overlapping_cell_pairs"] = nullptr;
   if (a.overlaps) {
     const auto t1 = std::chrono::steady_clock::now();
