@@ -142,7 +142,13 @@ nlohmann::json series_of(const InfoArgs& a, std::string& described) {
     } catch (const InputError&) {  // load_mesh says what is wrong with the name
     }
   if (!is_series_path(a.mesh) && format != "exodus") return nullptr;
-  const TimeSeries s = list_series(a.mesh, a.reader);
+  TimeSeries s;
+  try {
+    s = list_series(a.mesh, a.reader);
+  } catch (const InputError&) {
+    if (is_series_path(a.mesh)) throw;
+    return nullptr;  // an Exodus file that cannot be listed: reading it says why (memory first)
+  }
   if (!is_series_path(a.mesh) && s.frames.size() < 2) return nullptr;
   nlohmann::json times = nlohmann::json::array(), files = nlohmann::json::array();
   for (const KeyFrame& f : s.frames) times.push_back(f.time), files.push_back(f.path);
