@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
+#include "grid/time_series.hpp"
 #include "optics/colormaps.hpp"
 #include "python/numpy_mesh.hpp"
 #include "render/renderer.hpp"
@@ -247,7 +248,8 @@ PYBIND11_MODULE(_cellproj, m) {
   m.def(
       "render_scene",
       [](const std::string& path, std::optional<std::pair<int, int>> size, const std::string& field,
-         const std::string& view, const std::string& method, int threads, const py::kwargs& kwargs) {
+         const std::string& view, const std::string& method, int threads, std::optional<double> time,
+         const py::kwargs& kwargs) {
         const RenderOptions options = options_from(method, kwargs);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(options));
         refuse_unused(*renderer, options.given);
@@ -259,6 +261,28 @@ PYBIND11_MODULE(_cellproj, m) {
           scene.camera.reset();
           scene.view = view;
         }
+        // A time series (the scene's mesh a .pvd, a pattern, or an Exodus file given a time): the
+        // field at `time`, interpolated between key frames, as `cellproj render --time`.
+        if (time || is_series_path(scene.mesh)) {
+          struct Played {
+            std::unique_ptr<SeriesPlayer> player;
+            PreparedScene prepared;
+            SeriesFrame frame;
+          };
+          const Played p = [&] {
+            py::gil_scoped_release release;
+            TimeSeries series = list_series(scene.mesh, scene.reader);
+            const double t = time ? *time : series.frames.front().time;
+            locate(series, t);
+            auto player = std::make_unique<SeriesPlayer>(std::move(series), scene.field, scene.reader);
+            PreparedScene prepared = prepare_scene(scene, first_key_frame(*player));
+            SeriesFrame frame = player->frame_at(t);
+            return Played{std::move(player), std::move(prepared), std::move(frame)};
+          }();
+          const Volume volume(p.player->view(p.frame), {/*trusted: key frames are validated*/ !p.player->points_move()});
+          const Field f{p.frame.field.data(), static_cast<std::int64_t>(p.frame.field.size()), p.player->field_name()};
+          return to_numpy(render_frame(*renderer, volume, f, p.prepared.tf, p.prepared.camera, image_size, threads));
+        }
         const PreparedScene prepared = [&] {
           py::gil_scoped_release release;
           return prepare_scene(scene);
@@ -269,8 +293,9 @@ PYBIND11_MODULE(_cellproj, m) {
                                      image_size, threads));
       },
       py::arg("path"), py::arg("size") = py::none(), py::arg("field") = "", py::arg("view") = "",
-      py::arg("method") = "pt-breakpoints", py::arg("threads") = 0,
-      "Renders a scene file as `cellproj render SCENE` does (the same array as its --npy)");
+      py::arg("method") = "pt-breakpoints", py::arg("threads") = 0, py::arg("time") = py::none(),
+      "Renders a scene file as `cellproj render SCENE` does (the same array as its --npy); time=T for a time "
+      "series, as --time T");
 
   m.def(
       "write_png",

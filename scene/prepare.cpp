@@ -76,6 +76,16 @@ std::string view_warning(const Camera& camera, const glm::dvec3& lo, const glm::
 
 }  // namespace
 
+LoadedMesh first_key_frame(SeriesPlayer& player) {
+  const SeriesFrame frame = player.frame_at(player.series().frames.front().time);
+  LoadedMesh loaded;
+  loaded.mesh.source = player.series().source;
+  loaded.mesh.points = *frame.points;
+  loaded.mesh.fields.push_back({player.field_name(), frame.field, "a time series' key frame"});
+  loaded.report = player.first_report();
+  return loaded;
+}
+
 PreparedScene prepare_scene(const Scene& s) { return prepare_scene(s, load_mesh(s.mesh, s.reader)); }
 
 PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {

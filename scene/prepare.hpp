@@ -5,6 +5,7 @@
 #include <vector>
 
 #include "grid/read_mesh.hpp"
+#include "grid/time_series.hpp"
 #include "optics/transfer_function.hpp"
 #include "scene/scene_file.hpp"
 #include "view/camera.hpp"
@@ -24,6 +25,11 @@ struct PreparedScene {
 PreparedScene prepare_scene(const Scene& scene);
 // The same with the scene's mesh already read (as `cellproj render MESH` does, to make its scene).
 PreparedScene prepare_scene(const Scene& scene, LoadedMesh loaded);
+
+// A time series' first key frame as a mesh to prepare its scene from (colours and framing come from
+// it whatever the time rendered): its points and the player's field; the cells stay with the player,
+// which renders every frame (SeriesPlayer::view).
+LoadedMesh first_key_frame(SeriesPlayer& player);
 
 // The legend of the picture: the transfer function's colours over the field's range, the field's
 // name, text that reads on `background`.

@@ -153,16 +153,6 @@ struct Input {
   std::vector<double> times;             // the series' frame times
 };
 
-// A frame of a time series as a mesh to prepare the scene from: its points and its field (the
-// cells stay with the player, which renders every frame).
-LoadedMesh first_frame(const SeriesPlayer& player, const SeriesFrame& frame) {
-  LoadedMesh loaded;
-  loaded.mesh.source = player.series().source;
-  loaded.mesh.points = *frame.points;
-  loaded.mesh.fields.push_back({player.field_name(), frame.field, "a time series' frame"});
-  loaded.report = player.first_report();
-  return loaded;
-}
 
 Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSettings& settings,
                  const std::vector<int>& levels) {
@@ -224,8 +214,7 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   // A series' colours and framing come from its first key frame whatever the time rendered, so that
   // --time T and --animate give the same picture at T.
   SeriesFrame first;
-  LoadedMesh loaded = player ? first_frame(*player, player->frame_at(player->series().frames.front().time))
-                             : read_with_progress(scene.mesh, scene.reader);
+  LoadedMesh loaded = player ? first_key_frame(*player) : read_with_progress(scene.mesh, scene.reader);
   if (player) first = player->frame_at(times.front());
   if (!scene_file) {
     QuickLook look = a.look;

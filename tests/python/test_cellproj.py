@@ -155,3 +155,17 @@ def test_write_png_matches_the_cli_png(tmp_path):
     image = cli(tmp_path, DEFAULT_SCENE, "--size", "64x48")
     cellproj.write_png(image, str(tmp_path / "py.png"), background=(0.04, 0.04, 0.06))
     assert (tmp_path / "py.png").read_bytes() == (tmp_path / "cli.png").read_bytes()
+
+
+def test_render_scene_of_a_time_series_at_a_time_equals_the_cli(tmp_path):
+    series = tmp_path / "series" / "s.pvd"
+    subprocess.run([EXE, "generate", "box-tets", "-n", "4", "--steps", "4", "-o", str(series)], check=True,
+                   capture_output=True)
+    scene = tmp_path / "scene.json"
+    scene.write_text('{"mesh": "series/s.pvd", "transfer_function": {"color": [[0, 0.2, 0.4, 1], [1, 1, 0.8, 0.2]],'
+                     ' "extinction": [[0, 1], [1, 6]]}}')
+    image = cellproj.render_scene(str(scene), size=(64, 48), time=1.25)
+    assert np.array_equal(image, cli(tmp_path, str(scene), "--size", "64x48", "--time", "1.25"))
+    assert not np.array_equal(image, cellproj.render_scene(str(scene), size=(64, 48), time=1.0))
+    with pytest.raises(cellproj.InputError, match="outside the series' times"):
+        cellproj.render_scene(str(scene), size=(64, 48), time=9.0)
