@@ -29,19 +29,6 @@ bool wants_silhouette(Silhouettes mode, int layer) {
          (mode == Silhouettes::hidden && layer > 1);
 }
 
-// The unit normal of the layer at crossing c: the direction of the points' gradients interpolated
-// there (smooth across cells, as the gradients of a texture-based renderer are), else of the
-// tetrahedron's own; where both vanish (the field flat on V) it faces the viewer.
-glm::dvec3 layer_normal(const CellRayTracer& tracer, const double* scalar, const std::vector<glm::dvec3>& gradients,
-                        const IsoCrossing& c, const Ray& ray) {
-  for (const glm::dvec3& g :
-       {tracer.interpolate(gradients, c.tet, ray.origin + c.t * ray.dir), tracer.gradient(c.tet, scalar)}) {
-    const double length = glm::length(g);
-    if (length > 0 && std::isfinite(length)) return g / length;
-  }
-  return -ray.dir;
-}
-
 }  // namespace
 
 void check(const LayerOptions& o) {
@@ -126,6 +113,16 @@ LayerDepths layer_depths(const CellRayTracer& tracer, const double* scalar, doub
   return d;
 }
 
+glm::dvec3 surface_normal(const CellRayTracer& tracer, const double* scalar, const std::vector<glm::dvec3>& gradients,
+                          const IsoCrossing& c, const Ray& ray) {
+  for (const glm::dvec3& g :
+       {tracer.interpolate(gradients, c.tet, ray.origin + c.t * ray.dir), tracer.gradient(c.tet, scalar)}) {
+    const double length = glm::length(g);
+    if (length > 0 && std::isfinite(length)) return g / length;
+  }
+  return -ray.dir;
+}
+
 glm::dvec3 shade_layer(const glm::dvec3& base, const glm::dvec3& n, const glm::dvec3& d) {
   // The light at the eye: its direction and the halfway vector are both -d, so n.h = n.l (two-sided).
   const double c = std::abs(glm::dot(n, d));
@@ -160,7 +157,7 @@ Image render_layers(const CellRayTracer& tracer, const double* scalar, std::int6
           const bool drawn = at != o.layers.end() && *at == k;
           const bool wanted = silhouette == 0 && wants_silhouette(o.silhouettes, k);
           if (!drawn && !wanted) return;
-          const glm::dvec3 normal = layer_normal(tracer, scalar, gradients, c, ray);
+          const glm::dvec3 normal = surface_normal(tracer, scalar, gradients, c, ray);
           if (drawn) {  // Nagy and Klein's blending of layers, with weights (equal: their running mean)
             const double w = weights[static_cast<std::size_t>(at - o.layers.begin())];
             sum += w * shade_layer(base, normal, ray.dir);

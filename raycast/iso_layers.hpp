@@ -63,6 +63,13 @@ Image render_layers(const CellRayTracer& tracer, const double* scalar, std::int6
                     const LayerOptions& options, LayerStats* stats = nullptr,
                     const std::function<void(double)>& progress = {});
 
+// The unit normal of the iso-surface at crossing c: the direction of the points' gradients
+// (CellRayTracer::point_gradients) interpolated there, smooth across cells as a texture renderer's
+// gradients are; else the tetrahedron's own gradient; where both vanish (the field flat on V) it
+// faces the viewer.
+glm::dvec3 surface_normal(const CellRayTracer& tracer, const double* scalar, const std::vector<glm::dvec3>& gradients,
+                          const IsoCrossing& c, const Ray& ray);
+
 // The shade of a layer at unit normal n (the field's gradient direction, either sign) seen along
 // the unit ray direction d with the light at the eye: base (ambient + diffuse |n.d|) + specular.
 glm::dvec3 shade_layer(const glm::dvec3& base, const glm::dvec3& n, const glm::dvec3& d);

@@ -7,6 +7,7 @@
 #include "grid/tetrahedralize.hpp"
 #include "parallel/projection_renderer.hpp"
 #include "raycast/iso_layers.hpp"
+#include "raycast/iso_surfaces.hpp"
 #include "raycast/ray_reduction.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "slicing/slice_renderer.hpp"
@@ -147,14 +148,20 @@ const ExactRenderer& checked_exact(const Volume& volume, const Field& field, Ren
 
 class ExactMode final : public Renderer {
  public:
-  explicit ExactMode(CellInterpolation interpolation) : interpolation_(interpolation) {}
+  explicit ExactMode(CellInterpolation interpolation, IsoOptions iso = {})
+      : interpolation_(interpolation), iso_(std::move(iso)) {
+    check(iso_);
+  }
   std::string name() const override { return "exact"; }
-  std::vector<std::string> settings_used() const override { return {"method", "interpolation"}; }
+  std::vector<std::string> settings_used() const override {
+    return {"method", "interpolation", "iso", "volume", "iso-mode", "iso-opacity"};
+  }
   void prepare(const Volume& volume) const override { volume.exact(); }
 
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                ImageSize size, RenderReport* report, const Progress& progress) const override {
     const ExactRenderer& renderer = checked_exact(volume, field, report);
+    if (!iso_.surfaces.empty()) return render_surfaces(renderer, field, tf, camera, size, report, progress);
     ExactStats st;
     Image image = renderer.render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress);
     if (report) {
@@ -174,7 +181,27 @@ class ExactMode final : public Renderer {
   }
 
  private:
+  // Iso-surfaces with the volume (raycast/iso_surfaces.hpp), in the mode asked for.
+  Image render_surfaces(const ExactRenderer& renderer, const Field& field, const TransferFunction& tf,
+                        const Camera& camera, ImageSize size, RenderReport* report, const Progress& progress) const {
+    IsoStats st;
+    Image image = render_iso_surfaces(renderer.tracer(), field.values, field.size, tf, camera, size.width, size.height,
+                                      iso_, &st, progress);
+    if (report) {
+      report->seconds = st.seconds;
+      report->phase_seconds = {{"trace, integrate and blend surfaces", st.seconds}};
+      report->add("iso_surfaces", static_cast<std::int64_t>(iso_.surfaces.size()));
+      report->add("iso_mode", iso_.mode);
+      report->add("iso_opacity", iso_.opacity);
+      report->add("volume", std::string(iso_.volume ? "on" : "off"));
+      report->add({{"segments", st.segments}, {"surface_crossings", st.surface_crossings}});
+      if (iso_.opacity == IsoOpacity::spectrum_fit) report->add("spectrum_fit_max_error", st.fit_max_error);
+    }
+    return image;
+  }
+
   CellInterpolation interpolation_;
+  IsoOptions iso_;
 };
 
 // MIP, MinIP and the mean along each ray, on the exact renderer's tracer (prepared once, shared).
@@ -364,7 +391,7 @@ VolumeSize size_of(const MeshView& mesh) {
 std::unique_ptr<Renderer> make_renderer(const RenderSettings& s) {
   switch (s.mode) {
     case RenderMode::projection: return std::make_unique<ProjectionMode>(s.projection, s.tetrahedralize);
-    case RenderMode::exact: return std::make_unique<ExactMode>(s.interpolation);
+    case RenderMode::exact: return std::make_unique<ExactMode>(s.interpolation, s.iso);
     case RenderMode::slicing: return std::make_unique<SlicingMode>(s.slicing, s.tetrahedralize);
     case RenderMode::reduction: return std::make_unique<ReductionMode>(s.reduction);
     case RenderMode::layers: return std::make_unique<LayersMode>(s.layers);

@@ -10,6 +10,7 @@
 
 #include "projection/method.hpp"
 #include "raycast/interpolation.hpp"
+#include "raycast/iso_options.hpp"
 #include "raycast/layer_options.hpp"
 #include "slicing/slicing_options.hpp"
 #include "splat/splat_options.hpp"
@@ -20,7 +21,7 @@ namespace cellproj {
 // A counter, a time, a text, or a choice the renderer made (printed by its name, scene/names.hpp);
 // monostate where a value does not apply to this frame (JSON null).
 using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, Backend, SortMethod, GapMethod,
-                                 Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral, SmallCells, Silhouettes>;
+                                 Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral, SmallCells, Silhouettes, IsoMode, IsoOpacity>;
 
 struct RenderReport {
   double seconds = 0.0;          // the frame, preparation excluded

@@ -3,6 +3,7 @@
 // the default a user gets from `cellproj render` without options.
 #include "parallel/projection_options.hpp"
 #include "raycast/interpolation.hpp"
+#include "raycast/iso_options.hpp"
 #include "raycast/layer_options.hpp"
 #include "raycast/reduction.hpp"
 #include "slicing/slicing_options.hpp"
@@ -26,6 +27,7 @@ struct RenderSettings {
   SlicingOptions slicing;                                              // slices, family, integral, table size
   RayReduction reduction = RayReduction::maximum;                      // reduction: which value of each ray
   LayerOptions layers;                                                 // layers: iso-value, layers, silhouettes
+  IsoOptions iso;                                                      // exact: iso-surfaces with the volume
 };
 
 struct ImageSize {

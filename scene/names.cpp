@@ -48,6 +48,11 @@ constexpr std::pair<Silhouettes, const char*> kSilhouettes[] = {{Silhouettes::no
                                                                 {Silhouettes::visible, "visible"},
                                                                 {Silhouettes::hidden, "hidden"},
                                                                 {Silhouettes::both, "both"}};
+constexpr std::pair<IsoMode, const char*> kIsoModes[] = {
+    {IsoMode::ordered, "ordered"}, {IsoMode::blend2, "blend2"}, {IsoMode::oit3, "oit3"}, {IsoMode::oit4, "oit4"}};
+constexpr std::pair<IsoOpacity, const char*> kIsoOpacities[] = {{IsoOpacity::constant, "constant"},
+                                                                {IsoOpacity::spectrum, "spectrum"},
+                                                                {IsoOpacity::spectrum_fit, "spectrum-fit"}};
 
 }  // namespace
 
@@ -91,6 +96,14 @@ std::string small_cells_names() { return names(kSmallCells); }
 Silhouettes parse_silhouettes(const std::string& n) { return from_name(kSilhouettes, n, "--silhouettes"); }
 const char* name_of(Silhouettes mode) { return name_in(kSilhouettes, mode); }
 std::string silhouettes_names() { return names(kSilhouettes); }
+
+IsoMode parse_iso_mode(const std::string& n) { return from_name(kIsoModes, n, "--iso-mode"); }
+const char* name_of(IsoMode mode) { return name_in(kIsoModes, mode); }
+std::string iso_mode_names() { return names(kIsoModes); }
+
+IsoOpacity parse_iso_opacity(const std::string& n) { return from_name(kIsoOpacities, n, "--iso-opacity"); }
+const char* name_of(IsoOpacity model) { return name_in(kIsoOpacities, model); }
+std::string iso_opacity_names() { return names(kIsoOpacities); }
 
 void parse_render_method(const std::string& name, RenderSettings& settings) {
   for (const auto& [reduction, n] : {std::pair{RayReduction::maximum, "mip"}, std::pair{RayReduction::minimum, "minip"},

@@ -50,6 +50,14 @@ Silhouettes parse_silhouettes(const std::string& name);
 const char* name_of(Silhouettes mode);
 std::string silhouettes_names();
 
+IsoMode parse_iso_mode(const std::string& name);
+const char* name_of(IsoMode mode);
+std::string iso_mode_names();
+
+IsoOpacity parse_iso_opacity(const std::string& name);
+const char* name_of(IsoOpacity model);
+std::string iso_opacity_names();
+
 // "exact", "slicing" or a projection method's name into settings.mode (and settings.projection.method).
 void parse_render_method(const std::string& name, RenderSettings& settings);
 std::string render_method_names();  // "exact, slicing, pt-linear, ..."

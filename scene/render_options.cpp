@@ -50,15 +50,35 @@ std::vector<T> list_of(const std::string& name, const std::string& text) {
   return values;
 }
 
+// "V", "V:R,G,B" or "V:R,G,B,A": an iso-surface (A its head-on opacity, default 1).
+IsoSurface iso_surface(const std::string& text) {
+  IsoSurface s;
+  const std::size_t colon = text.find(':');
+  s.value = number_of<double>("iso", text.substr(0, colon));
+  s.color_given = colon != std::string::npos;
+  if (!s.color_given) return s;
+  const std::vector<double> c = list_of<double>("iso", text.substr(colon + 1));
+  if (c.size() != 3 && c.size() != 4)
+    throw InputError("--iso: '" + text + "': give V, V:R,G,B or V:R,G,B,A (colour and opacity in [0, 1])");
+  s.color = {c[0], c[1], c[2]};
+  if (c.size() == 4) s.opacity = c[3];
+  IsoOptions check_one;
+  check_one.surfaces = {s};
+  check(check_one);
+  return s;
+}
+
 // --iso V or V:R,G,B (the layers' colour), --layer, --layer-weights, --silhouettes.
 LayerOptions layer_options(const RenderOptions& o, bool layers_mode) {
   LayerOptions l;
-  if (o.iso.empty()) {
-    if (layers_mode) throw InputError("--method layers needs --iso V, the iso-value whose crossings it draws");
-  } else {
-    const std::size_t colon = o.iso.find(':');
-    l.iso = number_of<double>("iso", o.iso.substr(0, colon));
-    if (colon != std::string::npos) l.color = parse_color(o.iso.substr(colon + 1), "--iso's colour");
+  if (layers_mode && o.iso.size() != 1)
+    throw InputError(o.iso.empty() ? "--method layers needs --iso V, the iso-value whose crossings it draws"
+                                   : "--method layers draws the crossings of one iso-value: give --iso once");
+  if (!o.iso.empty()) {
+    const IsoSurface s = iso_surface(o.iso.front());
+    if (layers_mode && s.opacity != 1.0) throw InputError("--iso: layers are opaque: give V or V:R,G,B");
+    l.iso = s.value;
+    if (s.color_given) l.color = s.color;
   }
   l.layers = list_of<int>("layer", o.layer);
   if (!o.layer_weights.empty()) l.weights = list_of<double>("layer-weights", o.layer_weights);
@@ -66,6 +86,17 @@ LayerOptions layer_options(const RenderOptions& o, bool layers_mode) {
   l.silhouette_epsilon = o.silhouette_epsilon;
   check(l);
   return l;
+}
+
+// --iso (repeatable), --volume, --iso-mode, --iso-opacity: iso-surfaces with the volume.
+IsoOptions iso_options(const RenderOptions& o) {
+  IsoOptions i;
+  for (const std::string& text : o.iso) i.surfaces.push_back(iso_surface(text));
+  if (o.volume != "on" && o.volume != "off") throw InputError("--volume: expected on or off, got '" + o.volume + "'");
+  i.volume = o.volume == "on";
+  i.mode = named("iso-mode", [&] { return parse_iso_mode(o.iso_mode); });
+  i.opacity = named("iso-opacity", [&] { return parse_iso_opacity(o.iso_opacity); });
+  return i;
 }
 
 }  // namespace
@@ -91,13 +122,15 @@ RenderSettings settings_from(const RenderOptions& o) {
   s.projection.splat.prefilter = o.splat_prefilter;
   s.slicing.splat = s.projection.splat;
   s.layers = layer_options(o, s.mode == RenderMode::layers);
+  s.iso = iso_options(o);
   return s;
 }
 
 std::vector<std::string> render_option_names() {
   return {"method",         "sort",        "gaps",       "backend", "tetrahedralize",  "interpolation",  "slice-axis",
           "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter",
-          "iso",            "layer",       "layer-weights", "silhouettes", "silhouette-epsilon"};
+          "iso",            "layer",       "layer-weights", "silhouettes", "silhouette-epsilon", "volume", "iso-mode",
+          "iso-opacity"};
 }
 
 void set_option(RenderOptions& o, const std::string& given_name, const std::string& value) {
@@ -112,13 +145,17 @@ void set_option(RenderOptions& o, const std::string& given_name, const std::stri
                       : name == "slice-axis"     ? &o.slice_axis
                       : name == "slice-integral" ? &o.slice_integral
                       : name == "small-cells"    ? &o.small_cells
-                      : name == "iso"            ? &o.iso
                       : name == "layer"          ? &o.layer
                       : name == "layer-weights"  ? &o.layer_weights
                       : name == "silhouettes"    ? &o.silhouettes
+                      : name == "volume"         ? &o.volume
+                      : name == "iso-mode"       ? &o.iso_mode
+                      : name == "iso-opacity"    ? &o.iso_opacity
                                                  : nullptr;
   if (text)
     *text = value;
+  else if (name == "iso")
+    o.iso.push_back(value);
   else if (name == "table-size")
     o.table_size = number_of<int>(name, value);
   else if (name == "slices")

@@ -13,7 +13,9 @@ namespace cellproj {
 struct RenderOptions {
   std::string method = "pt-breakpoints", sort = "auto", gaps = "auto", backend = "software", tetrahedralize = "problem",
               interpolation = "isoparametric", slice_axis = "auto", slice_integral = "preintegrated",
-              small_cells = "draw", iso, layer = "1", layer_weights, silhouettes = "none";
+              small_cells = "draw", layer = "1", layer_weights, silhouettes = "none", volume = "on",
+              iso_mode = "ordered", iso_opacity = "constant";
+  std::vector<std::string> iso;  // --iso V[:R,G,B[,A]], repeatable
   int table_size = 256, slices = 256;
   double splat_threshold = SplatOptions{}.threshold;  // NaN: the method's default
   double splat_prefilter = SplatOptions{}.prefilter;
@@ -27,6 +29,7 @@ RenderSettings settings_from(const RenderOptions& options);
 
 // Sets the option `name` (the command-line name, "table-size", or with underscores, "table_size")
 // from its text; InputError for an unknown name (listing them) or a value that is not of its type.
+// "iso" is repeatable: each call adds a surface.
 void set_option(RenderOptions& options, const std::string& name, const std::string& value);
 std::vector<std::string> render_option_names();  // "method", "sort", ...
 

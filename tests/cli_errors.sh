@@ -192,8 +192,14 @@ expect 2 "--sort does not apply to --method mip, which reads --method" -- render
 expect 0 "wrote .*mip" -- render "$tmp/box.vtu" --method mip --size 32x24 -o "$tmp/mip.png"
 expect 2 "--method layers needs --iso V" -- render "$tmp/box.vtu" --method layers
 expect 2 "--layer: give the layers in increasing order" -- render "$tmp/box.vtu" --method layers --iso 0.5 --layer 3,1
-expect 2 "--iso does not apply to --method exact" -- render "$tmp/box.vtu" --method exact --iso 0.5
+expect 2 "--iso does not apply to --method mip" -- render "$tmp/box.vtu" --method mip --iso 0.5
 expect 0 "wrote .*layers" -- render "$tmp/box.vtu" --method layers --iso 0.5:1,0,0 --layer 1,2 --silhouettes both --size 32x24 -o "$tmp/layers.png"
+# Iso-surfaces with the volume (--method exact): repeatable --iso, the modes, refused elsewhere.
+expect 0 "wrote" -- render "$tmp/box.vtu" --method exact --iso 0.5:1,0,0,0.4 --iso 0.8:0,0,1,0.4 --iso-mode oit4 --volume off --size 32x24 -o "$tmp/iso.png"
+expect 2 "--iso does not apply to --method pt-breakpoints" -- render "$tmp/box.vtu" --iso 0.5
+expect 2 "--iso: .*opacity must be in \[0, 1\]" -- render "$tmp/box.vtu" --method exact --iso 0.5:1,0,0,2
+expect 2 "unknown --iso-mode 'oit5'" -- render "$tmp/box.vtu" --method exact --iso 0.5 --iso-mode oit5
+expect 2 "draws the crossings of one iso-value" -- render "$tmp/box.vtu" --method layers --iso 0.5 --iso 0.7
 # A scene's "layers" block gives what the options would; the command line overrides it.
 echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "layers": {"iso": 0.5, "color": [1, 0, 0], "layer": [1, 2], "silhouettes": "both"}}' > "$tmp/layers.json"
 expect 0 "wrote" -- render "$tmp/layers.json" --method layers --size 32x24 --npy "$tmp/l1.npy"

@@ -433,8 +433,23 @@ Action add_render(CLI::App& app) {
                       "parallel planes, no sort), mip, minip, average (one value per ray), or layers (the n-th "
                       "crossings of --iso along each ray); see docs/methods.md"));
   settings.emplace_back("iso", cmd->add_option("--iso", args->options.iso,
-                                               "layers: the iso-value V, or V:R,G,B to give the layers' colour "
-                                               "(default: the colour map's at V)"));
+                                               "Iso-surfaces, repeatable, V:R,G,B,A (A the opacity seen head-on, "
+                                               "default 1; without a colour the colour map's at V): with --method "
+                                               "exact, drawn with the volume; with layers, the one iso-value V or "
+                                               "V:R,G,B whose crossings it draws")
+                                   ->allow_extra_args(false));
+  settings.emplace_back("volume", cmd->add_option("--volume", args->options.volume,
+                                                  "exact with --iso: draw the volume between the surfaces, on "
+                                                  "(default) or off"));
+  settings.emplace_back("iso-mode", cmd->add_option("--iso-mode", args->options.iso_mode,
+                                                    "exact with --iso: " + iso_mode_names() +
+                                                        " (ordered, the default: exact order along each ray; "
+                                                        "blend2: the volume, then surfaces over it in submission "
+                                                        "order; oit3, oit4: libMini's order-independent passes)"));
+  settings.emplace_back("iso-opacity", cmd->add_option("--iso-opacity", args->options.iso_opacity,
+                                                       "exact with --iso: " + iso_opacity_names() +
+                                                           " (spectrum: a thin layer's 1 - exp(-c d / |cos t|); "
+                                                           "spectrum-fit: libMini's cosine-power fit)"));
   settings.emplace_back("layer", cmd->add_option("--layer", args->options.layer,
                                                  "layers: which crossings of V to draw, 1 the nearest: N, or "
                                                  "increasing N1,N2,... blended (default 1)"));
