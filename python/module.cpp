@@ -34,7 +34,13 @@ RenderOptions options_from(const std::string& method, const py::kwargs& kwargs) 
   RenderOptions o;
   set_option(o, "method", method);
   o.given.clear();  // the method itself is always "given"
-  for (const auto& [key, value] : kwargs) set_option(o, py::str(key), py::str(value));
+  for (const auto& [key, value] : kwargs) {
+    if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {  // a repeatable option: iso=[...]
+      for (const auto& item : value) set_option(o, py::str(key), py::str(item));
+    } else {
+      set_option(o, py::str(key), py::str(value));
+    }
+  }
   return o;
 }
 

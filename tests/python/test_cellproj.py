@@ -169,3 +169,10 @@ def test_render_scene_of_a_time_series_at_a_time_equals_the_cli(tmp_path):
     assert not np.array_equal(image, cellproj.render_scene(str(scene), size=(64, 48), time=1.0))
     with pytest.raises(cellproj.InputError, match="outside the series' times"):
         cellproj.render_scene(str(scene), size=(64, 48), time=9.0)
+
+
+def test_iso_surfaces_from_a_list_equal_the_cli_with_repeated_options(tmp_path):
+    image = cellproj.render_scene(DEFAULT_SCENE, size=(64, 48), method="exact",
+                                  iso=["0.3:0.3,0.5,1,0.35", "0.6:1,0.5,0.2,0.5"], iso_mode="oit4")
+    assert np.array_equal(image, cli(tmp_path, DEFAULT_SCENE, "--size", "64x48", "--method", "exact", "--iso",
+                                     "0.3:0.3,0.5,1,0.35", "--iso", "0.6:1,0.5,0.2,0.5", "--iso-mode", "oit4"))
