@@ -101,6 +101,11 @@ IsoOptions iso_options(const RenderOptions& o) {
 
 }  // namespace
 
+std::vector<int> parse_int_list(const std::string& name, const std::string& text) { return list_of<int>(name, text); }
+std::vector<double> parse_number_list(const std::string& name, const std::string& text) {
+  return list_of<double>(name, text);
+}
+
 RenderSettings settings_from(const RenderOptions& o) {
   RenderSettings s;
   named("method", [&] { parse_render_method(o.method, s); });

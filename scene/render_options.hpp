@@ -23,6 +23,11 @@ struct RenderOptions {
   std::vector<std::string> given;  // the names set explicitly (set_option adds them), for refuse_unused
 };
 
+// "1,2,3": the comma-separated numbers an option `name` gives; InputError "--NAME: expected an
+// integer (a number), got 'x'" for an item that is not one.
+std::vector<int> parse_int_list(const std::string& name, const std::string& text);
+std::vector<double> parse_number_list(const std::string& name, const std::string& text);
+
 // The settings, every option checked (also those the method does not read: a typo never passes
 // silently); InputError "--NAME: ..." for a bad value.
 RenderSettings settings_from(const RenderOptions& options);

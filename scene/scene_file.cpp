@@ -1,5 +1,6 @@
 #include "scene/scene_file.hpp"
 
+#include <algorithm>
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -39,6 +40,14 @@ int positive_int(const nlohmann::json& v, const std::string& at, int max, int mi
 }
 
 }  // namespace
+
+ClipPlane parse_clip_plane(const std::string& text) {
+  const std::vector<double> v = parse_number_list("clip", text);
+  if (v.size() != 6) throw InputError("--clip: expected x,y,z,nx,ny,nz (a point and the normal), got '" + text + "'");
+  ClipPlane p{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
+  check(p);
+  return p;
+}
 
 void parse_size(const std::string& t, int& w, int& h) {
   const auto x = t.find('x');
@@ -143,7 +152,7 @@ std::vector<std::pair<std::string, std::string>> layer_options_from_json(const n
 
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
-  only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers"});
+  only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers", "clip"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
@@ -167,6 +176,30 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
   if (!j.contains("transfer_function")) throw InputError(where(path, "missing \"transfer_function\""));
   s.transfer_function = j["transfer_function"];
   if (j.contains("camera")) s.camera = camera_from_json(j["camera"], path);
+  if (j.contains("clip")) {
+    const auto& planes = j["clip"];
+    if (!planes.is_array()) throw InputError(path + ": clip: expected a list of {\"point\": [x, y, z], \"normal\": [x, y, z]}");
+    for (std::size_t k = 0; k < planes.size(); ++k) {
+      const auto& p = planes[k];
+      const std::string at = path + ": clip[" + std::to_string(k) + "]";
+      if (!p.is_object()) throw InputError(at + ": expected {\"point\": [x, y, z], \"normal\": [x, y, z]}");
+      only_keys(p, at, {"point", "normal"});
+      ClipPlane plane;
+      for (const auto& [key, v] : {std::pair{"point", &plane.point}, std::pair{"normal", &plane.normal}}) {
+        if (!p.contains(key)) throw InputError(at + ": missing \"" + key + "\"");
+        const auto& a = p[key];
+        if (!a.is_array() || a.size() != 3 || !a[0].is_number() || !a[1].is_number() || !a[2].is_number())
+          throw InputError(at + "." + key + ": expected [x, y, z], got " + a.dump());
+        *v = {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()};
+      }
+      try {
+        check(plane);
+      } catch (const InputError& e) {
+        throw InputError(at + ": " + e.what());
+      }
+      s.clip.push_back(plane);
+    }
+  }
   if (j.contains("layers")) s.layer_options = layer_options_from_json(j["layers"], path + ": layers");
   if (j.contains("image")) {
     const auto& im = j["image"];

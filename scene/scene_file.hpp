@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
+#include "grid/clip.hpp"
 #include "grid/read_mesh.hpp"
 #include "scene/camera_json.hpp"
 #include "view/camera.hpp"
@@ -28,12 +29,16 @@ struct Scene {
   // The "layers" block as render options by their command-line names ("iso" -> "0.5:1,0,0",
   // "layer" -> "1,2"): what --method layers draws unless the command line says otherwise.
   std::vector<std::pair<std::string, std::string>> layer_options;
+  std::vector<ClipPlane> clip;  // the mesh clipped by these planes before any method draws it
 };
 
 // Throws InputError naming the file and the key for unknown keys, wrong types and missing keys.
 Scene load_scene(const std::string& path);
 // The same from a parsed scene: `source` names it in messages, relative paths are taken from `base_dir`.
 Scene scene_from_json(const nlohmann::json& j, const std::string& source, const std::string& base_dir);
+
+// "x,y,z,nx,ny,nz": a clipping plane through (x, y, z) with normal (nx, ny, nz); InputError naming --clip.
+ClipPlane parse_clip_plane(const std::string& text);
 
 // "WxH" -> width, height; throws InputError.
 void parse_size(const std::string& text, int& width, int& height);

@@ -131,7 +131,7 @@ expect 2 "unknown --slice-axis 'w' \(known: auto, view, x, y, z\)" -- render "$t
 expect 2 "unknown --slice-integral 'midpoint'" -- render "$tmp/ok.json" --method slicing --slice-integral midpoint
 expect 2 "--slices does not apply to --method pt-table" -- render "$tmp/ok.json" --method pt-table --slices 8
 expect 2 "--sort does not apply to --method slicing" -- render "$tmp/ok.json" --method slicing --sort mpvo
-expect 2 "--progressive: 'x' is not a number of slices" -- render "$tmp/ok.json" --method slicing --progressive 8,x
+expect 2 "--progressive: expected an integer, got 'x'" -- render "$tmp/ok.json" --method slicing --progressive 8,x
 expect 1 "the levels must increase \(32 then 8\)" -- render "$tmp/ok.json" --method slicing --progressive 32,8 --size 32x24
 expect 2 "--progressive does not apply to --method exact" -- render "$tmp/ok.json" --method exact --progressive 8,32
 expect 0 "wrote .*prog-32.png" -- render "$tmp/ok.json" --method slicing --progressive 8,32 --size 32x24 -o "$tmp/prog.png" --stats
@@ -200,6 +200,18 @@ expect 2 "--iso does not apply to --method pt-breakpoints" -- render "$tmp/box.v
 expect 2 "--iso: .*opacity must be in \[0, 1\]" -- render "$tmp/box.vtu" --method exact --iso 0.5:1,0,0,2
 expect 2 "unknown --iso-mode 'oit5'" -- render "$tmp/box.vtu" --method exact --iso 0.5 --iso-mode oit5
 expect 2 "draws the crossings of one iso-value" -- render "$tmp/box.vtu" --method layers --iso 0.5 --iso 0.7
+# Clipping planes, from the command line or the scene, the same bits; bad planes refused.
+expect 0 "wrote" -- render "$tmp/ok.json" --clip 0.1,0,0,1,0.5,0 --clip 0,0,0,0,0,1 --size 32x24 --npy "$tmp/c1.npy" --stats
+grep -q '"clip_cells_cut"' "$tmp/err" || { echo "FAIL: --stats without the clip counts"; failed=$((failed+1)); }
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "clip": [{"point": [0.1, 0, 0], "normal": [1, 0.5, 0]}, {"point": [0, 0, 0], "normal": [0, 0, 1]}]}' > "$tmp/clip.json"
+expect 0 "wrote" -- render "$tmp/clip.json" --size 32x24 --npy "$tmp/c2.npy"
+cmp -s "$tmp/c1.npy" "$tmp/c2.npy" || { echo "FAIL: the scene's clip differs from --clip"; failed=$((failed+1)); }
+expect 0 "wrote" -- render "$tmp/clip.json" --method exact --size 32x24 -o "$tmp/c3.png"
+expect 2 "--clip: expected x,y,z,nx,ny,nz" -- render "$tmp/ok.json" --clip 0,0,1
+expect 2 "--clip: the plane needs a finite point and a non-zero finite normal" -- render "$tmp/ok.json" --clip 0,0,0,0,0,0
+expect 1 "nothing of the mesh is on the kept side of the clipping planes" -- render "$tmp/ok.json" --clip 0,0,-5,0,0,1 --size 16x16 -o "$tmp/c4.png"
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "clip": [{"point": [0, 0, 0]}]}' > "$tmp/badclip.json"
+expect 1 "badclip.json: clip\[0\]: missing \"normal\"" -- render "$tmp/badclip.json"
 # A scene's "layers" block gives what the options would; the command line overrides it.
 echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "layers": {"iso": 0.5, "color": [1, 0, 0], "layer": [1, 2], "silhouettes": "both"}}' > "$tmp/layers.json"
 expect 0 "wrote" -- render "$tmp/layers.json" --method layers --size 32x24 --npy "$tmp/l1.npy"

@@ -14,6 +14,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "grid/clip.hpp"
 #include "grid/time_series.hpp"
 #include "render/playback.hpp"
 #include "render/renderer.hpp"
@@ -43,31 +44,10 @@ struct RenderArgs {
   double max_memory_gib = 0.0;  // 0: the machine's available memory
   bool stats = false;
   std::optional<double> time;  // --time T: a series' frame at T
+  std::vector<std::string> clip;  // --clip x,y,z,nx,ny,nz, repeatable: replaces the scene's planes
   std::string animate;         // --animate T0:T1:FRAMES
   bool no_prefetch = false;    // make each frame of a series in turn, not on a background thread
 };
-
-// "16,64,256": the plane counts of --progressive.
-std::vector<int> parse_levels(const std::string& text) {
-  std::vector<int> levels;
-  std::size_t at = 0;
-  while (at <= text.size()) {
-    const std::size_t comma = std::min(text.find(',', at), text.size());
-    const std::string item = text.substr(at, comma - at);
-    std::size_t used = 0;
-    int n = 0;
-    try {
-      n = std::stoi(item, &used);
-    } catch (const std::exception&) {
-      used = 0;
-    }
-    if (item.empty() || used != item.size())
-      throw InputError("--progressive: '" + item + "' is not a number of slices (give counts like 16,64,256)");
-    levels.push_back(n);
-    at = comma + 1;
-  }
-  return levels;
-}
 
 // The process's peak resident memory so far, in MiB (getrusage).
 double peak_rss_mib() {
@@ -151,6 +131,7 @@ struct Input {
   std::unique_ptr<SeriesPlayer> player;  // a time series: its frames (prepared.loaded has no cells then)
   SeriesFrame first;                     // the series' first frame
   std::vector<double> times;             // the series' frame times
+  ClipReport clipped;                    // what --clip (or the scene's planes) did to the mesh
 };
 
 
@@ -229,11 +210,23 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     scene.camera.reset();
     scene.view = a.view;
   }
+  if (!a.clip.empty()) {
+    scene.clip.clear();
+    for (const std::string& c : a.clip) scene.clip.push_back(usage([&] { return parse_clip_plane(c); }));
+  }
+  if (!scene.clip.empty() && player) throw UsageError("clipping planes do not go with a time series yet");
   PreparedScene prepared = prepare_scene(scene, std::move(loaded));
+  ClipReport clipped;
+  if (!scene.clip.empty()) {  // after the scene is prepared: colours and framing are the whole mesh's
+    prepared.loaded.mesh = clip_mesh(prepared.loaded.mesh, scene.clip, &clipped);
+    if (prepared.loaded.mesh.n_cells() == 0)
+      throw InputError(where(a.input, "nothing of the mesh is on the kept side of the clipping planes (each keeps "
+                                      "the side its normal points away from)"));
+  }
   const MeshView cells = player ? player->view(first) : prepared.loaded.mesh.view();
   refuse_beyond_memory(renderer.estimate_bytes(size_of(cells), size), a.max_memory_gib,
                        "rendering " + size_text + " of " + std::to_string(cells.n_cells) + " cells", a.input);
-  return {std::move(scene), std::move(prepared), std::move(player), std::move(first), std::move(times)};
+  return {std::move(scene), std::move(prepared), std::move(player), std::move(first), std::move(times), clipped};
 }
 
 int run_render(const RenderArgs& given) {
@@ -259,7 +252,7 @@ int run_render(const RenderArgs& given) {
     return r;
   });
   const std::vector<int> levels =
-      a.progressive.empty() ? std::vector<int>{} : usage([&] { return parse_levels(a.progressive); });
+      a.progressive.empty() ? std::vector<int>{} : usage([&] { return parse_int_list("progressive", a.progressive); });
   if (!levels.empty() && a.frames > 1) throw UsageError("--progressive renders one view: it does not go with --frames");
   if (!levels.empty() && (a.time || !a.animate.empty()))
     throw UsageError("--progressive renders one mesh: it does not go with --time or --animate");
@@ -382,6 +375,12 @@ int run_render(const RenderArgs& given) {
                         {"prepare_seconds", prepare_seconds},
                         {"render_seconds", render_seconds / a.frames}};
     s.update(report_json(report));  // the last frame's
+    if (!scene.clip.empty())
+      s.update({{"clip_planes", scene.clip.size()},
+                {"clip_cells_whole", input.clipped.kept_whole},
+                {"clip_cells_cut", input.clipped.cut},
+                {"clip_cells_dropped", input.clipped.dropped},
+                {"clip_tetrahedra", input.clipped.tetrahedra}});
     if (input.player) {  // how much of making the frames the background thread hid behind the renders
       const SeriesPlayer& p = *input.player;
       s.update({{"key_frames", p.series().frames.size()},
@@ -529,6 +528,11 @@ Action add_render(CLI::App& app) {
          "Render N frames: a turntable with --orbit and a pattern in -o, else a timing run turning the camera 1 "
          "degree per frame (the median frame time in --stats)")
       ->check(CLI::Range(1, 100000));
+  cmd->add_option("--clip", args->clip,
+                  "A clipping plane x,y,z,nx,ny,nz (a point and the normal), repeatable, replacing the scene's: "
+                  "keeps the side the normal points away from (ParaView's Clip); cut cells are clipped exactly, "
+                  "for every method")
+      ->allow_extra_args(false);
   cmd->add_option("--time", args->time,
                   "A time series (the input's mesh a .pvd, a numbered pattern mesh_%04d.vtu, or an Exodus file with "
                   "time steps): render the field interpolated linearly between the key frames around T");
