@@ -256,10 +256,12 @@ PYBIND11_MODULE(_cellproj, m) {
       [](const std::string& path, std::optional<std::pair<int, int>> size, const std::string& field,
          const std::string& view, const std::string& method, int threads, std::optional<double> time,
          const py::kwargs& kwargs) {
-        const RenderOptions options = options_from(method, kwargs);
+        Scene scene = load_scene(path);
+        RenderOptions options = options_from(method, kwargs);
+        for (const std::string& w : apply_scene_options(scene, options))
+          PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(options));
         refuse_unused(*renderer, options.given);
-        Scene scene = load_scene(path);
         if (size) std::tie(scene.width, scene.height) = std::tie(size->first, size->second);
         const ImageSize image_size = size_from({scene.width, scene.height});
         if (!field.empty()) scene.field = field;

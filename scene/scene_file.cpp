@@ -27,6 +27,22 @@ void only_keys(const nlohmann::json& j, const std::string& at, std::initializer_
   }
 }
 
+// Calls f(object, at) for each element of the list j[key] (none when absent), each an object
+// holding only `keys`; `form` says what an element looks like, for messages.
+template <class F>
+void each_object(const nlohmann::json& j, const char* key, const std::string& path, const std::string& form,
+                 std::initializer_list<const char*> keys, F&& f) {
+  if (!j.contains(key)) return;
+  const auto& list = j[key];
+  if (!list.is_array()) throw InputError(path + ": " + key + ": expected a list of " + form);
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string at = path + ": " + key + "[" + std::to_string(k) + "]";
+    if (!list[k].is_object()) throw InputError(at + ": expected " + form);
+    only_keys(list[k], at, keys);
+    f(list[k], at);
+  }
+}
+
 std::string text(const nlohmann::json& v, const std::string& at) {
   if (!v.is_string()) throw InputError(at + ": expected a string, got " + v.dump());
   return v.get<std::string>();
@@ -40,6 +56,24 @@ int positive_int(const nlohmann::json& v, const std::string& at, int max, int mi
 }
 
 }  // namespace
+
+std::vector<std::string> apply_scene_options(const Scene& scene, RenderOptions& options) {
+  const auto& defaults = options.method == "layers" ? scene.layer_options
+                         : options.method == "exact" ? scene.iso_options
+                                                     : std::vector<std::pair<std::string, std::string>>{};
+  for (const auto& [name, value] : defaults)
+    if (std::find(options.given.begin(), options.given.end(), name) == options.given.end()) {
+      set_option(options, name, value);
+      options.given.erase(std::find(options.given.begin(), options.given.end(), name));  // a default, not the user's word
+    }
+  std::vector<std::string> warnings;
+  const bool has_iso = std::any_of(scene.iso_options.begin(), scene.iso_options.end(),
+                                   [](const auto& o) { return o.first == "iso"; });
+  if (has_iso && options.method != "exact")
+    warnings.push_back(where(scene.source, "its iso-surfaces are drawn by --method exact; --method " + options.method +
+                                               " draws the volume alone"));
+  return warnings;
+}
 
 ClipPlane parse_clip_plane(const std::string& text) {
   const std::vector<double> v = parse_number_list("clip", text);
@@ -106,24 +140,43 @@ Scene load_scene(const std::string& path) {
 
 namespace {
 
+// A JSON number as option text, every digit kept; a list of them comma-separated.
+std::string number_text(const nlohmann::json& v, const std::string& at) {
+  if (!v.is_number()) throw InputError(at + ": expected a number, got " + v.dump());
+  std::ostringstream out;
+  out.precision(17);
+  out << v.get<double>();
+  return out.str();
+}
+std::string numbers_text(const nlohmann::json& v, const std::string& at) {
+  if (!v.is_array() || v.empty()) throw InputError(at + ": expected a list of numbers, got " + v.dump());
+  std::string list;
+  for (const auto& x : v) list += (list.empty() ? "" : ",") + number_text(x, at);
+  return list;
+}
+
+// Render options from a scene, checked now by their parser for `method`, so that a bad value
+// names the scene ("scene.json: layers: --layer: ...").
+void check_options(const std::vector<std::pair<std::string, std::string>>& o, const std::string& method,
+                   bool needs_iso, const std::string& at) {
+  RenderOptions check;
+  set_option(check, "method", method);
+  if (needs_iso) set_option(check, "iso", "0");
+  try {
+    for (const auto& [name, value] : o) set_option(check, name, value);
+    settings_from(check);
+  } catch (const InputError& e) {
+    throw InputError(at + ": " + e.what());
+  }
+}
+
 // {"iso": 0.5, "color": [1, 0, 0], "layer": [1, 2], "weights": [2, 1], "silhouettes": "both",
-// "silhouette_epsilon": 0.2} as the options --iso 0.5:1,0,0 --layer 1,2 ... (checked by their parser).
+// "silhouette_epsilon": 0.2} as the options --iso 0.5:1,0,0 --layer 1,2 ...
 std::vector<std::pair<std::string, std::string>> layer_options_from_json(const nlohmann::json& l, const std::string& at) {
   if (!l.is_object()) throw InputError(at + ": expected an object");
   only_keys(l, at, {"iso", "color", "layer", "weights", "silhouettes", "silhouette_epsilon"});
-  const auto number = [&](const nlohmann::json& v, const std::string& key) {
-    if (!v.is_number()) throw InputError(at + "." + key + ": expected a number, got " + v.dump());
-    std::ostringstream out;
-    out.precision(17);
-    out << v.get<double>();
-    return out.str();
-  };
-  const auto numbers = [&](const nlohmann::json& v, const std::string& key) {
-    if (!v.is_array() || v.empty()) throw InputError(at + "." + key + ": expected a list of numbers, got " + v.dump());
-    std::string list;
-    for (const auto& x : v) list += (list.empty() ? "" : ",") + number(x, key);
-    return list;
-  };
+  const auto number = [&](const nlohmann::json& v, const std::string& key) { return number_text(v, at + "." + key); };
+  const auto numbers = [&](const nlohmann::json& v, const std::string& key) { return numbers_text(v, at + "." + key); };
   std::vector<std::pair<std::string, std::string>> o;
   if (l.contains("iso")) {
     std::string iso = number(l["iso"], "iso");
@@ -136,15 +189,32 @@ std::vector<std::pair<std::string, std::string>> layer_options_from_json(const n
   if (l.contains("weights")) o.emplace_back("layer-weights", numbers(l["weights"], "weights"));
   if (l.contains("silhouettes")) o.emplace_back("silhouettes", text(l["silhouettes"], at + ".silhouettes"));
   if (l.contains("silhouette_epsilon")) o.emplace_back("silhouette-epsilon", number(l["silhouette_epsilon"], "silhouette_epsilon"));
-  RenderOptions check;  // the block's values checked now, so that a bad one names the scene
-  set_option(check, "method", "layers");
-  if (!l.contains("iso")) set_option(check, "iso", "0");
-  try {
-    for (const auto& [name, value] : o) set_option(check, name, value);
-    settings_from(check);
-  } catch (const InputError& e) {
-    throw InputError(at + ": " + e.what());
+  check_options(o, "layers", !l.contains("iso"), at);
+  return o;
+}
+
+// The scene's iso-surfaces: "iso": [{"value": V, "color": [r, g, b], "opacity": A}, ...] with
+// "iso_mode", "iso_opacity" and "volume" (true or false), as --iso V:R,G,B,A ... --iso-mode ...
+std::vector<std::pair<std::string, std::string>> iso_options_from_json(const nlohmann::json& j, const std::string& path) {
+  std::vector<std::pair<std::string, std::string>> o;
+  each_object(j, "iso", path, "{\"value\": V, \"color\": [r, g, b], \"opacity\": A}", {"value", "color", "opacity"},
+              [&](const nlohmann::json& s, const std::string& at) {
+                if (!s.contains("value")) throw InputError(at + ": missing \"value\"");
+                std::string iso = number_text(s["value"], at + ".value");
+                if (s.contains("color") || s.contains("opacity")) {
+                  if (!s.contains("color")) throw InputError(at + ".opacity: goes with \"color\"");
+                  iso += ":" + numbers_text(s["color"], at + ".color");
+                  if (s.contains("opacity")) iso += "," + number_text(s["opacity"], at + ".opacity");
+                }
+                o.emplace_back("iso", iso);
+              });
+  if (j.contains("iso_mode")) o.emplace_back("iso-mode", text(j["iso_mode"], path + ": iso_mode"));
+  if (j.contains("iso_opacity")) o.emplace_back("iso-opacity", text(j["iso_opacity"], path + ": iso_opacity"));
+  if (j.contains("volume")) {
+    if (!j["volume"].is_boolean()) throw InputError(path + ": volume: expected true or false, got " + j["volume"].dump());
+    o.emplace_back("volume", j["volume"].get<bool>() ? "on" : "off");
   }
+  check_options(o, "exact", false, path);
   return o;
 }
 
@@ -152,7 +222,8 @@ std::vector<std::pair<std::string, std::string>> layer_options_from_json(const n
 
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
-  only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers", "clip"});
+  only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers", "clip", "iso",
+                      "iso_mode", "iso_opacity", "volume"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
@@ -176,31 +247,25 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
   if (!j.contains("transfer_function")) throw InputError(where(path, "missing \"transfer_function\""));
   s.transfer_function = j["transfer_function"];
   if (j.contains("camera")) s.camera = camera_from_json(j["camera"], path);
-  if (j.contains("clip")) {
-    const auto& planes = j["clip"];
-    if (!planes.is_array()) throw InputError(path + ": clip: expected a list of {\"point\": [x, y, z], \"normal\": [x, y, z]}");
-    for (std::size_t k = 0; k < planes.size(); ++k) {
-      const auto& p = planes[k];
-      const std::string at = path + ": clip[" + std::to_string(k) + "]";
-      if (!p.is_object()) throw InputError(at + ": expected {\"point\": [x, y, z], \"normal\": [x, y, z]}");
-      only_keys(p, at, {"point", "normal"});
-      ClipPlane plane;
-      for (const auto& [key, v] : {std::pair{"point", &plane.point}, std::pair{"normal", &plane.normal}}) {
-        if (!p.contains(key)) throw InputError(at + ": missing \"" + key + "\"");
-        const auto& a = p[key];
-        if (!a.is_array() || a.size() != 3 || !a[0].is_number() || !a[1].is_number() || !a[2].is_number())
-          throw InputError(at + "." + key + ": expected [x, y, z], got " + a.dump());
-        *v = {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()};
-      }
-      try {
-        check(plane);
-      } catch (const InputError& e) {
-        throw InputError(at + ": " + e.what());
-      }
-      s.clip.push_back(plane);
-    }
-  }
+  each_object(j, "clip", path, "{\"point\": [x, y, z], \"normal\": [x, y, z]}", {"point", "normal"},
+              [&](const nlohmann::json& p, const std::string& at) {
+                ClipPlane plane;
+                for (const auto& [key, v] : {std::pair{"point", &plane.point}, std::pair{"normal", &plane.normal}}) {
+                  if (!p.contains(key)) throw InputError(at + ": missing \"" + key + "\"");
+                  const auto& a = p[key];
+                  if (!a.is_array() || a.size() != 3 || !a[0].is_number() || !a[1].is_number() || !a[2].is_number())
+                    throw InputError(at + "." + key + ": expected [x, y, z], got " + a.dump());
+                  *v = {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()};
+                }
+                try {
+                  check(plane);
+                } catch (const InputError& e) {
+                  throw InputError(at + ": " + e.what());
+                }
+                s.clip.push_back(plane);
+              });
   if (j.contains("layers")) s.layer_options = layer_options_from_json(j["layers"], path + ": layers");
+  s.iso_options = iso_options_from_json(j, path);
   if (j.contains("image")) {
     const auto& im = j["image"];
     const std::string at = path + ": image";

@@ -200,6 +200,14 @@ expect 2 "--iso does not apply to --method pt-breakpoints" -- render "$tmp/box.v
 expect 2 "--iso: .*opacity must be in \[0, 1\]" -- render "$tmp/box.vtu" --method exact --iso 0.5:1,0,0,2
 expect 2 "unknown --iso-mode 'oit5'" -- render "$tmp/box.vtu" --method exact --iso 0.5 --iso-mode oit5
 expect 2 "draws the crossings of one iso-value" -- render "$tmp/box.vtu" --method layers --iso 0.5 --iso 0.7
+# A scene's iso list: what exact draws; other methods warn that they draw the volume alone.
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "iso": [{"value": 0.5, "color": [1, 0, 0], "opacity": 0.4}], "iso_mode": "oit3", "volume": false}' > "$tmp/isoscene.json"
+expect 0 "wrote" -- render "$tmp/isoscene.json" --method exact --size 32x24 --npy "$tmp/i1.npy"
+expect 0 "wrote" -- render "$tmp/ok.json" --method exact --iso 0.5:1,0,0,0.4 --iso-mode oit3 --volume off --size 32x24 --npy "$tmp/i2.npy"
+cmp -s "$tmp/i1.npy" "$tmp/i2.npy" || { echo "FAIL: the scene's iso list differs from the same options"; failed=$((failed+1)); }
+expect 0 "its iso-surfaces are drawn by --method exact; --method pt-breakpoints draws the volume alone" -- render "$tmp/isoscene.json" --size 16x16 -o "$tmp/i3.png"
+echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "iso": [{"value": 0.5, "opacity": 0.4}]}' > "$tmp/badiso.json"
+expect 1 "badiso.json: iso\[0\].opacity: goes with \"color\"" -- render "$tmp/badiso.json" --method exact
 # Clipping planes, from the command line or the scene, the same bits; bad planes refused.
 expect 0 "wrote" -- render "$tmp/ok.json" --clip 0.1,0,0,1,0.5,0 --clip 0,0,0,0,0,1 --size 32x24 --npy "$tmp/c1.npy" --stats
 grep -q '"clip_cells_cut"' "$tmp/err" || { echo "FAIL: --stats without the clip counts"; failed=$((failed+1)); }

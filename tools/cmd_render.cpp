@@ -232,14 +232,15 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
 int run_render(const RenderArgs& given) {
   const auto t_load = std::chrono::steady_clock::now();
   RenderArgs a = given;
-  // A scene's "layers" block: the options of --method layers that the command line does not give.
-  // (A scene that does not load is reported here, exit 1, for --method layers, which needs it first.)
-  if (is_scene_file(a.input) && a.options.method == "layers")
-    for (const auto& [name, value] : load_scene(a.input).layer_options)
-      if (std::find(a.options.given.begin(), a.options.given.end(), name) == a.options.given.end()) {
-        set_option(a.options, name, value);
-        a.options.given.pop_back();  // a default, not the user's word
-      }
+  // A scene's render options (its "layers" block, its "iso" list) where the command line gives none.
+  // (A scene that does not load is reported when it is loaded, after the command line's checks,
+  // unless the method needs its options first.)
+  if (is_scene_file(a.input) && std::filesystem::is_regular_file(a.input)) try {
+      for (const std::string& w : apply_scene_options(load_scene(a.input), a.options))
+        std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
+    } catch (const InputError&) {
+      if (a.options.method == "layers" || a.options.method == "exact") throw;
+    }
   if (!a.animate.empty()) {  // --animate T0:T1:N renders N frames
     if (a.frames != 1) throw UsageError("--animate T0:T1:FRAMES gives the number of frames: drop --frames");
     a.frames = static_cast<int>(usage([&] { return animation_times(a.animate); }).size());

@@ -176,3 +176,20 @@ def test_iso_surfaces_from_a_list_equal_the_cli_with_repeated_options(tmp_path):
                                   iso=["0.3:0.3,0.5,1,0.35", "0.6:1,0.5,0.2,0.5"], iso_mode="oit4")
     assert np.array_equal(image, cli(tmp_path, DEFAULT_SCENE, "--size", "64x48", "--method", "exact", "--iso",
                                      "0.3:0.3,0.5,1,0.35", "--iso", "0.6:1,0.5,0.2,0.5", "--iso-mode", "oit4"))
+
+
+def test_a_scenes_iso_list_is_what_exact_draws_from_python_and_the_cli(tmp_path):
+    base = ('{"mesh": "%s", "transfer_function": {"color": [[0, 0.2, 0.4, 1], [1.1, 1, 0.8, 0.2]],'
+            ' "extinction": [[0, 0.5], [1.1, 8]]}' % os.path.abspath(DEFAULT_MESH))
+    scene, plain = tmp_path / "iso.json", tmp_path / "plain.json"
+    scene.write_text(base + ', "iso": [{"value": 0.3, "color": [0.3, 0.5, 1], "opacity": 0.35}, {"value": 0.6}],'
+                     ' "iso_mode": "oit4", "volume": false}')
+    plain.write_text(base + "}")
+    image = cellproj.render_scene(str(scene), size=(48, 40), method="exact")
+    assert image[..., 3].max() > 0.3
+    assert np.array_equal(image, cli(tmp_path, str(scene), "--size", "48x40", "--method", "exact"))
+    same = cellproj.render_scene(str(plain), size=(48, 40), method="exact", iso=["0.3:0.3,0.5,1,0.35", "0.6"],
+                                 iso_mode="oit4", volume="off")
+    assert np.array_equal(image, same)
+    with pytest.warns(UserWarning, match="iso-surfaces are drawn by --method exact"):
+        cellproj.render_scene(str(scene), size=(16, 16))
