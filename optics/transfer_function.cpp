@@ -68,6 +68,19 @@ double TransferFunction::extinction(double s) const {
                                                   [](const ExtinctionPoint& p) { return p.kappa; });
 }
 
+bool TransferFunction::transparent_over(double sa, double sb) const {
+  if (sa > sb) std::swap(sa, sb);
+  if (extinction(sa) != 0.0 || extinction(sb) != 0.0) return false;
+  // Between the ends kappa is linear but for its control points (a step's two sides included).
+  for (const ExtinctionPoint& p : extinction_)
+    if (p.s >= sa && p.s <= sb && p.kappa != 0.0) return false;
+  return true;
+}
+
+bool TransferFunction::has_transparent_range() const {
+  return std::any_of(extinction_.begin(), extinction_.end(), [](const ExtinctionPoint& p) { return p.kappa == 0.0; });
+}
+
 TransferFunction::Ends TransferFunction::piece(double sa, double sb) const {
   const double mid = 0.5 * (sa + sb);
   const std::size_t ic = segment_at(color_, mid), ik = segment_at(extinction_, mid);

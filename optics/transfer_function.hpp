@@ -28,6 +28,11 @@ class TransferFunction {
   glm::dvec3 color(double s) const;
   double extinction(double s) const;
 
+  // Whether the extinction is 0 over the whole of [sa, sb] (either order): a cell whose scalar
+  // stays there adds nothing to any ray (emission is C kappa), so it need not be drawn.
+  bool transparent_over(double sa, double sb) const;
+  bool has_transparent_range() const;  // whether some scalar range has extinction 0
+
   // Every s at which colour or extinction changes slope, sorted, without repeats.
   const std::vector<double>& breakpoints() const { return breakpoints_; }
 

@@ -15,6 +15,7 @@ struct ProjectionOptions {
   int table_size = 256;                   // pt-table: nodes per axis of the opacity table
   int batch_cells = 0;                    // cells per pipeline token; 0: about 16 tokens per thread, 64 to 2048
   SplatOptions splat;                     // cells whose projection covers few pixel centres: splatted
+  bool cull_transparent = true;           // cells with extinction 0 over their scalar range not drawn (same picture)
 };
 // Throws InputError for options that do not go together (a method the back end cannot draw) or a
 // table size outside [2, 8192]: before a frame starts, never in the middle of one.

@@ -112,6 +112,25 @@ OpacityTable opacity_table(const TransferFunction& tf, int size, double max_diam
   return OpacityTable(size, kmax, max_diameter);
 }
 
+// The order without the cells whose scalar range has extinction 0 throughout: they add nothing to
+// any ray (emission is C kappa, absorption kappa), so the picture is the same bits without them.
+std::vector<std::int64_t> without_transparent(const std::vector<std::int64_t>& order, const MeshView& cells,
+                                              const double* scalar, const TransferFunction& tf) {
+  if (!tf.has_transparent_range()) return order;
+  std::vector<std::uint8_t> clear(static_cast<std::size_t>(cells.n_cells), 0);
+  tbb::parallel_for(std::int64_t(0), cells.n_cells, [&](std::int64_t c) {
+    const std::int64_t* id = cells.cell(c);
+    double lo = scalar[id[0]], hi = lo;
+    for (int k = 1; k < cells.cell_size(c); ++k) lo = std::min(lo, scalar[id[k]]), hi = std::max(hi, scalar[id[k]]);
+    clear[static_cast<std::size_t>(c)] = tf.transparent_over(lo, hi);
+  });
+  std::vector<std::int64_t> kept;
+  kept.reserve(order.size());
+  for (std::int64_t c : order)
+    if (!clear[static_cast<std::size_t>(c)]) kept.push_back(c);
+  return kept;
+}
+
 }  // namespace
 
 void check_options(const ProjectionOptions& o) {
@@ -157,8 +176,11 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   SortView sort_view{camera, width, height};
   sort_view.gaps = options.gaps;
   ViewOrder view = sorter_.sort(options.sort, sort_view);
-  const std::vector<std::int64_t>& order = view.sorted.order;
   const MeshView& cells = view.mesh->cells;
+  const std::vector<std::int64_t> visible =
+      options.cull_transparent ? without_transparent(view.sorted.order, cells, scalar, tf) : std::vector<std::int64_t>{};
+  const std::vector<std::int64_t>& order = options.cull_transparent ? visible : view.sorted.order;
+  st.culled_transparent = static_cast<std::int64_t>(view.sorted.order.size() - order.size());
   st.tetrahedralize = sorter_.mode();
   st.cells = cells.n_cells;
   st.tets = std::count(cells.types, cells.types + cells.n_cells, static_cast<std::uint8_t>(CellType::Tetra));

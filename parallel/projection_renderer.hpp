@@ -33,6 +33,7 @@ struct ProjectionStats {
   std::int64_t problem_cells = 0;  // mesh cells with a face folded in this view (problem and none modes)
   std::int64_t cells_split = 0;    // mesh cells split into tetrahedra for this frame
   std::int64_t cycle_splits = 0;   // of which split because they were in a visibility cycle
+  std::int64_t culled_transparent = 0;  // cells not drawn: extinction 0 over their scalar range
   std::vector<std::pair<std::string, double>> phase_seconds;  // project points, sort, project and composite
   std::string gl_renderer;                                    // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;

@@ -58,7 +58,7 @@ class ProjectionMode final : public Renderer {
   std::string name() const override { return name_of(options_.method); }
   std::vector<std::string> settings_used() const override {
     return {"method",      "backend",         "sort",           "gaps", "table-size", "tetrahedralize",
-            "small-cells", "splat-threshold", "splat-prefilter"};
+            "small-cells", "splat-threshold", "splat-prefilter", "cull-transparent"};
   }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 
@@ -93,6 +93,7 @@ class ProjectionMode final : public Renderer {
            {"problem_cells", p.problem_cells},
            {"cells_split", p.cells_split},
            {"cycle_splits", p.cycle_splits},
+           {"cells_culled_transparent", p.culled_transparent},
            {"polyhedra", c.polyhedra},
            {"polygons", c.polygons},
            {"subdivisions_looked_up", c.subdivisions_looked_up},

@@ -128,6 +128,9 @@ RenderSettings settings_from(const RenderOptions& o) {
   s.slicing.splat = s.projection.splat;
   s.layers = layer_options(o, s.mode == RenderMode::layers);
   s.iso = iso_options(o);
+  if (o.cull_transparent != "on" && o.cull_transparent != "off")
+    throw InputError("--cull-transparent: expected on or off, got '" + o.cull_transparent + "'");
+  s.projection.cull_transparent = o.cull_transparent == "on";
   return s;
 }
 
@@ -135,7 +138,7 @@ std::vector<std::string> render_option_names() {
   return {"method",         "sort",        "gaps",       "backend", "tetrahedralize",  "interpolation",  "slice-axis",
           "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter",
           "iso",            "layer",       "layer-weights", "silhouettes", "silhouette-epsilon", "volume", "iso-mode",
-          "iso-opacity"};
+          "iso-opacity",    "cull-transparent"};
 }
 
 void set_option(RenderOptions& o, const std::string& given_name, const std::string& value) {
@@ -156,6 +159,7 @@ void set_option(RenderOptions& o, const std::string& given_name, const std::stri
                       : name == "volume"         ? &o.volume
                       : name == "iso-mode"       ? &o.iso_mode
                       : name == "iso-opacity"    ? &o.iso_opacity
+                      : name == "cull-transparent" ? &o.cull_transparent
                                                  : nullptr;
   if (text)
     *text = value;

@@ -493,6 +493,10 @@ Action add_render(CLI::App& app) {
                         cmd->add_option("--splat-prefilter", args->options.splat_prefilter,
                                         "Standard deviation in pixels of the splats' anti-aliasing pre-filter "
                                         "(default 0.7; 0.3 to 4)"));
+  settings.emplace_back("cull-transparent",
+                        cmd->add_option("--cull-transparent", args->options.cull_transparent,
+                                        "projection methods: leave out the cells whose scalar range has extinction 0 "
+                                        "throughout, on (default: the same picture, less work) or off"));
   settings.emplace_back("sort", cmd->add_option("--sort", args->options.sort,
                                                 "Visibility sort for the projection methods: " + sort_method_names()));
   settings.emplace_back(
