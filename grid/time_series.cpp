@@ -68,17 +68,25 @@ std::vector<KeyFrame> pvd_frames(const std::string& path) {
   return frames;
 }
 
-// The files "dir/mesh_%04d.vtu" names, by number: any run of digits that the pattern prints back.
-std::vector<KeyFrame> numbered_frames(const std::string& pattern) {
+// The prefix and suffix around the one %d of a pattern's file name.
+std::pair<std::string, std::string> pattern_parts(const std::string& pattern) {
   const fs::path folder = fs::path(pattern).parent_path();
   const std::string name = fs::path(pattern).filename().string();
   const std::regex conversion("%0?[0-9]*d");
   std::smatch m;
-  if (!std::regex_search(name, m, conversion) || folder.string().find('%') != std::string::npos)
-    throw InputError(where(pattern, "a numbered series names its files with one %d in the file name, such as "
-                                    "mesh_%04d.vtu"));
-  const std::string prefix = m.prefix(), suffix = m.suffix();
-  if (suffix.find('%') != std::string::npos) throw InputError(where(pattern, "a file pattern takes one %d"));
+  // The name is a printf format: nothing but its one %d may be a conversion.
+  if (!std::regex_search(name, m, conversion) || folder.string().find('%') != std::string::npos ||
+      std::count(name.begin(), name.end(), '%') != 1)
+    throw InputError(where(pattern, "a numbered series names its files with one %d in the file name and no other %, "
+                                    "such as mesh_%04d.vtu"));
+  return {m.prefix(), m.suffix()};
+}
+
+// The files "dir/mesh_%04d.vtu" names, by number: any run of digits that the pattern prints back.
+std::vector<KeyFrame> numbered_frames(const std::string& pattern) {
+  const fs::path folder = fs::path(pattern).parent_path();
+  const std::string name = fs::path(pattern).filename().string();
+  const auto [prefix, suffix] = pattern_parts(pattern);
   std::vector<KeyFrame> frames;
   std::error_code ec;
   const fs::path dir = folder.empty() ? fs::path(".") : folder;
@@ -120,6 +128,8 @@ std::vector<KeyFrame> exodus_frames(const std::string& path) {
 }
 
 }  // namespace
+
+void check_file_pattern(const std::string& pattern) { pattern_parts(pattern); }
 
 bool is_series_path(const std::string& path) {
   return lower_extension(path) == ".pvd" || fs::path(path).filename().string().find('%') != std::string::npos;

@@ -28,6 +28,10 @@ struct TimeSeries {
 // ("out/mesh_%04d.vtu"). An Exodus file is a series when it has several time steps.
 bool is_series_path(const std::string& path);
 
+// InputError unless `pattern`'s file name has exactly one %d (flags and width allowed: %04d) and
+// no other %, and its folder none: a pattern safe to give printf.
+void check_file_pattern(const std::string& pattern);
+
 // The key frames, reading no mesh: a .pvd's DataSets (timestep and file, relative to the .pvd);
 // the files a pattern matches, in the order of their numbers, each its number as time; an Exodus
 // file's time steps with their times. InputError naming the file for a malformed collection, a

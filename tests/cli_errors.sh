@@ -244,6 +244,10 @@ expect 1 "s.pvd: time 7.000000 is outside the series' times \[0.000000, 5.000000
 expect 2 "--time renders one frame and --animate many" -- render "$tmp/ser/s.pvd" --time 1 --animate 0:1:2 -o "$tmp/ser/x_%d.png"
 expect 2 "--animate: expected T0:T1:FRAMES" -- render "$tmp/ser/s.pvd" --animate 0:1
 expect 1 "box.vtu: not a time series" -- render "$tmp/box.vtu" --time 1
+# A pattern is given to printf: one %d and no other %, or it is refused before any use.
+expect 1 "a numbered series names its files with one %d in the file name and no other %" -- render "$tmp/ser/s_%n%04d.vtu" --time 1 -o "$tmp/ser/n.png"
+expect 1 "a numbered series names its files with one %d in the file name and no other %" -- generate box -n 2 --steps 2 -o "$tmp/ser/g%n%d.vtu"
+expect 1 "a numbered series names its files with one %d in the file name and no other %" -- generate box -n 2 --steps 2 -o "$tmp/ser/g%s.pvd"
 rm "$tmp/ser/s_0003.vtu"
 expect 1 "s_0003.vtu: no such file" -- render "$tmp/ser/s.pvd" --time 2.5
 # docs/reliability.md: bad files of every kind get exit 1 and a message naming file and element.

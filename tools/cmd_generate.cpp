@@ -6,6 +6,7 @@
 
 #include "base/error.hpp"
 #include "grid/generate.hpp"
+#include "grid/time_series.hpp"
 #include "grid/write_mesh.hpp"
 #include "tools/commands.hpp"
 
@@ -17,11 +18,12 @@ namespace {
 // .pvd written with its key frames NAME_0000.vtu, ... beside it. Returns the files written.
 std::vector<std::string> write_series(Mesh m, const std::string& out, int steps, bool binary) {
   const bool pvd = std::filesystem::path(out).extension() == ".pvd";
-  if (!pvd && out.find('%') == std::string::npos)
+  if (!pvd && !is_series_path(out))
     throw InputError("--steps: -o must be a .pvd collection or a file pattern with one %d (mesh_%04d.vtu)");
   const std::string pattern =
       pvd ? (std::filesystem::path(out).parent_path() / (std::filesystem::path(out).stem().string() + "_%04d.vtu")).string()
           : out;
+  check_file_pattern(pattern);  // given to printf: one %d and no other %
   const std::vector<double> base = m.fields.at(0).values;
   std::vector<std::string> files;
   std::string collection = "<?xml version=\"1.0\"?>\n<VTKFile type=\"Collection\" version=\"0.1\">\n<Collection>\n";
