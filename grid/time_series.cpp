@@ -31,6 +31,10 @@ std::string lower_extension(const std::string& path) {
 // A ParaView collection: <VTKFile type="Collection"><Collection><DataSet timestep=".." file=".."/>.
 std::vector<KeyFrame> pvd_frames(const std::string& path) {
   if (!fs::is_regular_file(path)) throw InputError(where(path, "no such file"));
+  // A collection lists files: a few hundred bytes a key frame. The parser holds it whole.
+  if (const auto bytes = fs::file_size(path); bytes > (64u << 20))
+    throw InputError(where(path, "is " + std::to_string(bytes >> 20) + " MiB: too large for a ParaView collection "
+                                 "(a list of files), which this reads whole"));
   vtkSmartPointer<vtkXMLDataElement> root;
   {
     VtkMessages messages;

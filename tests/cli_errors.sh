@@ -248,6 +248,9 @@ expect 1 "box.vtu: not a time series" -- render "$tmp/box.vtu" --time 1
 expect 1 "a numbered series names its files with one %d in the file name and no other %" -- render "$tmp/ser/s_%n%04d.vtu" --time 1 -o "$tmp/ser/n.png"
 expect 1 "a numbered series names its files with one %d in the file name and no other %" -- generate box -n 2 --steps 2 -o "$tmp/ser/g%n%d.vtu"
 expect 1 "a numbered series names its files with one %d in the file name and no other %" -- generate box -n 2 --steps 2 -o "$tmp/ser/g%s.pvd"
+truncate -s 70M "$tmp/ser/big.pvd"
+expect 1 "big.pvd: is 70 MiB: too large for a ParaView collection" -- render "$tmp/ser/big.pvd" -o "$tmp/ser/b.png"
+rm "$tmp/ser/big.pvd"
 rm "$tmp/ser/s_0003.vtu"
 expect 1 "s_0003.vtu: no such file" -- render "$tmp/ser/s.pvd" --time 2.5
 # docs/reliability.md: bad files of every kind get exit 1 and a message naming file and element.
