@@ -33,8 +33,9 @@ std::vector<KeyFrame> pvd_frames(const std::string& path) {
   if (!fs::is_regular_file(path)) throw InputError(where(path, "no such file"));
   // A collection lists files: a few hundred bytes a key frame. The parser holds it whole.
   if (const auto bytes = fs::file_size(path); bytes > (64u << 20))
-    throw InputError(where(path, "is " + std::to_string(bytes >> 20) + " MiB: too large for a ParaView collection "
-                                 "(a list of files), which this reads whole"));
+    throw InputError(where(path, "is " + std::to_string(bytes >> 20) +
+                                     " MiB: too large for a ParaView collection "
+                                     "(a list of files), which this reads whole"));
   vtkSmartPointer<vtkXMLDataElement> root;
   {
     VtkMessages messages;
@@ -44,10 +45,11 @@ std::vector<KeyFrame> pvd_frames(const std::string& path) {
   if (!root) throw InputError(where(path, "not an XML file"));
   const char* type = root->GetAttribute("type");
   vtkXMLDataElement* collection = root->FindNestedElementWithName("Collection");
-  if (std::string(root->GetName() ? root->GetName() : "") != "VTKFile" || !type ||
-      std::string(type) != "Collection" || !collection)
-    throw InputError(where(path, "not a ParaView collection (.pvd): expected <VTKFile type=\"Collection\"> holding "
-                                 "a <Collection>"));
+  if (std::string(root->GetName() ? root->GetName() : "") != "VTKFile" || !type || std::string(type) != "Collection" ||
+      !collection)
+    throw InputError(where(path,
+                           "not a ParaView collection (.pvd): expected <VTKFile type=\"Collection\"> holding "
+                           "a <Collection>"));
   std::vector<KeyFrame> frames;
   const fs::path folder = fs::path(path).parent_path();
   for (int k = 0; k < collection->GetNumberOfNestedElements(); ++k) {
@@ -81,8 +83,9 @@ std::pair<std::string, std::string> pattern_parts(const std::string& pattern) {
   // The name is a printf format: nothing but its one %d may be a conversion.
   if (!std::regex_search(name, m, conversion) || folder.string().find('%') != std::string::npos ||
       std::count(name.begin(), name.end(), '%') != 1)
-    throw InputError(where(pattern, "a numbered series names its files with one %d in the file name and no other %, "
-                                    "such as mesh_%04d.vtu"));
+    throw InputError(where(pattern,
+                           "a numbered series names its files with one %d in the file name and no other %, "
+                           "such as mesh_%04d.vtu"));
   return {m.prefix(), m.suffix()};
 }
 
@@ -119,8 +122,8 @@ std::vector<KeyFrame> exodus_frames(const std::string& path) {
   std::vector<double> times;
   int var = 0, dim = 0, ndims = 0;
   std::size_t steps = 0;
-  if (nc_inq_varid(id, "time_whole", &var) == NC_NOERR && nc_inq_varndims(id, var, &ndims) == NC_NOERR &&
-      ndims == 1 && nc_inq_vardimid(id, var, &dim) == NC_NOERR && nc_inq_dimlen(id, dim, &steps) == NC_NOERR) {
+  if (nc_inq_varid(id, "time_whole", &var) == NC_NOERR && nc_inq_varndims(id, var, &ndims) == NC_NOERR && ndims == 1 &&
+      nc_inq_vardimid(id, var, &dim) == NC_NOERR && nc_inq_dimlen(id, dim, &steps) == NC_NOERR) {
     times.resize(steps);
     if (steps > 0 && nc_get_var_double(id, var, times.data()) != NC_NOERR) times.clear(), steps = 0;
   }
@@ -149,10 +152,12 @@ TimeSeries list_series(const std::string& path, const ReadOptions& options) {
   else if (options.format == "exodus" || (options.format.empty() && format_for(path) == "exodus"))
     s.frames = exodus_frames(path);
   else
-    throw InputError(where(path, "not a time series: give a ParaView collection (.pvd), a numbered series "
-                                 "(mesh_%04d.vtu) or an Exodus file with time steps"));
+    throw InputError(where(path,
+                           "not a time series: give a ParaView collection (.pvd), a numbered series "
+                           "(mesh_%04d.vtu) or an Exodus file with time steps"));
   if (s.frames.empty()) throw InputError(where(path, "names no key frame (no file of the series was found)"));
-  std::stable_sort(s.frames.begin(), s.frames.end(), [](const KeyFrame& a, const KeyFrame& b) { return a.time < b.time; });
+  std::stable_sort(s.frames.begin(), s.frames.end(),
+                   [](const KeyFrame& a, const KeyFrame& b) { return a.time < b.time; });
   for (std::size_t k = 1; k < s.frames.size(); ++k)
     if (s.frames[k].time == s.frames[k - 1].time)
       throw InputError(where(path, "two key frames at time " + std::to_string(s.frames[k].time) + " (" +
@@ -184,8 +189,8 @@ const SeriesPlayer::Held& SeriesPlayer::hold(std::size_t index, std::size_t keep
   const auto distance = [&](const Held& h) {
     return h.index == kNone ? ~std::size_t(0) : h.index > index ? h.index - index : index - h.index;
   };
-  Held& slot = held_[0].index == keep   ? held_[1]
-               : held_[1].index == keep ? held_[0]
+  Held& slot = held_[0].index == keep                     ? held_[1]
+               : held_[1].index == keep                   ? held_[0]
                : distance(held_[0]) >= distance(held_[1]) ? held_[0]
                                                           : held_[1];
   const KeyFrame& kf = series_.frames[index];
@@ -194,8 +199,8 @@ const SeriesPlayer::Held& SeriesPlayer::hold(std::size_t index, std::size_t keep
   options.time_step = kf.time_step;
   LoadedMesh loaded = load_mesh(kf.path, options);
   Mesh& m = loaded.mesh;
-  const std::string what = "key frame " + std::to_string(index) + " (time " + std::to_string(kf.time) + ") of " +
-                           series_.source;
+  const std::string what =
+      "key frame " + std::to_string(index) + " (time " + std::to_string(kf.time) + ") of " + series_.source;
   if (reads_ == 0) {
     if (field_.empty()) {
       if (m.fields.size() != 1)
@@ -212,8 +217,9 @@ const SeriesPlayer::Held& SeriesPlayer::hold(std::size_t index, std::size_t keep
   } else {
     if (m.types != cells_.types || m.offsets != cells_.offsets || m.connectivity != cells_.connectivity ||
         m.points.size() != first_points_->size())
-      throw InputError(where(kf.path, what + ": its cells differ from the first key frame's; the key frames of a "
-                                             "series must share their points and cells (only their values may change)"));
+      throw InputError(where(kf.path, what +
+                                          ": its cells differ from the first key frame's; the key frames of a "
+                                          "series must share their points and cells (only their values may change)"));
   }
   slot.index = index;
   if (reads_ == 0 || m.points == *first_points_) {

@@ -69,7 +69,7 @@ class SeriesPlayer {
   // The cells every key frame shares (connectivity, offsets, types; no points, no fields); valid
   // after the first frame_at.
   const Mesh& cells() const { return cells_; }
-  MeshView view(const SeriesFrame& frame) const;  // cells() with the frame's points
+  MeshView view(const SeriesFrame& frame) const;                          // cells() with the frame's points
   const ValidationReport& first_report() const { return first_report_; }  // the first key frame read's
   bool points_move() const { return points_move_; }  // whether a key frame read so far moved a point
   int key_frames_read() const { return reads_; }

@@ -49,7 +49,8 @@ struct VtkMessages::State {
   std::lock_guard<std::mutex> lock{vtk_output_lock()};
   vtkSmartPointer<vtkOutputWindow> previous{vtkOutputWindow::GetInstance()};
   vtkSmartPointer<CaptureWindow> window{vtkSmartPointer<CaptureWindow>::New()};
-  vtkLogger::Verbosity verbosity{vtkLogger::GetCurrentVerbosityCutoff()};  // stderr's, the only sink unless the caller added one
+  vtkLogger::Verbosity verbosity{
+      vtkLogger::GetCurrentVerbosityCutoff()};  // stderr's, the only sink unless the caller added one
 };
 
 VtkMessages::VtkMessages() : state_(std::make_unique<State>()) {

@@ -56,9 +56,9 @@ void check(const LayerOptions& o) {
 int iso_crossings(const RaySegment* seg, std::size_t n, double iso, double tolerance,
                   const std::function<void(const IsoCrossing&)>& emit) {
   int count = 0;
-  int last = 0;               // the side of V the ray was last on: +1 above, -1 below, 0 none yet
-  double on_since = kNaN;     // where the ray came onto V (within tolerance) since it left `last`
-  std::uint32_t on_tet = 0;   // and in which tetrahedron
+  int last = 0;              // the side of V the ray was last on: +1 above, -1 below, 0 none yet
+  double on_since = kNaN;    // where the ray came onto V (within tolerance) since it left `last`
+  std::uint32_t on_tet = 0;  // and in which tetrahedron
   double reached = -std::numeric_limits<double>::infinity();
   const auto side = [&](double s) { return s > iso + tolerance ? 1 : s < iso - tolerance ? -1 : 0; };
   const auto arrive = [&](double t, int g, std::uint32_t tet) {  // the ray is at t, on side g
@@ -130,8 +130,8 @@ glm::dvec3 shade_layer(const glm::dvec3& base, const glm::dvec3& n, const glm::d
 }
 
 Image render_layers(const CellRayTracer& tracer, const double* scalar, std::int64_t n_points,
-                    const TransferFunction& tf, const Camera& camera, int width, int height,
-                    const LayerOptions& o, LayerStats* stats, const std::function<void(double)>& progress) {
+                    const TransferFunction& tf, const Camera& camera, int width, int height, const LayerOptions& o,
+                    LayerStats* stats, const std::function<void(double)>& progress) {
   check(o);
   const auto start = std::chrono::steady_clock::now();
   double lo = std::numeric_limits<double>::infinity(), hi = -lo;

@@ -20,9 +20,9 @@ namespace cellproj {
 
 // One crossing of the iso-value V along a ray.
 struct IsoCrossing {
-  double t;            // world distance along the ray, as RaySegment's
-  std::uint32_t tet;   // the tracer's tetrahedron whose field gradient is the surface normal there
-  bool entering;       // the field goes from below V to above V (Nagy and Klein's exterior boundary)
+  double t;           // world distance along the ray, as RaySegment's
+  std::uint32_t tet;  // the tracer's tetrahedron whose field gradient is the surface normal there
+  bool entering;      // the field goes from below V to above V (Nagy and Klein's exterior boundary)
 };
 
 // The crossings of V along one ray's segments (front to back, as CellRayTracer gives them), each

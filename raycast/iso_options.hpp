@@ -11,7 +11,7 @@ namespace cellproj {
 struct IsoSurface {
   double value = 0.0;
   glm::dvec3 color{1.0};
-  double opacity = 1.0;  // seen head-on (the view along the surface's normal)
+  double opacity = 1.0;     // seen head-on (the view along the surface's normal)
   bool color_given = true;  // false: the transfer function's colour at `value`
 };
 

@@ -27,8 +27,8 @@ struct SurfaceHit {
   int surface;
   std::uint32_t tet;  // its tetrahedron: the order a rasterizer would be sent the surfaces' polygons
   double alpha;
-  glm::dvec3 color;   // shaded, not premultiplied
-  bool back;          // a back face: the ray leaves the region above the iso-value
+  glm::dvec3 color;  // shaded, not premultiplied
+  bool back;         // a back face: the ray leaves the region above the iso-value
   bool opaque() const { return alpha >= 1.0; }
   SegmentLight light() const {  // alpha of colour, as a layer of optical depth -ln(1 - alpha)
     return {alpha * color, opaque() ? 2 * kOpaqueDepth : -std::log1p(-alpha)};
@@ -42,7 +42,9 @@ void add_volume(const TransferFunction& tf, const RaySegment* seg, std::size_t n
     const double a = std::max(seg[k].t0, t_from), b = std::min(seg[k].t1, t_to);
     if (!(b > a)) continue;
     const double len = seg[k].t1 - seg[k].t0;
-    const auto s = [&](double t) { return len > 0 ? seg[k].s0 + (t - seg[k].t0) / len * (seg[k].s1 - seg[k].s0) : seg[k].s0; };
+    const auto s = [&](double t) {
+      return len > 0 ? seg[k].s0 + (t - seg[k].t0) / len * (seg[k].s1 - seg[k].s0) : seg[k].s0;
+    };
     acc = under(acc, integrate_segment_reference(tf, b - a, s(a), s(b)));
   }
 }
@@ -138,8 +140,8 @@ double spectrum_fit_exponent(double a, double* max_error) {
 }
 
 Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std::int64_t n_points,
-                          const TransferFunction& tf, const Camera& camera, int width, int height,
-                          const IsoOptions& o, IsoStats* stats, const std::function<void(double)>& progress) {
+                          const TransferFunction& tf, const Camera& camera, int width, int height, const IsoOptions& o,
+                          IsoStats* stats, const std::function<void(double)>& progress) {
   check(o);
   const auto start = std::chrono::steady_clock::now();
   double lo = kInf, hi = -kInf;
@@ -200,7 +202,7 @@ Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std
               rgb = h->alpha * h->color + (1.0 - h->alpha) * rgb;
               opacity = h->alpha + (1.0 - h->alpha) * opacity;
             }
-          } else {  // oit3, oit4: products and sums, order independent (self-attenuation neglected)
+          } else {                 // oit3, oit4: products and sums, order independent (self-attenuation neglected)
             double z_back = kInf;  // oit4: the front-most back face of the semi-transparent surfaces
             if (o.mode == IsoMode::oit4)
               for (const SurfaceHit* h : semi)

@@ -16,9 +16,9 @@ namespace cellproj {
 
 struct IsoStats {
   double seconds = 0.0;
-  std::int64_t segments = 0;          // ray-tetrahedron segments walked
-  std::int64_t surface_crossings = 0; // crossings of the surfaces, on all rays
-  double fit_max_error = 0.0;         // spectrum-fit: the largest opacity error of the fit, over the surfaces
+  std::int64_t segments = 0;           // ray-tetrahedron segments walked
+  std::int64_t surface_crossings = 0;  // crossings of the surfaces, on all rays
+  double fit_max_error = 0.0;          // spectrum-fit: the largest opacity error of the fit, over the surfaces
 };
 
 // The picture of `options` (premultiplied RGBA without background, as every renderer's). The

@@ -16,9 +16,9 @@ enum class Silhouettes {
 };
 
 struct LayerOptions {
-  double iso = 0.0;             // the iso-value V
-  std::vector<int> layers{1};   // which crossings of V, 1 the nearest; increasing
-  std::vector<double> weights;  // one per layer, >= 0; empty: equal (Nagy and Klein's equal ratios)
+  double iso = 0.0;                 // the iso-value V
+  std::vector<int> layers{1};       // which crossings of V, 1 the nearest; increasing
+  std::vector<double> weights;      // one per layer, >= 0; empty: equal (Nagy and Klein's equal ratios)
   std::optional<glm::dvec3> color;  // of every layer; absent: the transfer function's colour at V
   Silhouettes silhouettes = Silhouettes::none;
   double silhouette_epsilon = 0.2;  // a silhouette where |view . normal| < this (unit vectors)

@@ -11,9 +11,7 @@
 namespace cellproj {
 
 std::vector<double> animation_times(const std::string& text) {
-  const auto bad = [&] {
-    return InputError("--animate: expected T0:T1:FRAMES (e.g. 0:2.5:60), got '" + text + "'");
-  };
+  const auto bad = [&] { return InputError("--animate: expected T0:T1:FRAMES (e.g. 0:2.5:60), got '" + text + "'"); };
   const std::size_t a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
   if (b == std::string::npos) throw bad();
   double t0 = 0, t1 = 0;
@@ -28,7 +26,8 @@ std::vector<double> animation_times(const std::string& text) {
     throw bad();
   }
   if (!std::isfinite(t0) || !std::isfinite(t1)) throw bad();
-  if (frames < 1 || frames > 100000) throw InputError("--animate: FRAMES must be in [1, 100000], got " + std::to_string(frames));
+  if (frames < 1 || frames > 100000)
+    throw InputError("--animate: FRAMES must be in [1, 100000], got " + std::to_string(frames));
   std::vector<double> times(static_cast<std::size_t>(frames), t0);
   for (int f = 1; f < frames; ++f) times[f] = f == frames - 1 ? t1 : t0 + (t1 - t0) * f / (frames - 1);
   return times;
@@ -62,8 +61,8 @@ PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::ve
       }
       const Field field{current.field.data(), static_cast<std::int64_t>(current.field.size()), player.field_name()};
       RenderReport report;
-      Image image = renderer.render(*volume, field, tf, camera_of(f), size, &report,
-                                    progress_of ? progress_of(f) : Progress{});
+      Image image =
+          renderer.render(*volume, field, tf, camera_of(f), size, &report, progress_of ? progress_of(f) : Progress{});
       done(f, std::move(image), report);
     } catch (...) {
       if (next.valid()) next.wait();  // the background thread uses the player: let it finish first

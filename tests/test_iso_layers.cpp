@@ -7,8 +7,8 @@
 #include <cmath>
 #include <limits>
 
-#include <glm/geometric.hpp>
 #include <tbb/task_arena.h>
+#include <glm/geometric.hpp>
 
 #include "base/error.hpp"
 #include "grid/generate.hpp"

@@ -81,7 +81,7 @@ TEST(TimeSeries, BadCollectionsAreRefusedNamingTheFile) {
   std::ofstream(dir.file("junk.pvd")) << "not xml at all <";
   expect_refused([&] { list_series(dir.file("junk.pvd"), {}); }, "junk.pvd");
   std::ofstream(dir.file("nofile.pvd")) << "<VTKFile type=\"Collection\"><Collection><DataSet timestep=\"0\"/>"
-                                          "</Collection></VTKFile>";
+                                           "</Collection></VTKFile>";
   expect_refused([&] { list_series(dir.file("nofile.pvd"), {}); }, "DataSet 0 has no file attribute");
   write_pvd(dir.file("twice.pvd"), {{1.0, "a.vtu"}, {1.0, "a.vtu"}});
   expect_refused([&] { list_series(dir.file("twice.pvd"), {}); }, "two key frames at time 1");
@@ -171,10 +171,10 @@ TEST(TimeSeries, AnExodusFilesTimeStepsAreItsKeyFrames) {
   SeriesPlayer player(s, "f", {});
   const SeriesFrame f = player.frame_at(1.0);
   const Mesh m0 = read_mesh(path), m1 = read_mesh(path, [] {
-    ReadOptions o;
-    o.time_step = 1;
-    return o;
-  }());
+                                     ReadOptions o;
+                                     o.time_step = 1;
+                                     return o;
+                                   }());
   const auto& a = m0.field("f").values;
   const auto& b = m1.field("f").values;
   for (std::size_t i = 0; i < a.size(); ++i) ASSERT_EQ(f.field[i], 0.75 * a[i] + 0.25 * b[i]);
@@ -203,13 +203,14 @@ TEST(TimeSeries, PlaybackEqualsRenderingASingleStepFileOfTheInterpolatedField) {
     for (std::size_t f = 0; f < times.size(); ++f) {
       const SeriesPosition p = locate(player.series(), times[f]);
       Mesh single = step(0);
-      const auto a = step(static_cast<int>(p.before)).fields[0].values, b = step(static_cast<int>(p.after)).fields[0].values;
+      const auto a = step(static_cast<int>(p.before)).fields[0].values,
+                 b = step(static_cast<int>(p.after)).fields[0].values;
       for (std::size_t i = 0; i < a.size(); ++i)
         single.fields[0].values[i] = p.before == p.after ? a[i] : (1.0 - p.weight) * a[i] + p.weight * b[i];
       write_vtu(single, dir.file("single.vtu"));
       const Mesh back = read_mesh(dir.file("single.vtu"));
-      const Image expect = render(Volume(back.view()), field_of(back, "f"), tf, RenderSettings{},
-                                  camera(static_cast<int>(f)), {48, 40});
+      const Image expect =
+          render(Volume(back.view()), field_of(back, "f"), tf, RenderSettings{}, camera(static_cast<int>(f)), {48, 40});
       EXPECT_EQ(played[f].rgba, expect.rgba) << "frame " << f << " prefetch " << prefetch;
     }
   }

@@ -1,0 +1,64 @@
+#include "tools/frame_output.hpp"
+
+#include <cctype>
+#include <cstdio>
+#include <filesystem>
+
+#include "base/error.hpp"
+
+namespace cellproj {
+
+// out.png -> out-64.png: where level `slices` of --progressive goes.
+std::string level_path(const std::string& path, int slices) {
+  if (path.empty()) return path;
+  const std::filesystem::path p(path);
+  return (p.parent_path() / (p.stem().string() + "-" + std::to_string(slices) + p.extension().string())).string();
+}
+
+// The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`;
+// the colour legend drawn on the PNG when given.
+void write_outputs(const Image& image, const glm::dvec3& background, const ColorBar* legend, const std::string& png,
+                   const std::string& npy, const std::string& what) {
+  if (!png.empty()) {
+    Rgb8Image rgb = to_rgb8(image, background);
+    if (legend) draw_color_bar(rgb, *legend);
+    write_png(rgb, png);
+  }
+  if (!npy.empty()) write_npy(image, npy);
+  for (const std::string& out : {png, npy})
+    if (!out.empty()) std::printf("wrote %s (%s)\n", out.c_str(), what.c_str());
+  std::fflush(stdout);
+}
+
+// True for a pattern with one %d (flags and width allowed, "%04d"); InputError for any other %.
+bool is_frame_pattern(const std::string& path, const char* option) {
+  int conversions = 0;
+  for (std::size_t i = 0; i < path.size(); ++i) {
+    if (path[i] != '%') continue;
+    std::size_t j = i + 1;
+    while (j < path.size() && (std::isdigit(static_cast<unsigned char>(path[j])) || path[j] == '0')) ++j;
+    if (j >= path.size() || path[j] != 'd' || ++conversions > 1)
+      throw InputError(std::string(option) + ": '" + path +
+                       "': a frame pattern takes one %d (e.g. frame_%04d.png) and no other %");
+    i = j;
+  }
+  return conversions == 1;
+}
+
+FramePaths frame_paths(const std::string& png, const std::string& npy, const std::string& input, int frames) {
+  FramePaths p{png, npy};
+  if (p.png.empty() && p.npy.empty()) p.png = std::filesystem::path(input).stem().string() + ".png";
+  const bool png_seq = is_frame_pattern(p.png, "-o"), npy_seq = is_frame_pattern(p.npy, "--npy");
+  if (!p.png.empty() && !p.npy.empty() && png_seq != npy_seq)
+    throw InputError("-o and --npy: give both as frame patterns (frame_%04d.png, frame_%04d.npy) or neither");
+  p.sequence = png_seq || npy_seq;
+  if (p.sequence && frames < 2) throw InputError("a frame pattern in -o or --npy needs --frames N (N >= 2)");
+  for (const std::string& out : {p.png, p.npy}) {
+    if (out.empty()) continue;
+    const auto dir = std::filesystem::path(out).parent_path();
+    if (!dir.empty()) std::filesystem::create_directories(dir);
+  }
+  return p;
+}
+
+}  // namespace cellproj

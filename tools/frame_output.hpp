@@ -1,0 +1,44 @@
+#pragma once
+// Where `cellproj render` writes its pictures: one PNG and .npy, a frame pattern, the levels of
+// --progressive. Internal to the command line.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "view/color_bar.hpp"
+#include "view/image.hpp"
+
+namespace cellproj {
+
+// out.png -> out-64.png: where level `slices` of --progressive goes.
+std::string level_path(const std::string& path, int slices);
+
+// The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`;
+// the colour legend drawn on the PNG when given.
+void write_outputs(const Image& image, const glm::dvec3& background, const ColorBar* legend, const std::string& png,
+                   const std::string& npy, const std::string& what);
+
+// Where the frames go: one PNG (and .npy), or with a printf pattern (frame_%04d.png) one per frame.
+struct FramePaths {
+  std::string png, npy;
+  bool sequence = false;
+  std::string png_of(int f) const { return sequence ? frame_path(png, f) : png; }
+  std::string npy_of(int f) const { return sequence ? frame_path(npy, f) : npy; }
+  static std::string frame_path(const std::string& pattern, int f) {
+    if (pattern.empty()) return pattern;
+    std::vector<char> out(pattern.size() + 32);
+    std::snprintf(out.data(), out.size(), pattern.c_str(), f);
+    return out.data();
+  }
+};
+
+// True for a pattern with one %d (flags and width allowed, "%04d"); InputError for any other %.
+bool is_frame_pattern(const std::string& path, const char* option);
+
+// The outputs of a render of `frames` frames: -o and --npy as given (by default INPUT's name with
+// .png), patterns checked, their folders made.
+FramePaths frame_paths(const std::string& png, const std::string& npy, const std::string& input, int frames);
+
+}  // namespace cellproj

@@ -1,0 +1,54 @@
+#pragma once
+// What `cellproj render` was asked (its arguments) and the scene it renders: a scene file with the
+// command line's overrides, or a mesh with its default scene; a time series' player; the clipped
+// mesh. Internal to the command line.
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "grid/clip.hpp"
+#include "grid/read_mesh.hpp"
+#include "grid/time_series.hpp"
+#include "render/renderer.hpp"
+#include "scene/prepare.hpp"
+#include "scene/quick_scene.hpp"
+#include "scene/render_options.hpp"
+#include "scene/scene_file.hpp"
+
+namespace cellproj {
+
+struct RenderArgs {
+  std::string input, png, npy, size, field, progressive, view, background;
+  RenderOptions options;                // the render settings, by their command-line names
+  ReadOptions reader;                   // for a mesh given instead of a scene
+  QuickLook look;                       // the same
+  std::vector<std::string> look_given;  // --colormap, --opacity, --depth when given
+  int threads = 0, frames = 1;
+  double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
+  bool legend = false;
+  double max_memory_gib = 0.0;  // 0: the machine's available memory
+  bool stats = false;
+  std::optional<double> time;     // --time T: a series' frame at T
+  std::vector<std::string> clip;  // --clip x,y,z,nx,ny,nz, repeatable: replaces the scene's planes
+  std::string animate;            // --animate T0:T1:FRAMES
+  bool no_prefetch = false;       // make each frame of a series in turn, not on a background thread
+};
+
+// The scene of the input: a scene file with the command line's overrides, or a mesh with the
+// default scene of `cellproj scene`. The mesh is read once either way.
+struct Input {
+  Scene scene;
+  PreparedScene prepared;
+  std::unique_ptr<SeriesPlayer> player;  // a time series: its frames (prepared.loaded has no cells then)
+  SeriesFrame first;                     // the series' first frame
+  std::vector<double> times;             // the series' frame times
+  ClipReport clipped;                    // what --clip (or the scene's planes) did to the mesh
+};
+
+// Reads the input once (a series: lists it and makes its first frame), refusing what would not fit
+// in memory before allocating it; usage errors as UsageError (exit 2), bad input as InputError.
+Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSettings& settings,
+                 const std::vector<int>& levels);
+
+}  // namespace cellproj
