@@ -170,7 +170,8 @@ Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std
   tracer.trace(
       camera, width, height, scalar,
       [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t n) {
-        std::vector<SurfaceHit> hits;
+        thread_local std::vector<SurfaceHit> hits;  // reused by every pixel of this thread
+        hits.clear();
         for (int k = 0; k < static_cast<int>(surfaces.size()); ++k) {
           const Prepared& s = surfaces[k];
           iso_crossings(seg, n, s.value, s.tolerance, [&](const IsoCrossing& c) {
@@ -191,7 +192,8 @@ Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std
           double z_opaque = kInf;
           const SegmentLight base = opaque_part(tf, o.volume, seg, n, hits, z_opaque);
           rgb = base.rgb, opacity = base.opacity();
-          std::vector<const SurfaceHit*> semi;  // the semi-transparent surfaces the opaque part's depth test passes
+          thread_local std::vector<const SurfaceHit*> semi;  // the semi-transparent surfaces in front of it
+          semi.clear();
           for (const SurfaceHit& h : hits)
             if (!h.opaque() && h.t < z_opaque) semi.push_back(&h);
           if (o.mode == IsoMode::blend2) {  // blended over the picture in the order they are sent: by cell

@@ -235,108 +235,90 @@ Action add_render(CLI::App& app) {
   cmd->add_flag("--legend", args->legend, "Draw the colour legend (field name and range) on the PNG");
   cmd->add_option("--orbit", args->orbit,
                   "Turn the camera this many degrees about its up axis over --frames N (a turntable: 360)");
-  // The render settings, by the names Renderer::settings_used() gives.
+  // The render settings, by the names Renderer::settings_used() gives: option --NAME is setting NAME.
   std::vector<std::pair<std::string, CLI::Option*>> settings;
-  settings.emplace_back(
-      "method",
-      cmd->add_option("--method", args->options.method,
-                      "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
-                      "pt-table, pt-linear (fastest), exact (the reference ray integrator), slicing (cells cut on "
-                      "parallel planes, no sort), mip, minip, average (one value per ray), or layers (the n-th "
-                      "crossings of --iso along each ray); see docs/methods.md"));
-  settings.emplace_back("iso", cmd->add_option("--iso", args->options.iso,
-                                               "Iso-surfaces, repeatable, V:R,G,B,A (A the opacity seen head-on, "
-                                               "default 1; without a colour the colour map's at V): with --method "
-                                               "exact, drawn with the volume; with layers, the one iso-value V or "
-                                               "V:R,G,B whose crossings it draws")
-                                   ->allow_extra_args(false));
-  settings.emplace_back("volume", cmd->add_option("--volume", args->options.volume,
-                                                  "exact with --iso: draw the volume between the surfaces, on "
-                                                  "(default) or off"));
-  settings.emplace_back("iso-mode", cmd->add_option("--iso-mode", args->options.iso_mode,
-                                                    "exact with --iso: " + iso_mode_names() +
-                                                        " (ordered, the default: exact order along each ray; "
-                                                        "blend2: the volume, then surfaces over it in submission "
-                                                        "order; oit3, oit4: libMini's order-independent passes)"));
-  settings.emplace_back("iso-opacity", cmd->add_option("--iso-opacity", args->options.iso_opacity,
-                                                       "exact with --iso: " + iso_opacity_names() +
-                                                           " (spectrum: a thin layer's 1 - exp(-c d / |cos t|); "
-                                                           "spectrum-fit: libMini's cosine-power fit)"));
-  settings.emplace_back("layer", cmd->add_option("--layer", args->options.layer,
-                                                 "layers: which crossings of V to draw, 1 the nearest: N, or "
-                                                 "increasing N1,N2,... blended (default 1)"));
-  settings.emplace_back("layer-weights",
-                        cmd->add_option("--layer-weights", args->options.layer_weights,
-                                        "layers: one weight per --layer, blended as their weighted mean where the "
-                                        "ray reaches them (default equal)"));
-  settings.emplace_back("silhouettes", cmd->add_option("--silhouettes", args->options.silhouettes,
-                                                       "layers: draw where the view grazes a layer: " +
-                                                           silhouettes_names() +
-                                                           " (visible: the front layer, black; hidden: layers "
-                                                           "behind it up to the deepest --layer, grey)"));
-  settings.emplace_back("silhouette-epsilon",
-                        cmd->add_option("--silhouette-epsilon", args->options.silhouette_epsilon,
-                                        "layers: a silhouette where |view . normal| is below this (default 0.2)"));
-  settings.emplace_back("slices", cmd->add_option("--slices", args->options.slices,
-                                                  "slicing: number of planes (default 256; at most 16 per pixel of "
-                                                  "the image's longer side)"));
-  settings.emplace_back("slice-axis", cmd->add_option("--slice-axis", args->options.slice_axis,
-                                                      "slicing: the plane family, " + slice_axis_names() +
-                                                          " (auto: the axis-aligned stack closest to the view)"));
-  settings.emplace_back("slice-integral", cmd->add_option("--slice-integral", args->options.slice_integral,
-                                                          "slicing: " + slice_integral_names() +
-                                                              " (default: the segment between two planes looked up "
-                                                              "from the scalar at both ends)"));
-  settings.emplace_back("progressive",
-                        cmd->add_option("--progressive", args->progressive,
-                                        "slicing: render at each of these plane counts in turn, e.g. "
-                                        "16,64,256, writing OUT-16.png, OUT-64.png, ... as each completes"));
-  settings.emplace_back(
-      "small-cells",
-      cmd->add_option("--small-cells", args->options.small_cells,
-                      "projection and slicing: what small cells get, " + small_cells_names() +
-                          " (default draw; splat and skip need the software back end); docs/methods.md, Splatting"));
-  settings.emplace_back("splat-threshold",
-                        cmd->add_option("--splat-threshold", args->options.splat_threshold,
-                                        "Which cells are small: projection, those covering fewer pixel centres "
-                                        "(default 2); slicing, those of less volume than this times the spacing "
-                                        "cubed (default 1)"));
-  settings.emplace_back("splat-prefilter",
-                        cmd->add_option("--splat-prefilter", args->options.splat_prefilter,
-                                        "Standard deviation in pixels of the splats' anti-aliasing pre-filter "
-                                        "(default 0.7; 0.3 to 4)"));
-  settings.emplace_back("cull-transparent",
-                        cmd->add_option("--cull-transparent", args->options.cull_transparent,
-                                        "projection methods: leave out the cells whose scalar range has extinction 0 "
-                                        "throughout, on (default: the same picture, less work) or off"));
-  settings.emplace_back("sort", cmd->add_option("--sort", args->options.sort,
-                                                "Visibility sort for the projection methods: " + sort_method_names()));
-  settings.emplace_back(
-      "gaps",
-      cmd->add_option("--gaps", args->options.gaps,
-                      "How mpvo-abuffer finds the relations across gaps: " + gap_method_names() + " (as sortbench's)"));
-  settings.emplace_back(
-      "backend",
-      cmd->add_option("--backend", args->options.backend,
-                      "Where the projection methods and slicing rasterize: software (default), or for pt-linear, "
-                      "pt-table and slicing with --slice-integral sampled opengl (OSMesa, float target), "
-                      "opengl-8bit, opengl-8bit-dither"));
-  settings.emplace_back(
-      "tetrahedralize",
-      cmd->add_option(
-          "--tetrahedralize", args->options.tetrahedralize,
+  const auto setting = [&](const std::string& name, auto& value, const std::string& help) {
+    CLI::Option* option = cmd->add_option("--" + name, value, help);
+    settings.emplace_back(name, option);
+    return option;
+  };
+  setting("method", args->options.method,
+          "Rendering method: pt-breakpoints (default; exact for the canonical tetrahedra), pt-analytic, "
+          "pt-table, pt-linear (fastest), exact (the reference ray integrator), slicing (cells cut on "
+          "parallel planes, no sort), mip, minip, average (one value per ray), or layers (the n-th "
+          "crossings of --iso along each ray); see docs/methods.md");
+  setting("iso", args->options.iso,
+          "Iso-surfaces, repeatable, V:R,G,B,A (A the opacity seen head-on, "
+          "default 1; without a colour the colour map's at V): with --method "
+          "exact, drawn with the volume; with layers, the one iso-value V or "
+          "V:R,G,B whose crossings it draws")
+      ->allow_extra_args(false);
+  setting("volume", args->options.volume,
+          "exact with --iso: draw the volume between the surfaces, on "
+          "(default) or off");
+  setting("iso-mode", args->options.iso_mode,
+          "exact with --iso: " + iso_mode_names() +
+              " (ordered, the default: exact order along each ray; "
+              "blend2: the volume, then surfaces over it in submission "
+              "order; oit3, oit4: libMini's order-independent passes)");
+  setting("iso-opacity", args->options.iso_opacity,
+          "exact with --iso: " + iso_opacity_names() +
+              " (spectrum: a thin layer's 1 - exp(-c d / |cos t|); "
+              "spectrum-fit: libMini's cosine-power fit)");
+  setting("layer", args->options.layer,
+          "layers: which crossings of V to draw, 1 the nearest: N, or "
+          "increasing N1,N2,... blended (default 1)");
+  setting("layer-weights", args->options.layer_weights,
+          "layers: one weight per --layer, blended as their weighted mean where the "
+          "ray reaches them (default equal)");
+  setting("silhouettes", args->options.silhouettes,
+          "layers: draw where the view grazes a layer: " + silhouettes_names() +
+              " (visible: the front layer, black; hidden: layers "
+              "behind it up to the deepest --layer, grey)");
+  setting("silhouette-epsilon", args->options.silhouette_epsilon,
+          "layers: a silhouette where |view . normal| is below this (default 0.2)");
+  setting("slices", args->options.slices,
+          "slicing: number of planes (default 256; at most 16 per pixel of "
+          "the image's longer side)");
+  setting("slice-axis", args->options.slice_axis,
+          "slicing: the plane family, " + slice_axis_names() + " (auto: the axis-aligned stack closest to the view)");
+  setting("slice-integral", args->options.slice_integral,
+          "slicing: " + slice_integral_names() +
+              " (default: the segment between two planes looked up "
+              "from the scalar at both ends)");
+  setting("progressive", args->progressive,
+          "slicing: render at each of these plane counts in turn, e.g. "
+          "16,64,256, writing OUT-16.png, OUT-64.png, ... as each completes");
+  setting("small-cells", args->options.small_cells,
+          "projection and slicing: what small cells get, " + small_cells_names() +
+              " (default draw; splat and skip need the software back end); docs/methods.md, Splatting");
+  setting("splat-threshold", args->options.splat_threshold,
+          "Which cells are small: projection, those covering fewer pixel centres "
+          "(default 2); slicing, those of less volume than this times the spacing "
+          "cubed (default 1)");
+  setting("splat-prefilter", args->options.splat_prefilter,
+          "Standard deviation in pixels of the splats' anti-aliasing pre-filter "
+          "(default 0.7; 0.3 to 4)");
+  setting("cull-transparent", args->options.cull_transparent,
+          "projection methods: leave out the cells whose scalar range has extinction 0 "
+          "throughout, on (default: the same picture, less work) or off");
+  setting("sort", args->options.sort, "Visibility sort for the projection methods: " + sort_method_names());
+  setting("gaps", args->options.gaps,
+          "How mpvo-abuffer finds the relations across gaps: " + gap_method_names() + " (as sortbench's)");
+  setting("backend", args->options.backend,
+          "Where the projection methods and slicing rasterize: software (default), or for pt-linear, "
+          "pt-table and slicing with --slice-integral sampled opengl (OSMesa, float target), "
+          "opengl-8bit, opengl-8bit-dither");
+  setting("tetrahedralize", args->options.tetrahedralize,
           "Which cells other than tetrahedra the projection methods split into tetrahedra: problem (default; "
-          "per view, those with a folded non-planar face), all, or none (every cell whole)"));
-  settings.emplace_back("table-size", cmd->add_option("--table-size", args->options.table_size,
-                                                      "pt-table: nodes per axis of the opacity table; slicing: "
-                                                      "of the preintegrated table (default 256)")
-                                          ->check(CLI::Range(2, 8192)));
-  settings.emplace_back(
-      "interpolation",
-      cmd->add_option(
-             "--interpolation", args->options.interpolation,
-             "Field inside hexahedra, wedges and pyramids for exact: isoparametric (default) or canonical-tets")
-          ->check(CLI::IsMember({"isoparametric", "canonical-tets"})));
+          "per view, those with a folded non-planar face), all, or none (every cell whole)");
+  setting("table-size", args->options.table_size,
+          "pt-table: nodes per axis of the opacity table; slicing: "
+          "of the preintegrated table (default 256)")
+      ->check(CLI::Range(2, 8192));
+  setting("interpolation", args->options.interpolation,
+          "Field inside hexahedra, wedges and pyramids for exact: isoparametric (default) or canonical-tets")
+      ->check(CLI::IsMember({"isoparametric", "canonical-tets"}));
   cmd->add_option("--size", args->size, "Image size WxH, overriding the scene");
   cmd->add_option("--field", args->field, "Point field to render, overriding the scene");
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
