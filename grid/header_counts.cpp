@@ -9,6 +9,7 @@
 
 #include "base/error.hpp"
 #include "grid/netcdf_check.hpp"
+#include "grid/read_mesh.hpp"
 #include "grid/text_scanner.hpp"
 
 namespace fs = std::filesystem;
@@ -90,9 +91,7 @@ std::int64_t first_count(const std::string& path) {
 }  // namespace
 
 HeaderCounts header_counts(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(),
-                 [](unsigned char ch) { return static_cast<char>(std::tolower(ch)); });
+  const std::string ext = lower_extension(path);
   if (ext == ".vtu" || ext == ".vts") return xml_counts(path, ext);
   if (ext == ".vtk") return legacy_counts(path);
   if (ext == ".off") {  // the reader's own scanner, so that comments count as they do there

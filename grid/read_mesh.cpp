@@ -92,9 +92,11 @@ std::vector<std::pair<std::string, std::string>> known_formats() {
           {"points", ".xyzs .pts (text 'x y z s' per line) .vtp (points): Delaunay-tetrahedralized with CGAL"}};
 }
 
+std::string lower_extension(const std::string& path) { return lower(fs::path(path).extension().string()); }
+
 std::string format_for(const std::string& path) {
   const std::string name = lower(fs::path(path).filename().string());
-  const std::string ext = lower(fs::path(path).extension().string());
+  const std::string ext = lower_extension(path);
   for (const char* e : {".vtu", ".pvtu", ".vts", ".pvts", ".vtr", ".vti", ".vtm"})
     if (ext == e) return "vtk-xml";
   if (ext == ".vtk") return "vtk-legacy";
@@ -110,7 +112,7 @@ std::string format_for(const std::string& path) {
 }
 
 Mesh read_mesh(const std::string& path, const ReadOptions& options) {
-  if (lower(fs::path(path).extension().string()) == ".gz") {
+  if (lower_extension(path) == ".gz") {
     if (!fs::exists(path)) throw InputError(where(path, "no such file"));
     Gunzipped plain(path);
     try {

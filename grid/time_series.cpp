@@ -22,12 +22,6 @@ namespace fs = std::filesystem;
 namespace cellproj {
 namespace {
 
-std::string lower_extension(const std::string& path) {
-  std::string ext = fs::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
-  return ext;
-}
-
 // A ParaView collection: <VTKFile type="Collection"><Collection><DataSet timestep=".." file=".."/>.
 std::vector<KeyFrame> pvd_frames(const std::string& path) {
   if (!fs::is_regular_file(path)) throw InputError(where(path, "no such file"));

@@ -18,4 +18,7 @@ nlohmann::json camera_to_json(const Camera& camera);
 // The camera turned by `degrees` about the up axis through the target (frame f of --frames: f degrees).
 Camera orbit(const Camera& camera, double degrees);
 
+// [x, y, z] from JSON; InputError "AT: expected [x, y, z], got ..." otherwise.
+glm::dvec3 vec3(const nlohmann::json& j, const std::string& at);
+
 }  // namespace cellproj

@@ -252,10 +252,7 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
                 ClipPlane plane;
                 for (const auto& [key, v] : {std::pair{"point", &plane.point}, std::pair{"normal", &plane.normal}}) {
                   if (!p.contains(key)) throw InputError(at + ": missing \"" + key + "\"");
-                  const auto& a = p[key];
-                  if (!a.is_array() || a.size() != 3 || !a[0].is_number() || !a[1].is_number() || !a[2].is_number())
-                    throw InputError(at + "." + key + ": expected [x, y, z], got " + a.dump());
-                  *v = {a[0].get<double>(), a[1].get<double>(), a[2].get<double>()};
+                  *v = vec3(p[key], at + "." + key);
                 }
                 try {
                   check(plane);
