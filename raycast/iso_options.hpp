@@ -38,8 +38,9 @@ struct IsoOptions {
 // InputError naming the option for a non-finite value, a colour or opacity outside [0, 1].
 void check(const IsoOptions& options);
 
-// The opacity of a surface of head-on opacity `a` seen at |cos t| = c (0 < c <= 1) under `model`.
-double iso_opacity(IsoOpacity model, double a, double c);
+// The opacity of a surface of head-on opacity `a` seen at |cos t| = c (0 < c <= 1) under `model`;
+// spectrum_fit takes the exponent spectrum_fit_exponent(a) gave (fitted once per surface).
+double iso_opacity(IsoOpacity model, double a, double c, double fit_exponent = 0.0);
 // The exponent p of the cosine-power fit for head-on opacity a: the least-squares fit of
 // 1 - (1 - a) c^p to 1 - (1 - a)^(1/c) over c in (0, 1]; and the largest difference it leaves.
 double spectrum_fit_exponent(double a, double* max_error = nullptr);

@@ -95,13 +95,13 @@ void check(const IsoOptions& o) {
   }
 }
 
-double iso_opacity(IsoOpacity model, double a, double c) {
+double iso_opacity(IsoOpacity model, double a, double c, double fit_exponent) {
   c = std::clamp(c, 1e-6, 1.0);
   switch (model) {
     case IsoOpacity::constant: return a;
     case IsoOpacity::spectrum:  // Roettger section 4: alpha = 1 - exp(-c d / |cos t|), exp(-c d) = 1 - a head-on
       return a >= 1.0 ? 1.0 : -std::expm1(std::log1p(-a) / c);
-    case IsoOpacity::spectrum_fit: return a >= 1.0 ? 1.0 : 1.0 - (1.0 - a) * std::pow(c, spectrum_fit_exponent(a));
+    case IsoOpacity::spectrum_fit: return a >= 1.0 ? 1.0 : 1.0 - (1.0 - a) * std::pow(c, fit_exponent);
   }
   return a;
 }
@@ -153,17 +153,15 @@ Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std
   };
   std::vector<Prepared> surfaces;
   double fit_error = 0.0;
+  std::string exponents;
   for (const IsoSurface& s : o.surfaces) {
     double err = 0.0;
     const double p = o.opacity == IsoOpacity::spectrum_fit ? spectrum_fit_exponent(s.opacity, &err) : 0.0;
     fit_error = std::max(fit_error, err);
+    exponents += (exponents.empty() ? "" : ",") + std::to_string(p);
     surfaces.push_back({s.value, iso_tolerance(s.value, lo, hi), s.opacity, p,
                         s.color_given ? s.color : glm::clamp(tf.color(s.value), 0.0, 1.0)});
   }
-  const auto alpha_of = [&](const Prepared& s, double c) {
-    if (o.opacity != IsoOpacity::spectrum_fit || s.opacity >= 1.0) return iso_opacity(o.opacity, s.opacity, c);
-    return 1.0 - (1.0 - s.opacity) * std::pow(std::clamp(c, 1e-6, 1.0), s.fit_exponent);  // the exponent fitted once
-  };
 
   Image img(width, height);
   std::atomic<std::int64_t> segments{0}, crossings{0};
@@ -177,7 +175,7 @@ Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std
           iso_crossings(seg, n, s.value, s.tolerance, [&](const IsoCrossing& c) {
             const glm::dvec3 normal = surface_normal(tracer, scalar, gradients, c, ray);
             const double cosine = std::abs(glm::dot(normal, ray.dir));
-            hits.push_back({c.t, k, c.tet, alpha_of(s, cosine), shade_layer(s.base, normal, ray.dir), !c.entering});
+            hits.push_back({c.t, k, c.tet, iso_opacity(o.opacity, s.opacity, cosine, s.fit_exponent), shade_layer(s.base, normal, ray.dir), !c.entering});
           });
         }
         std::sort(hits.begin(), hits.end(), [](const SurfaceHit& a, const SurfaceHit& b) {
@@ -231,6 +229,7 @@ Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std
     stats->segments = segments;
     stats->surface_crossings = crossings;
     stats->fit_max_error = fit_error;
+    stats->fit_exponents = exponents;
   }
   return img;
 }

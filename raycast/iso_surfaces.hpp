@@ -5,6 +5,7 @@
 // so neighbouring cells agree on their shared faces. Normals from the points' gradients.
 #include <cstdint>
 #include <functional>
+#include <string>
 
 #include "optics/transfer_function.hpp"
 #include "raycast/cell_ray_tracer.hpp"
@@ -19,6 +20,7 @@ struct IsoStats {
   std::int64_t segments = 0;           // ray-tetrahedron segments walked
   std::int64_t surface_crossings = 0;  // crossings of the surfaces, on all rays
   double fit_max_error = 0.0;          // spectrum-fit: the largest opacity error of the fit, over the surfaces
+  std::string fit_exponents;           // spectrum-fit: each surface's exponent p, comma-separated
 };
 
 // The picture of `options` (premultiplied RGBA without background, as every renderer's). The

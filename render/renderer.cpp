@@ -196,7 +196,10 @@ class ExactMode final : public Renderer {
       report->add("iso_opacity", iso_.opacity);
       report->add("volume", std::string(iso_.volume ? "on" : "off"));
       report->add({{"segments", st.segments}, {"surface_crossings", st.surface_crossings}});
-      if (iso_.opacity == IsoOpacity::spectrum_fit) report->add("spectrum_fit_max_error", st.fit_max_error);
+      if (iso_.opacity == IsoOpacity::spectrum_fit) {
+        report->add("spectrum_fit_max_error", st.fit_max_error);
+        report->add("spectrum_fit_exponents", st.fit_exponents);
+      }
     }
     return image;
   }

@@ -97,12 +97,12 @@ TEST(IsoSurfaces, TheIsoSpectrumsOpacityAndItsCosinePowerFit) {
   for (double a : {0.1, 0.3, 0.5, 0.8, 0.95}) {
     double err = 0.0;
     const double p = spectrum_fit_exponent(a, &err);
-    EXPECT_NEAR(iso_opacity(IsoOpacity::spectrum_fit, a, 1.0), a, 1e-12);
+    EXPECT_NEAR(iso_opacity(IsoOpacity::spectrum_fit, a, 1.0, p), a, 1e-12);
     EXPECT_GT(p, 0.0);
     EXPECT_LT(err, previous) << "a = " << a;
     previous = err;
     for (double c : {0.2, 0.5, 0.9})
-      EXPECT_LE(std::abs(iso_opacity(IsoOpacity::spectrum_fit, a, c) - iso_opacity(IsoOpacity::spectrum, a, c)),
+      EXPECT_LE(std::abs(iso_opacity(IsoOpacity::spectrum_fit, a, c, p) - iso_opacity(IsoOpacity::spectrum, a, c)),
                 err + 1e-12);
   }
   EXPECT_LT(previous, 0.002) << "a = 0.95 fits to 0.2%";
