@@ -47,8 +47,11 @@ int run_render(const RenderArgs& given) {
   // A scene's render options (its "layers" block, its "iso" list) where the command line gives none.
   // (A scene that does not load is reported when it is loaded, after the command line's checks,
   // unless the method needs its options first.)
+  // The scene read here is the one rendered: load_input does not read it again.
+  std::optional<Scene> scene_read;
   if (is_scene_file(a.input) && std::filesystem::is_regular_file(a.input)) try {
-      for (const std::string& w : apply_scene_options(load_scene(a.input), a.options))
+      scene_read = load_scene(a.input);
+      for (const std::string& w : apply_scene_options(*scene_read, a.options))
         std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
     } catch (const InputError&) {
       if (a.options.method == "layers" || a.options.method == "exact") throw;
@@ -71,7 +74,7 @@ int run_render(const RenderArgs& given) {
     throw UsageError("--progressive renders one mesh: it does not go with --time or --animate");
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
-  const Input input = load_input(a, *renderer, settings, levels);
+  const Input input = load_input(a, *renderer, settings, levels, std::move(scene_read));
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());

@@ -13,7 +13,7 @@
 namespace cellproj {
 
 Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSettings& settings,
-                 const std::vector<int>& levels) {
+                 const std::vector<int>& levels, std::optional<Scene> given_scene) {
   int width = 0, height = 0;
   if (!a.size.empty()) usage([&] { parse_size(a.size, width, height); });
   const bool scene_file = is_scene_file(a.input);
@@ -26,7 +26,7 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
 
   Scene scene;
   if (scene_file) {
-    scene = load_scene(a.input);
+    scene = given_scene ? std::move(*given_scene) : load_scene(a.input);
     if (!a.field.empty()) scene.field = a.field;
     if (!a.look_given.empty()) {  // --colormap: the scene's colours replaced by the map over the field's range
       usage([&] { return colormap(a.look.colormap, 0, 1); });

@@ -48,7 +48,8 @@ struct Input {
 
 // Reads the input once (a series: lists it and makes its first frame), refusing what would not fit
 // in memory before allocating it; usage errors as UsageError (exit 2), bad input as InputError.
+// `given_scene`: the scene file already loaded, if it was (else it is loaded here).
 Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSettings& settings,
-                 const std::vector<int>& levels);
+                 const std::vector<int>& levels, std::optional<Scene> given_scene = std::nullopt);
 
 }  // namespace cellproj
