@@ -134,9 +134,8 @@ Image render_layers(const CellRayTracer& tracer, const double* scalar, std::int6
                     LayerStats* stats, const std::function<void(double)>& progress) {
   check(o);
   const auto start = std::chrono::steady_clock::now();
-  double lo = std::numeric_limits<double>::infinity(), hi = -lo;
-  for (std::int64_t p = 0; p < n_points; ++p) lo = std::min(lo, scalar[p]), hi = std::max(hi, scalar[p]);
-  const double tolerance = iso_tolerance(o.iso, lo, hi);
+  const auto [lo, hi] = std::minmax_element(scalar, scalar + n_points);
+  const double tolerance = iso_tolerance(o.iso, *lo, *hi);
   const glm::dvec3 base = o.color ? *o.color : glm::clamp(tf.color(o.iso), 0.0, 1.0);
   const std::vector<double> weights = o.weights.empty() ? std::vector<double>(o.layers.size(), 1.0) : o.weights;
   const int deepest = o.layers.back();

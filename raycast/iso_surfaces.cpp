@@ -144,8 +144,7 @@ Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std
                           IsoStats* stats, const std::function<void(double)>& progress) {
   check(o);
   const auto start = std::chrono::steady_clock::now();
-  double lo = kInf, hi = -kInf;
-  for (std::int64_t p = 0; p < n_points; ++p) lo = std::min(lo, scalar[p]), hi = std::max(hi, scalar[p]);
+  const auto [lo, hi] = std::minmax_element(scalar, scalar + n_points);
   const std::vector<glm::dvec3> gradients = tracer.point_gradients(scalar);
   struct Prepared {
     double value, tolerance, opacity, fit_exponent;
@@ -159,7 +158,7 @@ Image render_iso_surfaces(const CellRayTracer& tracer, const double* scalar, std
     const double p = o.opacity == IsoOpacity::spectrum_fit ? spectrum_fit_exponent(s.opacity, &err) : 0.0;
     fit_error = std::max(fit_error, err);
     exponents += (exponents.empty() ? "" : ",") + std::to_string(p);
-    surfaces.push_back({s.value, iso_tolerance(s.value, lo, hi), s.opacity, p,
+    surfaces.push_back({s.value, iso_tolerance(s.value, *lo, *hi), s.opacity, p,
                         s.color_given ? s.color : glm::clamp(tf.color(s.value), 0.0, 1.0)});
   }
 
