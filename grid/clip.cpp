@@ -74,6 +74,7 @@ class PlaneClipper {
     int ni = 0, no = 0;
     for (std::int64_t p : t) (kept(p) ? in[ni++] : out[no++]) = p;
     if (no == 0) return emit(t);
+    if (ni == 0) return;  // one of a cut cell's tetrahedra wholly on the other side
     if (ni == 1) return emit({in[0], cut(in[0], out[0]), cut(in[0], out[1]), cut(in[0], out[2])});
     if (ni == 3)  // the wedge between the kept face and its cut across the edges to the cut vertex
       return wedge({in[0], in[1], in[2], cut(in[0], out[0]), cut(in[1], out[0]), cut(in[2], out[0])});
