@@ -1,0 +1,120 @@
+// Bricks for distributed rendering (issue 18): the k-d tree, the cells clipped to their bricks,
+// the brick order from any camera, and a frame of bricks composited in that order against the
+// whole mesh's picture (the MPI ranks are tested by tests/mpi_render.sh).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include "composite/fragment.hpp"
+#include "grid/generate.hpp"
+#include "grid/geometry.hpp"
+#include "grid/kd_partition.hpp"
+#include "grid/tetrahedralize.hpp"
+#include "grid/validate.hpp"
+#include "grid/write_mesh.hpp"
+#include "grid/read_mesh.hpp"
+#include "tests/test_util.hpp"
+#include "visibility/brick_order.hpp"
+
+namespace cellproj {
+namespace {
+
+// The volume of the canonical tetrahedra (what every renderer draws).
+double volume(const Mesh& m) {
+  const MeshView v = m.view();
+  double sum = 0.0;
+  Tet tets[kMaxTetsPerCell];
+  for (std::int64_t c = 0; c < v.n_cells; ++c) {
+    const int n = canonical_tetrahedra(v, c, tets);
+    for (int t = 0; t < n; ++t)
+      sum += std::abs(tet_volume6(v.point(tets[t][0]), v.point(tets[t][1]), v.point(tets[t][2]), v.point(tets[t][3]))) / 6;
+  }
+  return sum;
+}
+
+std::vector<Mesh> bricks_of(const Mesh& m, const KdTree& tree) {
+  const auto cells = cells_of_bricks(m.view(), tree);
+  std::vector<Mesh> out;
+  for (int b = 0; b < tree.bricks(); ++b) out.push_back(extract_brick(m, tree, b, cells[b]));
+  return out;
+}
+
+TEST(Partition, BricksHoldTheWholeVolumeEachInsideItsBox) {
+  for (const char* kind : {"box-tets", "swirl", "mixed", "graded"}) {
+    const Mesh m = generate(kind, 6);
+    for (int n : {1, 2, 3, 5, 8}) {
+      const KdTree tree = build_kd_tree(m.view(), cell_costs(m.view()), n);
+      ASSERT_EQ(tree.bricks(), n);
+      double sum = 0.0;
+      const std::vector<Mesh> bricks = bricks_of(m, tree);
+      for (int b = 0; b < n; ++b) {
+        const Mesh& brick = bricks[b];
+        sum += volume(brick);
+        EXPECT_EQ(validate(brick.view()).inverted_cells, 0) << kind;
+        const KdBox& box = tree.nodes[tree.leaf_of[b]].box;
+        const double eps = 1e-12 * glm::length(tree.nodes[0].box.hi - tree.nodes[0].box.lo);
+        for (std::int64_t p = 0; p < brick.n_points(); ++p)
+          for (int k = 0; k < 3; ++k) {
+            EXPECT_GE(brick.view().point(p)[k], box.lo[k] - eps) << kind << " brick " << b;
+            EXPECT_LE(brick.view().point(p)[k], box.hi[k] + eps) << kind << " brick " << b;
+          }
+      }
+      EXPECT_NEAR(sum, volume(m), 1e-12 * volume(m)) << kind << ", " << n << " bricks";
+    }
+  }
+}
+
+const TransferFunction& tf() {
+  static const TransferFunction t({{0.0, {0.2, 0.4, 1.0}}, {1.0, {1.0, 0.6, 0.2}}}, {{0.0, 0.5}, {1.0, 4.0}});
+  return t;
+}
+
+// The bricks' pictures "over" each other in the tree's order from the camera.
+template <class Render>
+Image composite_bricks(const std::vector<Mesh>& bricks, const KdTree& tree, const Camera& camera, Render render) {
+  Image out;
+  for (int b : back_to_front(tree, camera)) {
+    if (bricks[b].n_cells() == 0) continue;
+    const Image img = render(bricks[b]);
+    if (out.rgba.empty()) out = Image(img.width, img.height);
+    for (std::size_t k = 0; k < out.rgba.size(); k += 4) over(&out.rgba[k], &img.rgba[k]);
+  }
+  return out;
+}
+
+TEST(Partition, BricksCompositedInTreeOrderGiveTheWholePicture) {
+  // The exact renderer on the canonical tetrahedra: a cut cell's pieces carry its field exactly.
+  for (const char* kind : {"swirl", "mixed", "box-tets"}) {
+    const Mesh m = generate(kind, 5);
+    const std::string field = m.fields.front().name;
+    const KdTree tree = build_kd_tree(m.view(), cell_costs(m.view()), 5);
+    const std::vector<Mesh> bricks = bricks_of(m, tree);
+    for (const Camera& camera : test::views_of_unit_mesh(4)) {
+      const auto render = [&](const Mesh& mesh) {
+        return test::exact(mesh, field, tf(), camera, 40, 40, CellInterpolation::canonical_tets);
+      };
+      const ImageDifference d = compare(render(m), composite_bricks(bricks, tree, camera, render));
+      EXPECT_LT(d.max_abs, 1e-6) << kind;
+    }
+  }
+}
+
+TEST(Partition, BricksWrittenAndReadBackAreTheSame) {
+  const Mesh m = generate("swirl", 5);
+  const KdTree tree = build_kd_tree(m.view(), cell_costs(m.view()), 2);
+  const std::vector<Mesh> bricks = bricks_of(m, tree);
+  test::TempDir dir;
+  for (int b = 0; b < 2; ++b) {
+    write_vtu(bricks[b], dir.file("b.vtu"));
+    const Mesh back = load_mesh(dir.file("b.vtu")).mesh;
+    EXPECT_EQ(back.points, bricks[b].points);
+    EXPECT_EQ(back.connectivity, bricks[b].connectivity);
+    EXPECT_EQ(back.fields.at(0).values, bricks[b].fields.at(0).values);
+  }
+}
+
+}  // namespace
+}  // namespace cellproj
