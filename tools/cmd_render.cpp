@@ -7,8 +7,6 @@
 #include <optional>
 #include <tuple>
 
-#include <sys/resource.h>
-
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 #include <nlohmann/json.hpp>
@@ -28,18 +26,12 @@
 #include "tools/mesh_options.hpp"
 #include "tools/frame_output.hpp"
 #include "tools/progress.hpp"
+#include "tools/render_distributed.hpp"
 #include "tools/render_input.hpp"
 #include "tools/timing.hpp"
 
 namespace cellproj {
 namespace {
-
-// The process's peak resident memory so far, in MiB (getrusage).
-double peak_rss_mib() {
-  rusage u{};
-  getrusage(RUSAGE_SELF, &u);
-  return u.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
-}
 
 int run_render(const RenderArgs& given) {
   const auto t_load = std::chrono::steady_clock::now();
@@ -72,9 +64,12 @@ int run_render(const RenderArgs& given) {
   if (!levels.empty() && a.frames > 1) throw UsageError("--progressive renders one view: it does not go with --frames");
   if (!levels.empty() && (a.time || !a.animate.empty()))
     throw UsageError("--progressive renders one mesh: it does not go with --time or --animate");
+  const Communicator world = Communicator::world();
+  if (is_distributed(a, world)) check_distributed(a);
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
   const Input input = load_input(a, *renderer, settings, levels, std::move(scene_read));
+  if (input.partition || world.size > 1) return render_distributed(a, input, *renderer, world);
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());

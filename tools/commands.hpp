@@ -51,5 +51,6 @@ Action add_generate(CLI::App& app);
 Action add_sortbench(CLI::App& app);
 Action add_compare(CLI::App& app);
 Action add_scene(CLI::App& app);
+Action add_partition(CLI::App& app);
 
 }  // namespace cellproj

@@ -4,15 +4,20 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "distributed/communicator.hpp"
 #include "tools/commands.hpp"
 
 int main(int argc, char** argv) {
   using namespace cellproj;
+  const MpiSession mpi(&argc, &argv);  // MPI only when launched by mpirun
+  // Under mpirun every rank meets the same error (agree() makes them one): rank 0 reports it.
+  const bool report_errors = Communicator::world().rank == 0;
   CLI::App app{"cellproj: direct volume rendering of unstructured and curvilinear grids by cell projection"};
   app.require_subcommand(1);
   app.set_version_flag("--version", "cellproj 0.1.0");
   const Action render = add_render(app), info = add_info(app), generate = add_generate(app),
-               sortbench = add_sortbench(app), compare = add_compare(app), scene = add_scene(app);
+               sortbench = add_sortbench(app), compare = add_compare(app), scene = add_scene(app),
+               partition = add_partition(app);
   try {
     app.parse(argc, argv);
   } catch (const CLI::ParseError& e) {
@@ -25,15 +30,16 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("sortbench")) return sortbench();
     if (app.got_subcommand("compare")) return compare();
     if (app.got_subcommand("scene")) return scene();
+    if (app.got_subcommand("partition")) return partition();
     return generate();
   } catch (const UsageError& e) {
-    std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", e.what());
     return kExitUsage;
   } catch (const InputError& e) {
-    std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", e.what());
     return kExitInput;
   } catch (const ResourceError& e) {
-    std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", e.what());
     return kExitInternal;
   } catch (const std::bad_alloc&) {
     std::string command;
@@ -44,7 +50,7 @@ int main(int argc, char** argv) {
                  command.c_str());
     return kExitInternal;
   } catch (const std::exception& e) {
-    std::fprintf(stderr, "cellproj: internal error: %s\n", e.what());
+    if (report_errors) std::fprintf(stderr, "cellproj: internal error: %s\n", e.what());
     return kExitInternal;
   }
 }

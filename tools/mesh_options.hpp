@@ -31,10 +31,10 @@ inline std::vector<CLI::Option*> add_look_options(CLI::App& cmd, QuickLook& look
                          "(default 20)")};
 }
 
-// True for a scene file (.json), false for a mesh.
+// True for a scene file (.json), false for a mesh (a partition index, partition.json, is a mesh).
 inline bool is_scene_file(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();
-  return ext == ".json" || ext == ".JSON";
+  return (ext == ".json" || ext == ".JSON") && std::filesystem::path(path).filename() != "partition.json";
 }
 
 }  // namespace cellproj

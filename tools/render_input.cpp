@@ -62,7 +62,12 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     for (double t : {times.front(), times.back()}) locate(listed, t);  // in range, before any read
     player = std::make_unique<SeriesPlayer>(std::move(listed), scene.field, scene.reader);
   }
-  if (const HeaderCounts h = header_counts(first_file); h.cells > 0)
+  // A partition index: each rank reads its bricks later; the scene is prepared from the whole mesh's extent.
+  std::optional<PartitionIndex> partition;
+  if (is_partition_index(scene.mesh)) {
+    if (series) throw UsageError(scene.mesh + " is a partition index: --time and --animate need a time series");
+    partition = read_partition_index(scene.mesh);
+  } else if (const HeaderCounts h = header_counts(first_file); h.cells > 0)
     refuse_beyond_memory(
         estimate_mesh_bytes(h) * (series ? 2 : 1) + renderer.estimate_bytes({h.points, h.cells, h.cells}, size),
         a.max_memory_gib,
@@ -72,7 +77,9 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   // A series' colours and framing come from its first key frame whatever the time rendered, so that
   // --time T and --animate give the same picture at T.
   SeriesFrame first;
-  LoadedMesh loaded = player ? first_key_frame(*player) : read_with_progress(scene.mesh, scene.reader);
+  LoadedMesh loaded = player      ? first_key_frame(*player)
+                      : partition ? extent_mesh(*partition)
+                                  : read_with_progress(scene.mesh, scene.reader);
   if (player) first = player->frame_at(times.front());
   if (!scene_file) {
     QuickLook look = a.look;
@@ -92,6 +99,9 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     for (const std::string& c : a.clip) scene.clip.push_back(usage([&] { return parse_clip_plane(c); }));
   }
   if (!scene.clip.empty() && player) throw UsageError("clipping planes do not go with a time series yet");
+  if (!scene.clip.empty() && partition)
+    throw UsageError("clipping planes do not go with a partition index yet: clip the mesh in memory (mpirun with the "
+                     "mesh itself) or before partitioning it");
   PreparedScene prepared = prepare_scene(scene, std::move(loaded));
   ClipReport clipped;
   if (!scene.clip.empty()) {  // after the scene is prepared: colours and framing are the whole mesh's
@@ -104,7 +114,8 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   const MeshView cells = player ? player->view(first) : prepared.loaded.mesh.view();
   refuse_beyond_memory(renderer.estimate_bytes(size_of(cells), size), a.max_memory_gib,
                        "rendering " + size_text + " of " + std::to_string(cells.n_cells) + " cells", a.input);
-  return {std::move(scene), std::move(prepared), std::move(player), std::move(first), std::move(times), clipped};
+  return {std::move(scene), std::move(prepared), std::move(player), std::move(first), std::move(times), clipped,
+          std::move(partition)};
 }
 
 }  // namespace cellproj

@@ -13,6 +13,7 @@
 #include "render/renderer.hpp"
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
+#include "scene/partition_index.hpp"
 #include "scene/render_options.hpp"
 #include "scene/scene_file.hpp"
 
@@ -44,6 +45,7 @@ struct Input {
   SeriesFrame first;                     // the series' first frame
   std::vector<double> times;             // the series' frame times
   ClipReport clipped;                    // what --clip (or the scene's planes) did to the mesh
+  std::optional<PartitionIndex> partition;  // a partitioned mesh: prepared.loaded is its extent (no cells)
 };
 
 // Reads the input once (a series: lists it and makes its first frame), refusing what would not fit

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <vector>
 
+#include <sys/resource.h>
+
 #include "base/timing.hpp"
 
 namespace cellproj {
@@ -12,6 +14,13 @@ inline double median(std::vector<double> v) {
   std::sort(v.begin(), v.end());
   const std::size_t n = v.size();
   return n % 2 ? v[n / 2] : 0.5 * (v[n / 2 - 1] + v[n / 2]);
+}
+
+// The process's peak resident memory so far, in MiB (getrusage).
+inline double peak_rss_mib() {
+  rusage u{};
+  getrusage(RUSAGE_SELF, &u);
+  return u.ru_maxrss / 1024.0;  // ru_maxrss is in KiB on Linux
 }
 
 }  // namespace cellproj

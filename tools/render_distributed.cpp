@@ -1,0 +1,89 @@
+#include "tools/render_distributed.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+
+#include <tbb/info.h>
+#include <tbb/task_arena.h>
+#include <nlohmann/json.hpp>
+
+#include "distributed/brick_renderer.hpp"
+#include "render/volume.hpp"
+#include "scene/names.hpp"
+#include "scene/prepare.hpp"
+#include "tools/commands.hpp"
+#include "tools/frame_output.hpp"
+#include "tools/timing.hpp"
+
+namespace cellproj {
+
+bool is_distributed(const RenderArgs& a, const Communicator& world) {
+  return world.size > 1 || is_partition_index(a.input);
+}
+
+void check_distributed(const RenderArgs& a) {
+  if (a.frames != 1 || !a.progressive.empty() || a.time || !a.animate.empty())
+    throw UsageError("a distributed render (mpirun, or a partition index) makes one frame: --frames, --progressive, "
+                     "--time and --animate do not go with it yet");
+}
+
+int render_distributed(const RenderArgs& a, const Input& input, const Renderer& renderer, const Communicator& world) {
+  check_distributed(a);
+  const auto t_start = std::chrono::steady_clock::now();
+  const Scene& scene = input.scene;
+  const PreparedScene& prepared = input.prepared;
+  if (world.rank == 0)
+    for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
+  const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
+  tbb::task_arena arena(threads);
+  RankStats stats;
+  RenderReport report;
+  Image image;
+  arena.execute([&] {
+    // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.
+    const BrickRenderer bricks =
+        input.partition ? BrickRenderer(world, *input.partition, prepared.field, scene.reader)
+                        : BrickRenderer(world, prepared.loaded.mesh, prepared.field, "projected");
+    image = bricks.render(renderer, prepared.tf, prepared.camera, {scene.width, scene.height}, &stats, &report);
+  });
+  const std::vector<double> all = gather_to_root(world, stats.values());
+  if (world.rank != 0) return kExitOk;
+  for (const auto& w : report.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
+  const ColorBar legend = color_bar(prepared, scene.background);
+  const FramePaths paths = frame_paths(a.png, a.npy, a.input, 1);
+  char what[160];
+  std::snprintf(what, sizeof what, "%dx%d, %s, %d rank%s, %.3f s", scene.width, scene.height, a.options.method.c_str(),
+                world.size, world.size > 1 ? "s" : "", seconds_since(t_start));
+  write_outputs(image, scene.background, a.legend ? &legend : nullptr, paths.png, paths.npy, what);
+  if (a.stats) {
+    constexpr std::size_t n = std::size(kRankStatNames);
+    nlohmann::json ranks = nlohmann::json::array();
+    double slowest = -1, sum = 0;
+    int slowest_rank = 0;
+    for (int r = 0; r < world.size; ++r) {
+      nlohmann::json j = {{"rank", r}};
+      for (std::size_t k = 0; k < n; ++k) j[kRankStatNames[k]] = all[r * n + k];
+      const double render = all[r * n + 4];
+      sum += render;
+      if (render > slowest) slowest = render, slowest_rank = r;
+      ranks.push_back(j);
+    }
+    nlohmann::json s = {{"method", a.options.method},
+                        {"mesh", scene.mesh},
+                        {"field", prepared.field},
+                        {"width", scene.width},
+                        {"height", scene.height},
+                        {"ranks", world.size},
+                        {"bricks", input.partition ? input.partition->bricks.size() : std::size_t(world.size)},
+                        {"threads_per_rank", threads},
+                        {"seconds", seconds_since(t_start)},
+                        {"slowest_rank", slowest_rank},
+                        {"imbalance", sum > 0 ? slowest / (sum / world.size) : 1.0},
+                        {"per_rank", ranks}};
+    std::fprintf(stderr, "%s\n", s.dump().c_str());
+  }
+  return kExitOk;
+}
+
+}  // namespace cellproj
