@@ -15,7 +15,7 @@ expect() {  # expect CODE REGEX -- ARGS...
 }
 
 expect 2 "subcommand" -- 
-for sub in render info generate sortbench compare scene; do expect 0 "Usage" -- $sub --help; done
+for sub in render info generate sortbench compare scene partition; do expect 0 "Usage" -- $sub --help; done
 expect 1 "missing.vtu: no such file" -- info "$tmp/missing.vtu"
 touch "$tmp/mesh.stl"
 expect 1 "unknown mesh format '.stl'" -- info "$tmp/mesh.stl"
@@ -309,5 +309,22 @@ expect 1 "count.off: its header declares 822222212 points and 6 cells: reading t
 # A number beyond a double in a scene: named as the scene file's JSON error, like a syntax error.
 echo '{"mesh": "box.vtu", "camera": {"height": 8e898}}' >"$tmp/big.json"
 expect 1 "big.json: not valid JSON: .*number overflow" -- render "$tmp/big.json"
+# Partitioning (issue 18): bad counts, a missing mesh, a malformed index; a partition index renders
+# in one process as well (the single-machine path).
+expect 2 "bricks" -- partition "$tmp/box.vtu" --bricks 0 -o "$tmp/parts"
+expect 1 "missing.vtu: no such file" -- partition "$tmp/missing.vtu" --bricks 2 -o "$tmp/parts"
+expect 2 "cost" -- partition "$tmp/box.vtu" --bricks 2 --cost volume -o "$tmp/parts"
+expect 0 "wrote .*parts/partition.json \(3 bricks" -- partition "$tmp/box.vtu" --bricks 3 -o "$tmp/parts"
+expect 0 "wrote .*parts.png \(32x24, pt-breakpoints, 1 rank" -- render "$tmp/parts" --size 32x24 -o "$tmp/parts.png"
+expect 2 "makes one frame" -- render "$tmp/parts" --frames 2
+expect 2 "clipping planes do not go with a partition index" -- render "$tmp/parts" --clip 0,0,0,1,0,0
+cp "$tmp/parts/partition.json" "$tmp/parts/good.json"
+sed 's/"brick": 2/"brick": 1/' "$tmp/parts/good.json" > "$tmp/parts/partition.json"
+expect 1 "partition.json: .*names brick 1: out of range or named twice" -- render "$tmp/parts"
+sed 's/"cellproj_partition": 1/"cellproj_partition": 7/' "$tmp/parts/good.json" > "$tmp/parts/partition.json"
+expect 1 "partition.json: not a cellproj partition index" -- render "$tmp/parts"
+printf '{"cellproj_partition": 1, "source": "x"' > "$tmp/parts/partition.json"
+expect 1 "partition.json: malformed partition index" -- render "$tmp/parts"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

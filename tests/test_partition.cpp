@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <numeric>
 #include <random>
 
 #include "composite/fragment.hpp"
@@ -100,6 +101,76 @@ TEST(Partition, BricksCompositedInTreeOrderGiveTheWholePicture) {
       EXPECT_LT(d.max_abs, 1e-6) << kind;
     }
   }
+}
+
+// Where the ray o + t d enters the box (t >= 0), or infinity when it misses it.
+double entry(const KdBox& b, const glm::dvec3& o, const glm::dvec3& d) {
+  double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < 3; ++k) {
+    if (d[k] == 0.0) {
+      if (o[k] < b.lo[k] || o[k] > b.hi[k]) return t1;
+      continue;
+    }
+    double a = (b.lo[k] - o[k]) / d[k], c = (b.hi[k] - o[k]) / d[k];
+    if (a > c) std::swap(a, c);
+    t0 = std::max(t0, a), t1 = std::min(t1, c);
+  }
+  return t0 < t1 ? t0 : std::numeric_limits<double>::infinity();
+}
+
+TEST(Partition, BrickOrderIsBackToFrontAlongEveryRay) {
+  // The oracle: along random rays of random cameras (eyes inside and outside the bricks, both
+  // projections), the bricks a ray passes through must come in the order farthest first.
+  const Mesh m = generate("graded-tets", 6);
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  for (int n : {2, 3, 7, 16}) {
+    const KdTree tree = build_kd_tree(m.view(), cell_costs(m.view()), n);
+    int checked = 0;
+    for (int v = 0; v < 40; ++v) {
+      const bool persp = v % 2 == 0;
+      const glm::dvec3 eye = v % 4 < 2 ? glm::dvec3(u(rng), u(rng), u(rng)) * 0.9  // inside some brick
+                                       : glm::dvec3(u(rng), u(rng), u(rng)) * 4.0 + glm::dvec3(0, 0, 3);
+      const glm::dvec3 target(u(rng) * 0.5, u(rng) * 0.5, u(rng) * 0.5);
+      const Camera camera{persp ? Projection::Perspective : Projection::Orthographic, eye, target, {0.3, 1, 0.2}};
+      const std::vector<int> order = back_to_front(tree, camera);
+      ASSERT_EQ(static_cast<int>(order.size()), n);
+      std::vector<int> position(n);
+      for (int k = 0; k < n; ++k) position[order[k]] = k;
+      for (int r = 0; r < 50; ++r) {
+        const glm::dvec3 d = glm::normalize(persp ? glm::dvec3(u(rng), u(rng), u(rng)) : target - eye);
+        const glm::dvec3 o = persp ? eye : eye + glm::dvec3(u(rng), u(rng), u(rng)) * 0.8;  // orthographic: parallel rays
+        std::vector<std::pair<double, int>> hits;
+        for (int b = 0; b < n; ++b)
+          if (const double t = entry(tree.nodes[tree.leaf_of[b]].box, o, d); std::isfinite(t)) hits.push_back({t, b});
+        std::sort(hits.begin(), hits.end());
+        for (std::size_t k = 1; k < hits.size(); ++k, ++checked)
+          EXPECT_GT(position[hits[k - 1].second], position[hits[k].second]) << n << " bricks, view " << v;
+      }
+    }
+    EXPECT_GT(checked, 100);
+  }
+}
+
+TEST(Partition, RanksGetContiguousSubtreesBalancedByCost) {
+  const Mesh m = generate("graded-tets", 8);  // cells graded in size: a cell count split is not a cost split
+  const KdTree tree = build_kd_tree(m.view(), cell_costs(m.view()), 8);
+  double lo = 1e300, hi = 0;
+  for (int b = 0; b < 8; ++b) lo = std::min(lo, tree.nodes[tree.leaf_of[b]].cost), hi = std::max(hi, tree.nodes[tree.leaf_of[b]].cost);
+  EXPECT_LT(hi / lo, 1.2);  // the split is by centroid: a cell's whole cost goes to one side
+  for (int ranks : {1, 2, 3, 4, 8, 11}) {
+    const std::vector<int> roots = rank_subtrees(tree, ranks);
+    ASSERT_EQ(static_cast<int>(roots.size()), ranks);
+    std::vector<int> all;
+    for (int r : roots)
+      if (r >= 0)
+        for (int b : bricks_under(tree, r)) all.push_back(b);
+    std::vector<int> expected(8);
+    std::iota(expected.begin(), expected.end(), 0);
+    EXPECT_EQ(all, expected) << ranks << " ranks: every brick once, left to right";
+    EXPECT_EQ(std::count(roots.begin(), roots.end(), -1), std::max(0, ranks - 8));
+  }
+  EXPECT_EQ(bricks_under(tree, rank_subtrees(tree, 4)[1]).size(), 2u);  // 8 bricks over 4 ranks: 2 each
 }
 
 TEST(Partition, BricksWrittenAndReadBackAreTheSame) {
