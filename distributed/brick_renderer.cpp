@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <ctime>
 
 #include "composite/fragment.hpp"
 #include "composite/partial_image.hpp"
@@ -10,13 +11,13 @@
 
 namespace cellproj {
 
-const char* const kRankStatNames[9] = {"bricks", "cells", "load_seconds", "sort_seconds", "render_seconds",
-                                       "composite_seconds", "bytes_sent", "bytes_received", "frame_seconds"};
+const char* const kRankStatNames[10] = {"bricks",       "cells",        "load_seconds",      "sort_seconds",
+                                        "render_seconds", "render_cpu_seconds", "wait_seconds", "composite_seconds",
+                                        "bytes_sent",   "bytes_received"};
 
 std::vector<double> RankStats::values() const {
-  return {double(bricks),  double(cells),          load_seconds,         sort_seconds,
-          render_seconds,  composite_seconds,      double(bytes_sent),   double(bytes_received),
-          render_seconds + composite_seconds};
+  return {double(bricks), double(cells),     load_seconds,       sort_seconds,       render_seconds,
+          render_cpu_seconds, wait_seconds, composite_seconds, double(bytes_sent), double(bytes_received)};
 }
 
 struct BrickRenderer::Brick {
@@ -27,6 +28,13 @@ struct BrickRenderer::Brick {
 namespace {
 double since(std::chrono::steady_clock::time_point t) {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
+}
+// The CPU seconds of every thread of this process: the work a rank did, whatever the time the
+// machine gave it (ranks oversubscribed on few cores take turns).
+double process_cpu_seconds() {
+  timespec ts{};
+  clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &ts);
+  return ts.tv_sec + 1e-9 * ts.tv_nsec;
 }
 }  // namespace
 
@@ -73,7 +81,7 @@ BrickRenderer::BrickRenderer(const Communicator& comm, const PartitionIndex& ind
 BrickRenderer::BrickRenderer(const Communicator& comm, const Mesh& mesh, const std::string& field,
                              const std::string& cost_model)
     : comm_(comm), field_(field) {
-  tree_ = build_kd_tree(mesh.view(), cell_costs(mesh.view(), 512, cost_model == "cells"), comm.size);
+  tree_ = build_kd_tree(mesh.view(), cell_costs(mesh.view(), 1024, cost_model == "cells"), comm.size);
   const std::vector<std::vector<std::int64_t>> cells = cells_of_bricks(mesh.view(), tree_);
   load([&](int b) { return extract_brick(mesh, tree_, b, cells[b]); });
 }
@@ -84,6 +92,7 @@ Image BrickRenderer::render(const Renderer& renderer, const TransferFunction& tf
   st.load_seconds = load_seconds_;
   Image mine(size.width, size.height);
   const auto t = std::chrono::steady_clock::now();
+  const double cpu = process_cpu_seconds();
   agree(comm_, [&] {
     if (subtree_ < 0) return;
     for (int b : back_to_front(tree_, camera, subtree_)) {  // this rank's bricks, farthest first
@@ -103,8 +112,10 @@ Image BrickRenderer::render(const Renderer& renderer, const TransferFunction& tf
         report->values = r.values;
       }
     }
+    st.render_seconds = since(t);
+    st.render_cpu_seconds = process_cpu_seconds() - cpu;
   });
-  st.render_seconds = since(t);
+  st.wait_seconds = since(t) - st.render_seconds;  // for the slowest rank, in agree()
   // The ranks in depth order: each subtree's bricks are contiguous in the whole tree's order.
   std::vector<int> order;
   for (int b : back_to_front(tree_, camera))

@@ -20,10 +20,12 @@ struct RankStats {
   int bricks = 0;
   std::int64_t cells = 0;
   double load_seconds = 0, sort_seconds = 0, render_seconds = 0, composite_seconds = 0;
+  double render_cpu_seconds = 0;  // the work: CPU seconds of the rank's threads while rendering
+  double wait_seconds = 0;        // after rendering, until every rank has rendered
   std::uint64_t bytes_sent = 0, bytes_received = 0;
   std::vector<double> values() const;  // in the order of kRankStatNames
 };
-extern const char* const kRankStatNames[9];
+extern const char* const kRankStatNames[10];
 
 class BrickRenderer {
  public:

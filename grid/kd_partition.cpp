@@ -94,6 +94,10 @@ void collect_bricks(const KdTree& tree, int node, std::vector<int>& out) {
   collect_bricks(tree, n.children[1], out);
 }
 
+// A tetrahedron's setup (points, sort, projection) in fragments' worth: about 1 microsecond against 26
+// nanoseconds per fragment of pt-linear, on one thread (bench/mpi.sh: the load-balance rows).
+constexpr double kTetCost = 40.0;
+
 }  // namespace
 
 std::vector<double> cell_costs(const MeshView& mesh, int image_side, bool cells_only) {
@@ -108,10 +112,16 @@ std::vector<double> cell_costs(const MeshView& mesh, int image_side, bool cells_
   const double pixel = diagonal > 0 ? diagonal / image_side : 1.0;
   Tet tets[kMaxTetsPerCell];
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
-    costs[c] = 5.0 * canonical_tetrahedra(mesh, c, tets);
+    const int n = canonical_tetrahedra(mesh, c, tets);
+    costs[c] = kTetCost * n;
     if (cells_only) continue;
-    const glm::dvec3 s = (cell_box(mesh, c).hi - cell_box(mesh, c).lo) / pixel;
-    costs[c] += 0.5 * (s.x * s.y + s.y * s.z + s.z * s.x);  // a quarter of the box's surface
+    double area = 0.0;  // of the tetrahedra's faces, in pixels
+    for (int t = 0; t < n; ++t)
+      for (int f = 0; f < 4; ++f) {
+        const glm::dvec3 a = mesh.point(tets[t][f]), b = mesh.point(tets[t][(f + 1) % 4]), d = mesh.point(tets[t][(f + 2) % 4]);
+        area += 0.5 * glm::length(glm::cross(b - a, d - a)) / (pixel * pixel);
+      }
+    costs[c] += area / 4;  // Cauchy: a convex body's mean projected area is a quarter of its surface
   }
   return costs;
 }

@@ -33,10 +33,11 @@ struct KdTree {
   int bricks() const { return static_cast<int>(leaf_of.size()); }
 };
 
-// A cell's estimated rendering cost, in fragments: 5 per canonical tetrahedron (setting up its
-// projection, about what 5 fragments cost in pt-linear) plus its mean projected area in pixels when
-// the mesh's bounds fill `image_side` pixels (a convex body's mean projection is a quarter of its
-// surface, Cauchy's formula; taken for the cell's box). `cells_only`: the canonical tetrahedra alone.
+// A cell's estimated rendering cost, in fragments: 40 per canonical tetrahedron (setting up its
+// projection costs about what 40 fragments do in pt-linear) plus the fragments of its tetrahedra, their
+// mean projected area in pixels when the mesh's diagonal spans `image_side` pixels (a convex body's
+// mean projection over all views is a quarter of its surface: Cauchy's formula). `cells_only`: the
+// canonical tetrahedra alone (a plain cell count, weighted by cell type).
 std::vector<double> cell_costs(const MeshView& mesh, int image_side = 512, bool cells_only = false);
 
 // The k-d tree of `bricks` leaves: each node splits its cells' centroids across the longest extent

@@ -161,7 +161,7 @@ LoadedMesh extent_mesh(const PartitionIndex& index) {
 }
 
 PartitionIndex partition_mesh(const Mesh& mesh, int bricks, const std::string& dir, const std::string& cost_model,
-                              PartitionReport* report) {
+                              int image_side, PartitionReport* report) {
   if (cost_model != "projected" && cost_model != "cells")
     throw InputError("--cost must be projected or cells, not '" + cost_model + "'");
   std::error_code ec;
@@ -173,7 +173,7 @@ PartitionIndex partition_mesh(const Mesh& mesh, int bricks, const std::string& d
   index.source = mesh.source;
   index.cells = mesh.n_cells();
   index.cost_model = cost_model;
-  const std::vector<double> costs = cell_costs(view, 512, cost_model == "cells");
+  const std::vector<double> costs = cell_costs(view, image_side, cost_model == "cells");
   index.tree = build_kd_tree(view, costs, bricks);
   for (const PointField& f : mesh.fields) {
     const auto [lo, hi] = std::minmax_element(f.values.begin(), f.values.end());

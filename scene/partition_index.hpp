@@ -52,7 +52,8 @@ struct PartitionReport {
 
 // `mesh` cut into `bricks` bricks written as DIR/brick_NNNN.vtu with DIR/partition.json; one brick
 // in memory at a time. `cost_model`: "projected" or "cells".
+// `image_side`: the pixels across the mesh's diagonal in the renders to balance (cell_costs).
 PartitionIndex partition_mesh(const Mesh& mesh, int bricks, const std::string& dir, const std::string& cost_model,
-                              PartitionReport* report = nullptr);
+                              int image_side = 1024, PartitionReport* report = nullptr);
 
 }  // namespace cellproj

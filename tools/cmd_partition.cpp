@@ -14,7 +14,7 @@ namespace cellproj {
 Action add_partition(CLI::App& app) {
   struct Args {
     std::string mesh, out, cost = "projected";
-    int bricks = 0;
+    int bricks = 0, image_side = 1024;
     ReadOptions reader;
     bool stats = false;
   };
@@ -29,9 +29,12 @@ Action add_partition(CLI::App& app) {
       ->check(CLI::Range(1, 65536));
   cmd->add_option("-o,--output", args->out, "Folder to write the bricks and partition.json into")->required();
   cmd->add_option("--cost", args->cost,
-                  "What the bricks balance: projected (default: each cell's tetrahedra and its mean projected "
-                  "area in pixels at 512 pixels across) or cells (the tetrahedra alone)")
+                  "What the bricks balance: projected (default: each cell's tetrahedra and their mean projected "
+                  "area in pixels, --image-size across the mesh) or cells (the tetrahedra alone)")
       ->check(CLI::IsMember({"projected", "cells"}));
+  cmd->add_option("--image-size", args->image_side,
+                  "projected: the pixels across the mesh's diagonal in the renders to balance (default 1024)")
+      ->check(CLI::Range(16, 65536));
   add_reader_options(*cmd, args->reader);
   cmd->add_flag("--stats", args->stats, "Print one JSON line: seconds, cells cut, peak memory");
   return [args] {
@@ -39,7 +42,7 @@ Action add_partition(CLI::App& app) {
     const LoadedMesh loaded = read_with_progress(args->mesh, args->reader);
     const double read_mib = peak_rss_mib();
     PartitionReport r;
-    const PartitionIndex index = partition_mesh(loaded.mesh, args->bricks, args->out, args->cost, &r);
+    const PartitionIndex index = partition_mesh(loaded.mesh, args->bricks, args->out, args->cost, args->image_side, &r);
     std::printf("wrote %s (%d bricks of %lld cells: %lld cut by the planes into %lld tetrahedra)\n", index.path.c_str(),
                 args->bricks, static_cast<long long>(loaded.mesh.n_cells()), static_cast<long long>(r.clipped.cut),
                 static_cast<long long>(r.clipped.tetrahedra));

@@ -64,7 +64,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const Renderer& 
     for (int r = 0; r < world.size; ++r) {
       nlohmann::json j = {{"rank", r}};
       for (std::size_t k = 0; k < n; ++k) j[kRankStatNames[k]] = all[r * n + k];
-      const double render = all[r * n + 4];
+      const double render = all[r * n + 5];  // render_cpu_seconds: the work, not the turns on shared cores
       sum += render;
       if (render > slowest) slowest = render, slowest_rank = r;
       ranks.push_back(j);
@@ -79,7 +79,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const Renderer& 
                         {"threads_per_rank", threads},
                         {"seconds", seconds_since(t_start)},
                         {"slowest_rank", slowest_rank},
-                        {"imbalance", sum > 0 ? slowest / (sum / world.size) : 1.0},
+                        {"imbalance", sum > 0 ? slowest / (sum / world.size) : 1.0},  // of render_cpu_seconds
                         {"per_rank", ranks}};
     std::fprintf(stderr, "%s\n", s.dump().c_str());
   }
