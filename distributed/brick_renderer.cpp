@@ -20,6 +20,18 @@ std::vector<double> RankStats::values() const {
           render_cpu_seconds, wait_seconds, composite_seconds, double(bytes_sent), double(bytes_received)};
 }
 
+void check_distributable(const RenderSettings& settings) {
+  const char* why = settings.mode == RenderMode::reduction ? "takes one value of each whole ray"
+                    : settings.mode == RenderMode::layers  ? "counts crossings along each whole ray"
+                    : !settings.iso.surfaces.empty() && settings.iso.mode != IsoMode::ordered
+                        ? "blends iso-surfaces out of depth order (use --iso-mode ordered)"
+                        : nullptr;
+  if (why)
+    throw InputError(std::string("a distributed render composites the bricks' pictures in depth order, and this "
+                                 "method ") +
+                     why + ": render it in one process, from the mesh");
+}
+
 struct BrickRenderer::Brick {
   Mesh mesh;
   std::unique_ptr<Volume> volume;
@@ -86,8 +98,10 @@ BrickRenderer::BrickRenderer(const Communicator& comm, const Mesh& mesh, const s
   load([&](int b) { return extract_brick(mesh, tree_, b, cells[b]); });
 }
 
-Image BrickRenderer::render(const Renderer& renderer, const TransferFunction& tf, const Camera& camera, ImageSize size,
-                            RankStats* stats, RenderReport* report) const {
+Image BrickRenderer::render(const RenderSettings& settings, const TransferFunction& tf, const Camera& camera,
+                            ImageSize size, RankStats* stats, RenderReport* report) const {
+  check_distributable(settings);
+  const std::unique_ptr<Renderer> renderer = make_renderer(settings);
   RankStats st;
   st.load_seconds = load_seconds_;
   Image mine(size.width, size.height);
@@ -99,7 +113,7 @@ Image BrickRenderer::render(const Renderer& renderer, const TransferFunction& tf
       if (!bricks_[b]) continue;
       const Brick& brick = *bricks_[b];
       RenderReport r;
-      const Image img = renderer.render(*brick.volume, field_of(brick.mesh, field_), tf, camera, size, &r);
+      const Image img = renderer->render(*brick.volume, field_of(brick.mesh, field_), tf, camera, size, &r);
       for (std::size_t k = 0; k < mine.rgba.size(); k += 4) over(&mine.rgba[k], &img.rgba[k]);
       for (const auto& [phase, s] : r.phase_seconds)
         if (phase == "sort") st.sort_seconds += s;

@@ -27,6 +27,11 @@ struct RankStats {
 };
 extern const char* const kRankStatNames[10];
 
+// InputError for settings whose pictures do not composite with "over" brick by brick: one value per
+// ray (mip, minip, average), the n-th crossings along the whole ray (layers), iso-surfaces blended
+// out of order (iso modes other than ordered).
+void check_distributable(const RenderSettings& settings);
+
 class BrickRenderer {
  public:
   // This rank's bricks read from the index's files (each read isolated and validated; a missing or
@@ -36,8 +41,9 @@ class BrickRenderer {
   BrickRenderer(const Communicator& comm, const Mesh& mesh, const std::string& field, const std::string& cost_model);
   ~BrickRenderer();
 
-  // The picture on rank 0 (other ranks: an image of no meaning). Collective: every rank calls it.
-  Image render(const Renderer& renderer, const TransferFunction& tf, const Camera& camera, ImageSize size,
+  // The picture on rank 0 (other ranks: an image of no meaning), each brick drawn by
+  // make_renderer(settings). Collective: every rank calls it. InputError unless check_distributable.
+  Image render(const RenderSettings& settings, const TransferFunction& tf, const Camera& camera, ImageSize size,
                RankStats* stats = nullptr, RenderReport* report = nullptr) const;
 
   const KdTree& tree() const { return tree_; }

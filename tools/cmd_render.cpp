@@ -65,11 +65,11 @@ int run_render(const RenderArgs& given) {
   if (!levels.empty() && (a.time || !a.animate.empty()))
     throw UsageError("--progressive renders one mesh: it does not go with --time or --animate");
   const Communicator world = Communicator::world();
-  if (is_distributed(a, world)) check_distributed(a);
+  if (is_distributed(a, world)) check_distributed(a, settings);
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
   const Input input = load_input(a, *renderer, settings, levels, std::move(scene_read));
-  if (input.partition || world.size > 1) return render_distributed(a, input, *renderer, world);
+  if (input.partition || world.size > 1) return render_distributed(a, input, settings, world);
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
   for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());

@@ -22,14 +22,16 @@ bool is_distributed(const RenderArgs& a, const Communicator& world) {
   return world.size > 1 || is_partition_index(a.input);
 }
 
-void check_distributed(const RenderArgs& a) {
+void check_distributed(const RenderArgs& a, const RenderSettings& settings) {
+  usage([&] { check_distributable(settings); });
   if (a.frames != 1 || !a.progressive.empty() || a.time || !a.animate.empty())
     throw UsageError("a distributed render (mpirun, or a partition index) makes one frame: --frames, --progressive, "
                      "--time and --animate do not go with it yet");
 }
 
-int render_distributed(const RenderArgs& a, const Input& input, const Renderer& renderer, const Communicator& world) {
-  check_distributed(a);
+int render_distributed(const RenderArgs& a, const Input& input, const RenderSettings& settings,
+                       const Communicator& world) {
+  check_distributed(a, settings);
   const auto t_start = std::chrono::steady_clock::now();
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
@@ -45,7 +47,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const Renderer& 
     const BrickRenderer bricks =
         input.partition ? BrickRenderer(world, *input.partition, prepared.field, scene.reader)
                         : BrickRenderer(world, prepared.loaded.mesh, prepared.field, "projected");
-    image = bricks.render(renderer, prepared.tf, prepared.camera, {scene.width, scene.height}, &stats, &report);
+    image = bricks.render(settings, prepared.tf, prepared.camera, {scene.width, scene.height}, &stats, &report);
   });
   const std::vector<double> all = gather_to_root(world, stats.values());
   if (world.rank != 0) return kExitOk;

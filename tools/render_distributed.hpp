@@ -9,9 +9,11 @@ namespace cellproj {
 
 // Whether the render is distributed: launched on several ranks, or given a partition index.
 bool is_distributed(const RenderArgs& a, const Communicator& world);
-// UsageError for what a distributed render does not do (several frames, progressive levels, time).
-void check_distributed(const RenderArgs& a);
+// UsageError for what a distributed render does not do (several frames, progressive levels, time,
+// methods that do not composite in depth order).
+void check_distributed(const RenderArgs& a, const RenderSettings& settings);
 // Renders input's bricks over the ranks; rank 0 writes the picture and prints --stats.
-int render_distributed(const RenderArgs& a, const Input& input, const Renderer& renderer, const Communicator& world);
+int render_distributed(const RenderArgs& a, const Input& input, const RenderSettings& settings,
+                       const Communicator& world);
 
 }  // namespace cellproj
