@@ -25,6 +25,31 @@ inline void append_fragment(std::vector<Fragment>& out, int width, int i, int j,
   f.rgba[3] = static_cast<float>(alpha);
 }
 
+// A batch's fragments kept by band of 2^shift image rows, each band in the order they were made:
+// bands are composited in parallel, each pixel still seeing its fragments in order. A rasterizer
+// emits row by row, so a fragment goes to its band for the price of a shift.
+class FragmentBands {
+ public:
+  FragmentBands(int width, int height, int shift) { reset(width, height, shift); }
+  void reset(int width, int height, int shift) {
+    width_ = width, shift_ = shift;
+    bands_.resize(height > 0 ? static_cast<std::size_t>(((height - 1) >> shift) + 1) : 1);
+    clear();
+  }
+  void clear() {
+    for (auto& b : bands_) b.clear();
+  }
+  void append(int i, int j, double r, double g, double b, double alpha) {
+    append_fragment(bands_[static_cast<std::size_t>(j >> shift_)], width_, i, j, r, g, b, alpha);
+  }
+  std::size_t bands() const { return bands_.size(); }
+  const std::vector<Fragment>& band(std::size_t b) const { return bands_[b]; }
+
+ private:
+  int width_ = 0, shift_ = 0;
+  std::vector<std::vector<Fragment>> bands_;
+};
+
 // Back to front: src in front of what dst holds.
 inline void over(float* dst, const float src[4]) {
   const float t = 1.0f - src[3];

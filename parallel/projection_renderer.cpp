@@ -89,7 +89,7 @@ struct OrderedCells {
   const std::vector<std::uint8_t>& small;  // per cell: drawn by its splat (or not at all)
   SmallCells mode;
   const SplatContext& splat;
-  void fragments(std::size_t k, std::vector<Fragment>& out, Scratch& s, Counters& c) const {
+  void fragments(std::size_t k, FragmentBands& out, Scratch& s, Counters& c) const {
     const std::int64_t cell = order[k];
     if (mode != SmallCells::draw && small[static_cast<std::size_t>(cell)]) {
       if (mode == SmallCells::splat)

@@ -30,13 +30,12 @@ inline bool adds_nothing(const glm::dvec3& rgb, double alpha) {
   return alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0;
 }
 
-// Appends fragments to a batch's buffer.
+// Appends fragments to a batch's bands.
 struct AppendFragments {
-  std::vector<Fragment>& out;
-  int width;
+  FragmentBands& out;
   bool operator()(int i, int j, const glm::dvec3& rgb, double alpha) const {
     if (adds_nothing(rgb, alpha)) return false;
-    append_fragment(out, width, i, j, rgb.r, rgb.g, rgb.b, alpha);
+    out.append(i, j, rgb.r, rgb.g, rgb.b, alpha);
     return true;
   }
 };
@@ -256,9 +255,9 @@ void CellFragments::triangles(const std::int64_t* ids, CellType type, std::int64
     }
 }
 
-void CellFragments::project(const std::int64_t* ids, CellType type, std::vector<Fragment>& out, CellScratch& scratch,
+void CellFragments::project(const std::int64_t* ids, CellType type, FragmentBands& out, CellScratch& scratch,
                             ProjectionCounters& counters) const {
-  AppendFragments emit{out, rays_.width()};
+  AppendFragments emit{out};
   project_with(ids, type, emit, scratch, counters);
 }
 

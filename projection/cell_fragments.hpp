@@ -69,7 +69,7 @@ class CellFragments {
                 const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
                 const PointOptics* optics);
   // Appends the fragments of the cell (point ids `ids`, of `type`) to out.
-  void project(const std::int64_t* ids, CellType type, std::vector<Fragment>& out, CellScratch& scratch,
+  void project(const std::int64_t* ids, CellType type, FragmentBands& out, CellScratch& scratch,
                ProjectionCounters& counters) const;
   // Composites the cell's fragments onto image at once ("over"); for cells covering so many pixels
   // that their fragments are not worth storing. In visibility order, from one thread.

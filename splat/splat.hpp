@@ -93,6 +93,6 @@ struct SplatContext {
 // has none (zero volume, inverted, centred behind the eye).
 Footprint cell_splat(const SplatContext& frame, const std::int64_t* ids, CellType type, SplatCounters& c);
 // Appends the footprint's fragments (the ones adding light or opacity) to out; counted in c.
-void append_fragments(const Footprint& f, int width, int height, std::vector<Fragment>& out, SplatCounters& c);
+void append_fragments(const Footprint& f, int width, int height, FragmentBands& out, SplatCounters& c);
 
 }  // namespace cellproj

@@ -51,9 +51,9 @@ std::vector<Fragment> splat_of(const Mesh& m, const TransferFunction& tf, const 
   const RecentredPoints pts = recentre(v);
   const PixelRays rays(recentred(camera, pts.centre), size, size);
   const SplatContext frame{pts, m.fields[0].values.data(), tf, rays, prefilter};
-  std::vector<Fragment> out;
+  FragmentBands out(size, size, 30);  // one band: the fragments in the order made
   append_fragments(cell_splat(frame, v.cell(0), v.type(0), counters), size, size, out, counters);
-  return out;
+  return out.band(0);
 }
 
 double total_alpha(const std::vector<Fragment>& f) {
@@ -133,8 +133,9 @@ TEST(Splat, AtAnyOpticalDepthTheOpacityIsItsGaussiansClosedForm) {
     const RecentredPoints pts = recentre(v);
     const PixelRays rays(recentred(c, pts.centre), 96, 96);
     const Footprint f = cell_splat({pts, m.fields[0].values.data(), tf, rays, 0.7}, v.cell(0), v.type(0), n);
-    std::vector<Fragment> out;
-    append_fragments(f, 96, 96, out, n);
+    FragmentBands bands(96, 96, 30);
+    append_fragments(f, 96, 96, bands, n);
+    const std::vector<Fragment>& out = bands.band(0);
     const double closed = 2.0 * 3.14159265358979323846 * std::sqrt(glm::determinant(f.covariance)) * ein(f.peak);
     EXPECT_NEAR(total_alpha(out) / closed, 1.0, 1e-3) << "kappa " << kappa;
     EXPECT_NEAR(f.total, kappa * 1.0 * (96.0 / 8.0) * (96.0 / 8.0), 1e-9 * f.total);  // kappa V over a pixel's area
