@@ -314,6 +314,7 @@ expect 1 "big.json: not valid JSON: .*number overflow" -- render "$tmp/big.json"
 expect 2 "bricks" -- partition "$tmp/box.vtu" --bricks 0 -o "$tmp/parts"
 expect 1 "missing.vtu: no such file" -- partition "$tmp/missing.vtu" --bricks 2 -o "$tmp/parts"
 expect 2 "cost" -- partition "$tmp/box.vtu" --bricks 2 --cost volume -o "$tmp/parts"
+expect 1 "box.vtu: partitioning 64 cells \(the mesh and one brick\) needs about .* more than the .*--max-memory" -- partition "$tmp/box.vtu" --bricks 2 --max-memory 0.000001 -o "$tmp/parts"
 expect 0 "wrote .*parts/partition.json \(3 bricks" -- partition "$tmp/box.vtu" --bricks 3 -o "$tmp/parts"
 expect 0 "wrote .*parts.png \(32x24, pt-breakpoints, 1 rank" -- render "$tmp/parts" --size 32x24 -o "$tmp/parts.png"
 expect 2 "makes one frame" -- render "$tmp/parts" --frames 2

@@ -5,6 +5,7 @@
 
 #include "scene/partition_index.hpp"
 #include "tools/commands.hpp"
+#include "tools/memory_budget.hpp"
 #include "tools/mesh_options.hpp"
 #include "tools/progress.hpp"
 #include "tools/timing.hpp"
@@ -36,9 +37,16 @@ Action add_partition(CLI::App& app) {
                   "projected: the pixels across the mesh's diagonal in the renders to balance (default 1024)")
       ->check(CLI::Range(16, 65536));
   add_reader_options(*cmd, args->reader);
+  add_max_memory_option(*cmd, args->reader.max_memory_gib, "Refuse meshes whose partitioning is");
   cmd->add_flag("--stats", args->stats, "Print one JSON line: seconds, cells cut, peak memory");
   return [args] {
     const auto t = std::chrono::steady_clock::now();
+    // The mesh, and at most one brick as large as the mesh with its cut cells' pieces and the cells'
+    // brick lists: twice the mesh, from the header before reading it.
+    if (const HeaderCounts h = header_counts(args->mesh); h.cells > 0)
+      refuse_beyond_memory(2 * estimate_mesh_bytes(h), args->reader.max_memory_gib,
+                           "partitioning " + std::to_string(h.cells) + " cells (the mesh and one brick)", args->mesh,
+                           "partition on a machine with more memory, or cut the mesh first");
     const LoadedMesh loaded = read_with_progress(args->mesh, args->reader);
     const double read_mib = peak_rss_mib();
     PartitionReport r;

@@ -12,8 +12,9 @@
 namespace cellproj {
 
 // Throws InputError, prefixed with `source`, when `need` bytes exceed the limit: `max_memory_gib`
-// when positive, else the memory available now. `what` names the work ("rendering 512x512 ...").
+// when positive, else the memory available now. `what` names the work ("rendering 512x512 ..."),
+// `remedy` what the user can do about it.
 void refuse_beyond_memory(std::uint64_t need, double max_memory_gib, const std::string& what,
-                          const std::string& source);
+                          const std::string& source, const std::string& remedy = "use a smaller --size or mesh");
 
 }  // namespace cellproj
