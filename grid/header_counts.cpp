@@ -9,6 +9,7 @@
 
 #include "base/error.hpp"
 #include "grid/netcdf_check.hpp"
+#include "grid/plot3d_header.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/text_scanner.hpp"
 
@@ -88,6 +89,15 @@ std::int64_t first_count(const std::string& path) {
   return 0;
 }
 
+// The format by name, or "" where the name says none (header_counts is asked of any file).
+std::string format_for_counts(const std::string& path) {
+  try {
+    return format_for(path);
+  } catch (const Error&) {
+    return "";
+  }
+}
+
 }  // namespace
 
 HeaderCounts header_counts(const std::string& path) {
@@ -108,6 +118,11 @@ HeaderCounts header_counts(const std::string& path) {
     return h ? HeaderCounts{saturated(double(h->dim("num_nodes"))), saturated(double(h->dim("num_elem")))}
              : HeaderCounts{};
   }
+  if (format_for_counts(path) == "plot3d") try {
+      return plot3d_counts(path).value_or(HeaderCounts{});
+    } catch (const Error&) {
+      return {};  // the reader refuses it, with the same message
+    }
   if (ext == ".node" || ext == ".ele") {
     const fs::path base = fs::path(path).replace_extension();
     return {first_count(base.string() + ".node"), first_count(base.string() + ".ele")};

@@ -12,8 +12,8 @@ struct HeaderCounts {
 };
 
 // From the header of a VTK XML (.vtu, .vts: every Piece), legacy VTK (.vtk: POINTS and CELLS),
-// TetGen (.node/.ele), classic netCDF Exodus (num_nodes, num_elem) or .off file; {0, 0} for
-// other formats or when the header does not say.
+// TetGen (.node/.ele), classic netCDF Exodus (num_nodes, num_elem), binary PLOT3D grid (the layout
+// its size admits) or .off file; {0, 0} for other formats or when the header does not say.
 HeaderCounts header_counts(const std::string& path);
 
 // Bytes to hold a mesh of these counts while it is read (the reader's arrays and our copy).

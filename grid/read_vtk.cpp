@@ -36,6 +36,7 @@
 #include "grid/netcdf_check.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/vtk_messages.hpp"
+#include "grid/plot3d_header.hpp"
 
 namespace fs = std::filesystem;
 
@@ -487,6 +488,7 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     return run(r.Get(), path, messages, o.zone);
   }
   if (format == "plot3d") {
+    plot3d_counts(path);  // a header no layout of the file fits is refused before VTK reads it
     auto r = vtkSmartPointer<vtkMultiBlockPLOT3DReader>::New();
     r->SetXYZFileName(path.c_str());
     const std::string q = plot3d_q_file(path, o);

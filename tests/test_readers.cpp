@@ -11,6 +11,7 @@
 
 #include "base/bytes.hpp"
 #include "base/error.hpp"
+#include "grid/header_counts.hpp"
 #include "grid/isolated_read.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
@@ -345,4 +346,53 @@ TEST(MemoryBudget, SizesInMessagesReadInTheirUnit) {
   EXPECT_EQ(format_bytes((1ull << 30) / 10), "0.1 GiB");
   EXPECT_EQ(format_bytes(2306867), "2.2 MiB");  // "0.0 GiB" said nothing
   EXPECT_EQ(format_bytes(0), "0.0 MiB");
+}
+
+namespace {
+
+// A PLOT3D grid of n0 x n1 x n2 points (x = i, y = j, z = k), little-endian floats: written from C
+// (no record markers, one grid) or from Fortran (records, a grid count, IBLANK).
+std::string plot3d(int n0, int n1, int n2, bool fortran) {
+  std::string out;
+  const auto put = [&](auto v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  const int n = n0 * n1 * n2;
+  if (fortran) put(4), put(1), put(4), put(12);
+  put(n0), put(n1), put(n2);
+  if (fortran) put(12), put(n * 16);
+  for (int axis = 0; axis < 3; ++axis)
+    for (int k = 0; k < n2; ++k)
+      for (int j = 0; j < n1; ++j)
+        for (int i = 0; i < n0; ++i) put(static_cast<float>(axis == 0 ? i : axis == 1 ? j : k));
+  if (fortran) {
+    for (int p = 0; p < n; ++p) put(1);  // IBLANK: every point in use
+    put(n * 16);
+  }
+  return out;
+}
+
+}  // namespace
+
+TEST(Plot3d, TheHeaderIsMatchedAsVtkDetectsItAndCorruptOnesAreRefusedFirst) {
+  test::TempDir dir;
+  for (bool fortran : {false, true}) {
+    const std::string file = dir.file(fortran ? "f_xyz.bin" : "c_xyz.bin");
+    spit(file, plot3d(4, 3, 2, fortran));
+    const HeaderCounts h = header_counts(file);
+    EXPECT_EQ(h.points, 24) << fortran;
+    EXPECT_EQ(h.cells, 6) << fortran;
+    EXPECT_EQ(read_mesh(file).n_cells(), 6) << fortran;
+    // Cut short, and a dimension made huge: refused by the header check (no reader allocates it).
+    const std::string bytes = plot3d(4, 3, 2, fortran);
+    spit(file, bytes.substr(0, bytes.size() - 40));
+    EXPECT_NE(read_error(file).find("PLOT3D grid (little-endian): truncated or corrupt"), std::string::npos) << read_error(file);
+    std::string huge = bytes;
+    const int big = 1 << 30;
+    huge.replace(fortran ? 20 : 4, 4, reinterpret_cast<const char*>(&big), 4);
+    spit(file, huge);
+    EXPECT_NE(read_error(file).find("truncated or corrupt"), std::string::npos) << read_error(file);
+    const int negative = -3;
+    huge.replace(fortran ? 20 : 4, 4, reinterpret_cast<const char*>(&negative), 4);
+    spit(file, huge);
+    EXPECT_NE(read_error(file).find("truncated or corrupt"), std::string::npos) << read_error(file);
+  }
 }
