@@ -110,9 +110,24 @@ class ProjectionMode final : public Renderer {
            {"abuffer_runs", s.abuffer_runs},
            {"cycles", static_cast<std::int64_t>(s.cycles.size())}});
     r.add("gaps_from", s.method == SortMethod::mpvo_abuffer ? ReportValue(s.gaps_from) : ReportValue());
+    add_fragment_rates(r, p);
     add_splats(r, p.small_cells, p.splat_threshold, p.splat);
     if (!p.gl_renderer.empty()) r.add("gl_renderer", p.gl_renderer);
     warn(r, p);
+  }
+
+  // Wall time per fragment of the projection and compositing phase, and the memory traffic of the
+  // fragments: each written to its batch (20 bytes), read back by the blend (20), and its pixel
+  // read and written (16 + 16): 72 bytes, against what the machine's memory moves (docs/methods.md).
+  static void add_fragment_rates(RenderReport& r, const ProjectionStats& p) {
+    double seconds = 0.0;
+    for (const auto& [phase, s] : p.phase_seconds)
+      if (phase == "project and composite") seconds = s;
+    const double n = static_cast<double>(p.counters.fragments);
+    const bool rated = n > 0 && seconds > 0;
+    r.add("ns_per_fragment", rated ? ReportValue(1e9 * seconds / n) : ReportValue());
+    r.add("fragments_per_second", rated ? ReportValue(n / seconds) : ReportValue());
+    r.add("fragment_traffic_gb_per_second", rated ? ReportValue(72.0 * n / seconds / 1e9) : ReportValue());
   }
 
   void warn(RenderReport& r, const ProjectionStats& p) const {
