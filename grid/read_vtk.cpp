@@ -37,6 +37,7 @@
 #include "grid/read_mesh.hpp"
 #include "grid/vtk_messages.hpp"
 #include "grid/plot3d_header.hpp"
+#include "grid/vtk_xml_check.hpp"
 
 namespace fs = std::filesystem;
 
@@ -434,6 +435,7 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
     if (tail.find("</VTKFile>") == std::string::npos)
       throw InputError(where(path, "truncated: a VTK XML file ends with </VTKFile>, this one does not"));
+    check_vtk_xml_appended(path);
     auto r = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
     r->SetFileName(path.c_str());
     Mesh mesh = run(r.Get(), path, messages);

@@ -1,0 +1,167 @@
+#include "grid/vtk_xml_check.hpp"
+
+#include <cstdint>
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <optional>
+#include <vector>
+
+#include "base/error.hpp"
+
+namespace cellproj {
+namespace {
+
+// The value of attribute `name` in the element text `tag`, or nullopt.
+std::optional<std::string> attribute(const std::string& tag, const std::string& name) {
+  const std::string key = " " + name + "=\"";
+  const std::size_t at = tag.find(key);
+  if (at == std::string::npos) return std::nullopt;
+  const std::size_t end = tag.find('"', at + key.size());
+  if (end == std::string::npos) return std::nullopt;
+  return tag.substr(at + key.size(), end - at - key.size());
+}
+
+std::uint64_t type_size(const std::string& type) {
+  if (type == "Int8" || type == "UInt8") return 1;
+  if (type == "Int16" || type == "UInt16") return 2;
+  if (type == "Int32" || type == "UInt32" || type == "Float32") return 4;
+  if (type == "Int64" || type == "UInt64" || type == "Float64") return 8;
+  return 0;  // String, Bit, ...: not checked
+}
+
+// The appended data section: raw bytes, or base64 text whose units (a header, then the data) are
+// each encoded on their own, as VTK writes them.
+class Appended {
+ public:
+  Appended(const std::string& path, std::uint64_t data_start, std::uint64_t file_size, bool uint64, bool big,
+           bool base64)
+      : in_(path, std::ios::binary), start_(data_start), size_(file_size), word_(uint64 ? 8 : 4), big_(big),
+        base64_(base64) {}
+  std::uint64_t word() const { return word_; }
+  // The file bytes that `n` bytes of a unit take.
+  std::uint64_t stored(std::uint64_t n) const { return base64_ ? (n + 2) / 3 * 4 : n; }
+  // The file bytes after position `at` of the section.
+  std::uint64_t left(std::uint64_t at) const { return start_ + at >= size_ ? 0 : size_ - start_ - at; }
+  // The first `words` header integers of the unit at `at`, or nullopt past the end or not base64.
+  std::optional<std::vector<std::uint64_t>> header(std::uint64_t at, std::uint64_t words) {
+    const std::uint64_t n = words * word_;
+    if (stored(n) > left(at)) return std::nullopt;
+    std::string text(static_cast<std::size_t>(stored(n)), '\0');
+    in_.seekg(static_cast<std::streamoff>(start_ + at));
+    in_.read(&text[0], static_cast<std::streamsize>(text.size()));
+    std::vector<unsigned char> bytes;
+    if (!base64_)
+      bytes.assign(text.begin(), text.end());
+    else if (!decode(text, bytes) || bytes.size() < n)
+      return std::nullopt;
+    std::vector<std::uint64_t> out(static_cast<std::size_t>(words));
+    for (std::uint64_t w = 0; w < words; ++w)
+      for (std::uint64_t k = 0; k < word_; ++k)
+        out[w] |= std::uint64_t(bytes[w * word_ + k]) << (8 * (big_ ? word_ - 1 - k : k));
+    return out;
+  }
+
+ private:
+  static bool decode(const std::string& text, std::vector<unsigned char>& out) {
+    std::uint32_t acc = 0;
+    int bits = 0;
+    for (char c : text) {
+      int v = c >= 'A' && c <= 'Z' ? c - 'A' : c >= 'a' && c <= 'z' ? c - 'a' + 26 : c >= '0' && c <= '9' ? c - '0' + 52
+              : c == '+' ? 62 : c == '/' ? 63 : c == '=' ? -2 : -1;
+      if (v == -1) return false;
+      if (v == -2) break;
+      acc = (acc << 6) | std::uint32_t(v), bits += 6;
+      if (bits >= 8) out.push_back(static_cast<unsigned char>(acc >> (bits -= 8)));
+    }
+    return true;
+  }
+  std::ifstream in_;
+  std::uint64_t start_, size_, word_;
+  bool big_, base64_;
+};
+
+}  // namespace
+
+void check_vtk_xml_appended(const std::string& path) {
+  std::error_code ec;
+  const std::uint64_t file_size = std::filesystem::file_size(path, ec);
+  if (ec) return;  // the reader says what is wrong with the file itself
+  std::ifstream in(path, std::ios::binary);
+  std::string xml(static_cast<std::size_t>(std::min<std::uint64_t>(file_size, 1 << 22)), '\0');
+  in.read(&xml[0], static_cast<std::streamsize>(xml.size()));
+  const std::size_t appended = xml.find("<AppendedData");
+  if (appended == std::string::npos) return;  // inline data: VTK parses it as text
+  const std::size_t open_end = xml.find('>', appended);
+  if (open_end == std::string::npos) return;
+  const std::string encoding = attribute(xml.substr(appended, open_end - appended), "encoding").value_or("raw");
+  if (encoding != "raw" && encoding != "base64")
+    throw InputError(where(path, "the AppendedData encoding '" + encoding + "' is neither raw nor base64"));
+  const std::size_t underscore = xml.find('_', open_end);
+  if (underscore == std::string::npos) return;
+  const std::size_t file_tag = xml.find("<VTKFile");
+  const std::string file = file_tag == std::string::npos ? "" : xml.substr(file_tag, xml.find('>', file_tag) - file_tag);
+  const bool compressed = attribute(file, "compressor").has_value();
+  Appended data(path, underscore + 1, file_size, attribute(file, "header_type").value_or("UInt32") == "UInt64",
+                attribute(file, "byte_order").value_or("LittleEndian") == "BigEndian", encoding == "base64");
+  // One Piece: its counts give the arrays' sizes (several: only the blocks are checked).
+  std::int64_t points = -1, cells = -1;
+  if (xml.find("<Piece") == xml.rfind("<Piece", appended) && xml.find("<Piece") != std::string::npos) {
+    const std::size_t p = xml.find("<Piece");
+    const std::string piece = xml.substr(p, xml.find('>', p) - p);
+    points = std::atoll(attribute(piece, "NumberOfPoints").value_or("-1").c_str());
+    cells = std::atoll(attribute(piece, "NumberOfCells").value_or("-1").c_str());
+  }
+  std::string section;  // PointData, CellData, Points, Cells
+  for (std::size_t at = xml.find('<'); at < appended; at = xml.find('<', at + 1)) {
+    const std::size_t end = xml.find('>', at);
+    const std::string tag = xml.substr(at, end - at);
+    for (const char* s : {"<PointData", "<CellData", "<Points", "<Cells", "<FieldData"})
+      if (tag.rfind(s, 0) == 0) section = s + 1;
+    if (tag.rfind("<DataArray", 0) != 0 || attribute(tag, "format").value_or("") != "appended") continue;
+    const std::string name = attribute(tag, "Name").value_or("?");
+    const std::uint64_t offset = std::strtoull(attribute(tag, "offset").value_or("0").c_str(), nullptr, 10);
+    const std::string what = "DataArray '" + name + "' (appended at offset " + std::to_string(offset) + ")";
+    const auto fail = [&](const std::string& why) { return InputError(where(path, what + ": " + why)); };
+    // What the Piece says it holds, in bytes (0: unknown).
+    const std::uint64_t item = type_size(attribute(tag, "type").value_or(""));
+    const std::uint64_t comps = std::strtoull(attribute(tag, "NumberOfComponents").value_or("1").c_str(), nullptr, 10);
+    std::int64_t tuples = -1;
+    if (section == "PointData" || section == "Points") tuples = points;
+    if (section == "CellData" || (section == "Cells" && (name == "types" || name == "offsets"))) tuples = cells;
+    const std::uint64_t expected = tuples >= 0 && item > 0 ? std::uint64_t(tuples) * comps * item : 0;
+    std::uint64_t bytes = 0;  // uncompressed
+    if (compressed) {
+      const auto head = data.header(offset, 3);
+      if (!head) throw fail("its compression header runs past the end of the file, or is not " + encoding);
+      const std::uint64_t blocks = (*head)[0], block = (*head)[1], last = (*head)[2];
+      if (blocks > data.left(offset) / data.word())
+        throw fail("its compression header declares " + std::to_string(blocks) + " blocks, more than the file holds");
+      const auto sizes = data.header(offset, 3 + blocks);
+      if (!sizes) throw fail("its compression header runs past the end of the file, or is not " + encoding);
+      std::uint64_t packed = 0;
+      for (std::uint64_t k = 0; k < blocks; ++k) packed += (*sizes)[3 + k];
+      const std::uint64_t after = offset + data.stored((3 + blocks) * data.word());
+      if (data.stored(packed) > data.left(after))
+        throw fail("its " + std::to_string(blocks) + " compressed blocks declare " + std::to_string(packed) +
+                   " bytes, past the end of the file");
+      bytes = blocks == 0 ? 0 : (blocks - 1) * block + (last == 0 ? block : last);
+      if (blocks > 0 && (block == 0 || last > block || bytes / 1032 > packed + 64))
+        throw fail("its compression header declares " + std::to_string(bytes) + " bytes from " + std::to_string(packed) +
+                   " compressed ones (block size " + std::to_string(block) + ", last block " + std::to_string(last) +
+                   "): deflate expands at most 1032 times");
+    } else {
+      const auto n = data.header(offset, 1);
+      if (!n) throw fail("its byte count runs past the end of the file, or is not " + encoding);
+      if (data.stored((*n)[0]) > data.left(offset + data.stored(data.word())))
+        throw fail("it declares " + std::to_string((*n)[0]) + " bytes, past the end of the file");
+      bytes = (*n)[0];
+    }
+    if (expected > 0 && bytes != expected)
+      throw fail("it holds " + std::to_string(bytes) + " bytes where " + std::to_string(tuples) + " " +
+                 (section == "PointData" || section == "Points" ? "points" : "cells") + " of " + std::to_string(comps) +
+                 " " + attribute(tag, "type").value_or("") + " need " + std::to_string(expected));
+  }
+}
+
+}  // namespace cellproj
