@@ -94,8 +94,9 @@ std::optional<HeaderCounts> plot3d_counts(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     char head[12] = {};
     in.read(head, 12);
-    if (size >= 12 && std::all_of(head, head + 12, [](char c) { return std::isdigit(c) || std::strchr(". \r\n\t", c); }))
-      return std::nullopt;  // ASCII PLOT3D (VTK's own test): the numbers are parsed as text
+    const auto text = [](char c) { return std::isdigit(static_cast<unsigned char>(c)) || (c != 0 && std::strchr(". \r\n\t", c)); };
+    if (size >= 12 && std::all_of(head, head + 12, text))
+      return std::nullopt;  // ASCII PLOT3D (VTK's own test; a zero byte is binary): parsed as text
   }
   Ints ints(path, size);
   const std::string order = ints.big_endian() ? "big-endian" : "little-endian";
