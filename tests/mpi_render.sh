@@ -76,8 +76,15 @@ for mesh in $meshes; do
   same "$tmp/m.npy" "$tmp/${mesh}_persp_exact.npy" 1e-6 "$mesh cut in memory over 3 ranks"
 done
 
-# More ranks than bricks: the others idle.
 m0=${meshes%% *}
+# A turntable: each frame equals the single process's.
+mpi 3 render "$tmp/${m0}_5" --method exact --interpolation canonical-tets --threads 1 --frames 3 --orbit 90 \
+  --size 48x40 -o "$tmp/t_%d.png" --npy "$tmp/t_%d.npy" >/dev/null 2>&1 || fail "turntable over 3 ranks"
+"$exe" render "$tmp/$m0.vtu" --method exact --interpolation canonical-tets --frames 3 --orbit 90 --size 48x40 \
+  -o "$tmp/u_%d.png" --npy "$tmp/u_%d.npy" >/dev/null 2>&1 || fail "turntable in one process"
+for f in 0 2; do same "$tmp/t_$f.npy" "$tmp/u_$f.npy" 1e-6 "turntable frame $f over 3 ranks"; done
+
+# More ranks than bricks: the others idle.
 mpi 4 render "$tmp/${m0}_3" --method exact --interpolation canonical-tets --threads 1 --npy "$tmp/i.npy" \
   -o "$tmp/i.png" --size 72x64 >/dev/null 2>&1 || fail "4 ranks, 3 bricks"
 "$exe" render "$tmp/$m0.vtu" --method exact --interpolation canonical-tets --npy "$tmp/s.npy" -o "$tmp/s.png" \

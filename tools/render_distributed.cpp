@@ -10,6 +10,7 @@
 
 #include "distributed/brick_renderer.hpp"
 #include "render/volume.hpp"
+#include "scene/camera_json.hpp"
 #include "scene/names.hpp"
 #include "scene/prepare.hpp"
 #include "tools/commands.hpp"
@@ -24,9 +25,9 @@ bool is_distributed(const RenderArgs& a, const Communicator& world) {
 
 void check_distributed(const RenderArgs& a, const RenderSettings& settings) {
   usage([&] { check_distributable(settings); });
-  if (a.frames != 1 || !a.progressive.empty() || a.time || !a.animate.empty())
-    throw UsageError("a distributed render (mpirun, or a partition index) makes one frame: --frames, --progressive, "
-                     "--time and --animate do not go with it yet");
+  if (!a.progressive.empty() || a.time || !a.animate.empty())
+    throw UsageError("a distributed render (mpirun, or a partition index) renders one mesh: --progressive, --time and "
+                     "--animate do not go with it yet");
 }
 
 int render_distributed(const RenderArgs& a, const Input& input, const RenderSettings& settings,
@@ -41,23 +42,41 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   tbb::task_arena arena(threads);
   RankStats stats;
   RenderReport report;
-  Image image;
+  std::vector<double> frame_times;
+  const FramePaths paths = frame_paths(a.png, a.npy, a.input, a.frames);
+  const ColorBar legend = color_bar(prepared, scene.background);
+  Image first;
   arena.execute([&] {
     // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.
     const BrickRenderer bricks =
         input.partition ? BrickRenderer(world, *input.partition, prepared.field, scene.reader)
                         : BrickRenderer(world, prepared.loaded.mesh, prepared.field, "projected");
-    image = bricks.render(settings, prepared.tf, prepared.camera, {scene.width, scene.height}, &stats, &report);
+    // Frames as a single process makes them: a turntable with --orbit, else a degree a frame.
+    for (int f = 0; f < a.frames; ++f) {
+      const auto t_frame = std::chrono::steady_clock::now();
+      const Camera camera = orbit(prepared.camera, a.orbit != 0.0 ? f * a.orbit / a.frames : f);
+      Image image = bricks.render(settings, prepared.tf, camera, {scene.width, scene.height}, &stats, &report);
+      frame_times.push_back(seconds_since(t_frame));
+      if (world.rank != 0) continue;
+      if (paths.sequence) {
+        char what[160];
+        std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %d rank%s, %.3f s", f + 1, a.frames, scene.width,
+                      scene.height, a.options.method.c_str(), world.size, world.size > 1 ? "s" : "", frame_times.back());
+        write_outputs(image, scene.background, a.legend ? &legend : nullptr, paths.png_of(f), paths.npy_of(f), what);
+      } else if (f == 0) {
+        first = std::move(image);
+      }
+    }
   });
   const std::vector<double> all = gather_to_root(world, stats.values());
   if (world.rank != 0) return kExitOk;
   for (const auto& w : report.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
-  const ColorBar legend = color_bar(prepared, scene.background);
-  const FramePaths paths = frame_paths(a.png, a.npy, a.input, 1);
-  char what[160];
-  std::snprintf(what, sizeof what, "%dx%d, %s, %d rank%s, %.3f s", scene.width, scene.height, a.options.method.c_str(),
-                world.size, world.size > 1 ? "s" : "", seconds_since(t_start));
-  write_outputs(image, scene.background, a.legend ? &legend : nullptr, paths.png, paths.npy, what);
+  if (!paths.sequence) {
+    char what[160];
+    std::snprintf(what, sizeof what, "%dx%d, %s, %d rank%s, %.3f s per frame", scene.width, scene.height,
+                  a.options.method.c_str(), world.size, world.size > 1 ? "s" : "", median(frame_times));
+    write_outputs(first, scene.background, a.legend ? &legend : nullptr, paths.png, paths.npy, what);
+  }
   if (a.stats) {
     constexpr std::size_t n = std::size(kRankStatNames);
     nlohmann::json ranks = nlohmann::json::array();
@@ -79,6 +98,8 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
                         {"ranks", world.size},
                         {"bricks", input.partition ? input.partition->bricks.size() : std::size_t(world.size)},
                         {"threads_per_rank", threads},
+                        {"frames", a.frames},
+                        {"frame_seconds", median(frame_times)},  // on rank 0, composite and all
                         {"seconds", seconds_since(t_start)},
                         {"slowest_rank", slowest_rank},
                         {"imbalance", sum > 0 ? slowest / (sum / world.size) : 1.0},  // of render_cpu_seconds
