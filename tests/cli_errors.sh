@@ -318,6 +318,7 @@ expect 2 "cost" -- partition "$tmp/box.vtu" --bricks 2 --cost volume -o "$tmp/pa
 expect 1 "box.vtu: partitioning 64 cells \(the mesh and one brick\) needs about .* more than the .*--max-memory" -- partition "$tmp/box.vtu" --bricks 2 --max-memory 0.000001 -o "$tmp/parts"
 expect 0 "wrote .*parts/partition.json \(3 bricks" -- partition "$tmp/box.vtu" --bricks 3 -o "$tmp/parts"
 expect 0 "wrote .*parts.png \(32x24, pt-breakpoints, 1 rank" -- render "$tmp/parts" --size 32x24 -o "$tmp/parts.png"
+expect 0 "partition of .*box.vtu: 64 cells into 3 bricks" -- info "$tmp/parts"
 expect 2 "renders one mesh: --progressive, --time and --animate" -- render "$tmp/parts" --time 1
 expect 2 "composites the bricks' pictures in depth order, and this method takes one value of each whole ray" -- render "$tmp/parts" --method mip
 expect 2 "blends iso-surfaces out of depth order" -- render "$tmp/parts" --method exact --iso 0.5 --iso-mode oit3
