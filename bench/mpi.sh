@@ -6,7 +6,8 @@
 #  3. compositing: binary swap's seconds and bytes per rank against image size and P;
 #  4. load balance: max/mean render time over 4 ranks for the cost model (projected) against a
 #     plain cell count split, on the 1M box and on Blunt Fin's 187k graded tetrahedra (../shared/data).
-# usage: bench/mpi.sh [BUILD_DIR]   (about 6 minutes; prints tables, saved in bench/results/mpi.txt)
+#  5. each method over 5 bricks against one process on the whole mesh (docs/parallel.md).
+# usage: bench/mpi.sh [BUILD_DIR]   (about 4 minutes; prints tables, saved in bench/results/mpi.txt)
 set -euo pipefail
 build=${1:-build}
 exe=$(realpath "$build/bin/cellproj")
@@ -16,23 +17,18 @@ export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1 OMPI_MCA_rmaps_
 stats() { tail -1 "$work/err"; }
 mpi() { local p=$1; shift; mpirun --oversubscribe -np "$p" "$exe" "$@"; }
 
-"$exe" generate box-tets -n 55 -o "$work/box.vtu" >/dev/null
-cat > "$work/box.json" <<JSON
-{ "mesh": "box.vtu", "field": "scalar",
-  "transfer_function": { "color": [[0, 0.2, 0.3, 0.9], [0.6, 0.9, 0.8, 0.3], [1, 1, 0.3, 0.1]],
-                         "extinction": [[0, 0.2], [0.6, 1.0], [0.8, 4.0], [1, 8.0]] },
-  "camera": { "projection": "perspective", "eye": [3.5, 2.5, 4.5], "target": [0, 0, 0], "up": [0, 1, 0], "fov_y": 35 },
-  "image": { "width": 1024, "height": 1024 } }
-JSON
+# The 1M-tetrahedra box and its scene (bench/scenes/box_1m.json, shared with the other benchmarks).
+"$exe" generate box-tets -n 55 -o "$work/box_1m.vtu" >/dev/null
+cp "$(dirname "$0")/scenes/box_1m.json" "$work/box.json"
 with_mesh() { sed "s#\"mesh\": \"[^\"]*\"#\"mesh\": \"$2\"#" "$1" > "$3"; }
 
 echo "== 1. partition (1M tetrahedra)"
-"$exe" info "$work/box.vtu" --json > "$work/info.json"
+"$exe" info "$work/box_1m.vtu" --json > "$work/info.json"
 for n in 4 16; do
-  "$exe" partition "$work/box.vtu" --bricks $n -o "$work/box_$n" --stats >/dev/null 2>"$work/err"
+  "$exe" partition "$work/box_1m.vtu" --bricks $n -o "$work/box_$n" --stats >/dev/null 2>"$work/err"
   stats
 done
-"$exe" partition "$work/box.vtu" --bricks 4 --cost cells -o "$work/box_cells" >/dev/null
+"$exe" partition "$work/box_1m.vtu" --bricks 4 --cost cells -o "$work/box_cells" >/dev/null
 
 echo "== 2. strong scaling: pt-linear 1024^2 (one thread per rank)"
 for t in 1 2; do
@@ -93,3 +89,19 @@ print('| Blunt Fin tets | $cost | %.2f | %.3f |' % (j['imbalance'], max(x['rende
 else
   echo "(../shared/data missing: Blunt Fin skipped)"
 fi
+
+echo "== 5. each method over 5 bricks and 2 ranks against one process on the whole mesh (256^2, max abs / rms)"
+echo "| mesh | method | max abs | rms |"
+echo "|---|---|---:|---:|"
+for mesh in swirl mixed graded-tets; do
+  "$exe" generate $mesh -n 8 -o "$work/$mesh.vtu" >/dev/null
+  "$exe" partition "$work/$mesh.vtu" --bricks 5 -o "$work/${mesh}_5" >/dev/null
+  for m in "exact" "exact --interpolation canonical-tets" "pt-breakpoints" "pt-breakpoints --tetrahedralize all" \
+           "pt-analytic" "pt-table" "pt-linear" "slicing"; do
+    "$exe" render "$work/$mesh.vtu" --method $m --size 256x256 --npy "$work/w.npy" -o "$work/w.png" >/dev/null 2>&1
+    mpi 2 render "$work/${mesh}_5" --method $m --size 256x256 --threads 1 --npy "$work/b.npy" -o "$work/b.png" \
+      >/dev/null 2>&1
+    "$exe" compare "$work/w.npy" "$work/b.npy" | $py -c "import json, sys; j = json.load(sys.stdin)
+print('| $mesh | $m | %.2g | %.2g |' % (j['max_abs'], j['rmse']))"
+  done
+done

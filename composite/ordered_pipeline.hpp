@@ -6,6 +6,7 @@
 // band's rows stay in cache. Compositing runs in the order alone, so 1 and N threads give the same
 // image bit for bit, and the blend is not a serial stage: its share does not grow with threads.
 #include <algorithm>
+#include <chrono>
 #include <cstddef>
 #include <utility>
 #include <vector>
@@ -62,9 +63,12 @@ inline int band_shift(int height) {
 // Composites items [0, n) of the order onto `image`; footprint(k) is the number of pixels item k
 // may cover (its image bounding box). Threads: those of the calling task arena. Returns the sum of
 // the batches' counters.
+// `blend_seconds`, when given, receives the time the blend stage took (the serial share with one
+// band; its bands' parallel loops included otherwise).
 template <class Source, class Footprint>
 typename Source::Counters composite_in_order(Image& image, std::size_t n, const Footprint& footprint,
-                                             const PipelineLimits& limits, const Source& source) {
+                                             const PipelineLimits& limits, const Source& source,
+                                             double* blend_seconds = nullptr) {
   const int shift = band_shift(image.height);
   struct Batch {
     std::size_t begin = 0, end = 0;
@@ -129,7 +133,9 @@ typename Source::Counters composite_in_order(Image& image, std::size_t n, const 
       }
     });
   };
+  double blending = 0.0;
   auto blend = [&](Batch* b) {
+    const auto t0 = std::chrono::steady_clock::now();
     std::fill(done.begin(), done.end(), 0);
     for (std::size_t d = 0; d < b->direct.size(); ++d) {  // the direct items go in between, in order
       blend_bands(*b, b->direct_at.data() + d * bands);
@@ -138,11 +144,13 @@ typename Source::Counters composite_in_order(Image& image, std::size_t n, const 
     blend_bands(*b, nullptr);
     total.add(b->counters);
     free.push(b);
+    blending += std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   };
   tbb::parallel_pipeline(static_cast<std::size_t>(tokens),
                          tbb::make_filter<void, Batch*>(tbb::filter_mode::serial_in_order, cut) &
                              tbb::make_filter<Batch*, Batch*>(tbb::filter_mode::parallel, project) &
                              tbb::make_filter<Batch*, void>(tbb::filter_mode::serial_in_order, blend));
+  if (blend_seconds) *blend_seconds = blending;
   return total;
 }
 

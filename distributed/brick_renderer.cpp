@@ -119,12 +119,10 @@ Image BrickRenderer::render(const RenderSettings& settings, const TransferFuncti
         if (phase == "sort") st.sort_seconds += s;
       ++st.bricks;
       st.cells += brick.mesh.n_cells();
-      if (report) {
+      if (report)  // each warning once, whichever brick gave it
         for (const std::string& w : r.warnings)
           if (std::find(report->warnings.begin(), report->warnings.end(), w) == report->warnings.end())
             report->warnings.push_back(w);
-        report->values = r.values;
-      }
     }
     st.render_seconds = since(t);
     st.render_cpu_seconds = process_cpu_seconds() - cpu;

@@ -35,6 +35,7 @@ struct ProjectionStats {
   std::int64_t cycle_splits = 0;   // of which split because they were in a visibility cycle
   std::int64_t culled_transparent = 0;  // cells not drawn: extinction 0 over their scalar range
   std::vector<std::pair<std::string, double>> phase_seconds;  // project points, sort, project and composite
+  double blend_seconds = 0.0;  // of project and composite: the ordered blend stage (software back end)
   std::string gl_renderer;                                    // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;
 };

@@ -128,6 +128,7 @@ class ProjectionMode final : public Renderer {
     r.add("ns_per_fragment", rated ? ReportValue(1e9 * seconds / n) : ReportValue());
     r.add("fragments_per_second", rated ? ReportValue(n / seconds) : ReportValue());
     r.add("fragment_traffic_gb_per_second", rated ? ReportValue(72.0 * n / seconds / 1e9) : ReportValue());
+    r.add("blend_seconds", rated ? ReportValue(p.blend_seconds) : ReportValue());
   }
 
   void warn(RenderReport& r, const ProjectionStats& p) const {
