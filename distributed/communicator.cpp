@@ -42,20 +42,23 @@ Communicator Communicator::world() {
 }
 
 void agree(const Communicator& comm, const std::function<void()>& step) {
+  if (!comm.mpi) return step();  // one process: its own error, as it is
   std::string error;
+  int severity = 0;  // 1 bad input, 2 a resource the machine lacks, 3 anything else (the CLI's exit codes)
   try {
     step();
+  } catch (const InputError& e) {
+    error = e.what(), severity = 1;
+  } catch (const ResourceError& e) {
+    error = e.what(), severity = 2;
   } catch (const std::exception& e) {
-    error = e.what();
-    if (error.empty()) error = "failed";
+    error = e.what(), severity = 3;
   }
-  if (!comm.mpi) {
-    if (!error.empty()) throw CollectiveError(error);
-    return;
-  }
-  int mine = static_cast<int>(error.size()), failed = 0, any = mine > 0;
-  MPI_Allreduce(&any, &failed, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
-  if (!failed) return;
+  if (severity > 0 && error.empty()) error = "failed";
+  int worst = 0;
+  MPI_Allreduce(&severity, &worst, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+  if (worst == 0) return;
+  int mine = static_cast<int>(error.size());
   std::vector<int> lengths(comm.size), offsets(comm.size, 0);
   MPI_Allgather(&mine, 1, MPI_INT, lengths.data(), 1, MPI_INT, MPI_COMM_WORLD);
   for (int r = 1; r < comm.size; ++r) offsets[r] = offsets[r - 1] + lengths[r - 1];
@@ -66,7 +69,9 @@ void agree(const Communicator& comm, const std::function<void()>& step) {
     if (lengths[r] > 0)
       message += (message.empty() ? "" : "\n  ") + std::string("rank ") + std::to_string(r) + ": " +
                  all.substr(static_cast<std::size_t>(offsets[r]), static_cast<std::size_t>(lengths[r]));
-  throw CollectiveError(message);
+  if (worst == 1) throw CollectiveError(message);
+  if (worst == 2) throw ResourceError(message);
+  throw InternalError(message);
 }
 
 std::vector<double> gather_to_root(const Communicator& comm, const std::vector<double>& values) {

@@ -40,8 +40,9 @@ struct Communicator {
 };
 
 // Runs `step` on every rank and agrees on its outcome, so that no rank waits forever for one that
-// failed: if any rank threw, every rank throws a CollectiveError whose message lists each failing
-// rank's ("rank 2: bricks/brick_0002.vtu: ..."). The failing ranks' error classes are kept as text.
+// failed: if any rank threw, every rank throws one error whose message lists each failing rank's
+// ("rank 2: bricks/brick_0002.vtu: ..."), of the gravest class thrown: CollectiveError (bad
+// input), ResourceError, or InternalError. Without MPI the step's own error passes as it is.
 void agree(const Communicator& comm, const std::function<void()>& step);
 
 // Bytes exchanged and seconds spent in the last collective.
