@@ -22,6 +22,14 @@ KdBox cell_box(const MeshView& mesh, std::int64_t c) {
   return b;
 }
 
+// The box of the mesh's points ({0, 0} without points).
+KdBox points_box(const MeshView& mesh) {
+  if (mesh.n_points == 0) return {};
+  KdBox b{mesh.point(0), mesh.point(0)};
+  for (std::int64_t p = 1; p < mesh.n_points; ++p) b.lo = glm::min(b.lo, mesh.point(p)), b.hi = glm::max(b.hi, mesh.point(p));
+  return b;
+}
+
 class TreeBuilder {
  public:
   TreeBuilder(const MeshView& mesh, const std::vector<double>& costs) : costs_(costs) {
@@ -102,12 +110,7 @@ constexpr double kTetCost = 40.0;
 
 std::vector<double> cell_costs(const MeshView& mesh, int image_side, bool cells_only) {
   std::vector<double> costs(static_cast<std::size_t>(mesh.n_cells));
-  KdBox all{glm::dvec3(0.0), glm::dvec3(0.0)};
-  if (mesh.n_points > 0) {
-    all = {mesh.point(0), mesh.point(0)};
-    for (std::int64_t p = 1; p < mesh.n_points; ++p)
-      all.lo = glm::min(all.lo, mesh.point(p)), all.hi = glm::max(all.hi, mesh.point(p));
-  }
+  const KdBox all = points_box(mesh);
   const double diagonal = glm::length(all.hi - all.lo);
   const double pixel = diagonal > 0 ? diagonal / image_side : 1.0;
   Tet tets[kMaxTetsPerCell];
@@ -131,8 +134,7 @@ KdTree build_kd_tree(const MeshView& mesh, const std::vector<double>& costs, int
   if (mesh.n_cells == 0) throw InputError(where(mesh.source, "the mesh has no cells to partition"));
   if (static_cast<std::int64_t>(costs.size()) != mesh.n_cells)
     throw InternalError("build_kd_tree: one cost per cell expected");
-  KdBox box{mesh.point(0), mesh.point(0)};
-  for (std::int64_t p = 1; p < mesh.n_points; ++p) box.lo = glm::min(box.lo, mesh.point(p)), box.hi = glm::max(box.hi, mesh.point(p));
+  const KdBox box = points_box(mesh);
   std::vector<std::int64_t> ids(static_cast<std::size_t>(mesh.n_cells));
   std::iota(ids.begin(), ids.end(), std::int64_t{0});
   KdTree tree;

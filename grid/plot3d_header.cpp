@@ -44,7 +44,6 @@ struct Grids {
   int ndims = 3;
   std::vector<std::array<std::int64_t, 3>> dims;  // 1 in the third for a 2D grid
   std::uint64_t header = 0;                       // bytes before the first grid's coordinates
-  bool multi = false;
 };
 
 std::uint64_t points(const std::array<std::int64_t, 3>& d) { return std::uint64_t(d[0]) * d[1] * d[2]; }
@@ -110,10 +109,10 @@ std::optional<HeaderCounts> plot3d_counts(const std::string& path) {
   const auto repeat = *first >= 0 ? ints.at(4 + std::uint64_t(*first)) : std::nullopt;
   Grids g;
   if (repeat && *repeat == *first) {
-    g.multi = *first == 4;  // a record of one integer: the number of grids
+    const bool multi = *first == 4;  // a record of one integer: the number of grids
     std::int64_t grids = 1;
     std::uint64_t at = 0;
-    if (g.multi) {
+    if (multi) {
       const auto n = ints.at(4);
       if (!n || *n < 1 || *n > 10000000) throw refuse("the grid count record holds " + (n ? std::to_string(*n) : "nothing"));
       grids = *n;
@@ -149,7 +148,6 @@ std::optional<HeaderCounts> plot3d_counts(const std::string& path) {
     }
     for (int ndims : {3, 2}) {
       Grids c;
-      c.multi = multi;
       if (!read_dims(ints, multi ? 4 : 0, grids, ndims, c)) continue;
       for (int precision : {4, 8})
         for (bool iblank : {false, true})
