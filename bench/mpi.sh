@@ -97,7 +97,7 @@ for mesh in swirl mixed graded-tets; do
   "$exe" generate $mesh -n 8 -o "$work/$mesh.vtu" >/dev/null
   "$exe" partition "$work/$mesh.vtu" --bricks 5 -o "$work/${mesh}_5" >/dev/null
   for m in "exact" "exact --interpolation canonical-tets" "pt-breakpoints" "pt-breakpoints --tetrahedralize all" \
-           "pt-analytic" "pt-table" "pt-linear" "slicing"; do
+           "pt-analytic" "pt-table" "pt-linear" "slicing" "exact --interpolation canonical-tets --iso 0.5:1,0,0,0.6"; do
     "$exe" render "$work/$mesh.vtu" --method $m --size 256x256 --npy "$work/w.npy" -o "$work/w.png" >/dev/null 2>&1
     mpi 2 render "$work/${mesh}_5" --method $m --size 256x256 --threads 1 --npy "$work/b.npy" -o "$work/b.png" \
       >/dev/null 2>&1
