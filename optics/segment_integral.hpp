@@ -3,6 +3,7 @@
 // and Max 1992): T = exp(-int kappa dt), emitted light = int C kappa T dt, premultiplied.
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 
 #include <glm/vec3.hpp>
 
@@ -32,6 +33,16 @@ inline SegmentLight under(const SegmentLight& front, const SegmentLight& back) {
 // of 60 is dropped (below 1e-26).
 SegmentLight integrate_linear_reference(double length, double k0, double k1, const glm::dvec3& c0,
                                         const glm::dvec3& c1);
+
+// One of several media overlapping on a piece of ray (several volumes of a scene): kappa and colour
+// linear from the front (k0, c0) to the back (k1, c1).
+struct LinearMedium {
+  double k0, k1;
+  glm::dvec3 c0, c1;
+};
+// Overlapping media over `length`: the extinction is their sum and each emits its own kappa C, all
+// of it attenuated by the sum; the quadrature of integrate_linear_reference.
+SegmentLight integrate_media_reference(double length, const LinearMedium* media, std::size_t n);
 
 // Calls piece(ends, fraction) for each piece of a segment along which the scalar runs linearly from
 // s0 (front) to s1 (back), cut at the transfer function's breakpoints, front to back: `ends` holds
@@ -71,5 +82,15 @@ SegmentLight integrate_pieces(const TransferFunction& tf, double length, double 
 // A segment along which the scalar runs linearly from s0 (front) to s1 (back): cut at the transfer
 // function's breakpoints, each piece integrated with integrate_linear_reference.
 SegmentLight integrate_segment_reference(const TransferFunction& tf, double length, double s0, double s1);
+
+// A medium on a piece of ray shared with others: its transfer function, its scalar linear from s0
+// (front) to s1 (back).
+struct MediumSegment {
+  const TransferFunction* tf;
+  double s0, s1;
+};
+// Overlapping media over `length`, cut at every breakpoint of each one's transfer function, each
+// piece integrated with integrate_media_reference.
+SegmentLight integrate_overlap_reference(double length, const MediumSegment* media, std::size_t n);
 
 }  // namespace cellproj

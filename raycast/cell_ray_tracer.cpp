@@ -17,14 +17,8 @@
 namespace cellproj {
 namespace {
 
-constexpr int kTile = 16;
-
 // Tetrahedron faces (outward for a positive tetrahedron), each listed opposite its vertex.
 constexpr int kFace[4][3] = {{1, 2, 3}, {2, 0, 3}, {0, 1, 3}, {0, 2, 1}};
-
-struct PixelBox {
-  int x0, x1, y0, y1;  // inclusive pixel ranges; empty when x0 > x1
-};
 
 // The clipped tetrahedron along one ray, with barycentric planes for the scalar.
 struct TetPlanes {
@@ -149,92 +143,102 @@ glm::dvec3 CellRayTracer::interpolate(const std::vector<glm::dvec3>& per_point, 
   return (1.0 - w1 - w2 - w3) * per_point[t[0]] + w1 * per_point[t[1]] + w2 * per_point[t[2]] + w3 * per_point[t[3]];
 }
 
-void CellRayTracer::trace(const Camera& camera, int width, int height, const double* scalar, const Visitor& visit,
-                          const std::function<void(double)>& progress) const {
-  const PixelRays rays(recentred(camera, points_.centre), width, height);
-  const RecentredPoints& P = points_;
-
+CellRayTracer::View::View(const CellRayTracer& tracer, const Camera& camera, int width, int height)
+    : tracer_(&tracer),
+      rays_(recentred(camera, tracer.points_.centre), width, height),
+      width_(width),
+      height_(height),
+      tiles_x_((width + kTile - 1) / kTile),
+      tiles_y_((height + kTile - 1) / kTile) {
+  const RecentredPoints& P = tracer.points_;
+  const auto& tets = tracer.tets_;
   // Pixel boxes of the tetrahedra: the pixel centres their projection may cover, one pixel wider.
-  const std::size_t nt = tets_.size();
-  std::vector<PixelBox> box(nt);
+  const std::size_t nt = tets.size();
+  box_.resize(nt);
   tbb::parallel_for(std::size_t(0), nt, [&](std::size_t t) {
     double x0 = std::numeric_limits<double>::max(), x1 = -x0, y0 = x0, y1 = -x0;
     bool all_in_front = true;
     for (int k = 0; k < 4; ++k) {
       double x, y;
-      if (!rays.project(P(tets_[t][k]), x, y)) {
+      if (!rays_.project(P(tets[t][k]), x, y)) {
         all_in_front = false;
         break;
       }
       x0 = std::min(x0, x), x1 = std::max(x1, x), y0 = std::min(y0, y), y1 = std::max(y1, y);
     }
     if (!all_in_front) {  // crosses the eye plane: any pixel may see it
-      box[t] = {0, width - 1, 0, height - 1};
+      box_[t] = {0, width - 1, 0, height - 1};
       return;
     }
     auto lo = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - 0.5) - 1.0, 0.0, double(n))); };
     auto hi = [](double v, int n) {
       return static_cast<int>(std::clamp(std::floor(v - 0.5) + 1.0, -1.0, double(n - 1)));
     };
-    box[t] = {lo(x0, width), hi(x1, width), lo(y0, height), hi(y1, height)};
+    box_[t] = {lo(x0, width), hi(x1, width), lo(y0, height), hi(y1, height)};
   });
 
   // Tetrahedra binned by image tile (counting sort).
-  const int tiles_x = (width + kTile - 1) / kTile, tiles_y = (height + kTile - 1) / kTile;
-  std::vector<std::int64_t> start(static_cast<std::size_t>(tiles_x) * tiles_y + 1, 0);
+  start_.assign(static_cast<std::size_t>(tiles_x_) * tiles_y_ + 1, 0);
   auto for_tiles = [&](const PixelBox& b, auto&& f) {
     if (b.x0 > b.x1 || b.y0 > b.y1) return;
     for (int ty = b.y0 / kTile; ty <= b.y1 / kTile; ++ty)
-      for (int tx = b.x0 / kTile; tx <= b.x1 / kTile; ++tx) f(static_cast<std::size_t>(ty) * tiles_x + tx);
+      for (int tx = b.x0 / kTile; tx <= b.x1 / kTile; ++tx) f(static_cast<std::size_t>(ty) * tiles_x_ + tx);
   };
-  for (std::size_t t = 0; t < nt; ++t) for_tiles(box[t], [&](std::size_t tile) { ++start[tile + 1]; });
-  for (std::size_t i = 1; i < start.size(); ++i) start[i] += start[i - 1];
-  std::vector<std::uint32_t> binned(static_cast<std::size_t>(start.back()));
-  {
-    std::vector<std::int64_t> fill(start.begin(), start.end() - 1);
-    for (std::size_t t = 0; t < nt; ++t)
-      for_tiles(box[t], [&](std::size_t tile) { binned[fill[tile]++] = static_cast<std::uint32_t>(t); });
-  }
+  for (std::size_t t = 0; t < nt; ++t) for_tiles(box_[t], [&](std::size_t tile) { ++start_[tile + 1]; });
+  for (std::size_t i = 1; i < start_.size(); ++i) start_[i] += start_[i - 1];
+  binned_.resize(static_cast<std::size_t>(start_.back()));
+  std::vector<std::int64_t> fill(start_.begin(), start_.end() - 1);
+  for (std::size_t t = 0; t < nt; ++t)
+    for_tiles(box_[t], [&](std::size_t tile) { binned_[fill[tile]++] = static_cast<std::uint32_t>(t); });
+}
 
+void CellRayTracer::View::tile_segments(int tile, const double* scalar, std::vector<RaySegment>* lists,
+                                        Ray* rays) const {
+  const CellRayTracer& tr = *tracer_;
+  const RecentredPoints& P = tr.points_;
+  const int tx0 = (tile % tiles_x_) * kTile, ty0 = (tile / tiles_x_) * kTile;
+  for (int p = 0; p < kTile * kTile; ++p) lists[p].clear();
+  for (int j = ty0; j < std::min(ty0 + kTile, height_); ++j)
+    for (int i = tx0; i < std::min(tx0 + kTile, width_); ++i)
+      rays[(j - ty0) * kTile + (i - tx0)] = rays_.ray(i + 0.5, j + 0.5);
+  for (std::int64_t b = start_[tile]; b < start_[tile + 1]; ++b) {
+    const std::uint32_t t = binned_[b];
+    const Tet& tet = tr.tets_[t];
+    TetPlanes tp;
+    glm::dvec3 p[4];
+    for (int k = 0; k < 4; ++k) p[k] = P(tet[k]), tp.s[k] = scalar ? scalar[tet[k]] : 0.0;
+    for (int k = 0; k < 4; ++k) tp.set_face(k, tet, P.xyz.data());
+    tp.volume6 = tet_volume6(p[0], p[1], p[2], p[3]);
+    const PixelBox& bx = box_[t];
+    for (int j = std::max(bx.y0, ty0); j <= std::min(bx.y1, ty0 + kTile - 1); ++j)
+      for (int i = std::max(bx.x0, tx0); i <= std::min(bx.x1, tx0 + kTile - 1); ++i) {
+        const int px = (j - ty0) * kTile + (i - tx0);
+        const Ray& r = rays[px];
+        double t0, t1;
+        if (!tp.clip(r, t0, t1)) continue;
+        lists[px].push_back(
+            {t0, t1, tp.scalar_at(r.origin + t0 * r.dir), tp.scalar_at(r.origin + t1 * r.dir), tr.parent_[t], t});
+      }
+  }
+  for (int p = 0; p < kTile * kTile; ++p)
+    std::sort(lists[p].begin(), lists[p].end(), [](const RaySegment& a, const RaySegment& b) {
+      return a.t0 < b.t0 || (a.t0 == b.t0 && a.t1 < b.t1);
+    });
+}
+
+void CellRayTracer::trace(const Camera& camera, int width, int height, const double* scalar, const Visitor& visit,
+                          const std::function<void(double)>& progress) const {
+  const View view(*this, camera, width, height);
+  constexpr int kTile = View::kTile;
   tbb::enumerable_thread_specific<std::vector<std::vector<RaySegment>>> lists(
       [] { return std::vector<std::vector<RaySegment>>(kTile * kTile); });
   std::atomic<int> done{0};
-  const int n_tiles = tiles_x * tiles_y;
+  const int n_tiles = view.tiles();
   tbb::parallel_for(0, n_tiles, [&](int tile) {
     auto& pixel_lists = lists.local();
-    for (auto& l : pixel_lists) l.clear();
-    const int tx0 = (tile % tiles_x) * kTile, ty0 = (tile / tiles_x) * kTile;
     Ray tile_rays[kTile * kTile];
-    for (int j = ty0; j < std::min(ty0 + kTile, height); ++j)
-      for (int i = tx0; i < std::min(tx0 + kTile, width); ++i)
-        tile_rays[(j - ty0) * kTile + (i - tx0)] = rays.ray(i + 0.5, j + 0.5);
-    for (std::int64_t b = start[tile]; b < start[tile + 1]; ++b) {
-      const std::uint32_t t = binned[b];
-      const Tet& tet = tets_[t];
-      TetPlanes tp;
-      glm::dvec3 p[4];
-      for (int k = 0; k < 4; ++k) p[k] = P(tet[k]), tp.s[k] = scalar ? scalar[tet[k]] : 0.0;
-      for (int k = 0; k < 4; ++k) tp.set_face(k, tet, points_.xyz.data());
-      tp.volume6 = tet_volume6(p[0], p[1], p[2], p[3]);
-      const PixelBox& bx = box[t];
-      for (int j = std::max(bx.y0, ty0); j <= std::min(bx.y1, ty0 + kTile - 1); ++j)
-        for (int i = std::max(bx.x0, tx0); i <= std::min(bx.x1, tx0 + kTile - 1); ++i) {
-          const int px = (j - ty0) * kTile + (i - tx0);
-          const Ray& r = tile_rays[px];
-          double t0, t1;
-          if (!tp.clip(r, t0, t1)) continue;
-          pixel_lists[px].push_back(
-              {t0, t1, tp.scalar_at(r.origin + t0 * r.dir), tp.scalar_at(r.origin + t1 * r.dir), parent_[t], t});
-        }
-    }
-    for (int j = ty0; j < std::min(ty0 + kTile, height); ++j)
-      for (int i = tx0; i < std::min(tx0 + kTile, width); ++i) {
-        auto& l = pixel_lists[(j - ty0) * kTile + (i - tx0)];
-        std::sort(l.begin(), l.end(), [](const RaySegment& a, const RaySegment& b) {
-          return a.t0 < b.t0 || (a.t0 == b.t0 && a.t1 < b.t1);
-        });
-        visit(i, j, tile_rays[(j - ty0) * kTile + (i - tx0)], l.data(), l.size());
-      }
+    view.tile_segments(tile, scalar, pixel_lists.data(), tile_rays);
+    view.for_each_pixel(tile, [&](int i, int j, int px) { visit(i, j, tile_rays[px], pixel_lists[px].data(), pixel_lists[px].size()); });
     if (progress) progress(double(++done) / n_tiles);
   });
 }

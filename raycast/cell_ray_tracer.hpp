@@ -3,6 +3,7 @@
 // each cell, front to back. Cells other than tetrahedra are traversed through their canonical
 // tetrahedralization (grid/tetrahedralize.hpp), inside which the field is linear.
 #include <cstdint>
+#include <algorithm>
 #include <functional>
 #include <vector>
 
@@ -33,6 +34,36 @@ class CellRayTracer {
   using Visitor = std::function<void(int i, int j, const Ray& ray, const RaySegment* segments, std::size_t n)>;
   void trace(const Camera& camera, int width, int height, const double* scalar, const Visitor& visit,
              const std::function<void(double done)>& progress = {}) const;
+
+  // One view's rays through the tetrahedra, binned by image tile: trace() tile by tile, for callers
+  // that walk several tracers' segments of the same pixels together (raycast/volume_union.hpp).
+  class View {
+   public:
+    static constexpr int kTile = 16;  // tiles of kTile x kTile pixels
+    View(const CellRayTracer& tracer, const Camera& camera, int width, int height);
+    int tiles() const { return tiles_x_ * tiles_y_; }
+    // lists[p] and rays[p] (p = (j - tile's j0) * kTile + i - tile's i0, kTile * kTile of each): the
+    // segments of pixel p's ray sorted front to back, and the ray in the tracer's recentred frame.
+    void tile_segments(int tile, const double* scalar, std::vector<RaySegment>* lists, Ray* rays) const;
+    // f(i, j, p) for the image's pixels in `tile`.
+    template <class F>
+    void for_each_pixel(int tile, F&& f) const {
+      const int i0 = (tile % tiles_x_) * kTile, j0 = (tile / tiles_x_) * kTile;
+      for (int j = j0; j < std::min(j0 + kTile, height_); ++j)
+        for (int i = i0; i < std::min(i0 + kTile, width_); ++i) f(i, j, (j - j0) * kTile + (i - i0));
+    }
+
+   private:
+    struct PixelBox {
+      int x0, x1, y0, y1;  // inclusive pixel ranges; empty when x0 > x1
+    };
+    const CellRayTracer* tracer_;
+    PixelRays rays_;
+    int width_, height_, tiles_x_, tiles_y_;
+    std::vector<PixelBox> box_;         // per tetrahedron
+    std::vector<std::int64_t> start_;   // per tile, into binned_
+    std::vector<std::uint32_t> binned_;  // tetrahedra by tile
+  };
 
   // The gradient of the point field `scalar` in tetrahedron `tet` (a RaySegment's), constant there.
   glm::dvec3 gradient(std::uint32_t tet, const double* scalar) const;

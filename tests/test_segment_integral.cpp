@@ -1,5 +1,6 @@
 // The segment integral against closed forms (Max 1995, Williams and Max 1992).
 #include <cmath>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -122,4 +123,76 @@ TEST(PolynomialSegment, QuadraticScalarCrossingABreakpointTwice) {
   depth *= L / n / 3;
   EXPECT_NEAR(got.depth, depth, 1e-8);
   for (int k = 0; k < 3; ++k) EXPECT_NEAR(got.rgb[k], want[k], 1e-7);
+}
+
+namespace {
+
+// Overlapping media integrated by brute force: composite Simpson on the ray, the optical depth by
+// the trapezoid rule on the same fine grid (independent of the Gauss-Legendre pieces).
+SegmentLight brute_force_overlap(double L, const std::vector<MediumSegment>& media, int n = 400000) {
+  const double h = L / n;
+  auto kappa_and_emission = [&](double t, glm::dvec3& e) {
+    double k = 0.0;
+    e = glm::dvec3(0.0);
+    for (const MediumSegment& m : media) {
+      const double s = m.s0 + t / L * (m.s1 - m.s0);
+      k += m.tf->extinction(s);
+      e += m.tf->extinction(s) * m.tf->color(s);
+    }
+    return k;
+  };
+  SegmentLight out;
+  glm::dvec3 e_prev;
+  double k_prev = kappa_and_emission(0.0, e_prev), tau = 0.0;
+  glm::dvec3 sum = e_prev * (h / 3);
+  for (int i = 1; i <= n; ++i) {
+    glm::dvec3 e;
+    const double k = kappa_and_emission(i * h, e);
+    tau += 0.5 * h * (k + k_prev);
+    k_prev = k;
+    sum += (i == n ? 1.0 : i % 2 ? 4.0 : 2.0) * (h / 3) * e * std::exp(-tau);
+  }
+  out.rgb = sum;
+  out.depth = tau;
+  return out;
+}
+
+}  // namespace
+
+TEST(MediaIntegral, OneMediumIsTheLinearReference) {
+  const LinearMedium m{0.3, 2.5, {0.1, 0.6, 0.9}, {0.8, 0.2, 0.4}};
+  const SegmentLight a = integrate_media_reference(1.7, &m, 1);
+  const SegmentLight b = integrate_linear_reference(1.7, m.k0, m.k1, m.c0, m.c1);
+  EXPECT_NEAR(a.depth, b.depth, 1e-15);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(a.rgb[c], b.rgb[c], 1e-14);
+}
+
+TEST(MediaIntegral, ConstantMediaMatchTheClosedForm) {
+  // Two constant media: depth (ka + kb) L, light (ka ca + kb cb) / (ka + kb) (1 - e^-depth).
+  for (double L : {1e-6, 0.3, 2.0, 30.0}) {
+    const LinearMedium m[2] = {{0.7, 0.7, {1, 0, 0}, {1, 0, 0}}, {2.1, 2.1, {0, 0.5, 1}, {0, 0.5, 1}}};
+    const SegmentLight s = integrate_media_reference(L, m, 2);
+    const double depth = 2.8 * L, a = -std::expm1(-depth);
+    const glm::dvec3 want = (0.7 * glm::dvec3(1, 0, 0) + 2.1 * glm::dvec3(0, 0.5, 1)) / 2.8 * a;
+    EXPECT_NEAR(s.depth, depth, 1e-14 * depth);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.rgb[c], want[c], 1e-12 * std::max(a, 1e-300)) << L;
+  }
+}
+
+TEST(MediaIntegral, OverlapWithBreakpointsMatchesBruteForce) {
+  // Two transfer functions with breakpoints at different scalars, the scalars running opposite ways.
+  const TransferFunction a({{0, {1, 0, 0}}, {0.4, {1, 1, 0}}, {1, {0, 1, 0}}}, {{0, 0.0}, {0.5, 3.0}, {1, 0.5}});
+  const TransferFunction b({{0, {0, 0, 1}}, {1, {1, 1, 1}}}, {{0, 1.0}, {0.25, 0.0}, {0.7, 2.0}, {1, 2.0}});
+  const std::vector<MediumSegment> media = {{&a, 0.05, 0.95}, {&b, 0.9, 0.1}};
+  for (double L : {0.2, 1.5, 6.0}) {
+    const SegmentLight s = integrate_overlap_reference(L, media.data(), media.size());
+    const SegmentLight r = brute_force_overlap(L, media);
+    EXPECT_NEAR(s.depth, r.depth, 1e-9) << L;
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(s.rgb[c], r.rgb[c], 1e-9) << L;
+  }
+  // Overlap with one medium is that medium's segment integral.
+  const SegmentLight one = integrate_overlap_reference(1.5, media.data(), 1);
+  const SegmentLight ref = integrate_segment_reference(a, 1.5, 0.05, 0.95);
+  EXPECT_NEAR(one.depth, ref.depth, 1e-13);
+  for (int c = 0; c < 3; ++c) EXPECT_NEAR(one.rgb[c], ref.rgb[c], 1e-13);
 }
