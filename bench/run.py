@@ -167,6 +167,19 @@ def measure(bench, name, scene, mesh, info, size, peers):
         bench.add(**base, method=f"slicing-{integral}", sort=f"{n} slices", median_seconds=st["frame_seconds"],
                   min_seconds=st["min_frame_seconds"], max_seconds=st["max_frame_seconds"],
                   cells_per_second=cells / st["frame_seconds"], rmse=e[0], max_abs=e[1], violations="")
+    # Iso-surfaces with the volume (methods.md): two semi-transparent surfaces at 45% and 70% of the
+    # field's range, each --iso-mode against ordered (the exact order along each ray).
+    with open(scene) as f:
+        field = json.load(f).get("field")
+    lo, hi = info["fields"][field] if field else next(iter(info["fields"].values()))
+    iso = ["--iso", f"{lo + 0.45 * (hi - lo)}:0.3,0.5,1,0.35", "--iso", f"{lo + 0.7 * (hi - lo)}:1,0.5,0.2,0.5"]
+    _, ordered = bench.render(scene, f"{tag}_iso_ordered", "exact", size, 1, iso)
+    for mode in ("ordered", "blend2", "oit3", "oit4"):
+        st, npy = bench.render(scene, f"{tag}_iso_{mode}", "exact", size, 1, iso + ["--iso-mode", mode])
+        e = error(npy, ordered)
+        t = st["frame_seconds"]
+        bench.add(**base, method=f"exact-iso-{mode}", sort="vs ordered", median_seconds=t, min_seconds=t,
+                  max_seconds=t, cells_per_second=cells / t, rmse=e[0], max_abs=e[1], violations="")
     if not peers or not mesh.endswith(".vtu"):
         return
     for method, mapper in PEERS.items():

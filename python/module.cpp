@@ -12,6 +12,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
+#include "grid/clip.hpp"
 #include "grid/time_series.hpp"
 #include "optics/colormaps.hpp"
 #include "python/numpy_mesh.hpp"
@@ -22,6 +23,7 @@
 #include "scene/render_options.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/transfer_function_json.hpp"
+#include "scene/volume_scene.hpp"
 
 namespace py = pybind11;
 using namespace cellproj;
@@ -257,7 +259,8 @@ PYBIND11_MODULE(_cellproj, m) {
          const std::string& view, const std::string& method, int threads, std::optional<double> time,
          const py::kwargs& kwargs) {
         Scene scene = load_scene(path);
-        RenderOptions options = options_from(method, kwargs);
+        // Several volumes are drawn by the exact renderer, its default there (render/volume_set.hpp).
+        RenderOptions options = options_from(method.empty() ? scene.volumes.size() > 1 ? "exact" : "pt-breakpoints" : method, kwargs);
         for (const std::string& w : apply_scene_options(scene, options))
           PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(options));
@@ -269,9 +272,24 @@ PYBIND11_MODULE(_cellproj, m) {
           scene.camera.reset();
           scene.view = view;
         }
+        if (scene.volumes.size() > 1) {  // as `cellproj render` of such a scene
+          if (!field.empty()) throw InputError(path + " has several volumes: give each volume's \"field\" in the scene");
+          if (time) throw InputError(path + " has several volumes: time series take one mesh");
+          const auto volume_given = std::find(options.given.begin(), options.given.end(), "volume") != options.given.end();
+          const RenderSettings settings = settings_from(options);
+          py::gil_scoped_release release;
+          const VolumeScene volumes(
+              scene, [](const SceneVolume& v) { return load_mesh(v.mesh, v.reader); },
+              volume_given ? std::optional<bool>(settings.iso.volume) : std::nullopt);
+          tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
+          Image image = arena.execute([&] { return render_volumes(volumes.entries(), settings, volumes.camera(), image_size); });
+          py::gil_scoped_acquire acquire;
+          return to_numpy(std::move(image));
+        }
         // A time series (the scene's mesh a .pvd, a pattern, or an Exodus file given a time): the
         // field at `time`, interpolated between key frames, as `cellproj render --time`.
         if (time || is_series_path(scene.mesh)) {
+          if (!scene.clip.empty()) throw InputError(where(path, "clipping planes do not go with a time series yet"));
           struct Played {
             std::unique_ptr<SeriesPlayer> player;
             PreparedScene prepared;
@@ -291,19 +309,22 @@ PYBIND11_MODULE(_cellproj, m) {
           const Field f{p.frame.field.data(), static_cast<std::int64_t>(p.frame.field.size()), p.player->field_name()};
           return to_numpy(render_frame(*renderer, volume, f, p.prepared.tf, p.prepared.camera, image_size, threads));
         }
-        const PreparedScene prepared = [&] {
+        PreparedScene prepared = [&] {
           py::gil_scoped_release release;
           return prepare_scene(scene);
         }();
-        const Mesh& mesh = prepared.loaded.mesh;
+        // Clipped after preparing, as the CLI does: colours and framing are the whole mesh's.
+        const Mesh mesh = scene.clip.empty() ? std::move(prepared.loaded.mesh) : clip_mesh(prepared.loaded.mesh, scene.clip);
+        if (mesh.n_cells() == 0)
+          throw InputError(where(path, "nothing of the mesh is on the kept side of the clipping planes"));
         const Volume volume(mesh.view(), {/*trusted: load_mesh validated it*/ true});
         return to_numpy(render_frame(*renderer, volume, field_of(mesh, prepared.field), prepared.tf, prepared.camera,
                                      image_size, threads));
       },
       py::arg("path"), py::arg("size") = py::none(), py::arg("field") = "", py::arg("view") = "",
-      py::arg("method") = "pt-breakpoints", py::arg("threads") = 0, py::arg("time") = py::none(),
+      py::arg("method") = "", py::arg("threads") = 0, py::arg("time") = py::none(),
       "Renders a scene file as `cellproj render SCENE` does (the same array as its --npy); time=T for a time "
-      "series, as --time T");
+      "series, as --time T; method defaults as the CLI's: pt-breakpoints, or exact for a scene of several volumes");
 
   m.def(
       "write_png",

@@ -21,6 +21,7 @@ struct IsoStats {
   std::int64_t surface_crossings = 0;  // crossings of the surfaces, on all rays
   double fit_max_error = 0.0;          // spectrum-fit: the largest opacity error of the fit, over the surfaces
   std::string fit_exponents;           // spectrum-fit: each surface's exponent p, comma-separated
+  std::int64_t overlap_pieces = 0;     // several volumes: pieces of ray inside two or more of them
 };
 
 // The picture of `options` (premultiplied RGBA without background, as every renderer's). The

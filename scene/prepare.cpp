@@ -86,6 +86,31 @@ LoadedMesh first_key_frame(SeriesPlayer& player) {
   return loaded;
 }
 
+PreparedVolumes prepare_volumes(const Scene& s, const std::function<LoadedMesh(const SceneVolume&)>& read) {
+  std::vector<LoadedMesh> loaded;
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (const SceneVolume& v : s.volumes) {
+    loaded.push_back(read(v));
+    const auto [blo, bhi] = bounds(loaded.back().mesh);
+    lo = glm::min(lo, blo), hi = glm::max(hi, bhi);
+  }
+  PreparedVolumes out;
+  out.camera = s.camera ? *s.camera : view_camera(s.view, lo, hi, double(s.width) / s.height);
+  check_camera(out.camera, where(s.source, "the camera framing the volumes' bounds"));
+  for (std::size_t k = 0; k < s.volumes.size(); ++k) {
+    const SceneVolume& v = s.volumes[k];
+    Scene one = s;  // the volume as a scene of its own, seen by the common camera
+    one.volumes.clear();
+    one.mesh = v.mesh, one.reader = v.reader, one.field = v.field, one.transfer_function = v.transfer_function;
+    one.camera = out.camera;
+    one.source = s.source + ": volumes[" + std::to_string(k) + "]";
+    out.volumes.push_back(prepare_scene(one, std::move(loaded[k])));
+    for (std::string& w : out.volumes.back().warnings) out.warnings.push_back(std::move(w));
+    out.volumes.back().warnings.clear();
+  }
+  return out;
+}
+
 PreparedScene prepare_scene(const Scene& s) { return prepare_scene(s, load_mesh(s.mesh, s.reader)); }
 
 PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {

@@ -1,6 +1,7 @@
 #pragma once
 // A scene made ready to render: the mesh loaded and validated, the field picked and checked, the
 // transfer function parsed against the field's range, the camera chosen.
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -25,6 +26,16 @@ struct PreparedScene {
 PreparedScene prepare_scene(const Scene& scene);
 // The same with the scene's mesh already read (as `cellproj render MESH` does, to make its scene).
 PreparedScene prepare_scene(const Scene& scene, LoadedMesh loaded);
+
+// A scene of several volumes (Scene::volumes) made ready: each volume prepared as a scene of its
+// own (its field, its transfer function over its field's range), all with one camera, the scene's
+// or one framing the union of their bounds. read(volume) reads each mesh (e.g. load_mesh).
+struct PreparedVolumes {
+  std::vector<PreparedScene> volumes;  // in the scene's order; each one's camera is `camera`
+  Camera camera;
+  std::vector<std::string> warnings;
+};
+PreparedVolumes prepare_volumes(const Scene& scene, const std::function<LoadedMesh(const SceneVolume&)>& read);
 
 // A time series' first key frame as a mesh to prepare its scene from (colours and framing come from
 // it whatever the time rendered): its points and the player's field; the cells stay with the player,

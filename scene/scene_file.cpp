@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cerrno>
+#include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <sstream>
@@ -218,34 +219,86 @@ std::vector<std::pair<std::string, std::string>> iso_options_from_json(const nlo
   return o;
 }
 
+// "reader": {"format": ..., "q_file": ..., "zone": ..., "time_step": ...}
+ReadOptions reader_from_json(const nlohmann::json& r, const std::string& at, const std::string& base_dir) {
+  ReadOptions o;
+  if (!r.is_object()) throw InputError(at + ": expected an object");
+  only_keys(r, at, {"format", "q_file", "zone", "time_step"});
+  if (r.contains("format")) o.format = text(r["format"], at + ".format");
+  if (r.contains("q_file")) {
+    fs::path q = text(r["q_file"], at + ".q_file");
+    o.q_file = q.is_relative() ? (fs::path(base_dir) / q).string() : q.string();
+  }
+  if (r.contains("zone")) o.zone = text(r["zone"], at + ".zone");
+  if (r.contains("time_step")) o.time_step = positive_int(r["time_step"], at + ".time_step", 1 << 30, 0);
+  return o;
+}
+
+std::string resolved(const nlohmann::json& v, const std::string& at, const std::string& base_dir) {
+  const fs::path p = text(v, at);
+  return p.is_relative() ? (fs::path(base_dir) / p).lexically_normal().string() : p.string();
+}
+
+// One entry of "volumes": {"mesh", "reader", "field", "transfer_function", "iso", "volume"}.
+SceneVolume volume_from_json(const nlohmann::json& v, const std::string& at, const std::string& base_dir) {
+  SceneVolume out;
+  if (!v.contains("mesh")) throw InputError(at + ": missing \"mesh\" (the mesh file)");
+  out.mesh = resolved(v["mesh"], at + ".mesh", base_dir);
+  if (v.contains("reader")) out.reader = reader_from_json(v["reader"], at + ".reader", base_dir);
+  if (v.contains("field")) out.field = text(v["field"], at + ".field");
+  if (!v.contains("transfer_function")) throw InputError(at + ": missing \"transfer_function\"");
+  out.transfer_function = v["transfer_function"];
+  // Its iso-surfaces and "volume" by the parser of the top-level ones (and of --iso, --volume).
+  RenderOptions o;
+  o.method = "exact";
+  for (const auto& [name, value] : iso_options_from_json(v, at)) set_option(o, name, value);
+  const IsoOptions iso = settings_from(o).iso;
+  out.iso = iso.surfaces;
+  out.volume = iso.volume;
+  return out;
+}
+
 }  // namespace
 
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
   only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers", "clip", "iso",
-                      "iso_mode", "iso_opacity", "volume"});
+                      "iso_mode", "iso_opacity", "volume", "volumes"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
-  if (!j.contains("mesh")) throw InputError(where(path, "missing \"mesh\" (the mesh file)"));
-  fs::path mesh = text(j["mesh"], path + ": mesh");
-  s.mesh = mesh.is_relative() ? (fs::path(s.base_dir) / mesh).lexically_normal().string() : mesh.string();
-  if (j.contains("reader")) {
-    const auto& r = j["reader"];
-    const std::string at = path + ": reader";
-    if (!r.is_object()) throw InputError(at + ": expected an object");
-    only_keys(r, at, {"format", "q_file", "zone", "time_step"});
-    if (r.contains("format")) s.reader.format = text(r["format"], at + ".format");
-    if (r.contains("q_file")) {
-      fs::path q = text(r["q_file"], at + ".q_file");
-      s.reader.q_file = q.is_relative() ? (fs::path(s.base_dir) / q).string() : q.string();
+  if (j.contains("volumes")) {
+    for (const char* key : {"mesh", "reader", "field", "transfer_function", "iso", "volume", "layers"})
+      if (j.contains(key))
+        throw InputError(path + ": " + key + ": with a \"volumes\" list, give it inside each volume" +
+                         (std::string(key) == "layers" ? " (--method layers draws one mesh)" : ""));
+    each_object(j, "volumes", path, "{\"mesh\": ..., \"transfer_function\": ...}",
+                {"mesh", "reader", "field", "transfer_function", "iso", "volume"},
+                [&](const nlohmann::json& v, const std::string& at) { s.volumes.push_back(volume_from_json(v, at, s.base_dir)); });
+    if (s.volumes.empty()) throw InputError(path + ": volumes: the list is empty");
+    const SceneVolume& first = s.volumes.front();
+    s.mesh = first.mesh, s.reader = first.reader, s.field = first.field, s.transfer_function = first.transfer_function;
+    if (s.volumes.size() == 1) {  // one volume: the ordinary scene
+      for (const IsoSurface& iso : first.iso) {
+        char text[160];
+        if (iso.color_given)
+          std::snprintf(text, sizeof text, "%.17g:%.17g,%.17g,%.17g,%.17g", iso.value, iso.color.r, iso.color.g,
+                        iso.color.b, iso.opacity);
+        else
+          std::snprintf(text, sizeof text, "%.17g", iso.value);
+        s.iso_options.emplace_back("iso", text);
+      }
+      if (!first.volume) s.iso_options.emplace_back("volume", "off");
+      s.volumes.clear();
     }
-    if (r.contains("zone")) s.reader.zone = text(r["zone"], at + ".zone");
-    if (r.contains("time_step")) s.reader.time_step = positive_int(r["time_step"], at + ".time_step", 1 << 30, 0);
   }
+  if (!j.contains("mesh") && s.mesh.empty()) throw InputError(where(path, "missing \"mesh\" (the mesh file)"));
+  if (j.contains("mesh")) s.mesh = resolved(j["mesh"], path + ": mesh", s.base_dir);
+  if (j.contains("reader")) s.reader = reader_from_json(j["reader"], path + ": reader", s.base_dir);
   if (j.contains("field")) s.field = text(j["field"], path + ": field");
-  if (!j.contains("transfer_function")) throw InputError(where(path, "missing \"transfer_function\""));
-  s.transfer_function = j["transfer_function"];
+  if (!j.contains("transfer_function") && s.transfer_function.is_null())
+    throw InputError(where(path, "missing \"transfer_function\""));
+  if (j.contains("transfer_function")) s.transfer_function = j["transfer_function"];
   if (j.contains("camera")) s.camera = camera_from_json(j["camera"], path);
   each_object(j, "clip", path, "{\"point\": [x, y, z], \"normal\": [x, y, z]}", {"point", "normal"},
               [&](const nlohmann::json& p, const std::string& at) {
@@ -262,7 +315,7 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
                 s.clip.push_back(plane);
               });
   if (j.contains("layers")) s.layer_options = layer_options_from_json(j["layers"], path + ": layers");
-  s.iso_options = iso_options_from_json(j, path);
+  for (auto& o : iso_options_from_json(j, path)) s.iso_options.push_back(std::move(o));
   if (j.contains("image")) {
     const auto& im = j["image"];
     const std::string at = path + ": image";

@@ -10,11 +10,23 @@
 
 #include "grid/clip.hpp"
 #include "grid/read_mesh.hpp"
+#include "raycast/iso_options.hpp"
 #include "scene/render_options.hpp"
 #include "scene/camera_json.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {
+
+// One volume of a scene of several (docs/scene.md, "Several volumes"): its mesh, field, transfer
+// function and iso-surfaces.
+struct SceneVolume {
+  std::string mesh;  // resolved against the scene file's folder
+  ReadOptions reader;
+  std::string field;                 // empty: the mesh's only field
+  nlohmann::json transfer_function;  // parsed once the field's range is known
+  std::vector<IsoSurface> iso;       // without a colour: this volume's transfer function's at the value
+  bool volume = true;                // its transfer function's volume drawn, else its iso-surfaces alone
+};
 
 struct Scene {
   std::string source;  // the scene file, for messages
@@ -34,6 +46,9 @@ struct Scene {
   // besides the volume unless the command line says otherwise.
   std::vector<std::pair<std::string, std::string>> iso_options;
   std::vector<ClipPlane> clip;  // the mesh clipped by these planes before any method draws it
+  // A "volumes" list: the volumes drawn together (mesh, reader, field and transfer_function above
+  // are then the first one's, and iso_options holds the list's iso_mode and iso_opacity only).
+  std::vector<SceneVolume> volumes;
 };
 
 // Throws InputError naming the file and the key for unknown keys, wrong types and missing keys.

@@ -330,6 +330,24 @@ sed 's/"cellproj_partition": 1/"cellproj_partition": 7/' "$tmp/parts/good.json" 
 expect 1 "partition.json: not a cellproj partition index" -- render "$tmp/parts"
 printf '{"cellproj_partition": 1, "source": "x"' > "$tmp/parts/partition.json"
 expect 1 "partition.json: malformed partition index" -- render "$tmp/parts"
+# Several volumes in one scene (docs/scene.md, "Several volumes"): drawn by exact (the default there),
+# a volume list of one is the ordinary scene, and what does not go with several volumes is refused.
+"$exe" generate box-tets -n 3 -o "$tmp/bt.vtu" >/dev/null
+echo '{"volumes": [{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 0.5, 0]], "extinction": [[0, 1]]}}, {"mesh": "bt.vtu", "transfer_function": {"color": [[0, 0, 0.5, 1]], "extinction": [[0, 2]]}, "iso": [{"value": 0.5, "color": [1, 0, 0], "opacity": 0.5}]}], "iso_mode": "oit4"}' > "$tmp/two.json"
+expect 0 "wrote .*two.png \(32x24, 2 volumes, exact" -- render "$tmp/two.json" --size 32x24 -o "$tmp/two.png" --stats
+grep -q '"overlap_pieces":[1-9]' "$tmp/err" && grep -q '"iso_mode":"oit4"' "$tmp/err" || { echo "FAIL: --stats of two volumes"; failed=$((failed+1)); }
+expect 0 "wrote" -- render "$tmp/two.json" --size 32x24 -o "$tmp/two_o.png" --frames 2 --orbit 90 --clip 0,0,0,1,0,0 --iso-mode ordered --volume off
+expect 2 "--method pt-linear draws one mesh; .*two.json has 2 volumes, drawn together by --method exact" -- render "$tmp/two.json" --method pt-linear
+expect 2 "--iso: .*two.json has 2 volumes: give each volume's iso-surfaces in its \"iso\" list" -- render "$tmp/two.json" --iso 0.3
+expect 2 "--field: .*two.json has 2 volumes" -- render "$tmp/two.json" --field scalar
+expect 2 "--time and --animate: .*two.json has 2 volumes" -- render "$tmp/two.json" --time 1
+sed 's/"bt.vtu"/"nothere.vtu"/' "$tmp/two.json" > "$tmp/missing2.json"
+expect 1 "nothere.vtu: no such file" -- render "$tmp/missing2.json"
+sed 's/"iso_mode": "oit4"/"mesh": "box.vtu"/' "$tmp/two.json" > "$tmp/both.json"
+expect 1 "both.json: mesh: with a \"volumes\" list, give it inside each volume" -- render "$tmp/both.json"
+sed 's/"opacity": 0.5/"opacity": 5/' "$tmp/two.json" > "$tmp/badvol.json"
+expect 1 "badvol.json: volumes\[1\]: --iso: the opacity must be in \[0, 1\]" -- render "$tmp/badvol.json"
+expect 1 "nothing of the volumes is on the kept side" -- render "$tmp/two.json" --clip 0,0,-5,0,0,1 --size 16x16 -o "$tmp/c5.png"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

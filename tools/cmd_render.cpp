@@ -28,6 +28,7 @@
 #include "tools/progress.hpp"
 #include "tools/render_distributed.hpp"
 #include "tools/render_input.hpp"
+#include "tools/render_volumes.hpp"
 #include "tools/timing.hpp"
 
 namespace cellproj {
@@ -43,6 +44,10 @@ int run_render(const RenderArgs& given) {
   std::optional<Scene> scene_read;
   if (is_scene_file(a.input) && std::filesystem::is_regular_file(a.input)) try {
       scene_read = load_scene(a.input);
+      // Several volumes are drawn by the exact renderer (render/volume_set.hpp): its default there.
+      const bool method_given =
+          std::find(a.options.given.begin(), a.options.given.end(), "method") != a.options.given.end();
+      if (scene_read->volumes.size() > 1 && !method_given) a.options.method = "exact";
       for (const std::string& w : apply_scene_options(*scene_read, a.options))
         std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
     } catch (const InputError&) {
@@ -65,6 +70,11 @@ int run_render(const RenderArgs& given) {
   if (!levels.empty() && (a.time || !a.animate.empty()))
     throw UsageError("--progressive renders one mesh: it does not go with --time or --animate");
   const Communicator world = Communicator::world();
+  if (scene_read && scene_read->volumes.size() > 1) {
+    check_volume_scene(a, *scene_read);
+    if (world.size > 1) throw UsageError(a.input + " has several volumes: render it in one process, not over MPI");
+    return render_volume_scene(a, std::move(*scene_read), settings);
+  }
   if (is_distributed(a, world)) check_distributed(a, settings);
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");

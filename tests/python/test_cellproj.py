@@ -193,3 +193,30 @@ def test_a_scenes_iso_list_is_what_exact_draws_from_python_and_the_cli(tmp_path)
     assert np.array_equal(image, same)
     with pytest.warns(UserWarning, match="iso-surfaces are drawn by --method exact"):
         cellproj.render_scene(str(scene), size=(16, 16))
+
+
+def test_a_scene_of_two_volumes_and_a_clipped_scene_equal_the_cli(tmp_path):
+    subprocess.run([EXE, "generate", "box-tets", "-n", "4", "-o", str(tmp_path / "a.vtu")], check=True,
+                   capture_output=True)
+    subprocess.run([EXE, "generate", "swirl", "-n", "4", "-o", str(tmp_path / "b.vtu")], check=True,
+                   capture_output=True)
+    tf = '{"color": [[0, 0.2, 0.4, 1], [1.1, 1, 0.8, 0.2]], "extinction": [[0, 0.5], [1.1, 4]]}'
+    two = tmp_path / "two.json"
+    two.write_text('{"volumes": [{"mesh": "a.vtu", "transfer_function": %s},'
+                   ' {"mesh": "b.vtu", "transfer_function": %s, "iso": [{"value": 0.5, "color": [1, 0, 0],'
+                   ' "opacity": 0.4}]}], "iso_mode": "oit3", "clip": [{"point": [0, 0, 0.2], "normal": [0, 0, 1]}]}'
+                   % (tf, tf))
+    image = cellproj.render_scene(str(two), size=(40, 32))
+    assert image[..., 3].max() > 0.3
+    assert np.array_equal(image, cli(tmp_path, str(two), "--size", "40x32"))
+    with pytest.raises(cellproj.InputError, match="several volumes"):
+        cellproj.render_scene(str(two), size=(8, 8), field="scalar")
+    # One mesh with a clipping plane: clipped as the CLI clips it, not drawn whole.
+    one = tmp_path / "one.json"
+    one.write_text('{"mesh": "a.vtu", "transfer_function": %s, "clip": [{"point": [0, 0, 0.2], "normal": [1, 0, 1]}]}'
+                   % tf)
+    clipped = cellproj.render_scene(str(one), size=(40, 32))
+    assert np.array_equal(clipped, cli(tmp_path, str(one), "--size", "40x32"))
+    whole = tmp_path / "whole.json"
+    whole.write_text('{"mesh": "a.vtu", "transfer_function": %s}' % tf)
+    assert not np.array_equal(clipped, cellproj.render_scene(str(whole), size=(40, 32)))
