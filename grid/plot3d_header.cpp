@@ -22,6 +22,8 @@ class Ints {
     in_.read(reinterpret_cast<char*>(b), 4);
     big_ = b[0] == 0 && b[3] != 0;  // VTK's test: a small first count or dimension, its high byte first
   }
+  Ints(const std::string& path, std::uint64_t size, bool big_endian)  // the order given (a q file's is its grid's)
+      : in_(path, std::ios::binary), size_(size), big_(big_endian) {}
   bool big_endian() const { return big_; }
   // The integer at byte `at`, or nullopt past the end of the file.
   std::optional<std::int64_t> at(std::uint64_t at) {
@@ -86,6 +88,15 @@ bool read_dims(Ints& ints, std::uint64_t at, std::int64_t grids, int ndims, Grid
 }  // namespace
 
 std::optional<HeaderCounts> plot3d_counts(const std::string& path) {
+  const std::optional<Plot3dLayout> layout = plot3d_layout(path);
+  if (!layout) return std::nullopt;
+  Grids g;
+  g.ndims = layout->ndims;
+  g.dims = layout->dims;
+  return counts_of(g);
+}
+
+std::optional<Plot3dLayout> plot3d_layout(const std::string& path) {
   std::error_code ec;
   const std::uint64_t size = std::filesystem::file_size(path, ec);
   if (ec) return std::nullopt;  // the reader names what is wrong with the file itself
@@ -132,7 +143,7 @@ std::optional<HeaderCounts> plot3d_counts(const std::string& path) {
             throw refuse("its dimensions, the first grid " + std::to_string(g.dims[0][0]) + " x " +
                          std::to_string(g.dims[0][1]) + " x " + std::to_string(g.dims[0][2]) + ", need " +
                          std::to_string(file_bytes(g, precision, iblank, true)) + " bytes");
-          return counts_of(g);
+          return Plot3dLayout{ints.big_endian(), true, multi, iblank, precision, g.ndims, g.dims};
         }
     throw refuse("the first grid's coordinate record is " + (record ? std::to_string(*record) : std::string("missing")) +
                  " bytes long, which no precision (4 or 8 bytes) with or without IBLANK gives for its " +
@@ -151,12 +162,51 @@ std::optional<HeaderCounts> plot3d_counts(const std::string& path) {
       if (!read_dims(ints, multi ? 4 : 0, grids, ndims, c)) continue;
       for (int precision : {4, 8})
         for (bool iblank : {false, true})
-          if (file_bytes(c, precision, iblank, false) == size) return counts_of(c);
+          if (file_bytes(c, precision, iblank, false) == size)
+            return Plot3dLayout{ints.big_endian(), false, multi, iblank, precision, c.ndims, c.dims};
     }
   }
   const auto d = [&](std::uint64_t at) { const auto v = ints.at(at); return v ? std::to_string(*v) : "?"; };
   throw refuse("no layout without record markers fits: read as one grid it declares " + d(0) + " x " + d(4) + " x " +
                d(8) + " points, as several " + d(0) + " grids");
+}
+
+void check_plot3d_q(const std::string& q, const Plot3dLayout& grid) {
+  std::error_code ec;
+  const std::uint64_t size = std::filesystem::file_size(q, ec);
+  if (ec) return;  // the reader names what is wrong with the file itself
+  Ints ints(q, size, grid.big_endian);
+  const auto refuse = [&](const std::string& what) {
+    return InputError(where(q, "PLOT3D solution (q) file: truncated or corrupt: " + what + "; the file has " +
+                                   std::to_string(size) + " bytes"));
+  };
+  const std::uint64_t marker = grid.records ? 4 : 0;  // a Fortran record's length, before and after it
+  std::uint64_t at = marker;
+  const std::int64_t grids = static_cast<std::int64_t>(grid.dims.size());
+  if (grid.multi_grid) {
+    const auto n = ints.at(at);
+    if (!n || *n != grids)
+      throw refuse("its grid count is " + (n ? std::to_string(*n) : std::string("missing")) + ", the grid file has " +
+                   std::to_string(grids));
+    at += 4 + 2 * marker;
+  }
+  for (std::int64_t k = 0; k < grids; ++k)
+    for (int a = 0; a < grid.ndims; ++a, at += 4) {
+      const auto v = ints.at(at);
+      if (!v || *v != grid.dims[k][a])
+        throw refuse("grid " + std::to_string(k + 1) + "'s dimension " + std::to_string(a + 1) + " is " +
+                     (v ? std::to_string(*v) : std::string("missing")) + ", the grid file's is " +
+                     std::to_string(grid.dims[k][a]));
+    }
+  at += marker;
+  // Per grid: the properties record (Mach number, angle of attack, Reynolds number, time), then
+  // density, ndims momentum components and energy per point (VTK's ReadQHeader and its data loop).
+  double need = double(at);
+  for (const auto& d : grid.dims)
+    need += double(4 * grid.precision + 2 * marker) + double(points(d)) * (grid.ndims + 2) * grid.precision + 2 * marker;
+  if (need > double(size))
+    throw refuse("its " + std::to_string(grids) + " grid(s) of " + std::to_string(grid.ndims + 2) + " variables need " +
+                 std::to_string(static_cast<std::uint64_t>(std::min(need, 4.6e18))) + " bytes");
 }
 
 }  // namespace cellproj

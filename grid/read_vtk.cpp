@@ -490,10 +490,12 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     return run(r.Get(), path, messages, o.zone);
   }
   if (format == "plot3d") {
-    plot3d_counts(path);  // a header no layout of the file fits is refused before VTK reads it
+    // A header no layout of the file fits, or a q file that does not match it, is refused before VTK reads them.
+    const std::optional<Plot3dLayout> layout = plot3d_layout(path);
     auto r = vtkSmartPointer<vtkMultiBlockPLOT3DReader>::New();
     r->SetXYZFileName(path.c_str());
     const std::string q = plot3d_q_file(path, o);
+    if (layout && !q.empty()) check_plot3d_q(q, *layout);
     if (!q.empty()) r->SetQFileName(q.c_str());
     r->AutoDetectFormatOn();
     if (!q.empty()) {

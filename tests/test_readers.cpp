@@ -370,7 +370,42 @@ std::string plot3d(int n0, int n1, int n2, bool fortran) {
   return out;
 }
 
+// Its solution (q) file in the same layout: the 4 properties, then density 1, momentum (i, 0, 0)
+// and energy 3 per point.
+std::string plot3d_q(int n0, int n1, int n2, bool fortran) {
+  std::string out;
+  const auto put = [&](auto v) { out.append(reinterpret_cast<const char*>(&v), sizeof v); };
+  const int n = n0 * n1 * n2;
+  if (fortran) put(4), put(1), put(4), put(12);
+  put(n0), put(n1), put(n2);
+  if (fortran) put(12), put(16);
+  for (float v : {0.5f, 0.0f, 1000.0f, 0.0f}) put(v);
+  if (fortran) put(16), put(n * 20);
+  for (int var = 0; var < 5; ++var)
+    for (int p = 0; p < n; ++p) put(var == 0 ? 1.0f : var == 1 ? float(p % n0) : var == 4 ? 3.0f : 0.0f);
+  if (fortran) put(n * 20);
+  return out;
+}
+
 }  // namespace
+
+TEST(Plot3d, ASolutionFileIsCheckedAgainstItsGridBeforeVtkReadsIt) {
+  test::TempDir dir;
+  for (bool fortran : {false, true}) {
+    const std::string xyz = dir.file(fortran ? "fxyz.bin" : "cxyz.bin"), q = dir.file(fortran ? "fq.bin" : "cq.bin");
+    spit(xyz, plot3d(4, 3, 2, fortran));
+    const std::string good = plot3d_q(4, 3, 2, fortran);
+    spit(q, good);
+    const Mesh m = read_mesh(xyz);  // the q file found by its name
+    ASSERT_NE(m.find_field("Density"), nullptr) << fortran;
+    EXPECT_EQ(m.field("Density").values.size(), 24u);
+    spit(q, good.substr(0, good.size() - 30));  // cut short
+    EXPECT_NE(read_error(xyz).find(q + ": PLOT3D solution (q) file: truncated or corrupt: its 1 grid(s) of 5 variables need"),
+              std::string::npos) << read_error(xyz);
+    spit(q, plot3d_q(4, 3, 3, fortran));  // another grid's solution
+    EXPECT_NE(read_error(xyz).find("grid 1's dimension 3 is 3, the grid file's is 2"), std::string::npos) << read_error(xyz);
+  }
+}
 
 TEST(Plot3d, TheHeaderIsMatchedAsVtkDetectsItAndCorruptOnesAreRefusedFirst) {
   test::TempDir dir;
