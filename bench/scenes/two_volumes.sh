@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # Writes DIR/two_volumes.json, a scene of two intersecting meshes (docs/methods.md, "Several
 # volumes"): a ring of hexahedra (generate swirl, its temperature drawn as volume) through a ball of
-# tetrahedra (generate shells-tets, its iso-surfaces at 0 and 0.5, no volume), with both meshes.
+# tetrahedra (generate shells-tets, its iso-surface 0, three nested spheres, no volume), with both meshes.
 # usage: bash bench/scenes/two_volumes.sh DIR [CELLPROJ]
 set -euo pipefail
 dir=$1; exe=${2:-build/bin/cellproj}
@@ -16,9 +16,8 @@ cat > "$dir/two_volumes.json" <<'JSON'
     { "mesh": "ball.vtu",
       "transfer_function": { "color": [[-1, 1, 0.5, 0.1], [1, 1, 0.9, 0.3]], "extinction": [[-1, 0], [1, 0]] },
       "volume": false,
-      "iso": [ { "value": 0, "color": [1, 0.35, 0.2], "opacity": 0.45 },
-               { "value": 0.5, "color": [1, 0.85, 0.3], "opacity": 0.35 } ] } ],
-  "camera": { "projection": "perspective", "eye": [2.2, -3.0, 2.6], "target": [0, 0, 0], "up": [0, 0, 1], "fov_y": 38 },
+      "iso": [ { "value": 0, "color": [1, 0.45, 0.2], "opacity": 0.3 } ] } ],
+  "camera": { "projection": "perspective", "eye": [1.6, -2.3, 3.3], "target": [0, 0, 0], "up": [0, 0, 1], "fov_y": 38 },
   "image": { "width": 512, "height": 512, "background": [0.05, 0.05, 0.07] } }
 JSON
 echo "$dir/two_volumes.json"
