@@ -40,7 +40,7 @@ void set_linear_field(Mesh& m) {
   PointField& f = m.add_field("s", "linear");
   for (std::int64_t p = 0; p < m.n_points(); ++p) {
     const glm::dvec3 x = v.point(p);
-    f.values.push_back(0.5 + 0.2 * x.x + 0.15 * x.y - 0.1 * x.z);
+    f.values[p] = 0.5 + 0.2 * x.x + 0.15 * x.y - 0.1 * x.z;
   }
 }
 
@@ -66,7 +66,7 @@ TEST(VolumeUnion, TwoHalvesOfAMeshGiveTheWholeMeshsPicture) {
   PointField& f = m.add_field("s", "smooth");
   for (std::int64_t p = 0; p < m.n_points(); ++p) {
     const glm::dvec3 x = m.view().point(p);
-    f.values.push_back(std::sin(2 * x.x) * x.y + x.z * x.z);
+    f.values[p] = std::sin(2 * x.x) * x.y + x.z * x.z;
   }
   const Mesh left = half(m, true), right = half(m, false);
   ASSERT_GT(left.n_cells(), 0);
