@@ -15,11 +15,15 @@
 namespace cellproj {
 namespace {
 
-// One plane's pass: `in` clipped into `out` (which starts with in's points and fields).
+// Per point of a mesh being clipped, the original points it is made of, with their weights.
+using Sources = std::vector<std::vector<std::pair<std::int64_t, double>>>;
+
+// One plane's pass: `in` clipped into `out` (which starts with in's points and fields). `sources`,
+// when given, grows with out's new points.
 class PlaneClipper {
  public:
-  PlaneClipper(const Mesh& in, const ClipPlane& plane, Mesh& out, ClipReport& report)
-      : view_(in.view()), out_(out), report_(report) {
+  PlaneClipper(const Mesh& in, const ClipPlane& plane, Mesh& out, ClipReport& report, Sources* sources)
+      : view_(in.view()), out_(out), report_(report), sources_(sources) {
     out_.points = in.points;
     out_.fields = in.fields;
     const glm::dvec3 n = glm::normalize(plane.normal);
@@ -64,6 +68,18 @@ class PlaneClipper {
     const double t = distance_[a] / (distance_[a] - distance_[b]);  // in [0, 1): d(a) < 0 < d(b)
     const std::int64_t p = out_.add_point(view_.point(a) + t * (view_.point(b) - view_.point(a)));
     for (PointField& f : out_.fields) f.values.push_back(f.values[a] + t * (f.values[b] - f.values[a]));
+    if (sources_) {  // (1 - t) a + t b, over the original points
+      auto mix = (*sources_)[a];
+      for (auto& [q, w] : mix) w *= 1.0 - t;
+      for (const auto& [q, w] : (*sources_)[b]) {
+        const auto same = std::find_if(mix.begin(), mix.end(), [q = q](const auto& e) { return e.first == q; });
+        if (same != mix.end())
+          same->second += t * w;
+        else
+          mix.emplace_back(q, t * w);
+      }
+      sources_->push_back(std::move(mix));
+    }
     edge_point_.emplace(key, p);
     return p;
   }
@@ -107,12 +123,13 @@ class PlaneClipper {
   const MeshView view_;
   Mesh& out_;
   ClipReport& report_;
+  Sources* sources_;
   std::vector<double> distance_;
   std::map<std::pair<std::int64_t, std::int64_t>, std::int64_t> edge_point_;
 };
 
-// The mesh without the points no cell uses.
-Mesh compact(Mesh m) {
+// The mesh without the points no cell uses; `sources` (when given) as `weights`, in the same order.
+Mesh compact(Mesh m, const Sources* sources, ClipWeights* weights) {
   std::vector<std::int64_t> index(static_cast<std::size_t>(m.n_points()), -1);
   for (std::int64_t p : m.connectivity) index[p] = 0;
   std::int64_t next = 0;
@@ -131,6 +148,14 @@ Mesh compact(Mesh m) {
       if (index[p] >= 0) g.values.push_back(f.values[p]);
     out.fields.push_back(std::move(g));
   }
+  if (sources && weights) {
+    *weights = ClipWeights{};
+    for (std::int64_t p = 0; p < m.n_points(); ++p)
+      if (index[p] >= 0) {
+        for (const auto& [q, w] : (*sources)[p]) weights->source.push_back(q), weights->weight.push_back(w);
+        weights->start.push_back(static_cast<std::int64_t>(weights->source.size()));
+      }
+  }
   out.offsets = std::move(m.offsets);
   out.types = std::move(m.types);
   out.connectivity = std::move(m.connectivity);
@@ -146,16 +171,29 @@ void check(const ClipPlane& p) {
     throw InputError("--clip: the plane needs a finite point and a non-zero finite normal");
 }
 
-Mesh clip_mesh(const Mesh& mesh, const std::vector<ClipPlane>& planes, ClipReport* report) {
+std::vector<double> ClipWeights::apply(const std::vector<double>& field) const {
+  std::vector<double> out(static_cast<std::size_t>(size()));
+  for (std::int64_t p = 0; p < size(); ++p) {
+    double v = 0.0;
+    for (std::int64_t k = start[p]; k < start[p + 1]; ++k) v += weight[k] * field[source[k]];
+    out[p] = v;
+  }
+  return out;
+}
+
+Mesh clip_mesh(const Mesh& mesh, const std::vector<ClipPlane>& planes, ClipReport* report, ClipWeights* weights) {
   ClipReport r;
   Mesh current = mesh;
+  Sources sources;
+  if (weights)
+    for (std::int64_t p = 0; p < mesh.n_points(); ++p) sources.push_back({{p, 1.0}});
   for (const ClipPlane& plane : planes) {
     check(plane);
     ClipReport pass;
     Mesh next;
     next.source = mesh.source;
     next.notes = current.notes;
-    PlaneClipper clipper(current, plane, next, pass);
+    PlaneClipper clipper(current, plane, next, pass, weights ? &sources : nullptr);
     for (std::int64_t c = 0; c < current.n_cells(); ++c) clipper.cell(c);
     r.dropped += pass.dropped;
     r.cut += pass.cut;
@@ -165,7 +203,7 @@ Mesh clip_mesh(const Mesh& mesh, const std::vector<ClipPlane>& planes, ClipRepor
   }
   if (planes.empty()) r.kept_whole = mesh.n_cells();
   if (report) *report = r;
-  return compact(std::move(current));
+  return compact(std::move(current), weights ? &sources : nullptr, weights);
 }
 
 }  // namespace cellproj

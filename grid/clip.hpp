@@ -30,8 +30,22 @@ struct ClipReport {
 // InputError "--clip: ..." for a non-finite point or a zero or non-finite normal.
 void check(const ClipPlane& plane);
 
+// How each point of a clipped mesh is made from the points of the mesh clipped: its value of any
+// point field is the sum of weight * value over its sources (one source of weight 1 for a point
+// kept, the ends of cut edges for a new one). A time series whose points do not move is clipped
+// once, and each frame's field mapped through this.
+struct ClipWeights {
+  std::vector<std::int64_t> start{0};  // per clipped point, its range of source and weight
+  std::vector<std::int64_t> source;
+  std::vector<double> weight;
+  std::int64_t size() const { return static_cast<std::int64_t>(start.size()) - 1; }
+  std::vector<double> apply(const std::vector<double>& field) const;  // one value per clipped point
+};
+
 // The part of `mesh` on the kept side of every plane. Points on a plane are kept; pieces of zero
-// volume are dropped; points no cell uses any more are removed.
-Mesh clip_mesh(const Mesh& mesh, const std::vector<ClipPlane>& planes, ClipReport* report = nullptr);
+// volume are dropped; points no cell uses any more are removed. `weights`, when given, receives how
+// the clipped points are made from mesh's.
+Mesh clip_mesh(const Mesh& mesh, const std::vector<ClipPlane>& planes, ClipReport* report = nullptr,
+               ClipWeights* weights = nullptr);
 
 }  // namespace cellproj

@@ -289,7 +289,6 @@ PYBIND11_MODULE(_cellproj, m) {
         // A time series (the scene's mesh a .pvd, a pattern, or an Exodus file given a time): the
         // field at `time`, interpolated between key frames, as `cellproj render --time`.
         if (time || is_series_path(scene.mesh)) {
-          if (!scene.clip.empty()) throw InputError(where(path, "clipping planes do not go with a time series yet"));
           struct Played {
             std::unique_ptr<SeriesPlayer> player;
             PreparedScene prepared;
@@ -305,6 +304,17 @@ PYBIND11_MODULE(_cellproj, m) {
             SeriesFrame frame = player->frame_at(t);
             return Played{std::move(player), std::move(prepared), std::move(frame)};
           }();
+          if (!scene.clip.empty()) {  // the frame clipped, as the CLI's playback clips it
+            Mesh whole = p.player->cells();
+            whole.points = *p.frame.points;
+            whole.fields.push_back({p.player->field_name(), p.frame.field, "a time series' frame"});
+            const Mesh mesh = clip_mesh(whole, scene.clip);
+            if (mesh.n_cells() == 0)
+              throw InputError(where(path, "nothing of the mesh is on the kept side of the clipping planes"));
+            const Volume volume(mesh.view(), {/*trusted: key frames are validated*/ !p.player->points_move()});
+            return to_numpy(render_frame(*renderer, volume, field_of(mesh, p.player->field_name()), p.prepared.tf,
+                                         p.prepared.camera, image_size, threads));
+          }
           const Volume volume(p.player->view(p.frame), {/*trusted: key frames are validated*/ !p.player->points_move()});
           const Field f{p.frame.field.data(), static_cast<std::int64_t>(p.frame.field.size()), p.player->field_name()};
           return to_numpy(render_frame(*renderer, volume, f, p.prepared.tf, p.prepared.camera, image_size, threads));

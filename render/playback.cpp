@@ -36,7 +36,8 @@ std::vector<double> animation_times(const std::string& text) {
 PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::vector<double>& times, bool prefetch,
                           const Renderer& renderer, const TransferFunction& tf,
                           const std::function<Camera(int)>& camera_of, ImageSize size, const FrameDone& done,
-                          const std::function<Progress(int)>& progress_of) {
+                          const std::function<Progress(int)>& progress_of, const std::vector<ClipPlane>& clip,
+                          ClipReport* clipped) {
   PlaybackStats stats;
   const auto make = [&player, &stats](double t) {  // runs on one thread at a time
     const auto start = std::chrono::steady_clock::now();
@@ -46,6 +47,9 @@ PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::ve
   };
   std::unique_ptr<Volume> volume;
   const double* volume_points = nullptr;
+  Mesh clipped_mesh;          // with clipping planes: the clipped cells the volume views
+  ClipWeights clip_weights;   // how a frame's field maps onto the clipped points
+  std::vector<double> clipped_field;
   SeriesFrame current = std::move(first);
   const int n = static_cast<int>(times.size());
   for (int f = 0; f < n; ++f) {
@@ -55,11 +59,26 @@ PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::ve
       if (!volume || current.points->data() != volume_points) {  // the points moved: the cells' preparation anew
         // Interpolated points may fold a cell the key frames did not: validate them unless they are a key frame's.
         const bool trusted = !player.points_move();
-        volume = std::make_unique<Volume>(player.view(current), VolumeOptions{trusted});
+        if (clip.empty()) {
+          volume = std::make_unique<Volume>(player.view(current), VolumeOptions{trusted});
+        } else {
+          volume.reset();  // it views the clipped mesh about to be replaced
+          Mesh whole = player.cells();
+          whole.points = *current.points;
+          ClipReport report;
+          clipped_mesh = clip_mesh(whole, clip, &report, &clip_weights);
+          if (clipped_mesh.n_cells() == 0)
+            throw InputError(where(player.series().source, "nothing of the mesh at time " + std::to_string(current.time) +
+                                                               " is on the kept side of the clipping planes"));
+          if (clipped && stats.volumes == 0) *clipped = report;
+          volume = std::make_unique<Volume>(clipped_mesh.view(), VolumeOptions{trusted});
+        }
         volume_points = current.points->data();
         ++stats.volumes;
       }
-      const Field field{current.field.data(), static_cast<std::int64_t>(current.field.size()), player.field_name()};
+      if (!clip.empty()) clipped_field = clip_weights.apply(current.field);
+      const std::vector<double>& values = clip.empty() ? current.field : clipped_field;
+      const Field field{values.data(), static_cast<std::int64_t>(values.size()), player.field_name()};
       RenderReport report;
       Image image =
           renderer.render(*volume, field, tf, camera_of(f), size, &report, progress_of ? progress_of(f) : Progress{});

@@ -238,6 +238,9 @@ expect 0 "frame 4/4, .*time 5" -- render "$tmp/ser/s.pvd" --animate 0:5:4 --size
 expect 0 "frame 4/4" -- render "$tmp/ser/s.pvd" --animate 0:5:4 --size 24x20 --npy "$tmp/ser/b_%d.npy" --no-prefetch
 for f in 0 1 2 3; do cmp -s "$tmp/ser/a_$f.npy" "$tmp/ser/b_$f.npy" || { echo "FAIL: prefetch changed frame $f"; failed=$((failed+1)); }; done
 expect 0 "wrote" -- render "$tmp/ser/s.pvd" --time 5 --size 24x20 --npy "$tmp/ser/t5.npy"
+expect 0 "frame 3/3" -- render "$tmp/ser/s.pvd" --animate 0:5:3 --clip 0,0,0,1,0.3,0 --size 24x20 --npy "$tmp/ser/c_%d.npy" --stats
+grep -q '"clip_cells_cut":[1-9]' "$tmp/err" || { echo "FAIL: a clipped series' --stats"; failed=$((failed+1)); }
+cmp -s "$tmp/ser/a_0.npy" "$tmp/ser/c_0.npy" && { echo "FAIL: --clip did not clip the series"; failed=$((failed+1)); }
 cmp -s "$tmp/ser/t5.npy" "$tmp/ser/a_3.npy" || { echo "FAIL: --time 5 differs from the animation's last frame"; failed=$((failed+1)); }
 expect 0 "wrote" -- render "$tmp/ser/s_%04d.vtu" --time 2.5 --size 24x20 -o "$tmp/ser/p.png"
 expect 0 "s.pvd: a time series of 6 key frames, times 0.0 to 5.0" -- info "$tmp/ser/s.pvd"

@@ -216,5 +216,41 @@ TEST(TimeSeries, PlaybackEqualsRenderingASingleStepFileOfTheInterpolatedField) {
   }
 }
 
+TEST(TimeSeries, AClippedPlaybackEqualsEachFrameClippedOnItsOwn) {
+  // With clipping planes, the cells are clipped once (the points do not move) and each frame's
+  // field mapped onto them; with moving points every frame is clipped. Either way each frame is the
+  // picture of that frame's whole mesh clipped, to the rounding of the field's mix.
+  test::TempDir dir;
+  const std::vector<ClipPlane> planes = {{{0.1, 0.0, 0.0}, {1.0, 0.4, 0.0}}, {{0.0, 0.0, -0.3}, {0.0, 0.2, -1.0}}};
+  const TransferFunction tf({{-1.0, {0.1, 0.3, 0.9}}, {1.0, {1.0, 0.8, 0.2}}}, {{-1.0, 0.2}, {1.0, 4.0}});
+  const auto renderer = make_renderer(RenderSettings{});
+  const auto camera = [](int f) { return orbit(test::view_from({2, -3, 4}, Projection::Perspective), 10.0 * f); };
+  for (double move : {0.0, 0.1}) {
+    write_vtu(step(0, move), dir.file("a.vtu"));
+    write_vtu(step(1, move), dir.file("b.vtu"));
+    write_pvd(dir.file("s.pvd"), {{0.0, "a.vtu"}, {1.0, "b.vtu"}});
+    const std::vector<double> times = {0.0, 0.4, 1.0};
+    SeriesPlayer player(list_series(dir.file("s.pvd"), {}), "f", {});
+    std::vector<Image> played(times.size());
+    ClipReport report;
+    const PlaybackStats st = play_series(
+        player, player.frame_at(times[0]), times, true, *renderer, tf, camera, {40, 32},
+        [&](int f, Image&& img, const RenderReport&) { played[f] = std::move(img); }, {}, planes, &report);
+    EXPECT_EQ(st.volumes, move == 0.0 ? 1 : 3) << move;
+    EXPECT_GT(report.cut, 0);
+    for (std::size_t f = 0; f < times.size(); ++f) {
+      SeriesPlayer one(list_series(dir.file("s.pvd"), {}), "f", {});
+      const SeriesFrame frame = one.frame_at(times[f]);
+      Mesh whole = one.cells();
+      whole.points = *frame.points;
+      whole.fields.push_back({"f", frame.field, "frame"});
+      const Mesh clipped = clip_mesh(whole, planes);
+      const Image expect = render(Volume(clipped.view()), field_of(clipped, "f"), tf, RenderSettings{},
+                                  camera(static_cast<int>(f)), {40, 32});
+      EXPECT_LT(compare(played[f], expect).max_abs, 1e-6) << "frame " << f << " move " << move;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace cellproj

@@ -104,6 +104,7 @@ int run_render(const RenderArgs& given) {
   double prepare_seconds = 0.0, render_seconds = 0.0;
   RenderReport report;
   PlaybackStats playback;
+  ClipReport series_clipped;  // a time series is clipped as it plays
   arena.execute([&] {
     // --orbit D: a turntable of D degrees over the frames; without it a playback (--animate) keeps
     // its camera, and a timing run (--frames) turns a degree per frame.
@@ -131,7 +132,8 @@ int run_render(const RenderArgs& given) {
                                                                    std::to_string(a.frames)
                                                              : "rendering");
             return [&bar](double d) { (*bar)(d); };
-          });
+          },
+          scene.clip, &series_clipped);
       return;
     }
     const Volume volume(mesh.view(), {/*trusted: load_mesh validated it*/ true});
@@ -196,12 +198,14 @@ int run_render(const RenderArgs& given) {
                         {"prepare_seconds", prepare_seconds},
                         {"render_seconds", render_seconds / a.frames}};
     s.update(report_json(report));  // the last frame's
-    if (!scene.clip.empty())
+    if (!scene.clip.empty()) {
+      const ClipReport& c = input.player ? series_clipped : input.clipped;
       s.update({{"clip_planes", scene.clip.size()},
-                {"clip_cells_whole", input.clipped.kept_whole},
-                {"clip_cells_cut", input.clipped.cut},
-                {"clip_cells_dropped", input.clipped.dropped},
-                {"clip_tetrahedra", input.clipped.tetrahedra}});
+                {"clip_cells_whole", c.kept_whole},
+                {"clip_cells_cut", c.cut},
+                {"clip_cells_dropped", c.dropped},
+                {"clip_tetrahedra", c.tetrahedra}});
+    }
     if (input.player) {  // how much of making the frames the background thread hid behind the renders
       const SeriesPlayer& p = *input.player;
       s.update({{"key_frames", p.series().frames.size()},

@@ -98,13 +98,13 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     scene.clip.clear();
     for (const std::string& c : a.clip) scene.clip.push_back(usage([&] { return parse_clip_plane(c); }));
   }
-  if (!scene.clip.empty() && player) throw UsageError("clipping planes do not go with a time series yet");
   if (!scene.clip.empty() && partition)
     throw UsageError("clipping planes do not go with a partition index yet: clip the mesh in memory (mpirun with the "
                      "mesh itself) or before partitioning it");
   PreparedScene prepared = prepare_scene(scene, std::move(loaded));
   ClipReport clipped;
-  if (!scene.clip.empty()) {  // after the scene is prepared: colours and framing are the whole mesh's
+  if (!scene.clip.empty() && !player) {  // after the scene is prepared: colours and framing are the whole mesh's
+    // (a time series is clipped frame by frame as it plays: render/playback.hpp)
     prepared.loaded.mesh = clip_mesh(prepared.loaded.mesh, scene.clip, &clipped);
     if (prepared.loaded.mesh.n_cells() == 0)
       throw InputError(where(a.input,
