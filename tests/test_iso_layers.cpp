@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <cmath>
 #include <limits>
 
@@ -13,6 +14,7 @@
 #include "base/error.hpp"
 #include "grid/generate.hpp"
 #include "raycast/iso_layers.hpp"
+#include "raycast/isoparametric.hpp"
 #include "render/renderer.hpp"
 #include "scene/render_options.hpp"
 #include "tests/test_util.hpp"
@@ -106,6 +108,100 @@ TEST(IsoLayers, CountsAndDepthsOnNestedShellsMatchTheClosedForm) {
       EXPECT_GT(compared, n * n / 3) << kind;
       EXPECT_LT(worst, 0.02) << kind << ": the depth of a crossing against the sphere's";
     }
+  }
+}
+
+// The crossings of V along one ray of the isoparametric field (raycast/isoparametric.hpp): in each
+// run of a cell's segments, sign changes among 33 samples, each root bisected to 1e-12.
+std::vector<double> isoparametric_crossings(const IsoparametricField& iso, const double* scalar, const Ray& ray,
+                                            const RaySegment* seg, std::size_t n, double v) {
+  std::vector<double> roots;
+  for (std::size_t k = 0; k < n;) {
+    std::size_t end = k + 1;
+    while (end < n && seg[end].cell == seg[k].cell) ++end;
+    const double ta = seg[k].t0, tb = seg[end - 1].t1;
+    glm::dvec3 xi = iso.centre_guess(seg[k].cell);
+    const auto f = [&](double t) {
+      double s = 0.0;
+      if (!iso.value(scalar, seg[k].cell, ray.origin + t * ray.dir, xi, s)) xi = iso.centre_guess(seg[k].cell);
+      return s - v;
+    };
+    double t0 = ta, f0 = f(ta);
+    for (int q = 1; q <= 32; ++q) {
+      const double t1 = ta + (tb - ta) * q / 32, f1 = f(t1);
+      if ((f0 < 0) != (f1 < 0)) {
+        double lo = t0, hi = t1, flo = f0;
+        while (hi - lo > 1e-12) {
+          const double mid = 0.5 * (lo + hi), fm = f(mid);
+          ((fm < 0) == (flo < 0) ? lo : hi) = mid;
+          if ((fm < 0) == (flo < 0)) flo = fm;
+        }
+        roots.push_back(0.5 * (lo + hi));
+      }
+      t0 = t1, f0 = f1;
+    }
+    k = end;
+  }
+  return roots;
+}
+
+TEST(IsoLayers, TheHexahedraContourOfTheCanonicalTetsAgainstTheIsoparametricOne) {
+  // Iso-surfaces and layers follow the field linear in each canonical tetrahedron. On hexahedra
+  // the solver's field is trilinear (isoparametric): per ray, the crossings of both on the shells
+  // (cos 3 pi r = 0: r = 1/6, 1/2, 5/6), against each other and the spheres, for two resolutions.
+  // Rays within 1.5 h of a tangent, and rays where the two contours cross a different number of
+  // times, are left out of the depths (counted). The figures are quoted in docs/methods.md.
+  for (int res : {24, 48}) {
+    const Mesh m = generate("shells", res);
+    const double h = 2.0 / res;
+    const CellRayTracer tracer(m.view());
+    const IsoparametricField iso(m.view(), tracer.points());
+    const double* scalar = test::field_values(m);
+    double tets_vs_iso = 0.0, sum2 = 0.0, tets_vs_sphere = 0.0, iso_vs_sphere = 0.0;
+    int compared = 0, differing = 0, crossings = 0;
+    const int n = 48;
+    for (const Camera& camera : shell_views()) {
+      std::vector<std::vector<double>> lin(n * n), tri(n * n);
+      tracer.trace(camera, n, n, scalar, [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t ns) {
+        iso_crossings(seg, ns, 0.0, 1e-12, [&](const IsoCrossing& c) { lin[j * n + i].push_back(c.t); });
+        tri[j * n + i] = isoparametric_crossings(iso, scalar, ray, seg, ns, 0.0);
+      });
+      for (int j = 0; j < n; ++j)
+        for (int i = 0; i < n; ++i) {
+          const PixelRay pr = pixel_ray(camera, n, i, j);
+          std::vector<double> expect;
+          bool near_tangent = false;
+          for (double r : kShellRadii) {
+            near_tangent |= std::abs(pr.b - r) < 1.5 * h;
+            if (r > pr.b) expect.push_back(pr.tc - std::sqrt(r * r - pr.b * pr.b));
+          }
+          for (std::size_t k = expect.size(); k-- > 0;) expect.push_back(2 * pr.tc - expect[k]);
+          std::sort(expect.begin(), expect.end());
+          const auto& a = lin[j * n + i];
+          const auto& b = tri[j * n + i];
+          if (near_tangent) continue;
+          if (a.size() != b.size() || a.size() != expect.size()) {
+            ++differing;
+            continue;
+          }
+          ++compared;
+          crossings += static_cast<int>(a.size());
+          for (std::size_t k = 0; k < a.size(); ++k) {
+            tets_vs_iso = std::max(tets_vs_iso, std::abs(a[k] - b[k]));
+            sum2 += (a[k] - b[k]) * (a[k] - b[k]);
+            tets_vs_sphere = std::max(tets_vs_sphere, std::abs(a[k] - expect[k]));
+            iso_vs_sphere = std::max(iso_vs_sphere, std::abs(b[k] - expect[k]));
+          }
+        }
+    }
+    std::printf("shells %d^3 (h = %.4f): %d rays, %d crossings compared, %d rays with a different crossing count; "
+                "depth, canonical tets vs isoparametric: max %.4f (%.2f h), rms %.5f; against the spheres: tets %.4f, "
+                "isoparametric %.4f\n",
+                res, h, compared, crossings, differing, tets_vs_iso, tets_vs_iso / h,
+                std::sqrt(sum2 / std::max(crossings, 1)), tets_vs_sphere, iso_vs_sphere);
+    EXPECT_GT(crossings, 1000);
+    EXPECT_GT(compared, differing * 10);
+    EXPECT_LT(tets_vs_iso, 0.3 * h);  // second order in h: the two contours differ well inside a cell
   }
 }
 
