@@ -30,11 +30,8 @@ void exponential_moments(double a, int kmax, double* m) {
     for (int k = 1; k <= kmax; ++k) m[k] = (k * m[k - 1] - e) * ia;
     return;
   }
-  // Enough steps that prod a / k over them is below 1e-17 (a <= 8, kmax <= 24: top < 128): fewer
-  // where a is small, since each step damps the start's error by a / k.
-  int top = kmax;
-  for (double damped = 1.0; damped > 1e-17 && top < kmax + 16 + static_cast<int>(3.0 * a);)
-    damped *= a * inverse[++top];
+  // Enough steps that prod a / k over them is below 1e-17 (a <= 8, kmax <= 24: top < 128).
+  const int top = kmax + 16 + static_cast<int>(3.0 * a);
   double mk = e / (top + 1 - a / (top + 2));  // M_top to first order in a / top
   for (int k = top; k > kmax; --k) mk = (a * mk + e) * inverse[k];
   m[kmax] = mk;
