@@ -13,6 +13,10 @@ VolumeScene::VolumeScene(const Scene& scene, const std::function<LoadedMesh(cons
     Mesh& mesh = prepared_.volumes[k].loaded.mesh;
     if (!scene.clip.empty()) mesh = clip_mesh(mesh, scene.clip, &clipped_[k]);
     kept += mesh.n_cells() > 0;
+    if (mesh.n_cells() == 0)
+      prepared_.warnings.push_back(where(scene.source, "volumes[" + std::to_string(k) + "] (" + scene.volumes[k].mesh +
+                                                           "): nothing of it is on the kept side of the clipping "
+                                                           "planes; it is left out"));
   }
   if (kept == 0)
     throw InputError(where(scene.source, "nothing of the volumes is on the kept side of the clipping planes (each "

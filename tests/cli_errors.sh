@@ -351,6 +351,9 @@ expect 1 "both.json: mesh: with a \"volumes\" list, give it inside each volume" 
 sed 's/"opacity": 0.5/"opacity": 5/' "$tmp/two.json" > "$tmp/badvol.json"
 expect 1 "badvol.json: volumes\[1\]: --iso: the opacity must be in \[0, 1\]" -- render "$tmp/badvol.json"
 expect 1 "nothing of the volumes is on the kept side" -- render "$tmp/two.json" --clip 0,0,-5,0,0,1 --size 16x16 -o "$tmp/c5.png"
+"$exe" generate swirl -n 3 -o "$tmp/ring.vtu" >/dev/null
+echo '{"volumes": [{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 0.5, 0]], "extinction": [[0, 1]]}}, {"mesh": "ring.vtu", "transfer_function": {"color": [[0, 0, 0.5, 1]], "extinction": [[0, 2]]}}], "clip": [{"point": [0, 0, 0.6], "normal": [0, 0, -1]}]}' > "$tmp/cut2.json"
+expect 0 "volumes\\[1\\] \\(.*ring.vtu\\): nothing of it is on the kept side of the clipping planes; it is left out" -- render "$tmp/cut2.json" --size 16x16 -o "$tmp/c6.png"
 
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
