@@ -44,6 +44,10 @@ SplittingSorter::SplittingSorter(const MeshView& mesh, Tetrahedralize mode)
                                  [](std::uint8_t t) { return t != static_cast<std::uint8_t>(CellType::Tetra); });
   if (!mixed) mode_ = Tetrahedralize::none;  // nothing to split
   if (mixed && mode_ != Tetrahedralize::all) folds_ = std::make_unique<const CellFolds>(mesh, points_);
+  // A mesh whose cells are never split per view (all tetrahedra, none split, or all split once)
+  // sorts one prepared mesh in every view: made now, as the volume's preparation, not in the first
+  // frame's sort. Per-view splits stay lazy: a single view pays for its own split only.
+  if (mode_ != Tetrahedralize::problem) base_mesh();
 }
 
 const SortableMesh& SplittingSorter::base() const { return *base_mesh(); }
