@@ -1,6 +1,6 @@
 // libFuzzer harness for scene files: the input is a scene JSON beside a small generated mesh,
 // loaded and prepared as `cellproj render` does (the mesh read, the field and transfer function
-// checked against it, the camera chosen).
+// checked against it, the camera chosen; a scene of several volumes each clipped and committed).
 #include <unistd.h>
 
 #include <cstdint>
@@ -13,6 +13,7 @@
 #include "grid/write_mesh.hpp"
 #include "scene/prepare.hpp"
 #include "scene/scene_file.hpp"
+#include "scene/volume_scene.hpp"
 
 namespace {
 
@@ -35,7 +36,15 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   try {
     cellproj::Scene scene = cellproj::load_scene(path);
     scene.reader.max_memory_gib = 1;
-    cellproj::prepare_scene(scene);
+    if (scene.volumes.size() > 1) {  // a scene of several volumes, made ready as render makes it
+      const cellproj::VolumeScene volumes(scene, [](const cellproj::SceneVolume& v) {
+        cellproj::ReadOptions reader = v.reader;
+        reader.max_memory_gib = 1;
+        return cellproj::load_mesh(v.mesh, reader);
+      });
+    } else {
+      cellproj::prepare_scene(scene);
+    }
   } catch (const cellproj::InternalError&) {
     std::abort();
   } catch (const cellproj::Error&) {

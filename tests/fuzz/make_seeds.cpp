@@ -116,6 +116,11 @@ int main(int argc, char** argv) {
   std::ofstream(out / "scene/ortho.json")
       << R"({"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 0, 0], [1, 0, 0, 1]], "extinction": [[0, 0], [1, 5]]},
   "camera": {"projection": "orthographic", "eye": [0, 0, 5], "target": [0, 0, 0], "up": [0, 1, 0], "height": 4}})";
+  std::ofstream(out / "scene/volumes.json")
+      << R"({"volumes": [{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 0.5, 0]], "extinction": [[0, 1]]}},
+  {"mesh": "box.vtu", "field": "scalar", "volume": false, "transfer_function": {"color": [[0, 0, 0, 1]], "extinction": [[0, 2]]},
+   "iso": [{"value": 0.5, "color": [1, 0, 0], "opacity": 0.4}]}], "iso_mode": "oit4",
+  "clip": [{"point": [0, 0, 0.1], "normal": [0, 0.2, 1]}], "image": {"width": 32, "height": 24}})";
   std::printf("wrote seeds to %s\n", out.c_str());
   return 0;
 }
