@@ -53,7 +53,9 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
 }
 
 std::uint64_t estimate_volumes_bytes(const std::vector<VolumeSize>& volumes, ImageSize size) {
-  const auto exact = make_renderer(RenderSettings{RenderMode::exact});
+  RenderSettings settings;
+  settings.mode = RenderMode::exact;
+  const auto exact = make_renderer(settings);
   std::uint64_t bytes = 0;
   for (const VolumeSize& v : volumes) bytes += exact->estimate_bytes(v, size);
   return bytes;
