@@ -74,6 +74,19 @@ std::vector<Camera> shell_views() {
           test::perspective({2.2, -2.6, 1.8}, {0.05, 0.02, 0}, 45)};
 }
 
+// The depths at which a pixel's ray crosses the shells' spheres, in order; near_tangent when it
+// passes within 1.5 h of a sphere's tangent (where the mesh's contour may cross it otherwise).
+std::vector<double> sphere_crossings(const PixelRay& pr, double h, bool& near_tangent) {
+  std::vector<double> expect;
+  for (double r : kShellRadii) {
+    near_tangent |= std::abs(pr.b - r) < 1.5 * h;
+    if (r > pr.b) expect.push_back(pr.tc - std::sqrt(r * r - pr.b * pr.b));
+  }
+  for (std::size_t k = expect.size(); k-- > 0;) expect.push_back(2 * pr.tc - expect[k]);
+  std::sort(expect.begin(), expect.end());
+  return expect;
+}
+
 TEST(IsoLayers, CountsAndDepthsOnNestedShellsMatchTheClosedForm) {
   // Iso-value 0 of `generate shells` is the spheres r = 1/6, 1/2, 5/6: a ray passing at b from the
   // centre crosses each larger sphere at t = tc -/+ sqrt(r^2 - b^2). The piecewise-linear field
@@ -90,15 +103,8 @@ TEST(IsoLayers, CountsAndDepthsOnNestedShellsMatchTheClosedForm) {
       double worst = 0.0;
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-          const PixelRay pr = pixel_ray(camera, n, i, j);
-          std::vector<double> expect;
           bool near_tangent = false;
-          for (double r : kShellRadii) {
-            if (std::abs(pr.b - r) < 1.5 * h) near_tangent = true;
-            if (r > pr.b) expect.push_back(pr.tc - std::sqrt(r * r - pr.b * pr.b));
-          }
-          for (std::size_t k = expect.size(); k-- > 0;) expect.push_back(2 * pr.tc - expect[k]);
-          std::sort(expect.begin(), expect.end());
+          const std::vector<double> expect = sphere_crossings(pixel_ray(camera, n, i, j), h, near_tangent);
           if (near_tangent) continue;
           ++compared;
           const std::size_t p = static_cast<std::size_t>(j) * n + i;
@@ -168,15 +174,8 @@ TEST(IsoLayers, TheHexahedraContourOfTheCanonicalTetsAgainstTheIsoparametricOne)
       });
       for (int j = 0; j < n; ++j)
         for (int i = 0; i < n; ++i) {
-          const PixelRay pr = pixel_ray(camera, n, i, j);
-          std::vector<double> expect;
           bool near_tangent = false;
-          for (double r : kShellRadii) {
-            near_tangent |= std::abs(pr.b - r) < 1.5 * h;
-            if (r > pr.b) expect.push_back(pr.tc - std::sqrt(r * r - pr.b * pr.b));
-          }
-          for (std::size_t k = expect.size(); k-- > 0;) expect.push_back(2 * pr.tc - expect[k]);
-          std::sort(expect.begin(), expect.end());
+          const std::vector<double> expect = sphere_crossings(pixel_ray(camera, n, i, j), h, near_tangent);
           const auto& a = lin[j * n + i];
           const auto& b = tri[j * n + i];
           if (near_tangent) continue;
