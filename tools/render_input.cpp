@@ -12,6 +12,17 @@
 
 namespace cellproj {
 
+void apply_view_and_clip(const RenderArgs& a, Scene& scene) {
+  if (!a.view.empty()) {
+    scene.camera.reset();
+    scene.view = a.view;
+  }
+  if (!a.clip.empty()) {
+    scene.clip.clear();
+    for (const std::string& c : a.clip) scene.clip.push_back(usage([&] { return parse_clip_plane(c); }));
+  }
+}
+
 Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSettings& settings,
                  const std::vector<int>& levels, std::optional<Scene> given_scene) {
   int width = 0, height = 0;
@@ -90,14 +101,7 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     scene.reader.max_memory_gib = a.max_memory_gib;
     scene.background = bg;
   }
-  if (!a.view.empty()) {
-    scene.camera.reset();
-    scene.view = a.view;
-  }
-  if (!a.clip.empty()) {
-    scene.clip.clear();
-    for (const std::string& c : a.clip) scene.clip.push_back(usage([&] { return parse_clip_plane(c); }));
-  }
+  apply_view_and_clip(a, scene);
   if (!scene.clip.empty() && partition)
     throw UsageError("clipping planes do not go with a partition index yet: clip the mesh in memory (mpirun with the "
                      "mesh itself) or before partitioning it");

@@ -48,6 +48,9 @@ struct Input {
   std::optional<PartitionIndex> partition;  // a partitioned mesh: prepared.loaded is its extent (no cells)
 };
 
+// --view (replacing the scene's camera) and --clip (replacing its planes; UsageError for a bad one).
+void apply_view_and_clip(const RenderArgs& a, Scene& scene);
+
 // Reads the input once (a series: lists it and makes its first frame), refusing what would not fit
 // in memory before allocating it; usage errors as UsageError (exit 2), bad input as InputError.
 // `given_scene`: the scene file already loaded, if it was (else it is loaded here).

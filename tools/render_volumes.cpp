@@ -47,15 +47,8 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
   const auto t_load = std::chrono::steady_clock::now();
   if (!a.size.empty()) usage([&] { parse_size(a.size, scene.width, scene.height); });
   if (!a.background.empty()) scene.background = usage([&] { return parse_color(a.background, "--background"); });
-  if (!a.view.empty()) {
-    usage([&] { return view_camera(a.view, {0, 0, 0}, {1, 1, 1}, 1.0); });  // the name, now
-    scene.camera.reset();
-    scene.view = a.view;
-  }
-  if (!a.clip.empty()) {
-    scene.clip.clear();
-    for (const std::string& c : a.clip) scene.clip.push_back(usage([&] { return parse_clip_plane(c); }));
-  }
+  if (!a.view.empty()) usage([&] { return view_camera(a.view, {0, 0, 0}, {1, 1, 1}, 1.0); });  // the name, now
+  apply_view_and_clip(a, scene);
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
   const ImageSize size{scene.width, scene.height};
