@@ -7,6 +7,7 @@
 #include <optional>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 
 #include "base/error.hpp"
@@ -14,6 +15,8 @@
 #include "composite/ordered_pipeline.hpp"
 #include "grid/geometry.hpp"
 #include "parallel/gl_frame.hpp"
+#include "parallel/splat_stencil.hpp"
+#include "raycast/cell_ray_tracer.hpp"
 #include "splat/splat.hpp"
 #include "view/screen.hpp"
 
@@ -78,6 +81,40 @@ struct FrameCounters {
   void add(const FrameCounters& o) { projection.add(o.projection), splat.add(o.splat); }
 };
 
+// The small cells' splats of the frame, and the stencil of the cells drawn by their polygons over
+// the tiles the splats reach (the tracer's cells are the mesh's; a split cell is drawn when any of
+// its parts is).
+ProjectionSplats frame_splats(const SortableMesh& view_mesh, const std::vector<std::uint8_t>& small,
+                              const SplatContext& frame, const CellRayTracer& tracer, std::int64_t mesh_cells,
+                              SplatCounters& counters) {
+  const MeshView& cells = view_mesh.cells;
+  ProjectionSplats out;
+  out.rays = &frame.rays;
+  out.index.assign(static_cast<std::size_t>(cells.n_cells), -1);
+  std::vector<std::int64_t> listed;
+  std::vector<std::uint8_t> drawn(static_cast<std::size_t>(mesh_cells), 0);
+  for (std::int64_t c = 0; c < cells.n_cells; ++c)
+    if (small[static_cast<std::size_t>(c)])
+      out.index[static_cast<std::size_t>(c)] = static_cast<std::int32_t>(listed.size()), listed.push_back(c);
+    else
+      drawn[static_cast<std::size_t>(view_mesh.parent(c))] = 1;
+  out.footprint.resize(listed.size());
+  std::vector<PixelBox> boxes(listed.size());
+  tbb::enumerable_thread_specific<SplatCounters> counts;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, listed.size(), 1024),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      SplatCounters& n = counts.local();
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                        const std::int64_t c = listed[k];
+                        out.footprint[k] = cell_splat(frame, cells.cell(c), cells.type(c), n);
+                        boxes[k] = out.footprint[k].pixels(frame.rays.width(), frame.rays.height());
+                      }
+                    });
+  for (const SplatCounters& n : counts) counters.add(n);
+  out.stencil = SplatStencil(tracer, frame.rays.camera(), frame.rays.width(), frame.rays.height(), boxes, drawn);
+  return out;
+}
+
 // The cells of the order as a source of the ordered pipeline; the small ones splatted in their
 // place (or skipped), the others projected.
 struct OrderedCells {
@@ -88,13 +125,11 @@ struct OrderedCells {
   const std::vector<std::int64_t>& order;
   const std::vector<std::uint8_t>& small;  // per cell: drawn by its splat (or not at all)
   SmallCells mode;
-  const SplatContext& splat;
+  const ProjectionSplats& splats;
   void fragments(std::size_t k, FragmentBands& out, Scratch& s, Counters& c) const {
     const std::int64_t cell = order[k];
     if (mode != SmallCells::draw && small[static_cast<std::size_t>(cell)]) {
-      if (mode == SmallCells::splat)
-        append_fragments(cell_splat(splat, cells.cell(cell), cells.type(cell), c.splat), splat.rays.width(),
-                         splat.rays.height(), out, c.splat);
+      if (mode == SmallCells::splat) splats.append(cell, out, c.splat);
       return;
     }
     project.project(cells.cell(cell), cells.type(cell), out, s, c.projection);
@@ -158,6 +193,12 @@ ProjectionRenderer::ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode
 
 ProjectionRenderer::~ProjectionRenderer() = default;
 
+const CellRayTracer& ProjectionRenderer::tracer() const {
+  std::lock_guard<std::mutex> lock(tracer_mutex_);
+  if (!tracer_) tracer_ = std::make_unique<CellRayTracer>(mesh_);
+  return *tracer_;
+}
+
 bool ProjectionRenderer::convex_boundary() const { return sorter_.base().hull.convex; }
 
 Image ProjectionRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,
@@ -208,14 +249,24 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     const auto t_small = std::chrono::steady_clock::now();
     const std::vector<std::uint8_t> small = small_cells(cells, screen, rays, st.splat_threshold, st.splat);
     st.phase_seconds.emplace_back("small cells", seconds_since(t_small));
+    ProjectionSplats splats;
+    if (st.small_cells == SmallCells::splat) {
+      const auto t_tracer = std::chrono::steady_clock::now();
+      const CellRayTracer& stencil_tracer = tracer();  // prepared on the first frame that splats
+      st.phase_seconds.emplace_back("stencil tracer", seconds_since(t_tracer));
+      const auto t_splats = std::chrono::steady_clock::now();
+      const SplatContext frame{points, scalar, tf, rays, options.splat.prefilter};
+      splats = frame_splats(*view.mesh, small, frame, stencil_tracer, mesh_.n_cells, st.splat);
+      st.splat_stencil_tiles = splats.stencil.tiles_traced();
+      st.phase_seconds.emplace_back("splats and stencil", seconds_since(t_splats));
+    }
     t = std::chrono::steady_clock::now();
     const std::vector<float> footprint = cell_footprints(cells, screen, rays);
-    const SplatContext splat{points, scalar, tf, rays, options.splat.prefilter};
     PipelineLimits limits;
     limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
     const FrameCounters counters = composite_in_order(
         image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
-        OrderedCells{project, cells, order, small, st.small_cells, splat}, &st.blend_seconds);
+        OrderedCells{project, cells, order, small, st.small_cells, splats}, &st.blend_seconds);
     st.counters = counters.projection;
     st.splat.add(counters.splat);
   }

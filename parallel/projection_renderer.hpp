@@ -4,6 +4,8 @@
 // compositor blends them in order, so 1 and N threads give the same image bit for bit. The mesh's
 // geometry is prepared once; the field comes with each frame.
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <string>
 #include <utility>
 #include <vector>
@@ -21,11 +23,14 @@
 
 namespace cellproj {
 
+class CellRayTracer;
+
 struct ProjectionStats {
   ProjectionCounters counters;
   SplatCounters splat;
   SmallCells small_cells = SmallCells::draw;  // the mode that ran
   double splat_threshold = 0.0;               // pixel centres: cells covering fewer are small
+  std::int64_t splat_stencil_tiles = 0;       // image tiles whose rays the splats' stencil traced
   SortStats sort;
   Tetrahedralize tetrahedralize = Tetrahedralize::problem;  // the mode that ran (none for a mesh of tetrahedra)
   std::int64_t cells = 0;                                   // cells sorted and projected this frame (after splitting)
@@ -58,8 +63,13 @@ class ProjectionRenderer {
   Tetrahedralize mode() const { return sorter_.mode(); }
 
  private:
+  // The exact traversal of the splats' stencil (parallel/splat_stencil.hpp), made on first use.
+  const CellRayTracer& tracer() const;
+
   MeshView mesh_;
   SplittingSorter sorter_;
+  mutable std::mutex tracer_mutex_;
+  mutable std::unique_ptr<CellRayTracer> tracer_;
   double max_diameter_ =
       0.0;  // the longest distance between two vertices of a cell: no ray segment in a cell is longer
 };

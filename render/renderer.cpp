@@ -112,6 +112,7 @@ class ProjectionMode final : public Renderer {
     r.add("gaps_from", s.method == SortMethod::mpvo_abuffer ? ReportValue(s.gaps_from) : ReportValue());
     add_fragment_rates(r, p);
     add_splats(r, p.small_cells, p.splat_threshold, p.splat);
+    if (p.small_cells == SmallCells::splat) r.add("splat_stencil_tiles", p.splat_stencil_tiles);
     if (!p.gl_renderer.empty()) r.add("gl_renderer", p.gl_renderer);
     warn(r, p);
   }

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
@@ -25,11 +26,11 @@ SliceSplats::SliceSplats(const SliceCells& cells, const std::vector<double>& vol
   // Each small cell's splat and nearest plane, in parallel; then bucketed by plane in cell order.
   std::vector<Footprint> splat(small_cells_.size());
   std::vector<int> plane(small_cells_.size(), 0);  // 0: no splat
-  std::vector<SplatCounters> counts(small_cells_.size() / 1024 + 1);
+  tbb::enumerable_thread_specific<SplatCounters> counts;
   tbb::parallel_for(
       tbb::blocked_range<std::size_t>(0, small_cells_.size(), 1024),
       [&](const tbb::blocked_range<std::size_t>& r) {
-        SplatCounters& n = counts[r.begin() / 1024];
+        SplatCounters& n = counts.local();
         for (std::size_t k = r.begin(); k < r.end(); ++k) {
           const std::int64_t c = small_cells_[k];
           const std::int64_t* ids = cells.ids.data() + cells.offsets[static_cast<std::size_t>(c)];
@@ -39,8 +40,7 @@ SliceSplats::SliceSplats(const SliceCells& cells, const std::vector<double>& vol
           const double h = glm::dot(splat[k].world, planes.normal());
           plane[k] = std::clamp(planes.first_above(h - 0.5 * planes.spacing()), 1, visible);
         }
-      },
-      tbb::simple_partitioner());
+      });
   for (const SplatCounters& n : counts) counters_.add(n);
   for (int j : plane) ++start_[static_cast<std::size_t>(j) + 1];
   for (std::size_t j = 1; j < start_.size(); ++j) start_[j] += start_[j - 1];
@@ -65,17 +65,17 @@ void splat_layer(const Footprint* begin, const Footprint* end, const SliceImage&
   }
   if (out.empty()) return;
   out.rgba.assign(4 * static_cast<std::size_t>(out.x1 - out.x0) * static_cast<std::size_t>(out.y1 - out.y0), 0.0f);
-  for (const Footprint* f = begin; f != end; ++f)
-    rasterize_splat(*f, width, height, [&](int i, int j, const glm::dvec3& rgb, double a) {
-      if (!std::isnan(slice.at(i, j, width))) {  // the stencil: the plane's polygons hold this pixel
-        ++counters.masked_fragments;
-        return;
-      }
-      ++counters.splat_fragments;
-      const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
-                            static_cast<float>(a)};
-      over(out.at(i, j), src);
-    });
+  for (const Footprint* f = begin; f != end; ++f) {
+    // The stencil: the plane's polygons hold the pixels where the slice is not NaN.
+    const StencilCount n = rasterize_splat_open(
+        *f, width, height, [&](int i, int j) { return std::isnan(slice.at(i, j, width)); },
+        [&](int i, int j, const glm::dvec3& rgb, double a) {
+          const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
+                                static_cast<float>(a)};
+          over(out.at(i, j), src);
+        });
+    counters.splat_fragments += n.drawn, counters.masked_fragments += n.masked;
+  }
 }
 
 }  // namespace cellproj

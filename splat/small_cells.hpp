@@ -18,7 +18,7 @@ struct SplatCounters {
   std::int64_t covering_no_pixel = 0;   // of the cells, those whose projection covers no pixel centre
   std::int64_t splats = 0;              // small cells drawn by a splat
   std::int64_t splat_fragments = 0;     // their pixels
-  std::int64_t masked_fragments = 0;    // slicing: splat pixels a polygon of their slice covered (not drawn)
+  std::int64_t masked_fragments = 0;    // splat pixels the stencil held (a drawn cell, or the slice, was there)
   std::int64_t refused_degenerate = 0;  // small cells of zero volume: no splat
   std::int64_t refused_inverted = 0;    // small cells turned inside out: no splat
   std::int64_t behind_eye = 0;          // splats centred at or behind the eye
