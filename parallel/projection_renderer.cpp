@@ -250,7 +250,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     const std::vector<std::uint8_t> small = small_cells(cells, screen, rays, st.splat_threshold, st.splat);
     st.phase_seconds.emplace_back("small cells", seconds_since(t_small));
     ProjectionSplats splats;
-    if (st.small_cells == SmallCells::splat) {
+    if (st.small_cells == SmallCells::splat && st.splat.small_cells > 0) {  // no stencil without splats
       const auto t_tracer = std::chrono::steady_clock::now();
       const CellRayTracer& stencil_tracer = tracer();  // prepared on the first frame that splats
       st.phase_seconds.emplace_back("stencil tracer", seconds_since(t_tracer));

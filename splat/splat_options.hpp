@@ -26,7 +26,7 @@ struct SplatOptions {
 };
 
 // The defaults docs/methods.md measures.
-constexpr double kDefaultPixelThreshold = 2.0;   // cell projection: pixel centres covered
+constexpr double kDefaultPixelThreshold = 1.0;   // cell projection: pixel centres covered
 constexpr double kDefaultVolumeThreshold = 1.0;  // slicing: cell volume over spacing^3
 
 // The mode that runs with `backend`, checked: throws InputError for splat or skip with an OpenGL

@@ -306,7 +306,7 @@ Action add_render(CLI::App& app) {
               " (default draw; splat and skip need the software back end); docs/methods.md, Splatting");
   setting("splat-threshold", args->options.splat_threshold,
           "Which cells are small: projection, those covering fewer pixel centres "
-          "(default 2); slicing, those of less volume than this times the spacing "
+          "(default 1: those covering none); slicing, those of less volume than this times the spacing "
           "cubed (default 1)");
   setting("splat-prefilter", args->options.splat_prefilter,
           "Standard deviation in pixels of the splats' anti-aliasing pre-filter "
