@@ -59,19 +59,9 @@ void check_binary_arrays(std::ifstream& in, const std::string& path, std::int64_
                                      std::to_string(types) + "', not CELL_TYPES " + std::to_string(cells - 1)));
 }
 
-}  // namespace
-
-void check_legacy_cells(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
+// The CELLS block of a file whose header was read from `in`.
+void check_cells_block(std::ifstream& in, const std::string& path, bool binary, int major) {
   std::string line;
-  if (!std::getline(in, line)) return;
-  const int major = major_version(line);
-  if (major < 0)
-    throw InputError(where(path, "line 1: the version is garbled (a VTK legacy file says N.M): " + line.substr(0, 60)));
-  std::getline(in, line);  // the title
-  std::getline(in, line);
-  const bool binary = line.rfind("BINARY", 0) == 0;
-  if (!binary && line.rfind("ASCII", 0) != 0) return;  // VTK says what is wrong
   std::int64_t cells = -1, size = -1;
   while (std::getline(in, line)) {
     if (line.rfind("CELLS ", 0) == 0 && (std::istringstream(line.substr(6)) >> cells >> size)) break;
@@ -119,6 +109,23 @@ void check_legacy_cells(const std::string& path) {
   }
   if (used != size)
     throw InputError(where(path, block + ": its cells' counts and ids add up to " + std::to_string(used)));
+}
+
+}  // namespace
+
+void check_legacy_cells(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(in, line)) return;
+  const int major = major_version(line);
+  if (major < 0)
+    throw InputError(where(path, "line 1: the version is garbled (a VTK legacy file says N.M): " + line.substr(0, 60)));
+  std::getline(in, line);  // the title
+  std::getline(in, line);
+  const bool binary = line.rfind("BINARY", 0) == 0;
+  if (!binary && line.rfind("ASCII", 0) != 0) return;  // VTK says what is wrong
+  check_cells_block(in, path, binary, major);
+  check_legacy_fields(path, binary, major);  // after: a bad CELLS block has the plainer message
 }
 
 }  // namespace cellproj

@@ -9,4 +9,11 @@ namespace cellproj {
 // past the block corrupts the reader's heap. Throws InputError naming the file and the cell.
 void check_legacy_cells(const std::string& path);
 
+// Walks an unstructured grid's dataset blocks (POINTS, CELLS, CELL_TYPES) as VTK's legacy reader
+// does, and checks each dataset-level FIELD block: that reader uses what its field reader returns
+// without a check, so a block it cannot read (no array count, a garbled array header, an unknown
+// type, values missing) crashes it. Throws InputError naming the file, the block and the array.
+// check_legacy_cells calls it; `binary` and `major` are the header's.
+void check_legacy_fields(const std::string& path, bool binary, int major);
+
 }  // namespace cellproj

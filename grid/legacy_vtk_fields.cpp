@@ -1,0 +1,174 @@
+#include <cctype>
+#include <cstdint>
+#include <fstream>
+#include <limits>
+#include <string>
+
+#include "base/error.hpp"
+#include "grid/legacy_vtk_check.hpp"
+
+namespace cellproj {
+namespace {
+
+std::string lower(std::string word) {
+  for (char& ch : word) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return word;
+}
+bool starts(const std::string& word, const char* prefix) { return word.rfind(prefix, 0) == 0; }
+
+// How VTK's legacy reader takes an array type (vtkDataReader::ReadArray, which matches most names
+// by prefix): the bytes of one binary value, kVariable for strings, kUnknown where it gives up
+// (and its caller, for a dataset's FIELD, crashes).
+constexpr int kUnknown = -1, kVariable = 0, kBit = -2;
+int value_bytes(const std::string& type) {
+  if (starts(type, "bit")) return kBit;
+  if (type == "char" || type == "signed_char" || starts(type, "unsigned_char")) return 1;
+  if (starts(type, "short") || starts(type, "unsigned_short")) return 2;
+  if (starts(type, "vtkidtype") || starts(type, "int") || starts(type, "unsigned_int")) return 4;
+  if (starts(type, "long") || starts(type, "unsigned_long")) return static_cast<int>(sizeof(long));
+  if (starts(type, "vtktypeint64") || starts(type, "vtktypeuint64")) return 8;
+  if (starts(type, "float")) return 4;
+  if (starts(type, "double")) return 8;
+  if (starts(type, "string") || starts(type, "utf8_string") || starts(type, "variant")) return kVariable;
+  return kUnknown;
+}
+
+// A walk through the dataset section of a legacy unstructured grid, block by block as VTK's
+// reader reads it (vtkUnstructuredGridReader::ReadMeshSimple).
+class DatasetWalk {
+ public:
+  DatasetWalk(const std::string& path, bool binary, int major)
+      : path_(path), in_(path, std::ios::binary), binary_(binary), major_(major) {
+    in_.seekg(0, std::ios::end);
+    size_ = static_cast<std::int64_t>(in_.tellg());
+    in_.seekg(0);
+  }
+
+  void run() {
+    std::string line;
+    for (int k = 0; k < 3; ++k) std::getline(in_, line);  // the version, the title, ASCII or BINARY
+    std::string word, type;
+    if (!(in_ >> word >> type) || lower(word) != "dataset" || lower(type) != "unstructured_grid") return;
+    while (in_ >> word) {
+      word = lower(word);
+      if (starts(word, "field")) {
+        field();
+      } else if (starts(word, "points")) {
+        std::int64_t n = 0;
+        if (!(in_ >> n >> type) || n < 0 || !skip(3 * n, value_bytes(lower(type)))) return;
+      } else if (starts(word, "cells")) {
+        std::int64_t n = 0, size = 0;
+        if (!(in_ >> n >> size) || n < 0 || size < 0) return;
+        if (major_ < 5) {
+          if (!skip(size, 4)) return;
+        } else if (!array("offsets", n) || !array("connectivity", size)) {
+          return;
+        }
+      } else if (starts(word, "cell_types")) {
+        std::int64_t n = 0;
+        if (!(in_ >> n) || n < 0 || !skip(n, 4)) return;
+      } else if (word == "metadata") {
+        metadata();
+      } else {
+        return;  // POINT_DATA or CELL_DATA, whose FIELDs VTK checks, or a keyword VTK refuses
+      }
+    }
+  }
+
+ private:
+  std::string path_;
+  std::ifstream in_;
+  bool binary_;
+  int major_;
+  std::int64_t size_ = 0;
+
+  std::int64_t left() { return size_ - static_cast<std::int64_t>(in_.tellg()); }
+
+  // Past `count` values of `bytes` each (binary) or words (ASCII); false where the walk must stop.
+  bool skip(std::int64_t count, int bytes) {
+    if (binary_) {
+      if (bytes <= 0) return false;  // strings and bits: not followed further
+      std::string rest;
+      std::getline(in_, rest);  // VTK's binary values start on the next line
+      if (count > left() / bytes) return false;
+      in_.seekg(count * bytes, std::ios::cur);
+      return true;
+    }
+    // VTK reads numbers and, at one that is not, stops; its look for METADATA clears the stream's
+    // error, and the next keyword is read from there.
+    double v;
+    for (std::int64_t k = 0; k < count; ++k)
+      if (!(in_ >> v)) {
+        in_.clear();
+        return !in_.eof();
+      }
+    return true;
+  }
+
+  // "METADATA" after an array: lines up to a blank one.
+  void metadata() {
+    std::string line;
+    std::getline(in_, line);
+    while (std::getline(in_, line) && !line.empty() && line != "\r") {
+    }
+  }
+
+  // Format 5: "OFFSETS type" (or "CONNECTIVITY type") and its values.
+  bool array(const char* keyword, std::int64_t count) {
+    std::string word, type;
+    return (in_ >> word >> type) && lower(word) == keyword && skip(count, value_bytes(lower(type)));
+  }
+
+  [[noreturn]] void refuse(const std::string& what) {
+    throw InputError(where(path_, "the dataset's FIELD block " + what + " (VTK's legacy reader would crash on it)"));
+  }
+
+  // "FIELD name arrays", then per array "name components tuples type" and its values, or
+  // "NULL_ARRAY". VTK's reader uses what its field reader returns unchecked, so everything that
+  // makes that reader give up is refused here.
+  void field() {
+    std::string name;
+    int arrays = 0;
+    if (!(in_ >> name >> arrays)) refuse("has no name and array count");
+    if (arrays < 0 || arrays > left()) refuse("'" + name + "' declares " + std::to_string(arrays) + " arrays");
+    for (int a = 0; a < arrays; ++a) {
+      std::string array, type;
+      if (!(in_ >> array)) refuse("'" + name + "', array " + std::to_string(a) + ": the file ends before it");
+      if (array == "NULL_ARRAY") continue;
+      const std::string which = "'" + name + "', array " + std::to_string(a) + " ('" + array.substr(0, 40) + "')";
+      int components = 0;
+      std::int64_t tuples = 0;
+      if (!(in_ >> components >> tuples >> type))
+        refuse(which + ": its components, tuples and type are not all there");
+      const int bytes = value_bytes(lower(type));
+      if (bytes == kUnknown)
+        refuse(which + ": unknown type '" + type.substr(0, 40) + "'");
+      if (components < 0 || tuples < 0) refuse(which + ": a negative count");
+      const std::int64_t values = static_cast<std::int64_t>(components) * tuples;
+      // ASCII: a digit and a space at least, a string a line end; binary strings: not bounded here.
+      const std::int64_t per_value = bytes > 0 ? bytes : binary_ ? 0 : bytes == kVariable ? 1 : 2;
+      if (per_value > 0 && values > left() / per_value)
+        refuse(which + ": " + std::to_string(values) + " values, more than the file's remaining " +
+               std::to_string(left()) + " bytes hold");
+      if (bytes == kVariable) return;  // strings: VTK reads them line by line; the walk stops
+      if (bytes == kBit && binary_) return;
+      if (!binary_) {
+        double v;
+        for (std::int64_t k = 0; k < values; ++k)
+          if (!(in_ >> v))
+            refuse(which + ": its values end, or stop being numbers, after " + std::to_string(k) + " of " +
+                   std::to_string(values));
+      } else {
+        std::string rest;
+        std::getline(in_, rest);
+        in_.seekg(values * bytes, std::ios::cur);
+      }
+    }
+  }
+};
+
+}  // namespace
+
+void check_legacy_fields(const std::string& path, bool binary, int major) { DatasetWalk(path, binary, major).run(); }
+
+}  // namespace cellproj
