@@ -64,11 +64,10 @@ bool SplatStencil::holds(int i, int j, double t) const {
 void ProjectionSplats::append(std::int64_t c, FragmentBands& out, SplatCounters& counters) const {
   const Footprint& f = footprint[static_cast<std::size_t>(index[static_cast<std::size_t>(c)])];
   if (!f.visible) return;
-  const StencilCount n = rasterize_splat_open(
+  append_fragments(
       f, rays->width(), rays->height(),
-      [&](int i, int j) { return !stencil.holds(i, j, f.depth * rays->length_per_depth(i + 0.5, j + 0.5)); },
-      [&](int i, int j, const glm::dvec3& rgb, double alpha) { out.append(i, j, rgb.r, rgb.g, rgb.b, alpha); });
-  counters.splat_fragments += n.drawn, counters.masked_fragments += n.masked;
+      [&](int i, int j) { return !stencil.holds(i, j, f.depth * rays->length_per_depth(i + 0.5, j + 0.5)); }, out,
+      counters);
 }
 
 }  // namespace cellproj

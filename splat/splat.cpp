@@ -98,10 +98,4 @@ Footprint cell_splat(const SplatContext& frame, const std::int64_t* ids, CellTyp
   return f;
 }
 
-void append_fragments(const Footprint& f, int width, int height, FragmentBands& out, SplatCounters& c) {
-  c.splat_fragments += rasterize_splat(f, width, height, [&](int i, int j, const glm::dvec3& rgb, double alpha) {
-    out.append(i, j, rgb.r, rgb.g, rgb.b, alpha);
-  });
-}
-
 }  // namespace cellproj

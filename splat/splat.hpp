@@ -114,7 +114,14 @@ struct SplatContext {
 // The footprint of the cell with point ids `ids` of `type`; not visible, and counted in c, when it
 // has none (zero volume, inverted, centred behind the eye).
 Footprint cell_splat(const SplatContext& frame, const std::int64_t* ids, CellType type, SplatCounters& c);
-// Appends the footprint's fragments (the ones adding light or opacity) to out; counted in c.
-void append_fragments(const Footprint& f, int width, int height, FragmentBands& out, SplatCounters& c);
+// Appends the footprint's fragments at the pixels `open(i, j)` allows (rasterize_splat_open) to
+// out; counted in c.
+template <class Open>
+void append_fragments(const Footprint& f, int width, int height, Open&& open, FragmentBands& out, SplatCounters& c) {
+  const StencilCount n = rasterize_splat_open(f, width, height, open, [&](int i, int j, const glm::dvec3& rgb, double a) {
+    out.append(i, j, rgb.r, rgb.g, rgb.b, a);
+  });
+  c.splat_fragments += n.drawn, c.masked_fragments += n.masked;
+}
 
 }  // namespace cellproj

@@ -22,6 +22,9 @@ using namespace cellproj;
 
 namespace {
 
+// No stencil: every pixel open.
+constexpr auto kEverywhere = [](int, int) { return true; };
+
 // A mesh of one cell.
 Mesh one_cell(CellType type, const std::vector<glm::dvec3>& p) {
   Mesh m;
@@ -52,7 +55,7 @@ std::vector<Fragment> splat_of(const Mesh& m, const TransferFunction& tf, const 
   const PixelRays rays(recentred(camera, pts.centre), size, size);
   const SplatContext frame{pts, m.fields[0].values.data(), tf, rays, prefilter};
   FragmentBands out(size, size, 30);  // one band: the fragments in the order made
-  append_fragments(cell_splat(frame, v.cell(0), v.type(0), counters), size, size, out, counters);
+  append_fragments(cell_splat(frame, v.cell(0), v.type(0), counters), size, size, kEverywhere, out, counters);
   return out.band(0);
 }
 
@@ -134,7 +137,7 @@ TEST(Splat, AtAnyOpticalDepthTheOpacityIsItsGaussiansClosedForm) {
     const PixelRays rays(recentred(c, pts.centre), 96, 96);
     const Footprint f = cell_splat({pts, m.fields[0].values.data(), tf, rays, 0.7}, v.cell(0), v.type(0), n);
     FragmentBands bands(96, 96, 30);
-    append_fragments(f, 96, 96, bands, n);
+    append_fragments(f, 96, 96, kEverywhere, bands, n);
     const std::vector<Fragment>& out = bands.band(0);
     const double closed = 2.0 * 3.14159265358979323846 * std::sqrt(glm::determinant(f.covariance)) * ein(f.peak);
     EXPECT_NEAR(total_alpha(out) / closed, 1.0, 1e-3) << "kappa " << kappa;
