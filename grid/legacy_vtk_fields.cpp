@@ -52,7 +52,7 @@ class DatasetWalk {
     while (in_ >> word) {
       word = lower(word);
       if (starts(word, "field")) {
-        field();
+        if (!field()) return;
       } else if (starts(word, "points")) {
         std::int64_t n = 0;
         if (!(in_ >> n >> type) || n < 0 || !skip(3 * n, value_bytes(lower(type)))) return;
@@ -125,8 +125,9 @@ class DatasetWalk {
 
   // "FIELD name arrays", then per array "name components tuples type" and its values, or
   // "NULL_ARRAY". VTK's reader uses what its field reader returns unchecked, so everything that
-  // makes that reader give up is refused here.
-  void field() {
+  // makes that reader give up is refused here. False where the walk stops (string or binary bit
+  // values, not followed).
+  bool field() {
     std::string name;
     int arrays = 0;
     if (!(in_ >> name >> arrays)) refuse("has no name and array count");
@@ -144,14 +145,13 @@ class DatasetWalk {
       if (bytes == kUnknown)
         refuse(which + ": unknown type '" + type.substr(0, 40) + "'");
       if (components < 0 || tuples < 0) refuse(which + ": a negative count");
+      double per_value = bytes == kVariable ? 1 : 2;  // ASCII: a string's line end, a digit and a space
+      if (binary_) per_value = bytes > 0 ? bytes : bytes == kBit ? 0.125 : 1;  // a string: its length byte
+      if (double(components) * double(tuples) * per_value > double(left()))  // in double: no overflow
+        refuse(which + ": " + std::to_string(components) + " x " + std::to_string(tuples) +
+               " values, more than the file's remaining " + std::to_string(left()) + " bytes hold");
       const std::int64_t values = static_cast<std::int64_t>(components) * tuples;
-      // ASCII: a digit and a space at least, a string a line end; binary strings: not bounded here.
-      const std::int64_t per_value = bytes > 0 ? bytes : binary_ ? 0 : bytes == kVariable ? 1 : 2;
-      if (per_value > 0 && values > left() / per_value)
-        refuse(which + ": " + std::to_string(values) + " values, more than the file's remaining " +
-               std::to_string(left()) + " bytes hold");
-      if (bytes == kVariable) return;  // strings: VTK reads them line by line; the walk stops
-      if (bytes == kBit && binary_) return;
+      if (bytes == kVariable || (bytes == kBit && binary_)) return false;  // VTK reads strings line by line
       if (!binary_) {
         double v;
         for (std::int64_t k = 0; k < values; ++k)
@@ -163,7 +163,18 @@ class DatasetWalk {
         std::getline(in_, rest);
         in_.seekg(values * bytes, std::ios::cur);
       }
+      skip_metadata();
     }
+    return true;
+  }
+
+  // VTK looks for a METADATA block after every array (component names, information keys).
+  void skip_metadata() {
+    const std::streampos at = in_.tellg();
+    std::string word;
+    if (in_ >> word && lower(word) == "metadata") return metadata();
+    in_.clear();
+    in_.seekg(at);
   }
 };
 

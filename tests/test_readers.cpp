@@ -255,6 +255,9 @@ TEST(Readers, ALegacyDatasetFieldVtkCannotReadIsRefusedBeforeItsReaderCrashes) {
   const std::string good = "FIELD FieldData 3\nTIME 1 1 double\n0.5\nNULL_ARRAY\nCYCLE 1 1 int\n3\n";
   EXPECT_EQ(with(good), "");
   EXPECT_EQ(with(good, true), "");
+  // ParaView writes a METADATA block after an array; a string array ends the walk (not followed).
+  EXPECT_EQ(with("FIELD FieldData 2\nTIME 1 1 double\n0.5\nMETADATA\nINFORMATION 0\n\nCYCLE 1 1 int\n3\n"), "");
+  EXPECT_EQ(with("FIELD FieldData 2\nnames 1 2 string\nfield one\nFIELD two\nCYCLE 1 1 int\n3\n"), "");
   EXPECT_NE(with("FIELD FieldData 1\nfoo 1 2 nonsense\n1 2\n").find(
                 "the dataset's FIELD block 'FieldData', array 0 ('foo'): unknown type 'nonsense' (VTK's legacy "
                 "reader would crash on it)"),
