@@ -28,11 +28,6 @@ int major_version(const std::string& line) {
   return at == line.size() ? major : -1;
 }
 
-// VTK reads a keyword as the next word, in any case.
-bool is_keyword(std::string word, const std::string& keyword) {
-  for (char& ch : word) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
-  return word == keyword;
-}
 
 // Format 5, binary: "OFFSETS type", `cells` values, "CONNECTIVITY type", `size` values, then
 // "CELL_TYPES cells - 1". VTK reads each array where it expects it and trusts what it finds.
@@ -41,10 +36,10 @@ void check_binary_arrays(std::ifstream& in, const std::string& path, std::int64_
     std::string word, type, rest;
     in >> word >> type;
     std::getline(in, rest);  // VTK's binary values start on the next line
-    if (!is_keyword(word, keyword))
+    if (!is_legacy_keyword(word, keyword))
       throw InputError(where(path, "the CELLS block has no " + keyword + " array where VTK reads it (it finds '" +
                                        word.substr(0, 40) + "')"));
-    const int bytes = is_keyword(type, "VTKTYPEINT64") ? 8 : is_keyword(type, "VTKTYPEINT32") ? 4 : 0;
+    const int bytes = legacy_id_bytes(type);
     if (bytes == 0) throw InputError(where(path, keyword + ": unknown id type '" + type.substr(0, 40) + "'"));
     in.seekg(count * bytes, std::ios::cur);
   };
@@ -53,7 +48,7 @@ void check_binary_arrays(std::ifstream& in, const std::string& path, std::int64_
   std::string word;
   std::int64_t types = -1;
   in >> word >> types;
-  if (!is_keyword(word, "CELL_TYPES") || types != cells - 1)
+  if (!is_legacy_keyword(word, "CELL_TYPES") || types != cells - 1)
     throw InputError(where(path, "CELLS declares " + std::to_string(cells - 1) + " cells (" + std::to_string(cells) +
                                      " offsets), but its arrays are followed by '" + word.substr(0, 40) + " " +
                                      std::to_string(types) + "', not CELL_TYPES " + std::to_string(cells - 1)));
@@ -112,6 +107,17 @@ void check_cells_block(std::ifstream& in, const std::string& path, bool binary, 
 }
 
 }  // namespace
+
+bool is_legacy_keyword(std::string word, const std::string& keyword) {
+  for (char& ch : word) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  std::string upper = keyword;
+  for (char& ch : upper) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return word == upper;
+}
+
+int legacy_id_bytes(const std::string& type) {
+  return is_legacy_keyword(type, "VTKTYPEINT64") ? 8 : is_legacy_keyword(type, "VTKTYPEINT32") ? 4 : 0;
+}
 
 void check_legacy_cells(const std::string& path) {
   std::ifstream in(path, std::ios::binary);

@@ -16,4 +16,9 @@ void check_legacy_cells(const std::string& path);
 // check_legacy_cells calls it; `binary` and `major` are the header's.
 void check_legacy_fields(const std::string& path, bool binary, int major);
 
+// For both checks: whether `word` is `keyword` in any case (VTK reads keywords so), and the bytes
+// of one binary OFFSETS or CONNECTIVITY value of `type` (0: not an id type VTK writes).
+bool is_legacy_keyword(std::string word, const std::string& keyword);
+int legacy_id_bytes(const std::string& type);
+
 }  // namespace cellproj

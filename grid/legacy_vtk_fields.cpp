@@ -48,7 +48,8 @@ class DatasetWalk {
     std::string line;
     for (int k = 0; k < 3; ++k) std::getline(in_, line);  // the version, the title, ASCII or BINARY
     std::string word, type;
-    if (!(in_ >> word >> type) || lower(word) != "dataset" || lower(type) != "unstructured_grid") return;
+    if (!(in_ >> word >> type) || !is_legacy_keyword(word, "dataset") || !is_legacy_keyword(type, "unstructured_grid"))
+      return;
     while (in_ >> word) {
       word = lower(word);
       if (starts(word, "field")) {
@@ -67,7 +68,7 @@ class DatasetWalk {
       } else if (starts(word, "cell_types")) {
         std::int64_t n = 0;
         if (!(in_ >> n) || n < 0 || !skip(n, 4)) return;
-      } else if (word == "metadata") {
+      } else if (is_legacy_keyword(word, "metadata")) {
         metadata();
       } else {
         return;  // POINT_DATA or CELL_DATA, whose FIELDs VTK checks, or a keyword VTK refuses
@@ -116,7 +117,7 @@ class DatasetWalk {
   // Format 5: "OFFSETS type" (or "CONNECTIVITY type") and its values.
   bool array(const char* keyword, std::int64_t count) {
     std::string word, type;
-    return (in_ >> word >> type) && lower(word) == keyword && skip(count, value_bytes(lower(type)));
+    return (in_ >> word >> type) && is_legacy_keyword(word, keyword) && skip(count, legacy_id_bytes(type));
   }
 
   [[noreturn]] void refuse(const std::string& what) {
@@ -172,7 +173,7 @@ class DatasetWalk {
   void skip_metadata() {
     const std::streampos at = in_.tellg();
     std::string word;
-    if (in_ >> word && lower(word) == "metadata") return metadata();
+    if (in_ >> word && is_legacy_keyword(word, "metadata")) return metadata();
     in_.clear();
     in_.seekg(at);
   }
