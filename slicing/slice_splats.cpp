@@ -67,14 +67,14 @@ void splat_layer(const Footprint* begin, const Footprint* end, const SliceImage&
   out.rgba.assign(4 * static_cast<std::size_t>(out.x1 - out.x0) * static_cast<std::size_t>(out.y1 - out.y0), 0.0f);
   for (const Footprint* f = begin; f != end; ++f) {
     // The stencil: the plane's polygons hold the pixels where the slice is not NaN.
-    const StencilCount n = rasterize_splat_open(
+    rasterize_splat_open(
         *f, width, height, [&](int i, int j) { return std::isnan(slice.at(i, j, width)); },
         [&](int i, int j, const glm::dvec3& rgb, double a) {
           const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
                                 static_cast<float>(a)};
           over(out.at(i, j), src);
-        });
-    counters.splat_fragments += n.drawn, counters.masked_fragments += n.masked;
+        },
+        counters);
   }
 }
 

@@ -82,24 +82,19 @@ std::int64_t rasterize_splat(const Footprint& f, int width, int height, Emit&& e
 }
 
 // A splat drawn through a stencil (MWSC section 6): it adds light only at the pixels `open(i, j)`
-// says no drawn polygon holds at its depth, as rasterize_splat elsewhere. Moving the held pixels'
-// share onto the open ones was measured and raised the error (docs/methods.md, "Splatting small
-// cells"), so it is dropped.
-struct StencilCount {
-  std::int64_t drawn = 0, masked = 0;  // pixels inside the cutoff: open, and held by the stencil
-};
+// says no drawn polygon holds at its depth, as rasterize_splat elsewhere; counted in c (pixels
+// drawn, and held by the stencil). Moving the held share onto the open pixels was measured and
+// raised the error (bench/results/splat.txt), so held pixels get nothing.
 template <class Open, class Emit>
-StencilCount rasterize_splat_open(const Footprint& f, int width, int height, Open&& open, Emit&& emit) {
-  StencilCount n;
+void rasterize_splat_open(const Footprint& f, int width, int height, Open&& open, Emit&& emit, SplatCounters& c) {
   rasterize_splat(f, width, height, [&](int i, int j, const glm::dvec3& rgb, double alpha) {
     if (!open(i, j)) {
-      ++n.masked;
+      ++c.masked_fragments;
       return;
     }
-    ++n.drawn;
+    ++c.splat_fragments;
     emit(i, j, rgb, alpha);
   });
-  return n;
 }
 
 // What every splat of a frame is made with: the recentred points and `rays` on the recentred
@@ -118,10 +113,9 @@ Footprint cell_splat(const SplatContext& frame, const std::int64_t* ids, CellTyp
 // out; counted in c.
 template <class Open>
 void append_fragments(const Footprint& f, int width, int height, Open&& open, FragmentBands& out, SplatCounters& c) {
-  const StencilCount n = rasterize_splat_open(f, width, height, open, [&](int i, int j, const glm::dvec3& rgb, double a) {
-    out.append(i, j, rgb.r, rgb.g, rgb.b, a);
-  });
-  c.splat_fragments += n.drawn, c.masked_fragments += n.masked;
+  rasterize_splat_open(
+      f, width, height, open,
+      [&](int i, int j, const glm::dvec3& rgb, double a) { out.append(i, j, rgb.r, rgb.g, rgb.b, a); }, c);
 }
 
 }  // namespace cellproj

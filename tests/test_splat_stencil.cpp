@@ -31,7 +31,7 @@ Footprint round_splat() {
 // The optical depth a splat leaves in each pixel, and the pixels inside its cutoff.
 struct Drawn {
   std::vector<double> tau = std::vector<double>(32 * 32, 0.0);
-  StencilCount count;
+  SplatCounters count;  // splat_fragments: pixels drawn; masked_fragments: held
   double sum() const {
     double s = 0.0;
     for (double t : tau) s += t;
@@ -41,9 +41,12 @@ struct Drawn {
 template <class Open>
 Drawn draw(const Footprint& f, Open&& open) {
   Drawn d;
-  d.count = rasterize_splat_open(f, 32, 32, open, [&](int i, int j, const glm::dvec3&, double alpha) {
-    d.tau[static_cast<std::size_t>(j * 32 + i)] = -std::log1p(-alpha);
-  });
+  rasterize_splat_open(
+      f, 32, 32, open,
+      [&](int i, int j, const glm::dvec3&, double alpha) {
+        d.tau[static_cast<std::size_t>(j * 32 + i)] = -std::log1p(-alpha);
+      },
+      d.count);
   return d;
 }
 
@@ -52,11 +55,11 @@ Drawn draw(const Footprint& f, Open&& open) {
 TEST(SplatStencil, AMaskedSplatAddsNothingWhereTheStencilHoldsAndTheSameElsewhere) {
   const Footprint f = round_splat();
   const Drawn all = draw(f, [](int, int) { return true; });
-  EXPECT_EQ(all.count.masked, 0);
-  EXPECT_GT(all.count.drawn, 50);
+  EXPECT_EQ(all.count.masked_fragments, 0);
+  EXPECT_GT(all.count.splat_fragments, 50);
   const Drawn half = draw(f, [](int i, int) { return i >= 16; });
-  EXPECT_EQ(half.count.drawn + half.count.masked, all.count.drawn);
-  EXPECT_GT(half.count.masked, 0);
+  EXPECT_EQ(half.count.splat_fragments + half.count.masked_fragments, all.count.splat_fragments);
+  EXPECT_GT(half.count.masked_fragments, 0);
   for (int j = 0; j < 32; ++j)
     for (int i = 0; i < 32; ++i) {
       const std::size_t p = static_cast<std::size_t>(j * 32 + i);
@@ -65,7 +68,7 @@ TEST(SplatStencil, AMaskedSplatAddsNothingWhereTheStencilHoldsAndTheSameElsewher
   EXPECT_NEAR(half.sum() / all.sum(), 0.5, 0.05);  // the right half of a splat centred at 16
   const Drawn none = draw(f, [](int, int) { return false; });
   EXPECT_EQ(none.sum(), 0.0);
-  EXPECT_EQ(none.count.drawn, 0);
+  EXPECT_EQ(none.count.splat_fragments, 0);
 }
 
 TEST(SplatStencil, ItHoldsTheRayWhereADrawnCellIsAndNowhereElse) {
