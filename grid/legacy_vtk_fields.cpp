@@ -1,7 +1,6 @@
 #include <cctype>
 #include <cstdint>
 #include <fstream>
-#include <limits>
 #include <string>
 
 #include "base/error.hpp"
@@ -85,7 +84,7 @@ class DatasetWalk {
 
   std::int64_t left() { return size_ - static_cast<std::int64_t>(in_.tellg()); }
 
-  // Past `count` values of `bytes` each (binary) or words (ASCII); false where the walk must stop.
+  // Past `count` values of `bytes` each (binary) or numbers (ASCII); false where the walk must stop.
   bool skip(std::int64_t count, int bytes) {
     if (binary_) {
       if (bytes <= 0) return false;  // strings and bits: not followed further
@@ -95,15 +94,19 @@ class DatasetWalk {
       in_.seekg(count * bytes, std::ios::cur);
       return true;
     }
-    // VTK reads numbers and, at one that is not, stops; its look for METADATA clears the stream's
-    // error, and the next keyword is read from there.
+    numbers(count);  // VTK's look for METADATA clears the stream's error: the walk goes on from there
+    return true;
+  }
+
+  // ASCII: reads up to `count` numbers as VTK does, stopping at one that is not; how many were.
+  std::int64_t numbers(std::int64_t count) {
     double v;
     for (std::int64_t k = 0; k < count; ++k)
       if (!(in_ >> v)) {
         in_.clear();
-        return !in_.eof();
+        return k;
       }
-    return true;
+    return count;
   }
 
   // "METADATA" after an array: lines up to a blank one.
@@ -153,16 +156,11 @@ class DatasetWalk {
                " values, more than the file's remaining " + std::to_string(left()) + " bytes hold");
       const std::int64_t values = static_cast<std::int64_t>(components) * tuples;
       if (bytes == kVariable || (bytes == kBit && binary_)) return false;  // VTK reads strings line by line
-      if (!binary_) {
-        double v;
-        for (std::int64_t k = 0; k < values; ++k)
-          if (!(in_ >> v))
-            refuse(which + ": its values end, or stop being numbers, after " + std::to_string(k) + " of " +
-                   std::to_string(values));
-      } else {
-        std::string rest;
-        std::getline(in_, rest);
-        in_.seekg(values * bytes, std::ios::cur);
+      if (binary_) {
+        skip(values, bytes);
+      } else if (const std::int64_t read = numbers(values); read < values) {
+        refuse(which + ": its values end, or stop being numbers, after " + std::to_string(read) + " of " +
+               std::to_string(values));
       }
       skip_metadata();
     }
