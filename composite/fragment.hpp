@@ -7,6 +7,7 @@
 #include <utility>
 #include <vector>
 
+#include "view/huge_pages.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {
@@ -17,9 +18,12 @@ struct Fragment {
   float rgba[4];
 };
 
+// A batch's fragments: a buffer written once per batch, on huge pages once it is large.
+using Fragments = std::vector<Fragment, HugePageAllocator<Fragment>>;
+
 // Appends pixel (i, j)'s fragment of a `width`-wide image. Written field by field into the vector:
 // a fragment built on the stack and copied whole showed in perf as a store-forwarding stall.
-inline void append_fragment(std::vector<Fragment>& out, int width, int i, int j, double r, double g, double b,
+inline void append_fragment(Fragments& out, int width, int i, int j, double r, double g, double b,
                             double alpha) {
   Fragment& f = out.emplace_back();
   f.pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i);
@@ -45,11 +49,11 @@ class FragmentBands {
     append_fragment(bands_[static_cast<std::size_t>(j >> shift_)], width_, i, j, r, g, b, alpha);
   }
   std::size_t bands() const { return bands_.size(); }
-  const std::vector<Fragment>& band(std::size_t b) const { return bands_[b]; }
+  const Fragments& band(std::size_t b) const { return bands_[b]; }
 
  private:
   int width_ = 0, shift_ = 0;
-  std::vector<std::vector<Fragment>> bands_;
+  std::vector<Fragments> bands_;
 };
 
 // Fragment buffers kept from frame to frame by whoever renders frames (a ProjectionRenderer): a

@@ -139,7 +139,7 @@ Image GLCompositor::finish() {
   glFinish();
   Image img(gl_->width, gl_->height);
   if (gl_->target == GLTarget::float32)
-    img.rgba = gl_->color32;
+    img.rgba.assign(gl_->color32.begin(), gl_->color32.end());
   else
     for (std::size_t k = 0; k < img.rgba.size(); ++k) img.rgba[k] = gl_->color8[k] / 255.0f;
   return img;

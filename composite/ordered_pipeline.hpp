@@ -130,7 +130,7 @@ typename Source::Counters composite_in_order(Image& image, std::size_t n, const 
   auto blend_bands = [&](const Batch& b, const std::size_t* upto) {
     tbb::parallel_for(tbb::blocked_range<std::size_t>(0, bands), [&](const tbb::blocked_range<std::size_t>& r) {
       for (std::size_t band = r.begin(); band != r.end(); ++band) {
-        const std::vector<Fragment>& f = b.fragments.band(band);
+        const Fragments& f = b.fragments.band(band);
         const std::size_t to = upto ? upto[band] : f.size();
         composite_over(image, f.data() + done[band], to - done[band]);
         done[band] = to;

@@ -54,8 +54,9 @@ ImageSize size_from(const std::pair<int, int>& size) {
 }
 
 py::array_t<float> to_numpy(Image&& image) {
-  auto* owned = new std::vector<float>(std::move(image.rgba));
-  py::capsule free(owned, [](void* p) { delete static_cast<std::vector<float>*>(p); });
+  using Pixels = decltype(image.rgba);
+  auto* owned = new Pixels(std::move(image.rgba));
+  py::capsule free(owned, [](void* p) { delete static_cast<Pixels*>(p); });
   return py::array_t<float>({image.height, image.width, 4}, owned->data(), free);
 }
 

@@ -6,6 +6,8 @@
 #include "composite/ordered_pipeline.hpp"
 #include "composite/partial_image.hpp"
 
+#include <algorithm>
+#include <cstdint>
 #include <random>
 
 #include <tbb/task_arena.h>
@@ -133,6 +135,19 @@ TEST(FragmentPool, AReusedBufferHasTheNewImagesBandsAndNoFragments) {
   ASSERT_EQ(again.bands(), 3u);
   for (std::size_t k = 0; k < again.bands(); ++k) EXPECT_TRUE(again.band(k).empty()) << k;
   EXPECT_EQ(pool.take(32, 40, 30).bands(), 1u);  // a fresh one when the pool is empty
+}
+
+TEST(HugePageAllocator, LargeBlocksSitOnHugePageBoundariesAndKeepTheirValuesAsTheyGrow) {
+  Fragments f;
+  for (std::uint32_t k = 0; k < 300000; ++k) f.push_back({k, {float(k), 0.0f, 0.0f, 1.0f}});  // 6 MB
+  ASSERT_GE(f.capacity() * sizeof(Fragment), kHugePage);
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(f.data()) % kHugePage, 0u);
+  for (std::uint32_t k = 0; k < 300000; k += 997) ASSERT_EQ(f[k].pixel, k);
+  Fragments small(10);  // below 2 MB: the plain allocator
+  EXPECT_EQ(small.size(), 10u);
+  const Image image(1024, 1024);  // 16 MB, zeroed
+  EXPECT_EQ(reinterpret_cast<std::uintptr_t>(image.rgba.data()) % kHugePage, 0u);
+  EXPECT_EQ(*std::max_element(image.rgba.begin(), image.rgba.end()), 0.0f);
 }
 
 }  // namespace

@@ -48,7 +48,7 @@ CellMoments moments_of(const Mesh& m) {
 }
 
 // The splat of a one-cell mesh's cell in the image of `camera` (fragments, counters).
-std::vector<Fragment> splat_of(const Mesh& m, const TransferFunction& tf, const Camera& camera, int size,
+Fragments splat_of(const Mesh& m, const TransferFunction& tf, const Camera& camera, int size,
                                SplatCounters& counters, double prefilter = 0.7) {
   const MeshView v = m.view();
   const RecentredPoints pts = recentre(v);
@@ -59,7 +59,7 @@ std::vector<Fragment> splat_of(const Mesh& m, const TransferFunction& tf, const 
   return out.band(0);
 }
 
-double total_alpha(const std::vector<Fragment>& f) {
+double total_alpha(const Fragments& f) {
   double a = 0.0;
   for (const Fragment& g : f) a += g.rgba[3];
   return a;
@@ -100,7 +100,7 @@ TEST(Splat, ALargeSplatIntegratesToTheCellsExactTotalLight) {
   for (const Camera& c :
        {test::looking_down(8.0, {0.5, 0.5, 0.5}), test::perspective({60.0, -48.0, 52.0}, {0.5, 0.5, 0.5}, 7.5)}) {
     SplatCounters n;
-    const std::vector<Fragment> f = splat_of(m, tf, c, 128, n);
+    const Fragments f = splat_of(m, tf, c, 128, n);
     const PixelRays rays(c, 128, 128);
     double exact = 0.0;
     for (int i = 0; i < 40; ++i)
@@ -138,7 +138,7 @@ TEST(Splat, AtAnyOpticalDepthTheOpacityIsItsGaussiansClosedForm) {
     const Footprint f = cell_splat({pts, m.fields[0].values.data(), tf, rays, 0.7}, v.cell(0), v.type(0), n);
     FragmentBands bands(96, 96, 30);
     append_fragments(f, 96, 96, kEverywhere, bands, n);
-    const std::vector<Fragment>& out = bands.band(0);
+    const Fragments& out = bands.band(0);
     const double closed = 2.0 * 3.14159265358979323846 * std::sqrt(glm::determinant(f.covariance)) * ein(f.peak);
     EXPECT_NEAR(total_alpha(out) / closed, 1.0, 1e-3) << "kappa " << kappa;
     EXPECT_NEAR(f.total, kappa * 1.0 * (96.0 / 8.0) * (96.0 / 8.0), 1e-9 * f.total);  // kappa V over a pixel's area
@@ -154,7 +154,7 @@ TEST(Splat, ASplatStraddlingTheImageEdgeKeepsWhatFallsInside) {
   const double half = total_alpha(splat_of(m, tf, test::looking_down(8.0, {4.5, 0.5, 0.5}), 64, n));
   EXPECT_NEAR(half / whole, 0.5, 1e-3);
   // Wholly outside: nothing, and no pixel out of range.
-  const std::vector<Fragment> none = splat_of(m, tf, test::looking_down(8.0, {20.0, 0.5, 0.5}), 64, n);
+  const Fragments none = splat_of(m, tf, test::looking_down(8.0, {20.0, 0.5, 0.5}), 64, n);
   EXPECT_TRUE(none.empty());
 }
 
@@ -174,7 +174,7 @@ TEST(Splat, ZeroVolumeAndInvertedCellsAreRefusedAndCounted) {
   // A sliver of nearly zero thickness still has a finite footprint (the pre-filter's).
   std::vector<glm::dvec3> sliver = kTet;
   sliver[3].z = 1e-9;
-  const std::vector<Fragment> f = splat_of(one_cell(CellType::Tetra, sliver), tf, c, 32, n);
+  const Fragments f = splat_of(one_cell(CellType::Tetra, sliver), tf, c, 32, n);
   EXPECT_FALSE(f.empty());
   for (const Fragment& g : f)
     for (float v : g.rgba) EXPECT_TRUE(std::isfinite(v) && v >= 0.0f && v <= 1.0f);
