@@ -77,7 +77,8 @@ class Bench:
 
     @staticmethod
     def print_row(r):
-        err = "reference | reference" if r["rmse"] == "" else f"{r['rmse']:.2e} | {r['max_abs']:.2e}"
+        err = ("reference | reference" if r["method"] == "exact" else "— | —") if r["rmse"] == "" else \
+            f"{r['rmse']:.2e} | {r['max_abs']:.2e}"
         print(f"| {r['mesh']} | {r['cells']} | {r['method']} | {r['sort']} | {r['width']}² | {r['median_seconds']:.3f} | "
               f"{r['min_seconds']:.3f} | {r['max_seconds']:.3f} | {r['cells_per_second']:.3g} | {err} | {r['violations']} |",
               flush=True)
@@ -192,6 +193,23 @@ def measure(bench, name, scene, mesh, info, size, peers):
                   max_abs=e[1], violations="")
 
 
+def measure_speed(bench, name, scene, mesh, info, size):
+    """--speed-only: each projection method and VTK's projected tetrahedra, timed in the same run
+    (no reference, so no error; the full run measures that)."""
+    base = dict(mesh=name, cells=info["cells"], width=size, height=size)
+    for method in METHODS:
+        st, _ = bench.render(scene, f"{name}_{size}_{method}_speed", method, size, bench.frames,
+                             ["--tetrahedralize", "all"])
+        bench.add(**base, method=method, sort=st["sort"], median_seconds=st["frame_seconds"],
+                  min_seconds=st["min_frame_seconds"], max_seconds=st["max_frame_seconds"],
+                  cells_per_second=info["cells"] / st["frame_seconds"], rmse="", max_abs="", violations="")
+    if mesh.endswith(".vtu"):
+        st, _ = bench.peer(scene, f"{name}_{size}_vtk-pt_speed", "pt", size)
+        bench.add(**base, method="vtk-pt", sort="", median_seconds=st["median_seconds"],
+                  min_seconds=st["min_seconds"], max_seconds=st["max_seconds"],
+                  cells_per_second=info["cells"] / st["median_seconds"], rmse="", max_abs="", violations="")
+
+
 def report(path):
     """The tables of an earlier run, from its results.csv."""
     bench = Bench("", os.path.dirname(path), 0)
@@ -231,7 +249,7 @@ def model_check(bench):
 
 def peer_ratios(bench):
     """Each VTK mapper's time over ours (above 1: ours is faster), per mesh and size."""
-    ours = ["pt-linear", "pt-table", "pt-breakpoints"]
+    ours = ["pt-linear", "pt-table", "pt-analytic", "pt-breakpoints"]
     print("\n| mesh | size | peer | peer s | peer RMSE | " + " | ".join(f"peer / {m}" for m in ours) + " |")
     print("|---|---|---|---|---|" + "---|" * len(ours))
     for r in bench.rows:
@@ -242,7 +260,8 @@ def peer_ratios(bench):
             if x["mesh"] == r["mesh"] and x["width"] == r["width"]:
                 mine.setdefault(x["method"], x["median_seconds"])
         ratios = " | ".join(f"{r['median_seconds'] / mine[m]:.2f}" if m in mine else "" for m in ours)
-        print(f"| {r['mesh']} | {r['width']}² | {r['method']} | {r['median_seconds']:.3f} | {r['rmse']:.1e} | {ratios} |")
+        rmse = f"{r['rmse']:.1e}" if r["rmse"] != "" else "—"
+        print(f"| {r['mesh']} | {r['width']}² | {r['method']} | {r['median_seconds']:.3f} | {rmse} | {ratios} |")
 
 
 def sweeps(bench, default_scene, big):
@@ -333,6 +352,8 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--no-peers", action="store_true", help="skip VTK's mappers")
     ap.add_argument("--report", metavar="CSV", help="print the tables of an earlier run's results.csv and stop")
+    ap.add_argument("--speed-only", action="store_true",
+                    help="each projection method against VTK's projected tetrahedra, time only, every mesh (~15 min)")
     ap.add_argument("--sweeps-only", action="store_true", help="only the table-size and thread sweeps (~3 min)")
     a = ap.parse_args()
     if a.report:
@@ -358,6 +379,12 @@ def main():
                 mesh = os.path.normpath(os.path.join(os.path.dirname(scene), json.load(f)["mesh"]))
             meshes.append((n, scene, mesh, bench.info(mesh)))
     sizes = [512] if a.quick else [512, 1024]
+    if a.speed_only:
+        for name, scene, mesh, info in meshes:
+            for size in sizes:
+                measure_speed(bench, name, scene, mesh, info, size)
+        peer_ratios(bench)
+        return
     print(HEADER)
     for name, scene, mesh, info in meshes:
         for size in sizes:

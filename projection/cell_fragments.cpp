@@ -6,6 +6,7 @@
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
@@ -295,14 +296,31 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
   };
 
   if (method_.gouraud) {
+    // Colour, opacity (pt-table: kappa and thickness) are affine along a row of a triangle (Gouraud
+    // shading, MWSC section 2): a run of pixels starts from its first pixel's values and steps.
     const bool table = method_.opacity_table;
-    each_triangle([&](int i, int j, std::size_t t, double w0, double w1, double w2) {
+    for (std::size_t t = 0; t < p.tri.size(); ++t) {
+      const ThickVertex* V = p.tri[t].v;
       const GouraudCorner* g = &p.corner[3 * t];
-      const glm::dvec3 c = w0 * g[0].c + w1 * g[1].c + w2 * g[2].c;
-      const double x = w0 * g[0].a + w1 * g[1].a + w2 * g[2].a;
-      const double alpha = table ? (*table_)(x, w0 * g[0].l + w1 * g[1].l + w2 * g[2].l) : x;
-      emitted += emit(i, j, c * alpha, alpha);
-    });
+      rasterize_triangle_spans(
+          glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
+          [&](int j, int b, int e, const double w[3], const double dw[3]) {
+            const glm::dvec3 c0 = w[0] * g[0].c + w[1] * g[1].c + w[2] * g[2].c;
+            const glm::dvec3 dc = dw[0] * g[0].c + dw[1] * g[1].c + dw[2] * g[2].c;
+            const double a0 = w[0] * g[0].a + w[1] * g[1].a + w[2] * g[2].a;
+            const double da = dw[0] * g[0].a + dw[1] * g[1].a + dw[2] * g[2].a;
+            const double l0 = w[0] * g[0].l + w[1] * g[1].l + w[2] * g[2].l;
+            const double dl = dw[0] * g[0].l + dw[1] * g[1].l + dw[2] * g[2].l;
+            for (int i = b; i < e; ++i) {
+              const double k = i - b;  // steps from the run's start (no running sum: no drift)
+              // Clamped: a step's rounding may leave a value that is 0 at an edge a hair below it.
+              const glm::dvec3 c = glm::max(c0 + k * dc, 0.0);
+              const double x = std::max(a0 + k * da, 0.0);
+              const double alpha = table ? (*table_)(x, std::max(l0 + k * dl, 0.0)) : std::min(x, 1.0);
+              emitted += emit(i, j, c * alpha, alpha);
+            }
+          });
+    }
     counters.fragments += emitted;
     return;
   }

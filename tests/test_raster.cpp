@@ -2,6 +2,7 @@
 // centres the per-pixel rule covers, for every shape, and triangles sharing edges cover each centre
 // once.
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <random>
 #include <set>
@@ -180,6 +181,31 @@ TEST(Raster, ATriangleFarOutsideTheImageHasNoRows) {
   const TriangleCoverage t({10, 10}, {1e12, 20}, {10, 1e12}, 48, 48);
   EXPECT_EQ(t.first_row(), 10);
   EXPECT_EQ(t.last_row(), 47);
+}
+
+TEST(Raster, SpansCoverThePixelsOfTheWeightsAndStepToTheirValues) {
+  // A run's first weights plus k steps are pixel k's weights (the shading of pt-linear and
+  // pt-table), and the runs cover exactly the pixels rasterize_triangle_weights visits.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> pos(-10.0, 80.0);
+  for (int n = 0; n < 500; ++n) {
+    const glm::dvec2 a(pos(rng), pos(rng)), b(pos(rng), pos(rng)), c(pos(rng), pos(rng));
+    std::vector<std::pair<long, std::array<double, 3>>> per_pixel, stepped;
+    rasterize_triangle_weights(a, b, c, 64, 48, [&](int i, int j, double w0, double w1, double w2) {
+      per_pixel.push_back({j * 64L + i, {w0, w1, w2}});
+    });
+    rasterize_triangle_spans(a, b, c, 64, 48, [&](int j, int begin, int end, const double w[3], const double dw[3]) {
+      ASSERT_LT(begin, end);
+      for (int i = begin; i < end; ++i)
+        stepped.push_back({j * 64L + i, {w[0] + (i - begin) * dw[0], w[1] + (i - begin) * dw[1],
+                                         w[2] + (i - begin) * dw[2]}});
+    });
+    ASSERT_EQ(stepped.size(), per_pixel.size()) << n;
+    for (std::size_t k = 0; k < stepped.size(); ++k) {
+      ASSERT_EQ(stepped[k].first, per_pixel[k].first) << n;
+      for (int v = 0; v < 3; ++v) EXPECT_NEAR(stepped[k].second[v], per_pixel[k].second[v], 1e-12) << n;
+    }
+  }
 }
 
 }  // namespace

@@ -36,6 +36,7 @@ struct EdgeFunction {
   }
   double row(double y) const { return dx * (y - ay); }
   double at(double row_value, double x) const { return sign * (row_value - dy * (x - ax)); }
+  double step() const { return -sign * dy; }  // at(r, x + 1) - at(r, x), up to rounding
   bool inside(double e) const { return e > 0 || (e == 0 && own); }
   // Narrows the pixels begin <= i < end of row y (row_value = row(y)) to those inside this edge,
   // exactly. Along the row the edge's test holds on one side of the crossing (the edge function is
@@ -126,6 +127,11 @@ class TriangleCoverage {
     // e1 is opposite p0, e2 opposite p1, e0 opposite p2 (in the possibly swapped order).
     w[0] = e1 * inv_, w[1] = (swapped_ ? e0 : e2) * inv_, w[2] = (swapped_ ? e2 : e0) * inv_;
   }
+  // How much each weight changes from one pixel of a row to the next: the weights are affine in x.
+  void weight_steps(double dw[3]) const {
+    const double d0 = f0_.step(), d1 = f1_.step(), d2 = f2_.step();
+    dw[0] = d1 * inv_, dw[1] = (swapped_ ? d0 : d2) * inv_, dw[2] = (swapped_ ? d2 : d0) * inv_;
+  }
 
  private:
   // The edges of (p0, p1, p2), or of (p0, p2, p1) when that turns negative.
@@ -170,6 +176,25 @@ void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int
     t.run(r, b, e);
     double w[3];
     for (int i = b; i < e; ++i) t.weights(r, i, w), covered(i, j, w[0], w[1], w[2]);
+  }
+}
+
+// Calls span(j, begin, end, w, dw) for every row j of a width x height image on which the triangle
+// covers the centres of pixels begin <= i < end (and at least one), with the barycentric weights w
+// of p0, p1 and p2 at the centre of pixel `begin` and their change dw from one pixel to the next:
+// for the shading of a run of pixels by plane equations instead of weights per pixel.
+template <class Span>
+void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Span&& span) {
+  const TriangleCoverage t(p0, p1, p2, width, height);
+  double w[3], dw[3];
+  t.weight_steps(dw);
+  for (int j = t.first_row(); j <= t.last_row(); ++j) {
+    const TriangleCoverage::Row r = t.row(j);
+    int b, e;
+    t.run(r, b, e);
+    if (b == e) continue;
+    t.weights(r, b, w);
+    span(j, b, e, w, dw);
   }
 }
 
