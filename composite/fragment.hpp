@@ -3,8 +3,6 @@
 // "over" for back-to-front order and "under" for front-to-back.
 #include <cstddef>
 #include <cstdint>
-#include <mutex>
-#include <utility>
 #include <vector>
 
 #include "view/huge_pages.hpp"
@@ -54,31 +52,6 @@ class FragmentBands {
  private:
   int width_ = 0, shift_ = 0;
   std::vector<Fragments> bands_;
-};
-
-// Fragment buffers kept from frame to frame by whoever renders frames (a ProjectionRenderer): a
-// frame's batches take them and give them back, so a steady frame writes its fragments into pages
-// already mapped instead of growing fresh buffers, a page fault each 4 KB, every frame. What it
-// holds between frames is what the last frame's batches used at most (2 per thread, each near
-// PipelineLimits::batch_pixels fragments: composite/ordered_pipeline.hpp).
-class FragmentPool {
- public:
-  FragmentBands take(int width, int height, int shift) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    if (free_.empty()) return FragmentBands(width, height, shift);
-    FragmentBands b = std::move(free_.back());
-    free_.pop_back();
-    b.reset(width, height, shift);
-    return b;
-  }
-  void give(FragmentBands&& b) {
-    std::lock_guard<std::mutex> lock(mutex_);
-    free_.push_back(std::move(b));
-  }
-
- private:
-  std::mutex mutex_;
-  std::vector<FragmentBands> free_;
 };
 
 // Back to front: src in front of what dst holds.

@@ -35,7 +35,7 @@ struct PipelineLimits {
   // fragments (20 bytes each, at most one per covered pixel and item) stay near 4 MB: a token's
   // buffer is then reused by the frame's later batches instead of growing into fresh pages, a page
   // fault each (at 5e6, 100 MB per token, pt-linear on 10k tetrahedra at 1024² took 1.6 times as
-  // long: docs/methods.md, "Fragments: rate and memory traffic").
+  // long: docs/methods.md, "Fresh pages").
   double batch_pixels = 2e5;
   // An item covering more is not buffered: the compositor draws it itself, in order, straight onto
   // the image (a few huge cells in a large image would otherwise buffer gigabytes of fragments).
@@ -67,12 +67,11 @@ inline int band_shift(int height) {
 // may cover (its image bounding box). Threads: those of the calling task arena. Returns the sum of
 // the batches' counters.
 // `blend_seconds`, when given, receives the time the blend stage took (the serial share with one
-// band; its bands' parallel loops included otherwise). The batches' buffers come from `pool` and go
-// back to it, when given.
+// band; its bands' parallel loops included otherwise).
 template <class Source, class Footprint>
 typename Source::Counters composite_in_order(Image& image, std::size_t n, const Footprint& footprint,
                                              const PipelineLimits& limits, const Source& source,
-                                             double* blend_seconds = nullptr, FragmentPool* pool = nullptr) {
+                                             double* blend_seconds = nullptr) {
   const int shift = band_shift(image.height);
   struct Batch {
     std::size_t begin = 0, end = 0;
@@ -89,7 +88,7 @@ typename Source::Counters composite_in_order(Image& image, std::size_t n, const 
   std::vector<Batch> batches(static_cast<std::size_t>(tokens));
   tbb::concurrent_bounded_queue<Batch*> free;  // batches are reused, keeping their fragment buffers
   for (auto& b : batches) {
-    b.fragments = pool ? pool->take(image.width, image.height, shift) : FragmentBands(image.width, image.height, shift);
+    b.fragments.reset(image.width, image.height, shift);
     free.push(&b);
   }
   const std::size_t bands = batches.front().fragments.bands();
@@ -155,8 +154,6 @@ typename Source::Counters composite_in_order(Image& image, std::size_t n, const 
                              tbb::make_filter<Batch*, Batch*>(tbb::filter_mode::parallel, project) &
                              tbb::make_filter<Batch*, void>(tbb::filter_mode::serial_in_order, blend));
   if (blend_seconds) *blend_seconds = blending;
-  if (pool)
-    for (auto& b : batches) pool->give(std::move(b.fragments));
   return total;
 }
 

@@ -266,8 +266,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
     const FrameCounters counters = composite_in_order(
         image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
-        OrderedCells{project, cells, order, small, st.small_cells, splats}, &st.blend_seconds,
-        &fragment_pool_);
+        OrderedCells{project, cells, order, small, st.small_cells, splats}, &st.blend_seconds);
     st.counters = counters.projection;
     st.splat.add(counters.splat);
   }

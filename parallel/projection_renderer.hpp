@@ -10,7 +10,6 @@
 #include <utility>
 #include <vector>
 
-#include "composite/fragment.hpp"
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
 #include "parallel/projection_options.hpp"
@@ -71,7 +70,6 @@ class ProjectionRenderer {
   SplittingSorter sorter_;
   mutable std::mutex tracer_mutex_;
   mutable std::unique_ptr<CellRayTracer> tracer_;
-  mutable FragmentPool fragment_pool_;  // the batches' fragment buffers, from frame to frame
   double max_diameter_ =
       0.0;  // the longest distance between two vertices of a cell: no ray segment in a cell is longer
 };

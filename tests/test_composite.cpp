@@ -114,27 +114,6 @@ TEST(OrderedPipeline, BandsAndDirectItemsBlendInOrderForAnyThreadCount) {
     tbb::task_arena(threads).execute([&] { composite_in_order(image, items.size(), area, limits, Rectangles{items}); });
     EXPECT_EQ(image.rgba, serial.rgba) << threads << " threads";
   }
-  // Buffers kept from frame to frame: a pool's buffers, used before with another band count and
-  // left full of the last frame's fragments, give the same picture.
-  FragmentPool pool;
-  for (int threads : {8, 1, 4, 2, 8}) {
-    Image image(120, 100);
-    tbb::task_arena(threads).execute(
-        [&] { composite_in_order(image, items.size(), area, limits, Rectangles{items}, nullptr, &pool); });
-    EXPECT_EQ(image.rgba, serial.rgba) << threads << " threads, reused buffers";
-  }
-}
-
-TEST(FragmentPool, AReusedBufferHasTheNewImagesBandsAndNoFragments) {
-  FragmentPool pool;
-  FragmentBands b = pool.take(64, 64, 3);  // 8 bands of 8 rows
-  ASSERT_EQ(b.bands(), 8u);
-  for (int j = 0; j < 64; ++j) b.append(1, j, 0.1, 0.2, 0.3, 0.5);
-  pool.give(std::move(b));
-  const FragmentBands again = pool.take(32, 40, 4);  // the same buffers: 3 bands of 16 rows, empty
-  ASSERT_EQ(again.bands(), 3u);
-  for (std::size_t k = 0; k < again.bands(); ++k) EXPECT_TRUE(again.band(k).empty()) << k;
-  EXPECT_EQ(pool.take(32, 40, 30).bands(), 1u);  // a fresh one when the pool is empty
 }
 
 TEST(HugePageAllocator, LargeBlocksSitOnHugePageBoundariesAndKeepTheirValuesAsTheyGrow) {
