@@ -15,8 +15,9 @@ constexpr int kSeriesTerms = 13;  // n = 0 .. 12: relative error below 1e-13 wit
 constexpr double kTinyDepth = 1e-3;
 
 // M_k(a) = int_0^1 u^k e^{-a u} du for k = 0 .. kmax, by the recursion M_k = (k M_{k-1} - e^-a) / a
-// (by parts): downward from well above kmax when a is small (where it damps errors by a/k per
-// step), upward when a is large (where it damps them by k/a).
+// (by parts): downward from kmax when a is small (where it damps errors by a/k per step), upward
+// when a is large (where it damps them by k/a). The downward start M_kmax is its series
+// e^-a sum_j a^j kmax! / (kmax + j + 1)! (expand e^{a (1 - u)}), of positive terms: no cancellation.
 void exponential_moments(double a, int kmax, double* m) {
   static const auto inverse = [] {  // 1 / k: the recursion's divisions, as multiplications
     std::array<double, 128> r{};
@@ -30,11 +31,11 @@ void exponential_moments(double a, int kmax, double* m) {
     for (int k = 1; k <= kmax; ++k) m[k] = (k * m[k - 1] - e) * ia;
     return;
   }
-  // Enough steps that prod a / k over them is below 1e-17 (a <= 8, kmax <= 24: top < 128).
-  const int top = kmax + 16 + static_cast<int>(3.0 * a);
-  double mk = e / (top + 1 - a / (top + 2));  // M_top to first order in a / top
-  for (int k = top; k > kmax; --k) mk = (a * mk + e) * inverse[k];
-  m[kmax] = mk;
+  // Terms shrink by a / (kmax + j + 1) once past a: below 1e-17 of the sum within 64 terms for
+  // a <= 8, kmax <= 24 (the table's 128 entries bound j).
+  double term = inverse[kmax + 1], sum = term;
+  for (int j = kmax + 2; j < 128 && term > 1e-17 * sum; ++j) term *= a * inverse[j], sum += term;
+  m[kmax] = e * sum;
   for (int k = kmax; k > 0; --k) m[k - 1] = (a * m[k] + e) * inverse[k];
 }
 

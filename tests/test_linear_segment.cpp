@@ -57,7 +57,7 @@ TEST(LinearSegment, ClosedFormMatchesReferenceQuadrature) {
 
 TEST(LinearSegment, TheSeriesInTheSlopeMatchesTheReferenceWhereItIsUsed) {
   // kappa nearly constant along the segment (|b| <= 0.03 (1 + a), tau = a u + b u^2): the series of
-  // moments M_2n(a), whose recursion starts fewer steps above the moments needed where a is small.
+  // moments M_2n(a), whose downward recursion starts from the top moment's own series.
   const glm::dvec3 c0{0.9, 0.2, 0.1}, c1{0.1, 0.5, 1.0};
   for (int i = 0; i <= 40; ++i) {
     const double a = 1e-3 * std::pow(8e3, i / 40.0);  // 1e-3 .. 8
