@@ -1,22 +1,29 @@
 #!/usr/bin/env bash
 # Frame time of two cellproj builds on one scene, measured in one run: A and B render in turn
-# (A, B, A, B, ...), each `--frames 4`, and the median of their per-run median frame times is
-# printed with the ratio B/A and whether the last pictures are bit-identical. For judging one
-# change on this noisy machine, where only side-by-side runs tell tens of percent.
-# usage: bench/ab_frames.sh A_EXE B_EXE SCENE METHOD SIZE [ROUNDS] [-- extra render options]
+# (A, B, B, A, ... so drift favours neither), each FRAMES frames on 2 threads, and the median of
+# their per-run median frame times is printed with the ratio B/A and whether the last pictures
+# are bit-identical. For judging one change on this noisy machine, where only side-by-side runs
+# tell tens of percent.
+# usage: bench/ab_frames.sh A_EXE B_EXE SCENE METHOD SIZE [ROUNDS=3] [FRAMES=4] [-- extra render options]
 #   A_EXE: e.g. a build of the previous commit (git worktree add /tmp/a REV; cmake -S /tmp/a -B
 #   /tmp/a/build -DCMAKE_BUILD_TYPE=Release; cmake --build /tmp/a/build --target cellproj).
 set -euo pipefail
-a=$1; b=$2; scene=$3; method=$4; size=$5; rounds=${6:-3}
-shift $(($# < 6 ? $# : 6)); [ "${1:-}" = "--" ] && shift; extra=("$@")
+a=$1; b=$2; scene=$3; method=$4; size=$5; shift 5
+rounds=3; frames=4
+if [ $# -gt 0 ] && [ "$1" != "--" ]; then rounds=$1; shift; fi
+if [ $# -gt 0 ] && [ "$1" != "--" ]; then frames=$1; shift; fi
+[ "${1:-}" = "--" ] && shift; extra=("$@")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 frame() {  # EXE TAG -> median frame seconds of the run
-  "$1" render "$scene" --method "$method" --size "${size}x${size}" --frames 4 --threads 2 -o "$tmp/$2.png" \
+  "$1" render "$scene" --method "$method" --size "${size}x${size}" --frames "$frames" --threads 2 -o "$tmp/$2.png" \
     --npy "$tmp/$2.npy" --stats "${extra[@]}" 2>"$tmp/$2.err" >/dev/null
   tail -1 "$tmp/$2.err" | python3 -c 'import json, sys; print(json.load(sys.stdin)["frame_seconds"])'
 }
 ta=(); tb=()
-for ((r = 0; r < rounds; r++)); do ta+=("$(frame "$a" a)"); tb+=("$(frame "$b" b)"); done
+for ((r = 0; r < rounds; r++)); do
+  if ((r % 2 == 0)); then ta+=("$(frame "$a" a)"); tb+=("$(frame "$b" b)")
+  else tb+=("$(frame "$b" b)"); ta+=("$(frame "$a" a)"); fi
+done
 same=$(cmp -s "$tmp/a.npy" "$tmp/b.npy" && echo identical || echo DIFFERENT)
 python3 - "$(basename "$scene" .json)" "$method" "$size" "$same" "${ta[*]}" "${tb[*]}" <<'PY'
 import statistics, sys

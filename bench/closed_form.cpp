@@ -2,14 +2,29 @@
 // four regimes of the optical depth a = kappa L at the front and its change along the segment:
 // small cells (a in [0.002, 0.05], kappa within 1%), [0.05, 0.55], [0.5, 3.5], and kappa growing
 // by up to 50%. Built by bench/closed_form.sh against two versions of the file in one run.
+// With `--dump`: the weights (front, back) of 2M random segments of the series region instead
+// (a in [1e-3, 16], |b| <= 0.03 (1 + a), 17 digits), for comparing the two versions' values.
 #include <chrono>
+#include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <random>
 #include <vector>
 #include "optics/linear_segment.hpp"
 using namespace cellproj;
-int main() {
+int main(int argc, char** argv) {
   std::mt19937 rng(1);
+  if (argc > 1 && std::strcmp(argv[1], "--dump") == 0) {
+    std::uniform_real_distribution<double> V(0, 1);
+    for (int n = 0; n < 2000000; ++n) {
+      const double a = std::pow(10.0, -3 + 4.2 * V(rng)), share = 0.03 * (2 * V(rng) - 1) * std::pow(10.0, -6 * V(rng));
+      const double b = share * (1 + a);  // tau = a u + b u^2 over L = 1: k0 = a, k1 = a + 2b
+      if (a + 2 * b < 0) continue;
+      const EndWeights w = linear_segment_weights(1.0, a, a + 2 * b);
+      std::printf("%.17g %.17g\n", w.front, w.back);
+    }
+    return 0;
+  }
   std::uniform_real_distribution<double> U(0, 1);
   struct P { double L, k0, k1; };
   for (int regime = 0; regime < 4; ++regime) {
