@@ -21,8 +21,7 @@ using Fragments = std::vector<Fragment, HugePageAllocator<Fragment>>;
 
 // Appends pixel (i, j)'s fragment of a `width`-wide image. Written field by field into the vector:
 // a fragment built on the stack and copied whole showed in perf as a store-forwarding stall.
-inline void append_fragment(Fragments& out, int width, int i, int j, double r, double g, double b,
-                            double alpha) {
+inline void append_fragment(Fragments& out, int width, int i, int j, double r, double g, double b, double alpha) {
   Fragment& f = out.emplace_back();
   f.pixel = static_cast<std::uint32_t>(j) * static_cast<std::uint32_t>(width) + static_cast<std::uint32_t>(i);
   f.rgba[0] = static_cast<float>(r), f.rgba[1] = static_cast<float>(g), f.rgba[2] = static_cast<float>(b);

@@ -302,15 +302,20 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
     for (std::size_t t = 0; t < p.tri.size(); ++t) {
       const ThickVertex* V = p.tri[t].v;
       const GouraudCorner* g = &p.corner[3 * t];
+      // A corner quantity weighted by w: at a pixel (the weights) or its change per pixel (their steps).
+      const auto mix = [g](const double* w, auto GouraudCorner::*q) {
+        return w[0] * (g[0].*q) + w[1] * (g[1].*q) + w[2] * (g[2].*q);
+      };
+      glm::dvec3 dc;
+      double da = 0, dl = 0;
       rasterize_triangle_spans(
           glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
-          [&](int j, int b, int e, const double w[3], const double dw[3]) {
-            const glm::dvec3 c0 = w[0] * g[0].c + w[1] * g[1].c + w[2] * g[2].c;
-            const glm::dvec3 dc = dw[0] * g[0].c + dw[1] * g[1].c + dw[2] * g[2].c;
-            const double a0 = w[0] * g[0].a + w[1] * g[1].a + w[2] * g[2].a;
-            const double da = dw[0] * g[0].a + dw[1] * g[1].a + dw[2] * g[2].a;
-            const double l0 = w[0] * g[0].l + w[1] * g[1].l + w[2] * g[2].l;
-            const double dl = dw[0] * g[0].l + dw[1] * g[1].l + dw[2] * g[2].l;
+          [&](const double* dw) {
+            dc = mix(dw, &GouraudCorner::c), da = mix(dw, &GouraudCorner::a), dl = mix(dw, &GouraudCorner::l);
+          },
+          [&](int j, int b, int e, const double* w) {
+            const glm::dvec3 c0 = mix(w, &GouraudCorner::c);
+            const double a0 = mix(w, &GouraudCorner::a), l0 = mix(w, &GouraudCorner::l);
             for (int i = b; i < e; ++i) {
               const double k = i - b;  // steps from the run's start (no running sum: no drift)
               // Clamped: a step's rounding may leave a value that is 0 at an edge a hair below it.

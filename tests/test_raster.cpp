@@ -194,12 +194,15 @@ TEST(Raster, SpansCoverThePixelsOfTheWeightsAndStepToTheirValues) {
     rasterize_triangle_weights(a, b, c, 64, 48, [&](int i, int j, double w0, double w1, double w2) {
       per_pixel.push_back({j * 64L + i, {w0, w1, w2}});
     });
-    rasterize_triangle_spans(a, b, c, 64, 48, [&](int j, int begin, int end, const double w[3], const double dw[3]) {
-      ASSERT_LT(begin, end);
-      for (int i = begin; i < end; ++i)
-        stepped.push_back({j * 64L + i, {w[0] + (i - begin) * dw[0], w[1] + (i - begin) * dw[1],
-                                         w[2] + (i - begin) * dw[2]}});
-    });
+    double dw[3] = {0, 0, 0};
+    rasterize_triangle_spans(
+        a, b, c, 64, 48, [&](const double* steps) { std::copy(steps, steps + 3, dw); },
+        [&](int j, int begin, int end, const double* w) {
+          ASSERT_LT(begin, end);
+          for (int i = begin; i < end; ++i)
+            stepped.push_back(
+                {j * 64L + i, {w[0] + (i - begin) * dw[0], w[1] + (i - begin) * dw[1], w[2] + (i - begin) * dw[2]}});
+        });
     ASSERT_EQ(stepped.size(), per_pixel.size()) << n;
     for (std::size_t k = 0; k < stepped.size(); ++k) {
       ASSERT_EQ(stepped[k].first, per_pixel[k].first) << n;

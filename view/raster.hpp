@@ -150,16 +150,24 @@ class TriangleCoverage {
   PixelBox box_;
 };
 
+// Calls f(j, row, begin, end) for every row row_begin <= j < row_end on which the triangle covers the
+// centres of pixels begin <= i < end (and at least one): the row loop of the rasterizers below.
+template <class F>
+void for_each_run(const TriangleCoverage& t, int row_begin, int row_end, F&& f) {
+  for (int j = std::max(t.first_row(), row_begin); j <= std::min(t.last_row(), row_end - 1); ++j) {
+    const TriangleCoverage::Row r = t.row(j);
+    int b, e;
+    t.run(r, b, e);
+    if (b < e) f(j, r, b, e);
+  }
+}
+
 // Calls run(j, begin, end) for every row j of a width x height image on which the triangle covers
 // the centres of pixels begin <= i < end (and at least one).
 template <class Run>
 void rasterize_triangle_runs(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Run&& run) {
   const TriangleCoverage t(p0, p1, p2, width, height);
-  for (int j = t.first_row(); j <= t.last_row(); ++j) {
-    int b, e;
-    t.run(t.row(j), b, e);
-    if (b < e) run(j, b, e);
-  }
+  for_each_run(t, 0, height, [&](int j, const TriangleCoverage::Row&, int b, int e) { run(j, b, e); });
 }
 
 // Calls covered(i, j, w0, w1, w2) for every pixel of rows row_begin <= j < row_end of a width x
@@ -170,32 +178,28 @@ template <class Covered>
 void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, int row_begin,
                                 int row_end, Covered&& covered) {
   const TriangleCoverage t(p0, p1, p2, width, height);
-  for (int j = std::max(t.first_row(), row_begin); j <= std::min(t.last_row(), row_end - 1); ++j) {
-    const TriangleCoverage::Row r = t.row(j);
-    int b, e;
-    t.run(r, b, e);
+  for_each_run(t, row_begin, row_end, [&](int j, const TriangleCoverage::Row& r, int b, int e) {
     double w[3];
     for (int i = b; i < e; ++i) t.weights(r, i, w), covered(i, j, w[0], w[1], w[2]);
-  }
+  });
 }
 
-// Calls span(j, begin, end, w, dw) for every row j of a width x height image on which the triangle
-// covers the centres of pixels begin <= i < end (and at least one), with the barycentric weights w
-// of p0, p1 and p2 at the centre of pixel `begin` and their change dw from one pixel to the next:
-// for the shading of a run of pixels by plane equations instead of weights per pixel.
-template <class Span>
-void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Span&& span) {
+// Calls steps(dw) once with how much the barycentric weights of p0, p1 and p2 change from one pixel
+// of a row to the next (they are affine in x), then span(j, begin, end, w) for every row j of a
+// width x height image on which the triangle covers the centres of pixels begin <= i < end (and at
+// least one), with the weights w at the centre of pixel `begin`: for shading a run of pixels by
+// plane equations instead of weights per pixel.
+template <class Steps, class Span>
+void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Steps&& steps,
+                              Span&& span) {
   const TriangleCoverage t(p0, p1, p2, width, height);
-  double w[3], dw[3];
-  t.weight_steps(dw);
-  for (int j = t.first_row(); j <= t.last_row(); ++j) {
-    const TriangleCoverage::Row r = t.row(j);
-    int b, e;
-    t.run(r, b, e);
-    if (b == e) continue;
+  double w[3];
+  t.weight_steps(w);
+  steps(static_cast<const double*>(w));
+  for_each_run(t, 0, height, [&](int j, const TriangleCoverage::Row& r, int b, int e) {
     t.weights(r, b, w);
-    span(j, b, e, w, dw);
-  }
+    span(j, b, e, static_cast<const double*>(w));
+  });
 }
 
 // The same over every row of the image.
