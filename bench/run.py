@@ -92,6 +92,12 @@ def error(a_npy, b_npy, rgb_only=False):
     return float(np.sqrt((d * d).mean())), float(d.max())
 
 
+def timing(st, cells):
+    """A row's time columns from cellproj's --stats (frame_seconds: the median frame)."""
+    return dict(median_seconds=st["frame_seconds"], min_seconds=st["min_frame_seconds"],
+                max_seconds=st["max_frame_seconds"], cells_per_second=cells / st["frame_seconds"])
+
+
 def synthetic(bench, kind, n, name):
     mesh = os.path.join(bench.out, "meshes", f"{name}.vtu")
     if not os.path.exists(mesh):
@@ -137,9 +143,7 @@ def measure(bench, name, scene, mesh, info, size, peers):
         st, npy = bench.render(scene, tag + "_whole", "pt-breakpoints", size, bench.frames)
         e = error(npy, iso)
         bench.add(**base, method="pt-breakpoints-whole-vs-iso", sort=st["sort"],
-                  median_seconds=st["frame_seconds"], min_seconds=st["min_frame_seconds"],
-                  max_seconds=st["max_frame_seconds"], cells_per_second=cells / st["frame_seconds"],
-                  rmse=e[0], max_abs=e[1], violations="")
+                  **timing(st, cells), rmse=e[0], max_abs=e[1], violations="")
     # sortbench sorts the cells as given; the projection sorts the canonical tetrahedra, so the
     # oracle's count describes the rendered order only on tetrahedral meshes.
     viol = {} if mixed else bench.violations(mesh, size)
@@ -148,26 +152,22 @@ def measure(bench, name, scene, mesh, info, size, peers):
         st, npy = bench.render(scene, f"{tag}_{method}_{sort}", method, size, bench.frames,
                                ["--sort", sort, "--tetrahedralize", "all"])
         e = error(npy, ref)
-        bench.add(**base, method=method, sort=st["sort"] if sort == "auto" else sort,
-                  median_seconds=st["frame_seconds"], min_seconds=st["min_frame_seconds"],
-                  max_seconds=st["max_frame_seconds"], cells_per_second=cells / st["frame_seconds"],
+        bench.add(**base, method=method, sort=st["sort"] if sort == "auto" else sort, **timing(st, cells),
                   rmse=e[0], max_abs=e[1], violations=viol.get(sort, ""))
     # Small cells splatted (bench/splat measures them against the anti-aliased reference; here the
     # row says how far splats move the picture from the point-sampled model, and what they cost).
     st, npy = bench.render(scene, f"{tag}_pt-breakpoints_splat", "pt-breakpoints", size, bench.frames,
                            ["--tetrahedralize", "all", "--small-cells", "splat"])
     e = error(npy, ref)
-    bench.add(**base, method="pt-breakpoints-splat", sort=st["sort"], median_seconds=st["frame_seconds"],
-              min_seconds=st["min_frame_seconds"], max_seconds=st["max_frame_seconds"],
-              cells_per_second=cells / st["frame_seconds"], rmse=e[0], max_abs=e[1], violations="")
+    bench.add(**base, method="pt-breakpoints-splat", sort=st["sort"], **timing(st, cells), rmse=e[0],
+              max_abs=e[1], violations="")
     # Slicing (no sort; bench/slicing has its convergence): the sort column gives the plane count.
     for n, integral in SLICING:
         st, npy = bench.render(scene, f"{tag}_slicing_{integral}_{n}", "slicing", size, bench.frames,
                                ["--slices", str(n), "--slice-integral", integral, "--tetrahedralize", "all"])
         e = error(npy, ref)
-        bench.add(**base, method=f"slicing-{integral}", sort=f"{n} slices", median_seconds=st["frame_seconds"],
-                  min_seconds=st["min_frame_seconds"], max_seconds=st["max_frame_seconds"],
-                  cells_per_second=cells / st["frame_seconds"], rmse=e[0], max_abs=e[1], violations="")
+        bench.add(**base, method=f"slicing-{integral}", sort=f"{n} slices", **timing(st, cells), rmse=e[0],
+                  max_abs=e[1], violations="")
     # Iso-surfaces with the volume (methods.md): two semi-transparent surfaces at 45% and 70% of the
     # field's range, each --iso-mode against ordered (the exact order along each ray).
     with open(scene) as f:
@@ -193,17 +193,16 @@ def measure(bench, name, scene, mesh, info, size, peers):
                   max_abs=e[1], violations="")
 
 
-def measure_speed(bench, name, scene, mesh, info, size):
+def measure_speed(bench, name, scene, mesh, info, size, peers):
     """--speed-only: each projection method and VTK's projected tetrahedra, timed in the same run
     (no reference, so no error; the full run measures that)."""
     base = dict(mesh=name, cells=info["cells"], width=size, height=size)
     for method in METHODS:
         st, _ = bench.render(scene, f"{name}_{size}_{method}_speed", method, size, bench.frames,
                              ["--tetrahedralize", "all"])
-        bench.add(**base, method=method, sort=st["sort"], median_seconds=st["frame_seconds"],
-                  min_seconds=st["min_frame_seconds"], max_seconds=st["max_frame_seconds"],
-                  cells_per_second=info["cells"] / st["frame_seconds"], rmse="", max_abs="", violations="")
-    if mesh.endswith(".vtu"):
+        bench.add(**base, method=method, sort=st["sort"], **timing(st, info["cells"]), rmse="", max_abs="",
+                  violations="")
+    if peers and mesh.endswith(".vtu"):
         st, _ = bench.peer(scene, f"{name}_{size}_vtk-pt_speed", "pt", size)
         bench.add(**base, method="vtk-pt", sort="", median_seconds=st["median_seconds"],
                   min_seconds=st["min_seconds"], max_seconds=st["max_seconds"],
@@ -384,7 +383,7 @@ def main():
     if a.speed_only:
         for name, scene, mesh, info in meshes:
             for size in sizes:
-                measure_speed(bench, name, scene, mesh, info, size)
+                measure_speed(bench, name, scene, mesh, info, size, not a.no_peers)
         peer_ratios(bench)
         return
     print(HEADER)
