@@ -16,6 +16,12 @@ struct HeaderCounts {
 // its size admits) or .off file; {0, 0} for other formats or when the header does not say.
 HeaderCounts header_counts(const std::string& path);
 
+// The counts of a CGNS file (every zone of every base) or an Exodus file in either netCDF form, asked
+// of the format's own library (VTK's CGNS, netCDF); {0, 0} for other formats. Those libraries may
+// crash or call exit() on a garbled file: read_mesh asks this in the isolated reader's child, never
+// in the caller's process. Throws InputError when the CGNS library cannot open the file.
+HeaderCounts library_header_counts(const std::string& path, const std::string& format);
+
 // Bytes to hold a mesh of these counts while it is read (the reader's arrays and our copy).
 std::uint64_t estimate_mesh_bytes(const HeaderCounts& counts);
 

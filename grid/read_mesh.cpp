@@ -133,23 +133,27 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options) {
   const std::string format = options.format.empty() ? format_for(path) : options.format;
   const std::string reader = reader_name(format);
   if (reader.empty()) throw InputError(where(path, "unknown --format '" + format + "'"));
-  auto read = [&] {
-    if (format == "tetgen") return read_tetgen(path);
-    if (format == "off") return read_off(path);
-    if (format == "points") return read_point_cloud(path);
-    return read_vtk_family(path, format, options);
-  };
   Isolation isolation;
   isolation.memory_limit = options.max_memory_gib > 0
                                ? static_cast<std::uint64_t>(options.max_memory_gib * double(1ull << 30))
                                : available_memory_bytes();
   isolation.limit_source = options.max_memory_gib > 0 ? "--max-memory" : "this machine's available memory";
-  if (const HeaderCounts h = header_counts(path);
-      isolation.memory_limit > 0 && estimate_mesh_bytes(h) > isolation.memory_limit)
-    throw InputError(where(path, "its header declares " + std::to_string(h.points) + " points and " +
-                                     std::to_string(h.cells) + " cells: reading them needs about " +
-                                     format_bytes(estimate_mesh_bytes(h)) + ", more than the " +
-                                     format_bytes(isolation.memory_limit) + " allowed by " + isolation.limit_source));
+  const auto refuse_beyond_limit = [&](const HeaderCounts& h) {
+    if (isolation.memory_limit > 0 && estimate_mesh_bytes(h) > isolation.memory_limit)
+      throw InputError(where(path, "its header declares " + std::to_string(h.points) + " points and " +
+                                       std::to_string(h.cells) + " cells: reading them needs about " +
+                                       format_bytes(estimate_mesh_bytes(h)) + ", more than the " +
+                                       format_bytes(isolation.memory_limit) + " allowed by " + isolation.limit_source));
+  };
+  auto read = [&] {
+    // In the child when isolated: the CGNS and HDF5 libraries read these headers, and may crash.
+    refuse_beyond_limit(library_header_counts(path, format));
+    if (format == "tetgen") return read_tetgen(path);
+    if (format == "off") return read_off(path);
+    if (format == "points") return read_point_cloud(path);
+    return read_vtk_family(path, format, options);
+  };
+  refuse_beyond_limit(header_counts(path));  // the headers we read ourselves, in this process
   Mesh m = options.isolate ? read_isolated(path, reader, isolation, read) : read();
   m.source = path;
   return m;

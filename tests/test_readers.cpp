@@ -32,12 +32,7 @@ void spit(const std::string& path, const std::string& bytes) { std::ofstream(pat
 
 // The message of the InputError that loading `path` throws ("" when it loads fine).
 std::string read_error(const std::string& path, const ReadOptions& o = {}) {
-  try {
-    load_mesh(path, o);
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error([&] { load_mesh(path, o); });
 }
 
 const char* kLegacy = R"(# vtk DataFile Version 3.0

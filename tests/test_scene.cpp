@@ -15,12 +15,7 @@ using namespace cellproj;
 namespace {
 
 std::string scene_error(const std::string& path) {
-  try {
-    prepare_scene(load_scene(path));
-  } catch (const InputError& e) {
-    return e.what();
-  }
-  return "";
+  return test::input_error([&] { prepare_scene(load_scene(path)); });
 }
 
 }  // namespace

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "base/error.hpp"
 #include "grid/generate.hpp"
 #include "optics/transfer_function.hpp"
 #include "parallel/projection_renderer.hpp"
@@ -24,6 +25,17 @@ class TempDir {
  private:
   std::filesystem::path path_;
 };
+
+// The message of the InputError that f() throws ("" when it throws none).
+template <class F>
+std::string input_error(F&& f) {
+  try {
+    f();
+  } catch (const InputError& e) {
+    return e.what();
+  }
+  return "";
+}
 
 // Constant colour and extinction.
 inline TransferFunction constant_tf(double kappa, glm::dvec3 rgb) {

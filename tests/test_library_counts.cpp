@@ -1,0 +1,94 @@
+// The --max-memory check for the formats whose headers only their own library reads (CGNS, Exodus
+// in netCDF-4 form): the counts are asked in the isolated reader's child, before VTK's reader
+// allocates, and a file declaring more than the limit is refused naming the file and the estimate.
+#include <vtk_cgns.h>
+#include VTK_CGNS(cgnslib.h)
+
+#include <netcdf.h>
+
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "base/error.hpp"
+#include "grid/header_counts.hpp"
+#include "grid/read_mesh.hpp"
+#include "test_util.hpp"
+
+using namespace cellproj;
+
+namespace {
+
+// A CGNS file of zones that declare their sizes and hold no data: (vertices, cells) unstructured,
+// or vertices and cells along i, j, k structured.
+void write_cgns_zones(const std::string& path, const std::vector<std::vector<cgsize_t>>& zones) {
+  int fn = 0, base = 0, zone = 0;
+  ASSERT_EQ(cg_open(path.c_str(), CG_MODE_WRITE, &fn), CG_OK) << cg_get_error();
+  cg_base_write(fn, "Base", 3, 3, &base);
+  for (std::size_t z = 0; z < zones.size(); ++z) {
+    const auto& size = zones[z];
+    const std::string name = "Zone" + std::to_string(z);
+    ASSERT_EQ(cg_zone_write(fn, base, name.c_str(), size.data(),
+                            size.size() == 3 ? CGNS_ENUMV(Unstructured) : CGNS_ENUMV(Structured), &zone),
+              CG_OK)
+        << cg_get_error();
+  }
+  ASSERT_EQ(cg_close(fn), CG_OK);
+}
+
+std::string read_error(const std::string& path, double max_memory_gib) {
+  ReadOptions o;
+  o.max_memory_gib = max_memory_gib;
+  return test::input_error([&] { read_mesh(path, o); });
+}
+
+}  // namespace
+
+TEST(LibraryCounts, CgnsZonesAreSummedOverEveryZoneAndEachIndexDirection) {
+  test::TempDir dir;
+  const std::string path = dir.file("zones.cgns");
+  // An unstructured zone (vertices, cells, boundary vertices) and a structured one of 4 x 5 x 6
+  // vertices, 3 x 4 x 5 cells.
+  write_cgns_zones(path, {{100, 300, 0}, {4, 5, 6, 3, 4, 5, 0, 0, 0}});
+  const HeaderCounts c = library_header_counts(path, "cgns");
+  EXPECT_EQ(c.points, 100 + 4 * 5 * 6);
+  EXPECT_EQ(c.cells, 300 + 3 * 4 * 5);
+  EXPECT_EQ(library_header_counts(path, "vtu").cells, 0);  // other formats: not asked
+  const std::string garbled = dir.file("garbled.cgns");
+  std::ofstream(garbled) << "not a CGNS file at all";
+  const std::string message = test::input_error([&] { library_header_counts(garbled, "cgns"); });
+  EXPECT_NE(message.find("garbled.cgns: not a readable CGNS file"), std::string::npos) << message;
+}
+
+TEST(LibraryCounts, ACgnsZoneBeyondTheMemoryLimitIsRefusedBeforeVtkReadsIt) {
+  test::TempDir dir;
+  const std::string path = dir.file("huge.cgns");
+  write_cgns_zones(path, {{2000000000, 1000000000, 0}});
+  const std::string message = read_error(path, 4);
+  EXPECT_NE(message.find("huge.cgns: its header declares 2000000000 points and 1000000000 cells: reading them "
+                         "needs about"),
+            std::string::npos)
+      << message;
+  EXPECT_NE(message.find("more than the 4.0 GiB allowed by --max-memory"), std::string::npos) << message;
+  // A structured zone of 2000^3 vertices.
+  write_cgns_zones(path, {{2000, 2000, 2000, 1999, 1999, 1999, 0, 0, 0}});
+  EXPECT_NE(read_error(path, 4).find("its header declares 8000000000 points and 7988005999 cells"), std::string::npos)
+      << read_error(path, 4);
+}
+
+TEST(LibraryCounts, ANetcdf4ExodusFileBeyondTheMemoryLimitIsRefused) {
+  // netCDF-4 is HDF5 inside: our classic-header walk cannot read it, netCDF can.
+  test::TempDir dir;
+  const std::string path = dir.file("huge.exo");
+  int id = 0, dim = 0;
+  ASSERT_EQ(nc_create(path.c_str(), NC_NETCDF4 | NC_CLOBBER, &id), NC_NOERR);
+  nc_def_dim(id, "num_dim", 3, &dim);
+  nc_def_dim(id, "num_nodes", 3000000000ull, &dim);
+  nc_def_dim(id, "num_elem", 1000000000, &dim);
+  ASSERT_EQ(nc_close(id), NC_NOERR);
+  EXPECT_EQ(header_counts(path).points, 0);  // not classic: the parent's walk cannot say
+  EXPECT_EQ(library_header_counts(path, "exodus").points, 3000000000);
+  const std::string message = read_error(path, 4);
+  EXPECT_NE(message.find("huge.exo: its header declares 3000000000 points and 1000000000 cells"), std::string::npos)
+      << message;
+}
