@@ -330,8 +330,10 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
     return;
   }
 
-  // pt-analytic and pt-breakpoints: the segment's ends per pixel (depths and scalars are exact on
-  // each triangle: linear, or through 1/z in perspective), then the closed-form integral.
+  // pt-analytic and pt-breakpoints: the segment's ends per pixel, then the closed-form integral.
+  // Depths and scalars are affine along a run of a triangle's pixels in orthographic projection; in
+  // perspective 1/z and s/z are (perspective-correct interpolation), so z = 1 / (1/z) and s = (s/z) z.
+  // A run starts from its first pixel's values and steps, as the Gouraud path above.
   LinearPiece piece;
   if (!has_breakpoint) {
     const auto e = tf_.piece(smin, smax);
@@ -339,31 +341,42 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
     piece.k0 = e.ka, piece.dk = e.kb - e.ka, piece.c0 = e.ca, piece.dc = e.cb - e.ca;
   }
   const bool cut = has_breakpoint && method_.cuts_at_breakpoints;
-  each_triangle([&](int i, int j, std::size_t t, double w0, double w1, double w2) {
+  for (std::size_t t = 0; t < p.tri.size(); ++t) {
     const ThickVertex* V = p.tri[t].v;
-    double zf, zb, sf, sb;
-    if (!persp) {
-      zf = w0 * V[0].zf + w1 * V[1].zf + w2 * V[2].zf, zb = w0 * V[0].zb + w1 * V[1].zb + w2 * V[2].zb;
-      sf = w0 * V[0].sf + w1 * V[1].sf + w2 * V[2].sf, sb = w0 * V[0].sb + w1 * V[1].sb + w2 * V[2].sb;
-    } else {  // perspective-correct: weights over z, separately for the entry and exit surfaces
-      const double f0 = w0 / V[0].zf, f1 = w1 / V[1].zf, f2 = w2 / V[2].zf;
-      const double b0 = w0 / V[0].zb, b1 = w1 / V[1].zb, b2 = w2 / V[2].zb;
-      const double inv_f = 1.0 / (f0 + f1 + f2), inv_b = 1.0 / (b0 + b1 + b2);
-      zf = inv_f, zb = inv_b;
-      sf = (f0 * V[0].sf + f1 * V[1].sf + f2 * V[2].sf) * inv_f,
-      sb = (b0 * V[0].sb + b1 * V[1].sb + b2 * V[2].sb) * inv_b;
+    double q[3][4];  // per corner: front and back depth, front and back scalar (over depth in perspective)
+    for (int k = 0; k < 3; ++k) {
+      const double f = persp ? 1.0 / V[k].zf : 1.0, b = persp ? 1.0 / V[k].zb : 1.0;
+      q[k][0] = persp ? f : V[k].zf, q[k][1] = persp ? b : V[k].zb, q[k][2] = V[k].sf * f, q[k][3] = V[k].sb * b;
     }
-    sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
-    const double l = std::max(0.0, zb - zf) * rays_.length_per_depth(i + 0.5, j + 0.5);
-    SegmentLight light;
-    if (cut)
-      light = integrate_segment_closed_form(tf_, l, sf, sb);
-    else if (has_breakpoint)  // pt-analytic across a breakpoint: kappa and C linear between the ends' values
-      light = integrate_linear_closed_form(l, tf_.extinction(sf), tf_.extinction(sb), tf_.color(sf), tf_.color(sb));
-    else
-      light = integrate_linear_closed_form(l, piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb));
-    emitted += emit(i, j, light.rgb, light.opacity());
-  });
+    const auto mix = [&q](const double* w, int m) { return w[0] * q[0][m] + w[1] * q[1][m] + w[2] * q[2][m]; };
+    double dq[4];
+    rasterize_triangle_spans(
+        glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
+        [&](const double* dw) {
+          for (int m = 0; m < 4; ++m) dq[m] = mix(dw, m);
+        },
+        [&](int j, int b, int e, const double* w) {
+          const double q0[4] = {mix(w, 0), mix(w, 1), mix(w, 2), mix(w, 3)};
+          for (int i = b; i < e; ++i) {
+            const double k = i - b;  // steps from the run's start (no running sum: no drift)
+            double zf = q0[0] + k * dq[0], zb = q0[1] + k * dq[1];
+            double sf = q0[2] + k * dq[2], sb = q0[3] + k * dq[3];
+            if (persp) zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
+            sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
+            const double l = std::max(0.0, zb - zf) * rays_.length_per_depth(i + 0.5, j + 0.5);
+            SegmentLight light;
+            if (cut)
+              light = integrate_segment_closed_form(tf_, l, sf, sb);
+            else if (has_breakpoint)  // pt-analytic across a breakpoint: kappa and C linear between the ends' values
+              light =
+                  integrate_linear_closed_form(l, tf_.extinction(sf), tf_.extinction(sb), tf_.color(sf), tf_.color(sb));
+            else
+              light =
+                  integrate_linear_closed_form(l, piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb));
+            emitted += emit(i, j, light.rgb, light.opacity());
+          }
+        });
+  }
   counters.fragments += emitted;
 }
 
