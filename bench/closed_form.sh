@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The per-pixel closed form's cost (bench/closed_form.cpp) of optics/linear_segment.cpp as it is
 # and as it was at REV, compiled side by side and run alternately, 3 times each; then the largest
-# relative difference of their weights over 2M segments of the series region (closed_form --dump).
+# relative difference of their weights over 2M segments of the series region (closed_form --dump),
+# after each one's error on small cells against long double quadrature (closed_form --accuracy).
 # usage: bash bench/closed_form.sh [REV]    (default: 764412b, the recursion change that was reverted)
 set -euo pipefail
 src=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,6 +17,7 @@ done
 for r in 1 2 3; do
   for v in old new; do echo "$v ($([ $v = old ] && echo "$rev" || echo working tree)): $("$tmp/$v" | sed -E 's/ \([^)]*\)//' | tr '\n' ' ')"; done
 done
+for v in old new; do echo "$v: $("$tmp/$v" --accuracy)"; done
 "$tmp/old" --dump > "$tmp/old.txt"; "$tmp/new" --dump > "$tmp/new.txt"
 python3 - "$tmp/old.txt" "$tmp/new.txt" <<'PY'
 import sys

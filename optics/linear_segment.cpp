@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <utility>
 
 namespace cellproj {
 namespace {
@@ -11,19 +12,81 @@ constexpr double kSqrtPi = 1.7724538509055160273;
 // |b| below this share of 1 + a: F by its series in b (the erfcx and Dawson forms cancel there).
 constexpr double kSeriesB = 0.03;
 constexpr int kSeriesTerms = 13;  // n = 0 .. 12: relative error below 1e-13 within kSeriesB
-// Optical depth below which G = 1 - F comes from its Taylor series in (a, b) instead of 1 - F.
-constexpr double kTinyDepth = 1e-3;
+
+// 1 / k for k < 128: the recursions' divisions, as multiplications (the same values: IEEE division
+// is correctly rounded at compile time as at run time).
+constexpr std::array<double, 128> kInverse = [] {
+  std::array<double, 128> r{};
+  for (int k = 1; k < 128; ++k) r[k] = 1.0 / k;
+  return r;
+}();
+
+// Small cells: up to these optical depths at the front (a) and changes along the ray (|b|), G = 1 - F
+// and 1 - e^-D come from their Taylor series in (a, b), with no exp and no loop that ends on a test.
+constexpr double kSmallA = 0.5, kSmallB = 1e-2;
+constexpr int kSmallPowersOfB = 7;                                          // b^0 .. b^6
+constexpr int kSmallDegreeInA[kSmallPowersOfB] = {14, 12, 11, 9, 7, 4, 1};  // of a, per power of b: within the
+// bounds above each dropped term is below 1e-16 of G (G >= a/3 and >= b/3 since a + 2b >= 0)
+// kG[n][j] = -(-1)^(j+n) / (j! n! (j + 2n + 1)): the integral over [0, 1] of the a^j b^n term of
+// 1 - e^{-a u - b u^2}; the constant term cancels the 1.
+constexpr auto kG = [] {
+  std::array<std::array<double, 15>, kSmallPowersOfB> g{};
+  double n_factorial = 1.0;
+  for (int n = 0; n < kSmallPowersOfB; ++n) {
+    double j_factorial = 1.0;
+    for (int j = 0; j < 15; ++j) {
+      g[n][j] = ((j + n) % 2 ? 1.0 : -1.0) / (j_factorial * n_factorial * (j + 2 * n + 1));
+      j_factorial *= j + 1;
+    }
+    n_factorial *= n + 1;
+  }
+  g[0][0] = 0.0;
+  return g;
+}();
+// kE[m] = -(-1)^m / m!: 1 - e^-D = sum_m kE[m] D^m, m = 1 .. 16 (the first dropped term below 1e-19 D
+// for D <= kSmallA + kSmallB).
+constexpr auto kE = [] {
+  std::array<double, 17> e{};
+  double factorial = 1.0;
+  for (int m = 1; m < 17; ++m) factorial *= m, e[m] = (m % 2 ? 1.0 : -1.0) / factorial;
+  return e;
+}();
+
+constexpr int floor_log2(int n) { return n < 2 ? 0 : 1 + floor_log2(n / 2); }
+
+// c[0] + c[1] x + ... + c[N-1] x^(N-1) by Estrin's scheme: the two halves independently, joined by
+// a power of x (x_pow[k] = x^(2^k)), so the dependent chain is log2(N) steps instead of N.
+template <int N>
+double estrin(const double* c, const double* x_pow) {
+  if constexpr (N == 1) {
+    return c[0];
+  } else {
+    constexpr int k = floor_log2(N - 1), half = 1 << k;
+    return estrin<half>(c, x_pow) + x_pow[k] * estrin<N - half>(c + half, x_pow);
+  }
+}
+
+// The weights of a small cell (a <= kSmallA, |b| <= kSmallB) from the series above.
+template <std::size_t... n>
+double small_cell_front(double a, double b, std::index_sequence<n...>) {
+  const double a2 = a * a, a4 = a2 * a2, a_pow[4] = {a, a2, a4, a4 * a4};
+  const double b2 = b * b, b_pow[3] = {b, b2, b2 * b2};
+  const double p[] = {estrin<kSmallDegreeInA[n] + 1>(kG[n].data(), a_pow)...};  // the powers of b's coefficients
+  return estrin<sizeof...(n)>(p, b_pow);
+}
+
+EndWeights small_cell_weights(double a, double b) {
+  const double g = small_cell_front(a, b, std::make_index_sequence<kSmallPowersOfB>());
+  const double d = a + b, d2 = d * d, d4 = d2 * d2, d_pow[4] = {d, d2, d4, d4 * d4};
+  const double e = d * estrin<16>(kE.data() + 1, d_pow);  // 1 - e^-D
+  return {g, e - g, d};
+}
 
 // M_k(a) = int_0^1 u^k e^{-a u} du for k = 0 .. kmax, by the recursion M_k = (k M_{k-1} - e^-a) / a
 // (by parts): downward from kmax when a is small (where it damps errors by a/k per step), upward
 // when a is large (where it damps them by k/a). The downward start M_kmax is its series
 // e^-a sum_j a^j kmax! / (kmax + j + 1)! (expand e^{a (1 - u)}), of positive terms: no cancellation.
 void exponential_moments(double a, int kmax, double* m) {
-  static const auto inverse = [] {  // 1 / k: the recursion's divisions, as multiplications
-    std::array<double, 128> r{};
-    for (int k = 1; k < 128; ++k) r[k] = 1.0 / k;
-    return r;
-  }();
   const double e = std::exp(-a);
   if (a > 8.0) {
     const double ia = 1.0 / a;
@@ -33,19 +96,20 @@ void exponential_moments(double a, int kmax, double* m) {
   }
   // Terms shrink by a / (kmax + j + 1) once past a: below 1e-17 of the sum within 64 terms for
   // a <= 8, kmax <= 24 (the table's 128 entries bound j).
-  double term = inverse[kmax + 1], sum = term;
-  for (int j = kmax + 2; j < 128 && term > 1e-17 * sum; ++j) term *= a * inverse[j], sum += term;
+  double term = kInverse[kmax + 1], sum = term;
+  for (int j = kmax + 2; j < 128 && term > 1e-17 * sum; ++j) term *= a * kInverse[j], sum += term;
   m[kmax] = e * sum;
-  for (int k = kmax; k > 0; --k) m[k - 1] = (a * m[k] + e) * inverse[k];
+  for (int k = kmax; k > 0; --k) m[k - 1] = (a * m[k] + e) * kInverse[k];
 }
 
 // F(a, b) = int_0^1 exp(-a u - b u^2) du for a >= 0 and a + 2b >= 0 (kappa >= 0 at both ends).
 double mean_transmittance(double a, double b, double depth) {
-  if (b == 0.0) return -std::expm1(-a) / a;   // constant kappa (a > 0 here: depth >= kTinyDepth)
+  if (b == 0.0) return -std::expm1(-a) / a;   // constant kappa (a > kSmallA here)
   if (std::abs(b) <= kSeriesB * (1.0 + a)) {  // sum_n (-b)^n / n! M_2n(a), M_2n <= 1
     double coef[kSeriesTerms];
     int n = 0;
-    for (double c = 1.0; n < kSeriesTerms && (n == 0 || std::abs(c) > 1e-17); ++n) coef[n] = c, c *= -b / (n + 1);
+    for (double c = 1.0; n < kSeriesTerms && (n == 0 || std::abs(c) > 1e-17); ++n)
+      coef[n] = c, c *= -b * kInverse[n + 1];
     double m[2 * kSeriesTerms];
     exponential_moments(a, 2 * (n - 1), m);
     double sum = 0.0;
@@ -115,18 +179,10 @@ EndWeights linear_segment_weights(double L, double k0, double k1) {
   if (!(L > 0.0) || !(k0 + k1 > 0.0)) return w;
   // tau(u) = a u + b u^2 along u = t / L in [0, 1].
   const double a = k0 * L, b = 0.5 * (k1 - k0) * L;
+  // Every optical depth D below 0.01 is a small cell (a + 2b >= 0 bounds a by 2D and |b| by D): tiny
+  // depths keep their relative accuracy, as no 1 - F cancels there.
+  if (a <= kSmallA && std::abs(b) <= kSmallB) return small_cell_weights(a, b);
   w.depth = a + b;
-  if (w.depth < kTinyDepth) {
-    // G = 1 - F = int (1 - e^-tau) du = P1 - P2/2 + P3/6 - P4/24, P_m = int tau^m du (error ~D^5/720).
-    const double a2 = a * a, b2 = b * b;
-    const double p1 = a / 2 + b / 3;
-    const double p2 = a2 / 3 + a * b / 2 + b2 / 5;
-    const double p3 = a2 * a / 4 + 3 * a2 * b / 5 + a * b2 / 2 + b2 * b / 7;
-    const double p4 = a2 * a2 / 5 + 2 * a2 * a * b / 3 + 6 * a2 * b2 / 7 + a * b2 * b / 2 + b2 * b2 / 9;
-    w.front = p1 - p2 / 2 + p3 / 6 - p4 / 24;
-    w.back = -std::expm1(-w.depth) - w.front;
-    return w;
-  }
   const double F = mean_transmittance(a, b, w.depth);
   w.front = 1.0 - F;
   w.back = F - std::exp(-w.depth);

@@ -21,7 +21,8 @@ struct EndWeights {
   double depth = 0.0;  // optical depth of the whole segment
 };
 // kappa from k0 (front) to k1 (back), both >= 0, over length L. Stable from optical depth 1e-300
-// (Taylor series, relative error ~1e-14) to any depth (asymptotic forms; no NaN, weights -> 1, 0).
+// (small cells, kappa L <= 0.5 and a change of at most 0.02 along the segment: Taylor series in
+// both, relative error ~1e-15) to any depth (asymptotic forms; no NaN, weights -> 1, 0).
 EndWeights linear_segment_weights(double L, double k0, double k1);
 
 // The whole segment: kappa and colour linear from (k0, c0) at the front to (k1, c1) at the back.

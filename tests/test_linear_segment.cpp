@@ -72,6 +72,37 @@ TEST(LinearSegment, TheSeriesInTheSlopeMatchesTheReferenceWhereItIsUsed) {
   }
 }
 
+TEST(LinearSegment, TheSmallCellSeriesMeetsTheMomentSeriesAtItsBounds) {
+  // Small cells (tau = a u + b u^2 with a <= 0.5, |b| <= 0.01) take a Taylor series in (a, b) with
+  // no exp; just beyond its bounds the moments' series takes over. Both are accurate to ~1e-15, so
+  // at the bounds they meet to 1e-14 (4e-15 measured): three terms fewer or a wrong coefficient fails.
+  // Each pair is a few ulps of k0 or k1 apart, on either side of a bound (b = (k1 - k0) / 2 over L = 1).
+  const auto meet = [](double k0, double k1, double k0_out, double k1_out) {
+    const EndWeights in = linear_segment_weights(1.0, k0, k1), out = linear_segment_weights(1.0, k0_out, k1_out);
+    EXPECT_LT(rel(in.front, out.front), 1e-14) << "k0 " << k0 << " k1 " << k1;
+    EXPECT_LT(rel(in.back, out.back), 1e-14) << "k0 " << k0 << " k1 " << k1;
+  };
+  for (double b : {-0.01, -0.003, -1e-6, 0.0, 1e-6, 0.004, 0.01}) {
+    const double a = std::nextafter(0.5, 0.0);  // a + 2b rounds so that |b| stays within 0.01
+    meet(a, a + 2 * b, 0.5 + 1e-15, 0.5 + 1e-15 + 2 * b);
+  }
+  for (double k0 : {0.03, 0.1, 0.3, 0.5})
+    for (double sign : {-1.0, 1.0}) {
+      double k1 = k0 + sign * 0.02;  // b = +-0.01, up to rounding: step k1 to the last value inside
+      while (std::abs(0.5 * (k1 - k0)) > 0.01) k1 = std::nextafter(k1, k0);
+      meet(k0, k1, k0, std::nextafter(k1, sign * 1e9));
+    }
+  // And inside, against the reference quadrature (1e-12) and the limits of tiny depth.
+  const glm::dvec3 c0{0.9, 0.2, 0.1}, c1{0.1, 0.5, 1.0};
+  for (double a : {0.0, 1e-9, 1e-4, 0.03, 0.2, 0.49})
+    for (double b : {-0.0099, -1e-5, 0.0, 1e-7, 0.002, 0.0099}) {
+      if (a + 2 * b < 0 || a + b <= 0) continue;
+      const SegmentLight ref = integrate_linear_reference(1.0, a, a + 2 * b, c0, c1);
+      const SegmentLight got = integrate_linear_closed_form(1.0, a, a + 2 * b, c0, c1);
+      for (int k = 0; k < 3; ++k) EXPECT_LT(rel(got.rgb[k], ref.rgb[k]), 2e-12) << "a " << a << " b " << b;
+    }
+}
+
 TEST(LinearSegment, TinyDepthKeepsRelativeAccuracy) {
   // Opacity kappa L for kappa L = 1e-8 (constant kappa), relative 1e-6 as issue 6 asks; colour C A.
   for (double d : {1e-8, 1e-12, 1e-300}) {
