@@ -57,7 +57,7 @@ constexpr int floor_log2(int n) { return n < 2 ? 0 : 1 + floor_log2(n / 2); }
 // c[0] + c[1] x + ... + c[N-1] x^(N-1) by Estrin's scheme: the two halves independently, joined by
 // a power of x (x_pow[k] = x^(2^k)), so the dependent chain is log2(N) steps instead of N.
 template <int N>
-double estrin(const double* c, const double* x_pow) {
+[[gnu::always_inline]] inline double estrin(const double* c, const double* x_pow) {
   if constexpr (N == 1) {
     return c[0];
   } else {
