@@ -285,16 +285,6 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
   const bool has_breakpoint = it != bp.end() && *it < smax;
   counters.breakpoint_cells += has_breakpoint;
 
-  // shade_pixel(i, j, t, w0, w1, w2) for the pixels of triangle t.
-  auto each_triangle = [&](auto&& shade_pixel) {
-    for (std::size_t t = 0; t < p.tri.size(); ++t) {
-      const ThickVertex* V = p.tri[t].v;
-      rasterize_triangle_weights(
-          glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
-          [&](int i, int j, double w0, double w1, double w2) { shade_pixel(i, j, t, w0, w1, w2); });
-    }
-  };
-
   if (method_.gouraud) {
     // Colour, opacity (pt-table: kappa and thickness) are affine along a row of a triangle (Gouraud
     // shading, MWSC section 2): a run of pixels starts from its first pixel's values and steps.
