@@ -7,6 +7,10 @@
 #include <fstream>
 #include <sstream>
 
+#include <netcdf.h>
+#include <vtk_cgns.h>  // VTK's copy of the CGNS library, the one its reader uses
+#include VTK_CGNS(cgnslib.h)
+
 #include "base/error.hpp"
 #include "grid/netcdf_check.hpp"
 #include "grid/plot3d_header.hpp"
@@ -28,7 +32,7 @@ void each_attribute(const std::string& xml, const std::string& name, F&& f) {
   }
 }
 
-// Counts from a garbled header can be anything: sums saturate instead of overflowing.
+// Counts from a garbled header can be anything: sums and products saturate instead of overflowing.
 std::int64_t saturated(double v) { return v <= 0 ? 0 : v >= 1e15 ? std::int64_t(1e15) : static_cast<std::int64_t>(v); }
 
 HeaderCounts xml_counts(const std::string& path, const std::string& ext) {
@@ -98,6 +102,51 @@ std::string format_for_counts(const std::string& path) {
   }
 }
 
+// The headers only the format's own library reads (CGNS: HDF5 or ADF inside; Exodus in netCDF-4
+// form: HDF5). These libraries may crash or call exit() on a garbled file: asked in the isolated
+// reader's child only (library_header_counts, grid/read_mesh.cpp).
+// Every zone of every base: an unstructured zone's size is (vertices, cells, boundary vertices); a
+// structured one's the vertices along each index direction, then the cells along each (SIDS 6.3).
+HeaderCounts cgns_counts(const std::string& path) {
+  int fn = -1;
+  if (cg_open(path.c_str(), CG_MODE_READ, &fn) != CG_OK)
+    throw InputError(where(path, std::string("not a readable CGNS file: ") + cg_get_error()));
+  HeaderCounts c;
+  int bases = 0;
+  cg_nbases(fn, &bases);
+  for (int b = 1; b <= bases; ++b) {
+    int zones = 0;
+    if (cg_nzones(fn, b, &zones) != CG_OK) continue;
+    for (int z = 1; z <= zones; ++z) {
+      int dim = 0;
+      char name[33] = {};
+      cgsize_t size[9] = {};
+      if (cg_index_dim(fn, b, z, &dim) != CG_OK || dim < 1 || dim > 3 || cg_zone_read(fn, b, z, name, size) != CG_OK)
+        continue;  // VTK's reader says what is wrong with the zone
+      double points = 1, cells = 1;
+      for (int i = 0; i < dim; ++i) points *= double(size[i]), cells *= double(size[dim + i]);
+      c.points = saturated(double(c.points) + std::max(points, 0.0));
+      c.cells = saturated(double(c.cells) + std::max(cells, 0.0));
+    }
+  }
+  cg_close(fn);
+  return c;
+}
+
+// Exodus II's dimensions num_nodes and num_elem, through netCDF (either form: classic or HDF5).
+HeaderCounts exodus_counts(const std::string& path) {
+  int id = -1;
+  if (nc_open(path.c_str(), NC_NOWRITE, &id) != NC_NOERR) return {};  // check_netcdf_readable says why
+  auto length = [&](const char* name) {
+    std::size_t len = 0;
+    if (int dim; nc_inq_dimid(id, name, &dim) == NC_NOERR) nc_inq_dimlen(id, dim, &len);
+    return saturated(double(len));
+  };
+  const HeaderCounts c{length("num_nodes"), length("num_elem")};
+  nc_close(id);
+  return c;
+}
+
 }  // namespace
 
 HeaderCounts header_counts(const std::string& path) {
@@ -127,6 +176,12 @@ HeaderCounts header_counts(const std::string& path) {
     const fs::path base = fs::path(path).replace_extension();
     return {first_count(base.string() + ".node"), first_count(base.string() + ".ele")};
   }
+  return {};
+}
+
+HeaderCounts library_header_counts(const std::string& path, const std::string& format) {
+  if (format == "cgns") return cgns_counts(path);
+  if (format == "exodus") return exodus_counts(path);
   return {};
 }
 
