@@ -109,8 +109,13 @@ std::string format_for_counts(const std::string& path) {
 // structured one's the vertices along each index direction, then the cells along each (SIDS 6.3).
 HeaderCounts cgns_counts(const std::string& path) {
   int fn = -1;
-  if (cg_open(path.c_str(), CG_MODE_READ, &fn) != CG_OK)
-    throw InputError(where(path, std::string("not a readable CGNS file: ") + cg_get_error()));
+  if (cg_open(path.c_str(), CG_MODE_READ, &fn) != CG_OK) {
+    const std::string error = cg_get_error();
+    throw InputError(where(path, error.find("llocat") != std::string::npos  // the library out of memory
+                                     ? "the CGNS library ran out of memory opening it (" + error +
+                                           "): a garbled size, or a --max-memory below what it needs"
+                                     : "not a readable CGNS file: " + error));
+  }
   HeaderCounts c;
   int bases = 0;
   cg_nbases(fn, &bases);

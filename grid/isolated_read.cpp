@@ -298,7 +298,9 @@ std::string death(int status, int err_fd, const Isolation& isolation) {
   }
   if (const std::string line = last_diagnosis(err_fd); !line.empty()) why += "; it said: \"" + line + "\"";
   why += "; the file is malformed";
-  if (isolation.memory_limit > 0 && WIFSIGNALED(status))
+  // A library out of memory under the limit crashes, or calls exit() (the CGNS library does).
+  const bool library_exit = WIFEXITED(status) && WEXITSTATUS(status) == kLibraryExit;
+  if (isolation.memory_limit > 0 && (WIFSIGNALED(status) || library_exit))
     why += ", or reading it needs more than the " + format_bytes(isolation.memory_limit) + " allowed" +
            (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source);
   return why;

@@ -374,6 +374,12 @@ TEST(IsolatedRead, ErrorsCrashesAndExitsBecomeInputErrors) {
       },
       small);
   EXPECT_NE(oom.find("more memory than the 0.2 GiB allowed by --max-memory"), std::string::npos) << oom;
+  // A library that calls exit() under the limit may have run out of memory: the message says both.
+  const std::string exited = message([]() -> Mesh { std::exit(255); }, small);
+  EXPECT_NE(exited.find("called exit() without a result; the file is malformed, or reading it needs more than the "
+                        "0.2 GiB allowed by --max-memory"),
+            std::string::npos)
+      << exited;
 #endif
 }
 
