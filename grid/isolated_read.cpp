@@ -286,10 +286,11 @@ void abort_on_own_finding(int fd) {
 // Why the child gave no mesh, from its wait status.
 std::string death(int status, int err_fd, const Isolation& isolation) {
   std::string why;
+  const bool library_exit = WIFEXITED(status) && WEXITSTATUS(status) == kLibraryExit;
   if (WIFSIGNALED(status)) {
     const int sig = WTERMSIG(status);
     why = std::string("crashed (signal ") + std::to_string(sig) + ", " + strsignal(sig) + ")";
-  } else if (WIFEXITED(status) && WEXITSTATUS(status) == kLibraryExit) {
+  } else if (library_exit) {
     why = "called exit() without a result";
   } else if (WIFEXITED(status)) {
     why = "exited with code " + std::to_string(WEXITSTATUS(status)) + " without a result";
@@ -299,7 +300,6 @@ std::string death(int status, int err_fd, const Isolation& isolation) {
   if (const std::string line = last_diagnosis(err_fd); !line.empty()) why += "; it said: \"" + line + "\"";
   why += "; the file is malformed";
   // A library out of memory under the limit crashes, or calls exit() (the CGNS library does).
-  const bool library_exit = WIFEXITED(status) && WEXITSTATUS(status) == kLibraryExit;
   if (isolation.memory_limit > 0 && (WIFSIGNALED(status) || library_exit))
     why += ", or reading it needs more than the " + format_bytes(isolation.memory_limit) + " allowed" +
            (isolation.limit_source.empty() ? "" : " by " + isolation.limit_source);
