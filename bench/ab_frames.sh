@@ -2,8 +2,8 @@
 # Frame time of two cellproj builds on one scene, measured in one run: A and B render in turn
 # (A, B, B, A, ... so drift favours neither), each FRAMES frames on 2 threads, and the median of
 # their per-run median frame times is printed with the ratio B/A and whether the last pictures
-# are bit-identical. For judging one change on this noisy machine, where only side-by-side runs
-# tell tens of percent.
+# are bit-identical (if not, their largest difference, with numpy). For judging one change on
+# this noisy machine, where only side-by-side runs tell tens of percent.
 # usage: bench/ab_frames.sh A_EXE B_EXE SCENE METHOD SIZE [ROUNDS=3] [FRAMES=4] [-- extra render options]
 #   A_EXE: e.g. a build of the previous commit (git worktree add /tmp/a REV; cmake -S /tmp/a -B
 #   /tmp/a/build -DCMAKE_BUILD_TYPE=Release; cmake --build /tmp/a/build --target cellproj).
@@ -24,7 +24,13 @@ for ((r = 0; r < rounds; r++)); do
   if ((r % 2 == 0)); then ta+=("$(frame "$a" a)"); tb+=("$(frame "$b" b)")
   else tb+=("$(frame "$b" b)"); ta+=("$(frame "$a" a)"); fi
 done
-same=$(cmp -s "$tmp/a.npy" "$tmp/b.npy" && echo identical || echo DIFFERENT)
+same=identical
+if ! cmp -s "$tmp/a.npy" "$tmp/b.npy"; then  # how far apart: the largest difference and how many values
+  same=$(${PYTHON:-/usr/bin/python3} -c 'import sys, numpy as np
+a, b = (np.load(f).astype(float) for f in sys.argv[1:]); d = np.abs(a - b)
+print("DIFFERENT (largest %.2g in %d of %d values)" % (d.max(), (d > 0).sum(), d.size))' "$tmp/a.npy" "$tmp/b.npy" ||
+    echo DIFFERENT)
+fi
 python3 - "$(basename "$scene" .json)" "$method" "$size" "$same" "${ta[*]}" "${tb[*]}" <<'PY'
 import statistics, sys
 name, method, size, same, ta, tb = sys.argv[1:]
