@@ -35,10 +35,19 @@ void each_attribute(const std::string& xml, const std::string& name, F&& f) {
 // Counts from a garbled header can be anything: sums and products saturate instead of overflowing.
 std::int64_t saturated(double v) { return v <= 0 ? 0 : v >= 1e15 ? std::int64_t(1e15) : static_cast<std::int64_t>(v); }
 
+// A read buffer of 1 byte to 1 MiB, no larger than the file (a small file does not pay for a
+// megabyte; never empty, so that reading a block always moves on).
+std::string block_for(const std::string& path) {
+  constexpr std::uintmax_t most = std::uintmax_t(1) << 20;
+  std::error_code ec;
+  const std::uintmax_t size = fs::file_size(path, ec);
+  return std::string(static_cast<std::size_t>(ec ? most : std::clamp<std::uintmax_t>(size, 1, most)), '\0');
+}
+
 HeaderCounts xml_counts(const std::string& path, const std::string& ext) {
   HeaderCounts c;
   std::ifstream in(path, std::ios::binary);
-  std::string xml(1 << 20, '\0');  // the XML part: every Piece element comes before the data
+  std::string xml = block_for(path);  // the XML part: every Piece element comes before the data
   in.read(&xml[0], static_cast<std::streamsize>(xml.size()));
   xml.resize(static_cast<std::size_t>(in.gcount()));
   const std::size_t data = xml.find("<AppendedData");
@@ -64,7 +73,7 @@ HeaderCounts xml_counts(const std::string& path, const std::string& ext) {
 HeaderCounts legacy_counts(const std::string& path) {
   HeaderCounts c;
   std::ifstream in(path, std::ios::binary);
-  std::string block(1 << 20, '\0'), carry;
+  std::string block = block_for(path), carry;
   bool points = false, cells = false;
   while (!(points && cells) && in) {
     in.read(&block[0], static_cast<std::streamsize>(block.size()));
@@ -138,8 +147,13 @@ HeaderCounts cgns_counts(const std::string& path) {
   return c;
 }
 
-// Exodus II's dimensions num_nodes and num_elem, through netCDF (either form: classic or HDF5).
+// Exodus II's dimensions num_nodes and num_elem, through netCDF, for the netCDF-4 (HDF5) form that
+// header_counts cannot read itself. A classic file ("CDF" magic) is left to header_counts: a
+// garbled classic header can make netCDF allocate hundreds of megabytes before it fails, and
+// check_netcdf_readable opens it once more anyway.
 HeaderCounts exodus_counts(const std::string& path) {
+  char magic[3] = {};
+  if (std::ifstream(path, std::ios::binary).read(magic, 3) && std::string(magic, 3) == "CDF") return {};
   int id = -1;
   if (nc_open(path.c_str(), NC_NOWRITE, &id) != NC_NOERR) return {};  // check_netcdf_readable says why
   auto length = [&](const char* name) {

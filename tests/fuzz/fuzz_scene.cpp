@@ -35,11 +35,11 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
       .write(reinterpret_cast<const char*>(data), static_cast<std::streamsize>(size));
   try {
     cellproj::Scene scene = cellproj::load_scene(path);
-    scene.reader.max_memory_gib = 1;
+    scene.reader.max_memory_gib = 0.125;
     if (scene.volumes.size() > 1) {  // a scene of several volumes, made ready as render makes it
       const cellproj::VolumeScene volumes(scene, [](const cellproj::SceneVolume& v) {
         cellproj::ReadOptions reader = v.reader;
-        reader.max_memory_gib = 1;
+        reader.max_memory_gib = 0.125;
         return cellproj::load_mesh(v.mesh, reader);
       });
     } else {
