@@ -13,6 +13,8 @@ void check_legacy_cells(const std::string& path);
 // does, and checks each dataset-level FIELD block: that reader uses what its field reader returns
 // without a check, so a block it cannot read (no array count, a garbled array header, an unknown
 // type, values missing) crashes it. Throws InputError naming the file, the block and the array.
+// Polyhedra (type 42) are refused from CELL_TYPES, naming the first: cellproj does not render them,
+// and VTK decomposes their face streams unchecked (a garbled one crashed it).
 // check_legacy_cells calls it; `binary` and `major` are the header's.
 void check_legacy_fields(const std::string& path, bool binary, int major);
 

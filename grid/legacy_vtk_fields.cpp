@@ -2,9 +2,11 @@
 #include <cstdint>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "base/error.hpp"
 #include "grid/legacy_vtk_check.hpp"
+#include "grid/validate.hpp"
 
 namespace cellproj {
 namespace {
@@ -19,6 +21,7 @@ bool starts(const std::string& word, const char* prefix) { return word.rfind(pre
 // by prefix): the bytes of one binary value, kVariable for strings, kUnknown where it gives up
 // (and its caller, for a dataset's FIELD, crashes).
 constexpr int kUnknown = -1, kVariable = 0, kBit = -2;
+constexpr int kPolyhedron = 42;  // VTK_POLYHEDRON
 int value_bytes(const std::string& type) {
   if (starts(type, "bit")) return kBit;
   if (type == "char" || type == "signed_char" || starts(type, "unsigned_char")) return 1;
@@ -66,7 +69,7 @@ class DatasetWalk {
         }
       } else if (starts(word, "cell_types")) {
         std::int64_t n = 0;
-        if (!(in_ >> n) || n < 0 || !skip(n, 4)) return;
+        if (!(in_ >> n) || n < 0 || !cell_types(n)) return;
       } else if (is_legacy_keyword(word, "metadata")) {
         metadata();
       } else {
@@ -95,6 +98,34 @@ class DatasetWalk {
       return true;
     }
     numbers(count);  // VTK's look for METADATA clears the stream's error: the walk goes on from there
+    return true;
+  }
+
+  // The cell types: a polyhedron (VTK type 42) is refused here, as validate() would refuse it
+  // after the read, because VTK's reader decomposes its face stream unchecked and a garbled one
+  // crashes it. False where the walk must stop.
+  bool cell_types(std::int64_t n) {
+    UnsupportedCellTypes polyhedra;
+    if (binary_) {
+      std::string rest;
+      std::getline(in_, rest);  // the values start on the next line: big-endian 32-bit integers
+      if (n > left() / 4) return false;
+      std::vector<unsigned char> b(4 * static_cast<std::size_t>(n));
+      in_.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(b.size()));
+      for (std::int64_t c = 0; c < n; ++c)
+        if (b[4 * c] == 0 && b[4 * c + 1] == 0 && b[4 * c + 2] == 0 && b[4 * c + 3] == kPolyhedron)
+          polyhedra.add(kPolyhedron, c);
+    } else {
+      double v;
+      for (std::int64_t c = 0; c < n; ++c) {
+        if (!(in_ >> v)) {
+          in_.clear();  // as numbers(): VTK's message, or its look for METADATA
+          break;
+        }
+        if (v == kPolyhedron) polyhedra.add(kPolyhedron, c);
+      }
+    }
+    polyhedra.throw_if_any(path_);
     return true;
   }
 
@@ -143,15 +174,13 @@ class DatasetWalk {
       const std::string which = "'" + name + "', array " + std::to_string(a) + " ('" + array.substr(0, 40) + "')";
       int components = 0;
       std::int64_t tuples = 0;
-      if (!(in_ >> components >> tuples >> type))
-        refuse(which + ": its components, tuples and type are not all there");
+      if (!(in_ >> components >> tuples >> type)) refuse(which + ": its components, tuples and type are not all there");
       const int bytes = value_bytes(lower(type));
-      if (bytes == kUnknown)
-        refuse(which + ": unknown type '" + type.substr(0, 40) + "'");
+      if (bytes == kUnknown) refuse(which + ": unknown type '" + type.substr(0, 40) + "'");
       if (components < 0 || tuples < 0) refuse(which + ": a negative count");
       double per_value = bytes == kVariable ? 1 : 2;  // ASCII: a string's line end, a digit and a space
       if (binary_) per_value = bytes > 0 ? bytes : bytes == kBit ? 0.125 : 1;  // a string: its length byte
-      if (double(components) * double(tuples) * per_value > double(left()))  // in double: no overflow
+      if (double(components) * double(tuples) * per_value > double(left()))    // in double: no overflow
         refuse(which + ": " + std::to_string(components) + " x " + std::to_string(tuples) +
                " values, more than the file's remaining " + std::to_string(left()) + " bytes hold");
       const std::int64_t values = static_cast<std::int64_t>(components) * tuples;

@@ -16,12 +16,11 @@ namespace cellproj {
 namespace {
 
 void check_cells(const MeshView& m) {
-  std::map<int, std::pair<std::int64_t, std::int64_t>> unsupported;  // type -> (count, first cell)
+  UnsupportedCellTypes unsupported;
   for (std::int64_t c = 0; c < m.n_cells; ++c) {
     const std::uint8_t t = m.types[c];
     if (!is_supported(t)) {
-      auto& u = unsupported.try_emplace(t, 0, c).first->second;
-      ++u.first;
+      unsupported.add(t, c);
       continue;
     }
     const int expected = cell_def(static_cast<CellType>(t)).vertices;
@@ -36,13 +35,7 @@ void check_cells(const MeshView& m) {
                                              ") refers to point " + std::to_string(ids[k]) + ", out of range [0, " +
                                              std::to_string(m.n_points) + ")"));
   }
-  if (unsupported.empty()) return;
-  std::string what = "unsupported cell types:";
-  for (const auto& [t, u] : unsupported)
-    what += " " + vtk_type_name(t) + ": " + std::to_string(u.first) + " cells (first: cell " +
-            std::to_string(u.second) + ");";
-  what += " cellproj renders tetra, voxel, hexahedron, wedge and pyramid";
-  throw InputError(where(m.source, what));
+  unsupported.throw_if_any(m.source);
 }
 
 void check_points(const MeshView& m) {
@@ -72,6 +65,16 @@ void count_duplicates(const MeshView& m, ValidationReport& r) {
 }
 
 }  // namespace
+
+void UnsupportedCellTypes::throw_if_any(const std::string& source) const {
+  if (types_.empty()) return;
+  std::string what = "unsupported cell types:";
+  for (const auto& [t, u] : types_)
+    what += " " + vtk_type_name(t) + ": " + std::to_string(u.first) + " cells (first: cell " +
+            std::to_string(u.second) + ");";
+  what += " cellproj renders tetra, voxel, hexahedron, wedge and pyramid";
+  throw InputError(where(source, what));
+}
 
 void check_finite(const std::string& source, const PointField& field) {
   for (std::size_t p = 0; p < field.values.size(); ++p)

@@ -2,7 +2,9 @@
 // Mesh validation. Defects that make a picture wrong or a program crash are errors (InputError);
 // defects a renderer can live with are counted in the report and shown as warnings.
 #include <cstdint>
+#include <map>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grid/mesh.hpp"
@@ -28,6 +30,18 @@ ValidationReport validate(const MeshView& mesh);
 // Throws InputError (naming the source) unless offsets[0] is 0 and the offsets never decrease:
 // what must hold before the connectivity they index can be read. validate() checks it first.
 void check_offsets(const std::string& source, const std::int64_t* offsets, std::int64_t n_cells);
+
+// Cells of types cellproj does not render, tallied per VTK type: how many and the first one.
+// throw_if_any() names them all in one InputError of `source` (validate() and the legacy .vtk
+// check, which finds polyhedra before VTK's reader would decompose their face streams).
+class UnsupportedCellTypes {
+ public:
+  void add(int vtk_type, std::int64_t cell) { ++types_.try_emplace(vtk_type, 0, cell).first->second.first; }
+  void throw_if_any(const std::string& source) const;
+
+ private:
+  std::map<int, std::pair<std::int64_t, std::int64_t>> types_;  // type -> (count, first cell)
+};
 
 // Throws InputError for the first non-finite value of a field.
 void check_finite(const std::string& source, const PointField& field);

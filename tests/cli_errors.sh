@@ -299,6 +299,10 @@ expect 1 "huge.exo: its header declares 2000000000 points and 26 cells: reading 
 # A legacy file whose cell is a polyhedron (42): the cell type is named, not a miscounted truncation.
 "$exe" generate box-tets -n 1 -o "$tmp/t.vtk" >/dev/null && awk 'f&&/^10$/&&!d{print "42";d=1;next} /CELL_TYPES/{f=1} {print}' "$tmp/t.vtk" >"$tmp/poly.vtk"
 expect 1 "poly.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(first: cell 0\\)" -- info "$tmp/poly.vtk"
+# A binary format-5 file whose cell 24 became a polyhedron (a fuzzer's input that crashed VTK's
+# reader decomposing the garbled face stream): refused by the walk before VTK reads it.
+cp "$src/tests/fuzz/regressions/vtk/crash-3b40acd17da3c8afce31a4d129bae16e4eab1245" "$tmp/poly5.vtk"
+expect 1 "poly5.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(first: cell 24\\)" -- info "$tmp/poly5.vtk"
 # Legacy .vtk structure VTK's reader follows without bounds: a cell count past the CELLS block, a
 # garbled version line (a format-5 body read as the older layout), offsets pointing anywhere.
 printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n9 0 1 2 3\nCELL_TYPES 1\n10\n' >"$tmp/count.vtk"
