@@ -1,3 +1,4 @@
+#include <algorithm>
 #include <cctype>
 #include <cstdint>
 #include <fstream>
@@ -58,10 +59,13 @@ class DatasetWalk {
         if (!field()) return;
       } else if (starts(word, "points")) {
         std::int64_t n = 0;
-        if (!(in_ >> n >> type) || n < 0 || !skip(3 * n, value_bytes(lower(type)))) return;
+        if (!(in_ >> n >> type)) return;
+        if (n < 0) refuse_count("POINTS", n);  // VTK reads it as a huge size and writes past its array
+        if (!skip(3 * n, value_bytes(lower(type)))) return;
       } else if (starts(word, "cells")) {
         std::int64_t n = 0, size = 0;
-        if (!(in_ >> n >> size) || n < 0 || size < 0) return;
+        if (!(in_ >> n >> size)) return;
+        if (n < 0 || size < 0) refuse_count("CELLS", std::min(n, size));
         if (major_ < 5) {
           if (!skip(size, 4)) return;
         } else if (!array("offsets", n) || !array("connectivity", size)) {
@@ -69,7 +73,9 @@ class DatasetWalk {
         }
       } else if (starts(word, "cell_types")) {
         std::int64_t n = 0;
-        if (!(in_ >> n) || n < 0 || !cell_types(n)) return;
+        if (!(in_ >> n)) return;
+        if (n < 0) refuse_count("CELL_TYPES", n);
+        if (!cell_types(n)) return;
       } else if (is_legacy_keyword(word, "metadata")) {
         metadata();
       } else {
@@ -152,6 +158,10 @@ class DatasetWalk {
   bool array(const char* keyword, std::int64_t count) {
     std::string word, type;
     return (in_ >> word >> type) && is_legacy_keyword(word, keyword) && skip(count, legacy_id_bytes(type));
+  }
+
+  [[noreturn]] void refuse_count(const char* block, std::int64_t n) {
+    throw InputError(where(path_, std::string(block) + " declares a negative count (" + std::to_string(n) + ")"));
   }
 
   [[noreturn]] void refuse(const std::string& what) {

@@ -303,6 +303,9 @@ expect 1 "poly.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(firs
 # reader decomposing the garbled face stream): refused by the walk before VTK reads it.
 cp "$src/tests/fuzz/regressions/vtk/crash-3b40acd17da3c8afce31a4d129bae16e4eab1245" "$tmp/poly5.vtk"
 expect 1 "poly5.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(first: cell 24\\)" -- info "$tmp/poly5.vtk"
+# A negative count (VTK's binary reader took it as a huge size and wrote past its array).
+printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS -3 double\n0 0 0\n' > "$tmp/neg.vtk"
+expect 1 "neg.vtk: POINTS declares a negative count \\(-3\\)" -- info "$tmp/neg.vtk"
 # Legacy .vtk structure VTK's reader follows without bounds: a cell count past the CELLS block, a
 # garbled version line (a format-5 body read as the older layout), offsets pointing anywhere.
 printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n9 0 1 2 3\nCELL_TYPES 1\n10\n' >"$tmp/count.vtk"
