@@ -11,6 +11,7 @@
 
 #include "base/bytes.hpp"
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 #include "grid/header_counts.hpp"
 #include "grid/isolated_read.hpp"
 
@@ -113,7 +114,7 @@ std::string format_for(const std::string& path) {
 
 Mesh read_mesh(const std::string& path, const ReadOptions& options) {
   if (lower_extension(path) == ".gz") {
-    if (!fs::exists(path)) throw InputError(where(path, "no such file"));
+    if (!path_exists(path)) throw InputError(where(path, "no such file"));
     Gunzipped plain(path);
     try {
       Mesh m = read_mesh(plain.file(), options);
@@ -126,8 +127,8 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options) {
       throw InputError(what);
     }
   }
-  if (!fs::exists(path)) throw InputError(where(path, "no such file"));
-  if (fs::is_directory(path)) throw InputError(where(path, "is a folder, not a mesh file"));
+  if (!path_exists(path)) throw InputError(where(path, "no such file"));
+  if (path_is_folder(path)) throw InputError(where(path, "is a folder, not a mesh file"));
   if (std::ifstream probe(path, std::ios::binary); !probe)
     throw InputError(where(path, "cannot be read (" + std::string(std::strerror(errno)) + ")"));
   const std::string format = options.format.empty() ? format_for(path) : options.format;

@@ -10,6 +10,7 @@
 #include <tetgen.h>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/text_scanner.hpp"
 
@@ -116,7 +117,7 @@ Mesh read_tetgen(const std::string& path) {
   const fs::path base = fs::path(path).replace_extension();
   const std::string node = base.string() + ".node", ele = base.string() + ".ele";
   for (const auto& f : {node, ele})
-    if (!fs::exists(f))
+    if (!path_exists(f))
       throw InputError(where(f, "not found (a TetGen mesh is a .node and an .ele of the same base name)"));
   check_ele(ele, check_node(node));
 

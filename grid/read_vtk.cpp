@@ -31,6 +31,7 @@
 #include <vtkXMLGenericDataObjectReader.h>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 #include "grid/geometry.hpp"
 #include "grid/legacy_vtk_check.hpp"
 #include "grid/netcdf_check.hpp"
@@ -405,7 +406,7 @@ Mesh run(Reader* reader, const std::string& path, const VtkMessages& messages, c
 
 std::string plot3d_q_file(const std::string& xyz, const ReadOptions& o) {
   if (!o.q_file.empty()) {
-    if (!fs::exists(o.q_file)) throw InputError(where(o.q_file, "PLOT3D solution (q) file not found"));
+    if (!path_exists(o.q_file)) throw InputError(where(o.q_file, "PLOT3D solution (q) file not found"));
     return o.q_file;
   }
   const fs::path p(xyz);
@@ -414,7 +415,7 @@ std::string plot3d_q_file(const std::string& xyz, const ReadOptions& o) {
   if (at == std::string::npos) return "";
   name.replace(at, 3, "q");
   const fs::path q = p.parent_path() / name;
-  return fs::exists(q) ? q.string() : "";
+  return path_exists(q.string()) ? q.string() : "";
 }
 
 bool all_zero(const Mesh& m, const std::string& field) {

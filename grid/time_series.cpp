@@ -13,6 +13,7 @@
 #include <vtkXMLUtilities.h>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 #include "base/timing.hpp"
 #include "grid/netcdf_check.hpp"
 #include "grid/vtk_messages.hpp"
@@ -24,7 +25,7 @@ namespace {
 
 // A ParaView collection: <VTKFile type="Collection"><Collection><DataSet timestep=".." file=".."/>.
 std::vector<KeyFrame> pvd_frames(const std::string& path) {
-  if (!fs::is_regular_file(path)) throw InputError(where(path, "no such file"));
+  if (!path_is_file(path)) throw InputError(where(path, "no such file"));
   // A collection lists files: a few hundred bytes a key frame. The parser holds it whole.
   if (const auto bytes = fs::file_size(path); bytes > (64u << 20))
     throw InputError(where(path, "is " + std::to_string(bytes >> 20) +

@@ -19,6 +19,7 @@
 #include <vtkXMLUnstructuredGridWriter.h>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 
 namespace fs = std::filesystem;
 
@@ -59,7 +60,7 @@ void check_writable(const std::string& path) {
   std::error_code ec;
   if (!dir.empty()) fs::create_directories(dir, ec);
   if (ec) throw InputError(where(path, "cannot make its folder: " + ec.message()));
-  if (fs::is_directory(path)) throw InputError(where(path, "is a folder, not a file to write"));
+  if (path_is_folder(path)) throw InputError(where(path, "is a folder, not a file to write"));
   std::ofstream probe(path, std::ios::binary | std::ios::app);
   if (!probe) throw InputError(where(path, "cannot be written (" + std::string(std::strerror(errno)) + ")"));
 }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 #include "grid/write_mesh.hpp"
 
 namespace cellproj {
@@ -164,9 +165,7 @@ PartitionIndex partition_mesh(const Mesh& mesh, int bricks, const std::string& d
                               int image_side, PartitionReport* report) {
   if (cost_model != "projected" && cost_model != "cells")
     throw InputError("--cost must be projected or cells, not '" + cost_model + "'");
-  std::error_code ec;
-  fs::create_directories(dir, ec);
-  if (!fs::is_directory(dir)) throw InputError(where(dir, "cannot create the output folder"));
+  create_folders(dir);
   const MeshView view = mesh.view();
   PartitionIndex index;
   index.path = (fs::path(dir) / kIndexName).string();

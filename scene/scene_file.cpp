@@ -9,6 +9,7 @@
 #include <fstream>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 #include "scene/render_options.hpp"
 
 namespace fs = std::filesystem;
@@ -124,10 +125,10 @@ glm::dvec3 parse_color(const std::string& t, const std::string& what) {
 }
 
 Scene load_scene(const std::string& path) {
-  if (std::filesystem::is_directory(path)) throw InputError(where(path, "is a folder, not a scene file"));
+  if (path_is_folder(path)) throw InputError(where(path, "is a folder, not a scene file"));
   std::ifstream in(path);
   if (!in)
-    throw InputError(where(path, std::filesystem::exists(path)
+    throw InputError(where(path, path_exists(path)
                                      ? "cannot read the scene file (" + std::string(std::strerror(errno)) + ")"
                                      : "no such scene file"));
   nlohmann::json j;

@@ -266,6 +266,16 @@ expect 1 "nosuch.json: no such scene file" -- render "$tmp/nosuch.json"
 expect 0 "wrote .*new/sub/box.vtk" -- generate box -n 2 -o "$tmp/new/sub/box.vtk"
 expect 1 "x.vtu: cannot be written" -- generate box -n 2 -o /proc/x.vtu
 expect 1 "a.stl: cannot write '.stl' files" -- generate box -n 2 -o "$tmp/a.stl"
+# Paths the file system refuses to look up or to make (std::filesystem's own errors were "internal
+# errors", exit 3; the scene fuzzer found the first): a name too long, a folder under a file.
+long=$(printf 'n%.0s' {1..300})
+echo "{\"mesh\": \"$long.vtu\", \"transfer_function\": {\"color\": [[0, 1, 1, 1]], \"extinction\": [[0, 1]]}}" > "$tmp/long.json"
+expect 1 "$long.vtu: cannot be looked up \\(File name too long\\)" -- render "$tmp/long.json"
+expect 1 "$long.vtu: cannot be looked up \\(File name too long\\)" -- info "$tmp/$long.vtu"
+touch "$tmp/plain"
+expect 1 "plain: cannot create the folder \\(Not a directory\\)" -- render "$tmp/ok.json" -o "$tmp/plain/x.png"
+expect 1 "plain/x: cannot create the folder" -- render "$tmp/ok.json" --npy "$tmp/plain/x/y.npy"
+expect 1 "plain: cannot create the folder" -- scene "$tmp/box.vtu" -o "$tmp/plain/s.json"
 printf '4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 nan 0\n4 0 0 1\n' > "$tmp/t.node"; printf '1 4 0\n1 1 2 3 4\n' > "$tmp/t.ele"
 expect 1 "t.node: line 4: point 3 has a non-finite coordinate" -- info "$tmp/t.node"
 printf '4 3 0 0\n1 0 0 0\n2 1 0 0\n3 0 1 0\n4 0 0 1\n' > "$tmp/t.node"; printf '1 4 0\n1 1 2 3 -7\n' > "$tmp/t.ele"

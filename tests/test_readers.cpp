@@ -162,6 +162,17 @@ TEST(Readers, OffTetgenAndPointCloud) {
   EXPECT_NEAR(volume, 2.0 / 3, 1e-12);  // the hull: the unit cube less two corner tetrahedra
 }
 
+TEST(Readers, APathTheFileSystemCannotLookUpIsAnInputErrorNamingIt) {
+  // A file name longer than the file system allows: std::filesystem throws its own error, which
+  // must reach a library caller as an InputError naming the path (the scene fuzzer found it).
+  const std::string name = "/tmp/" + std::string(300, 'n') + ".vtu";
+  for (const std::string& path : {name, name + ".gz"}) {
+    const std::string what = test::input_error([&] { load_mesh(path); });
+    EXPECT_NE(what.find(path + ": cannot be looked up (File name too long)"), std::string::npos) << what;
+  }
+  EXPECT_NE(test::input_error([&] { write_vtu(Mesh{}, "/tmp/" + std::string(300, 'w') + "/x.vtu"); }), "");
+}
+
 TEST(Readers, BadTextFilesNameTheFileAndTheLine) {
   test::TempDir dir;
   spit(dir.file("short.off"), "5 2\n0 0 0 1\n1 0 0 1\n0 1 0 1\n0 0 1 1\n1 1 1 1\n0 1 2 3\n");

@@ -72,3 +72,11 @@ TEST(MemoryBudget, CountsFromVtkXmlHeaders) {
   EXPECT_EQ(b.cells, 39 * 31 * 31);
   EXPECT_GT(estimate_mesh_bytes(b), 0u);
 }
+
+namespace cellproj {
+TEST(Scene, AScenePathTheFileSystemCannotLookUpIsAnInputError) {
+  const std::string path = "/tmp/" + std::string(300, 's') + ".json";
+  const std::string what = test::input_error([&] { load_scene(path); });
+  EXPECT_NE(what.find(path + ": cannot be looked up (File name too long)"), std::string::npos) << what;
+}
+}  // namespace cellproj

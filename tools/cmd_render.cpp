@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 #include "grid/clip.hpp"
 #include "grid/time_series.hpp"
 #include "render/playback.hpp"
@@ -42,7 +43,7 @@ int run_render(const RenderArgs& given) {
   // unless the method needs its options first.)
   // The scene read here is the one rendered: load_input does not read it again.
   std::optional<Scene> scene_read;
-  if (is_scene_file(a.input) && std::filesystem::is_regular_file(a.input)) try {
+  if (is_scene_file(a.input) && path_is_file(a.input)) try {
       scene_read = load_scene(a.input);
       // Several volumes are drawn by the exact renderer (render/volume_set.hpp): its default there.
       const bool method_given =
@@ -77,6 +78,7 @@ int run_render(const RenderArgs& given) {
   }
   if (is_distributed(a, world)) check_distributed(a, settings);
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
+  make_output_folders(paths);
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
   const Input input = load_input(a, *renderer, settings, levels, std::move(scene_read));
   if (input.partition || world.size > 1) return render_distributed(a, input, settings, world);

@@ -8,6 +8,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "base/file_status.hpp"
 #include "scene/quick_scene.hpp"
 #include "scene/scene_file.hpp"
 #include "tools/commands.hpp"
@@ -53,7 +54,7 @@ int run_scene(SceneArgs a) {
     std::fputs(text.c_str(), stdout);
     return kExitOk;
   }
-  if (!dir.empty()) std::filesystem::create_directories(dir);
+  create_folders(dir);
   std::ofstream out(a.output);
   if (!(out << text)) throw InputError(where(a.output, "cannot write the scene file"));
   std::printf("wrote %s (render it with: cellproj render %s)\n", a.output.c_str(), a.output.c_str());

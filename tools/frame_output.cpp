@@ -5,6 +5,7 @@
 #include <filesystem>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 
 namespace cellproj {
 
@@ -53,12 +54,12 @@ FramePaths frame_paths(const std::string& png, const std::string& npy, const std
     throw InputError("-o and --npy: give both as frame patterns (frame_%04d.png, frame_%04d.npy) or neither");
   p.sequence = png_seq || npy_seq;
   if (p.sequence && frames < 2) throw InputError("a frame pattern in -o or --npy needs --frames N (N >= 2)");
-  for (const std::string& out : {p.png, p.npy}) {
-    if (out.empty()) continue;
-    const auto dir = std::filesystem::path(out).parent_path();
-    if (!dir.empty()) std::filesystem::create_directories(dir);
-  }
   return p;
+}
+
+void make_output_folders(const FramePaths& paths) {
+  for (const std::string& out : {paths.png, paths.npy})
+    if (!out.empty()) create_folders(std::filesystem::path(out).parent_path().string());
 }
 
 }  // namespace cellproj

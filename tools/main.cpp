@@ -1,5 +1,6 @@
 // cellproj: direct volume rendering of unstructured and curvilinear grids.
 #include <cstdio>
+#include <filesystem>
 #include <new>
 #include <string>
 
@@ -49,6 +50,11 @@ int main(int argc, char** argv) {
                  "--max-memory so that the estimate refuses it up front\n",
                  command.c_str());
     return kExitInternal;
+  } catch (const std::filesystem::filesystem_error& e) {  // a path the checks above did not look up first
+    if (report_errors)
+      std::fprintf(stderr, "cellproj: error: %s\n",
+                   where(e.path1().string(), "cannot be used (" + e.code().message() + ")").c_str());
+    return kExitInput;
   } catch (const std::exception& e) {
     if (report_errors) std::fprintf(stderr, "cellproj: internal error: %s\n", e.what());
     return kExitInternal;

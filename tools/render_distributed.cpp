@@ -44,6 +44,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   RenderReport report;
   std::vector<double> frame_times;
   const FramePaths paths = frame_paths(a.png, a.npy, a.input, a.frames);
+  make_output_folders(paths);
   const ColorBar legend = color_bar(prepared, scene.background);
   Image first;
   arena.execute([&] {

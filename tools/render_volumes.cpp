@@ -50,6 +50,7 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
   if (!a.view.empty()) usage([&] { return view_camera(a.view, {0, 0, 0}, {1, 1, 1}, 1.0); });  // the name, now
   apply_view_and_clip(a, scene);
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
+  make_output_folders(paths);
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
   const ImageSize size{scene.width, scene.height};
 
