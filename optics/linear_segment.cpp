@@ -79,7 +79,7 @@ EndWeights small_cell_weights(double a, double b) {
   const double g = small_cell_front(a, b, std::make_index_sequence<kSmallPowersOfB>());
   const double d = a + b, d2 = d * d, d4 = d2 * d2, d_pow[4] = {d, d2, d4, d4 * d4};
   const double e = d * estrin<16>(kE.data() + 1, d_pow);  // 1 - e^-D
-  return {g, e - g, d};
+  return {g, e - g, d, e};
 }
 
 // M_k(a) = int_0^1 u^k e^{-a u} du for k = 0 .. kmax, by the recursion M_k = (k M_{k-1} - e^-a) / a

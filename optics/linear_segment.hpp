@@ -19,6 +19,7 @@ double dawson(double x);
 struct EndWeights {
   double front = 0.0, back = 0.0;
   double depth = 0.0;  // optical depth of the whole segment
+  double opacity = -1.0;  // 1 - e^-depth where it came with the weights (small cells), else -1
 };
 // kappa from k0 (front) to k1 (back), both >= 0, over length L. Stable from optical depth 1e-300
 // (small cells, kappa L <= 0.5 and a change of at most 0.02 along the segment: Taylor series in
@@ -29,7 +30,7 @@ EndWeights linear_segment_weights(double L, double k0, double k1);
 inline SegmentLight integrate_linear_closed_form(double L, double k0, double k1, const glm::dvec3& c0,
                                                  const glm::dvec3& c1) {
   const EndWeights w = linear_segment_weights(L, k0, k1);
-  return {c0 * w.front + c1 * w.back, w.depth};
+  return {c0 * w.front + c1 * w.back, w.depth, w.opacity};
 }
 
 // A segment along which the scalar runs linearly from s0 (front) to s1 (back), cut at the transfer

@@ -17,9 +17,12 @@ constexpr double kOpaqueDepth = 60.0;
 struct SegmentLight {
   glm::dvec3 rgb{0.0};  // premultiplied light leaving the front end
   double depth = 0.0;   // optical depth; kept instead of 1 - alpha so tiny opacities stay exact
+  // 1 - e^-depth when the integrator had it already, to full precision (a small cell's series),
+  // else negative and opacity() computes it.
+  double known_opacity = -1.0;
 
   double transmittance() const { return std::exp(-depth); }
-  double opacity() const { return -std::expm1(-depth); }
+  double opacity() const { return known_opacity >= 0.0 ? known_opacity : -std::expm1(-depth); }
 };
 
 // Front-to-back "under": `back` seen through `front`.
@@ -73,8 +76,11 @@ template <class Integrate>
 SegmentLight integrate_pieces(const TransferFunction& tf, double length, double s0, double s1, Integrate&& integrate) {
   SegmentLight acc;
   if (!(length > 0.0)) return acc;
+  bool first = true;  // the first piece as it is (under() of it behind nothing is the same light)
   for_each_linear_piece(tf, s0, s1, [&](const TransferFunction::Ends& e, double fraction) {
-    acc = under(acc, integrate(length * fraction, e.ka, e.kb, e.ca, e.cb));
+    const SegmentLight piece = integrate(length * fraction, e.ka, e.kb, e.ca, e.cb);
+    acc = first ? piece : under(acc, piece);
+    first = false;
   });
   return acc;
 }

@@ -66,7 +66,7 @@ void ProjectionSplats::append(std::int64_t c, FragmentBands& out, SplatCounters&
   if (!f.visible) return;
   append_fragments(
       f, rays->width(), rays->height(),
-      [&](int i, int j) { return !stencil.holds(i, j, f.depth * rays->length_per_depth(i + 0.5, j + 0.5)); }, out,
+      [&](int i, int j) { return !stencil.holds(i, j, f.depth * rays->length_per_depth_at_pixel(i, j)); }, out,
       counters);
 }
 

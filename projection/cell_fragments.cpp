@@ -353,7 +353,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
             double sf = q0[2] + k * dq[2], sb = q0[3] + k * dq[3];
             if (persp) zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
             sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
-            const double l = std::max(0.0, zb - zf) * rays_.length_per_depth(i + 0.5, j + 0.5);
+            const double l = std::max(0.0, zb - zf) * rays_.length_per_depth_at_pixel(i, j);
             SegmentLight light;
             if (cut)
               light = integrate_segment_closed_form(tf_, l, sf, sb);

@@ -103,6 +103,23 @@ TEST(LinearSegment, TheSmallCellSeriesMeetsTheMomentSeriesAtItsBounds) {
     }
 }
 
+TEST(LinearSegment, ASmallCellsOpacityComesWithItsWeightsToFullPrecision) {
+  // A small cell's series gives 1 - e^-D with its weights; the segment passes it on instead of
+  // computing expm1 again. It must equal expm1's to a few ulps, down to tiny depths, and a
+  // segment outside the series' bounds must still get expm1's value.
+  for (double a : {1e-300, 1e-12, 1e-5, 0.01, 0.2, 0.49})
+    for (double b : {-0.0099, -1e-7, 0.0, 3e-4, 0.0099}) {
+      if (a + 2 * b < 0 || a + b <= 0) continue;
+      const SegmentLight got = integrate_linear_closed_form(1.0, a, a + 2 * b, glm::dvec3(1.0), glm::dvec3(0.5));
+      ASSERT_GE(got.known_opacity, 0.0) << "a " << a << " b " << b;
+      EXPECT_LT(rel(got.opacity(), -std::expm1(-(a + b))), 1e-15) << "a " << a << " b " << b;
+      EXPECT_LE(got.opacity(), 1.0);
+    }
+  const SegmentLight thick = integrate_linear_closed_form(1.0, 3.0, 5.0, glm::dvec3(1.0), glm::dvec3(0.5));
+  EXPECT_LT(thick.known_opacity, 0.0);
+  EXPECT_EQ(thick.opacity(), -std::expm1(-4.0));
+}
+
 TEST(LinearSegment, TinyDepthKeepsRelativeAccuracy) {
   // Opacity kappa L for kappa L = 1e-8 (constant kappa), relative 1e-6 as issue 6 asks; colour C A.
   for (double d : {1e-8, 1e-12, 1e-300}) {

@@ -73,6 +73,16 @@ PixelRays::PixelRays(const Camera& c, int width, int height) : camera_(c), width
     half_h_ = std::tan(0.5 * c.fov_y * kPi / 180.0);
   }
   half_w_ = half_h_ * aspect;
+  if (!perspective()) return;
+  u2_.resize(static_cast<std::size_t>(width)), v2_.resize(static_cast<std::size_t>(height));
+  for (int i = 0; i < width; ++i) {  // as length_per_depth(i + 0.5, j + 0.5) computes them
+    const double u = (2.0 * (i + 0.5) / width_ - 1.0) * half_w_;
+    u2_[static_cast<std::size_t>(i)] = u * u;
+  }
+  for (int j = 0; j < height; ++j) {
+    const double v = (1.0 - 2.0 * (j + 0.5) / height_) * half_h_;
+    v2_[static_cast<std::size_t>(j)] = v * v;
+  }
 }
 
 Ray PixelRays::ray(double x, double y) const {

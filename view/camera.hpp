@@ -74,6 +74,12 @@ class PixelRays {
     const double u = (2.0 * x / width_ - 1.0) * half_w_, v = (1.0 - 2.0 * y / height_) * half_h_;
     return std::sqrt(1.0 + u * u + v * v);
   }
+  // The same at the centre of pixel (i, j) (0 <= i < width, 0 <= j < height), from the squares of u
+  // and v computed once per column and row: the same bits, without two divisions per pixel.
+  double length_per_depth_at_pixel(int i, int j) const {
+    if (!perspective()) return 1.0;
+    return std::sqrt(1.0 + u2_[static_cast<std::size_t>(i)] + v2_[static_cast<std::size_t>(j)]);
+  }
   bool perspective() const { return camera_.projection == Projection::Perspective; }
   int width() const { return width_; }
   int height() const { return height_; }
@@ -85,6 +91,7 @@ class PixelRays {
   int width_, height_;
   glm::dvec3 forward_, right_, up_;
   double half_w_, half_h_;  // orthographic: world half extents; perspective: tangents of the half angles
+  std::vector<double> u2_, v2_;  // perspective: u^2 per column and v^2 per row of length_per_depth
 };
 
 }  // namespace cellproj
