@@ -56,10 +56,7 @@ vtkSmartPointer<vtkUnstructuredGrid> to_vtk(const Mesh& mesh) {
 // The folder of `path` exists (it is made when missing) and the file can be opened for writing:
 // VTK's writers report neither in their return value.
 void check_writable(const std::string& path) {
-  const auto dir = fs::path(path).parent_path();
-  std::error_code ec;
-  if (!dir.empty()) fs::create_directories(dir, ec);
-  if (ec) throw InputError(where(path, "cannot make its folder: " + ec.message()));
+  create_folders(fs::path(path).parent_path().string());
   if (path_is_folder(path)) throw InputError(where(path, "is a folder, not a file to write"));
   std::ofstream probe(path, std::ios::binary | std::ios::app);
   if (!probe) throw InputError(where(path, "cannot be written (" + std::string(std::strerror(errno)) + ")"));
