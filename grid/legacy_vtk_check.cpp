@@ -119,6 +119,17 @@ int legacy_id_bytes(const std::string& type) {
   return is_legacy_keyword(type, "VTKTYPEINT64") ? 8 : is_legacy_keyword(type, "VTKTYPEINT32") ? 4 : 0;
 }
 
+bool legacy_dataset_is(const std::string& path, const std::string& type) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line, word, name;
+  for (int k = 0; k < 3; ++k) std::getline(in, line);  // the version, the title, ASCII or BINARY
+  auto starts = [](std::string w, const std::string& prefix) {
+    for (char& ch : w) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+    return w.rfind(prefix, 0) == 0;
+  };
+  return (in >> word >> name) && starts(word, "dataset") && starts(name, type);
+}
+
 void check_legacy_cells(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line;

@@ -1,4 +1,5 @@
 #include <algorithm>
+#include <cstdlib>
 #include <cctype>
 #include <cstdint>
 #include <fstream>
@@ -36,8 +37,9 @@ int value_bytes(const std::string& type) {
   return kUnknown;
 }
 
-// A walk through the dataset section of a legacy unstructured grid, block by block as VTK's
-// reader reads it (vtkUnstructuredGridReader::ReadMeshSimple).
+// A walk through the dataset section of a legacy unstructured or structured grid, block by block
+// as VTK's reader reads it (vtkUnstructuredGridReader::ReadMeshSimple and its structured-grid
+// twin), then through its point and cell data (vtkDataReader::ReadPointData).
 class DatasetWalk {
  public:
   DatasetWalk(const std::string& path, bool binary, int major)
@@ -51,8 +53,10 @@ class DatasetWalk {
     std::string line;
     for (int k = 0; k < 3; ++k) std::getline(in_, line);  // the version, the title, ASCII or BINARY
     std::string word, type;
-    if (!(in_ >> word >> type) || !is_legacy_keyword(word, "dataset") || !is_legacy_keyword(type, "unstructured_grid"))
-      return;
+    if (!(in_ >> word >> type) || !starts(lower(word), "dataset")) return;  // VTK matches both by prefix
+    type = lower(type);
+    const bool unstructured = starts(type, "unstructured_grid"), structured = starts(type, "structured_grid");
+    if (!unstructured && !structured) return;
     while (in_ >> word) {
       word = lower(word);
       if (starts(word, "field")) {
@@ -62,7 +66,7 @@ class DatasetWalk {
         if (!(in_ >> n >> type)) return;
         if (n < 0) refuse_count("POINTS", n);  // VTK reads it as a huge size and writes past its array
         if (!skip(3 * n, value_bytes(lower(type)))) return;
-      } else if (starts(word, "cells")) {
+      } else if (unstructured && starts(word, "cells")) {
         std::int64_t n = 0, size = 0;
         if (!(in_ >> n >> size)) return;
         if (n < 0 || size < 0) refuse_count("CELLS", std::min(n, size));
@@ -71,15 +75,19 @@ class DatasetWalk {
         } else if (!array("offsets", n) || !array("connectivity", size)) {
           return;
         }
-      } else if (starts(word, "cell_types")) {
+      } else if (unstructured && starts(word, "cell_types")) {
         std::int64_t n = 0;
         if (!(in_ >> n)) return;
         if (n < 0) refuse_count("CELL_TYPES", n);
         if (!cell_types(n)) return;
+      } else if (structured && (starts(word, "dimensions") || starts(word, "extent"))) {
+        if (numbers(word[0] == 'd' ? 3 : 6) < (word[0] == 'd' ? 3 : 6)) return;  // VTK's message
       } else if (is_legacy_keyword(word, "metadata")) {
         metadata();
+      } else if (starts(word, "point_data") || starts(word, "cell_data")) {
+        return attributes(word);
       } else {
-        return;  // POINT_DATA or CELL_DATA, whose FIELDs VTK checks, or a keyword VTK refuses
+        return;  // a keyword VTK refuses (or a structured grid's BLANKING: not followed)
       }
     }
   }
@@ -160,12 +168,81 @@ class DatasetWalk {
     return (in_ >> word >> type) && is_legacy_keyword(word, keyword) && skip(count, legacy_id_bytes(type));
   }
 
-  [[noreturn]] void refuse_count(const char* block, std::int64_t n) {
-    throw InputError(where(path_, std::string(block) + " declares a negative count (" + std::to_string(n) + ")"));
+  [[noreturn]] void refuse_count(const std::string& block, std::int64_t n) {
+    throw InputError(where(path_, block + " declares a negative count (" + std::to_string(n) + ")"));
   }
 
+  // The FIELD block's section: the dataset's (where VTK's reader crashes on what its field reader
+  // gives up on) or POINT_DATA's or CELL_DATA's (where it stops with a message).
+  std::string section_ = "the dataset's";
+
   [[noreturn]] void refuse(const std::string& what) {
-    throw InputError(where(path_, "the dataset's FIELD block " + what + " (VTK's legacy reader would crash on it)"));
+    const bool dataset = section_ == "the dataset's";
+    throw InputError(where(path_, section_ + " FIELD block " + what +
+                                      (dataset ? " (VTK's legacy reader would crash on it)" : "")));
+  }
+
+  // POINT_DATA n or CELL_DATA n (the keyword in `word`), and the arrays that follow, each of n
+  // tuples: a negative count, of tuples or of components, made VTK's reader write past the array
+  // it sized with it. Stops where VTK's reader would stop with a message, or at values not followed.
+  void attributes(std::string word) {
+    std::int64_t n = 0;
+    for (;;) {
+      const std::string block = starts(word, "point_data") ? "POINT_DATA" : "CELL_DATA";
+      if (!(in_ >> n)) return;
+      if (n < 0) refuse_count(block, n);
+      section_ = block + "'s";
+      for (;;) {
+        std::string name, type, key;
+        if (!(in_ >> word)) return;
+        word = lower(word);
+        if (starts(word, "point_data") || starts(word, "cell_data")) break;
+        bool go_on = false;
+        if (starts(word, "scalars")) {  // SCALARS name type [components] LOOKUP_TABLE table
+          int components = 1;
+          if (!(in_ >> name >> type >> key)) return;
+          if (lower(key) != "lookup_table") {
+            components = std::atoi(key.c_str());
+            if (components < 1 || !(in_ >> key) || lower(key) != "lookup_table") return;  // VTK's message
+          }
+          go_on = (in_ >> key) && values(n, components, type);
+        } else if (starts(word, "vectors") || starts(word, "normals") || starts(word, "tensors")) {
+          const int components = starts(word, "tensors6") ? 6 : starts(word, "tensors") ? 9 : 3;
+          go_on = (in_ >> name >> type) && values(n, components, type);
+        } else if (starts(word, "texture_coordinates")) {
+          int dim = 0;
+          go_on = (in_ >> name >> dim >> type) && dim >= 1 && dim <= 3 && values(n, dim, type);
+        } else if (starts(word, "global_ids") || starts(word, "pedigree_ids")) {
+          go_on = (in_ >> name >> type) && values(n, 1, type);
+        } else if (starts(word, "color_scalars")) {
+          int components = 0;
+          if (!(in_ >> name >> components)) return;
+          if (components < 1)
+            throw InputError(where(path_, block + "'s COLOR_SCALARS '" + name.substr(0, 40) + "' declares " +
+                                              std::to_string(components) + " components"));
+          go_on = values(n, components, binary_ ? "unsigned_char" : "float");
+        } else if (starts(word, "lookup_table")) {
+          std::int64_t entries = 0;
+          if (!(in_ >> name >> entries)) return;
+          if (entries < 0) refuse_count(block + "'s LOOKUP_TABLE '" + name.substr(0, 40) + "'", entries);
+          go_on = values(entries, 4, binary_ ? "unsigned_char" : "float");
+        } else if (starts(word, "field")) {
+          go_on = field();
+        }
+        if (!go_on) return;  // a keyword VTK refuses, or values not followed
+      }
+    }
+  }
+
+  // An attribute array's values: `tuples` x `components` of `type`, and its METADATA. False where
+  // the walk stops (a type VTK refuses, strings, more values than the file holds).
+  bool values(std::int64_t tuples, int components, const std::string& type) {
+    const int bytes = value_bytes(lower(type));
+    if (bytes == kUnknown || bytes == kVariable || (bytes == kBit && binary_)) return false;
+    if (double(tuples) * components > double(left())) return false;  // VTK's own message: values missing
+    if (!skip(tuples * components, bytes)) return false;
+    skip_metadata();
+    return true;
   }
 
   // "FIELD name arrays", then per array "name components tuples type" and its values, or
@@ -187,12 +264,15 @@ class DatasetWalk {
       if (!(in_ >> components >> tuples >> type)) refuse(which + ": its components, tuples and type are not all there");
       const int bytes = value_bytes(lower(type));
       if (bytes == kUnknown) refuse(which + ": unknown type '" + type.substr(0, 40) + "'");
-      if (components < 0 || tuples < 0) refuse(which + ": a negative count");
+      if (components < 0 || tuples < 0)
+        refuse(which + ": a negative count (" + std::to_string(components) + " components of " +
+               std::to_string(tuples) + " tuples)");
       double per_value = bytes == kVariable ? 1 : 2;  // ASCII: a string's line end, a digit and a space
       if (binary_) per_value = bytes > 0 ? bytes : bytes == kBit ? 0.125 : 1;  // a string: its length byte
       if (double(components) * double(tuples) * per_value > double(left()))    // in double: no overflow
         refuse(which + ": " + std::to_string(components) + " x " + std::to_string(tuples) +
-               " values, more than the file's remaining " + std::to_string(left()) + " bytes hold");
+               " values, more than the file's remaining " + std::to_string(left()) +
+               " bytes hold (truncated, or a wrong count)");
       const std::int64_t values = static_cast<std::int64_t>(components) * tuples;
       if (bytes == kVariable || (bytes == kBit && binary_)) return false;  // VTK reads strings line by line
       if (binary_) {

@@ -26,6 +26,8 @@
 #include <vtkPoints.h>
 #include <vtkSmartPointer.h>
 #include <vtkStringArray.h>
+#include <vtkStructuredGrid.h>
+#include <vtkStructuredGridReader.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
 #include <vtkXMLGenericDataObjectReader.h>
@@ -418,6 +420,24 @@ std::string plot3d_q_file(const std::string& xyz, const ReadOptions& o) {
   return path_exists(q.string()) ? q.string() : "";
 }
 
+// A legacy structured grid is read by its own reader's mesh pass alone: VTK 9.1's pipeline first
+// runs a metadata pass (vtkStructuredGridReader::ReadMetaDataSimple) that takes every word of the
+// file starting with "field" for a FIELD block, so an array named "field_strength", or bytes of
+// the binary coordinates, crashed it on a good file.
+Mesh read_legacy_structured_grid(const std::string& path, const VtkMessages& messages) {
+  auto r = vtkSmartPointer<vtkStructuredGridReader>::New();
+  r->SetFileName(path.c_str());
+  r->ReadAllScalarsOn();
+  r->ReadAllVectorsOn();
+  r->ReadAllFieldsOn();
+  auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
+  r->ReadMeshSimple(path, grid);
+  messages.throw_if_failed(path);
+  check_legacy_ascii_complete(path, grid);
+  check_legacy_binary_complete(path, grid);
+  return assemble(grid, path, "");
+}
+
 bool all_zero(const Mesh& m, const std::string& field) {
   const auto* f = m.find_field(field);
   return f && std::all_of(f->values.begin(), f->values.end(), [](double v) { return v == 0.0; });
@@ -448,6 +468,7 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
   }
   if (format == "vtk-legacy") {
     check_legacy_cells(path);
+    if (legacy_dataset_is(path, "structured_grid")) return read_legacy_structured_grid(path, messages);
     auto r = vtkSmartPointer<vtkDataSetReader>::New();
     r->SetFileName(path.c_str());
     r->ReadAllScalarsOn();

@@ -316,6 +316,13 @@ expect 1 "poly5.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(fir
 # A negative count (VTK's binary reader took it as a huge size and wrote past its array).
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS -3 double\n0 0 0\n' > "$tmp/neg.vtk"
 expect 1 "neg.vtk: POINTS declares a negative count \\(-3\\)" -- info "$tmp/neg.vtk"
+# A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
+# array with it and wrote past it), and a structured grid with an array named field_strength (VTK
+# 9.1's metadata pass took the name for a FIELD block and crashed on a good file).
+cp "$src/tests/fuzz/regressions/vtk/crash-c7982eb7bfd2cd5f09bb3141237137c87a46210b" "$tmp/negfield.vtk"
+expect 1 "negfield.vtk: POINT_DATA's FIELD block 'FieldData', array 0 \\('scalar'\\): a negative count \\(1 components of -9 tuples\\)" -- info "$tmp/negfield.vtk"
+printf '# vtk DataFile Version 3.0\nsg\nASCII\nDATASET STRUCTURED_GRID\nDIMENSIONS 2 2 2\nPOINTS 8 float\n0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1\nPOINT_DATA 8\nSCALARS field_strength float 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7\n' >"$tmp/sg.vtk"
+expect 0 "points 8, cells 1: hexahedron 1" -- info "$tmp/sg.vtk"
 # Legacy .vtk structure VTK's reader follows without bounds: a cell count past the CELLS block, a
 # garbled version line (a format-5 body read as the older layout), offsets pointing anywhere.
 printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n9 0 1 2 3\nCELL_TYPES 1\n10\n' >"$tmp/count.vtk"

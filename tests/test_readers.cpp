@@ -294,6 +294,64 @@ TEST(Readers, ALegacyDatasetFieldVtkCannotReadIsRefusedBeforeItsReaderCrashes) {
   EXPECT_NE(binary_with("FIELD FieldData 1\nTIME 1 1 nonsense\n").find("unknown type 'nonsense'"), std::string::npos);
 }
 
+// Inside POINT_DATA and CELL_DATA, VTK's legacy reader sizes each array with the counts it reads
+// and does not check them: a negative one (a fuzzer's FIELD array of -9 tuples) made it write past
+// the array. Refused by name; good arrays of every kind, and every count VTK checks itself, pass.
+TEST(Readers, ALegacyArrayOfANegativeCountInPointOrCellDataIsRefusedByName) {
+  test::TempDir dir;
+  const std::string legacy = kLegacy;
+  const std::size_t at = legacy.find("CELL_DATA");
+  auto with = [&](const std::string& block) {  // kLegacy with `block` at the end of its POINT_DATA
+    const std::string f = dir.file("data.vtk");
+    spit(f, legacy.substr(0, at) + block + legacy.substr(at));
+    return read_error(f);
+  };
+  EXPECT_EQ(with("FIELD F 1\na 1 5 double\n0 1 2 3 4\n"), "");
+  EXPECT_EQ(with("VECTORS v double\n0 1 2 3 4 5 6 7 8 9 0 1 2 3 4\nCOLOR_SCALARS c 2\n0 1 0 1 0 1 0 1 0 1\n"
+                 "LOOKUP_TABLE t 1\n0 0 0 1\n"),
+            "");
+  EXPECT_EQ(with("FIELD F 1\na 1 -9 double\n1 2\n"),
+            where(dir.file("data.vtk"),
+                  "POINT_DATA's FIELD block 'F', array 0 ('a'): a negative count (1 components of -9 tuples)"));
+  EXPECT_EQ(with("COLOR_SCALARS c 0\n"), where(dir.file("data.vtk"), "POINT_DATA's COLOR_SCALARS 'c' declares 0 components"));
+  EXPECT_EQ(with("LOOKUP_TABLE t -2\n"),
+            where(dir.file("data.vtk"), "POINT_DATA's LOOKUP_TABLE 't' declares a negative count (-2)"));
+  std::string negative = legacy;
+  negative.replace(negative.find("CELL_DATA 3"), 11, "CELL_DATA -3");
+  spit(dir.file("neg.vtk"), negative);
+  EXPECT_EQ(read_error(dir.file("neg.vtk")), where(dir.file("neg.vtk"), "CELL_DATA declares a negative count (-3)"));
+}
+
+// A legacy structured grid: VTK 9.1's metadata pass took every word starting with "field" for a
+// FIELD block, so a good file with an array named field_strength crashed it. Read by the mesh
+// pass alone, it renders; its dataset FIELD block is checked as an unstructured grid's is.
+TEST(Readers, ALegacyStructuredGridWithAnArrayNamedFieldSomethingReads) {
+  test::TempDir dir;
+  const std::string grid = R"(# vtk DataFile Version 3.0
+sg
+ASCII
+DATASET STRUCTURED_GRID
+DIMENSIONS 2 2 2
+POINTS 8 float
+0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1
+POINT_DATA 8
+SCALARS field_strength float 1
+LOOKUP_TABLE default
+0 1 2 3 4 5 6 7
+)";
+  spit(dir.file("sg.vtk"), grid);
+  const Mesh m = read_mesh(dir.file("sg.vtk"));
+  ASSERT_EQ(m.n_cells(), 1);
+  const auto& f = m.field("field_strength").values;
+  ASSERT_EQ(f.size(), 8u);
+  for (int p = 0; p < 8; ++p) EXPECT_EQ(f[p], p);
+  std::string bad = grid;
+  bad.insert(bad.find("DIMENSIONS"), "FIELD FieldData 1\nfoo 1 1 bogus\n7\n");
+  spit(dir.file("bad.vtk"), bad);
+  EXPECT_NE(read_error(dir.file("bad.vtk")).find("the dataset's FIELD block 'FieldData', array 0 ('foo'): unknown type"),
+            std::string::npos);
+}
+
 // A parallel file: two pieces of one box, their interface points repeated. Read as one conforming
 // mesh, the interface points merged and its faces shared again.
 TEST(Readers, ParallelVtuPiecesAreMergedAtTheirInterface) {
