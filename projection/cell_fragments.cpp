@@ -26,6 +26,48 @@ struct LinearPiece {
   glm::dvec3 color(double s) const { return c0 + dc * ((s - s0) * ds); }
 };
 
+// pt-analytic's and pt-breakpoints' light at pixel (i, j) from the ray's entry and exit: depth and
+// scalar, or in perspective 1/z and s/z (perspective-correct interpolation: z = 1 / (1/z), s = (s/z) z).
+struct ExactShade {
+  const TransferFunction& tf;
+  const PixelRays& rays;
+  bool persp, has_breakpoint, cut;  // cut: pt-breakpoints across a breakpoint
+  double smin, smax;
+  LinearPiece piece;  // the cell's piece when its scalar range holds no breakpoint
+  SegmentLight operator()(int i, int j, double zf, double zb, double sf, double sb) const {
+    if (persp) zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
+    sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
+    const double l = std::max(0.0, zb - zf) * rays.length_per_depth_at_pixel(i, j);
+    if (cut) return integrate_segment_closed_form(tf, l, sf, sb);
+    if (has_breakpoint)  // pt-analytic across a breakpoint: kappa and C linear between the ends' values
+      return integrate_linear_closed_form(l, tf.extinction(sf), tf.extinction(sb), tf.color(sf), tf.color(sb));
+    return integrate_linear_closed_form(l, piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb));
+  }
+};
+
+// The shade of a cell with scalar range [smin, smax]: its transfer-function piece, or whether a
+// breakpoint lies inside the range (then cut there by pt-breakpoints, `cuts`).
+ExactShade exact_shade(const TransferFunction& tf, const PixelRays& rays, bool cuts, double smin, double smax) {
+  const auto& bp = tf.breakpoints();
+  const auto it = std::upper_bound(bp.begin(), bp.end(), smin);
+  const bool has_breakpoint = it != bp.end() && *it < smax;
+  ExactShade shade{tf, rays, rays.perspective(), has_breakpoint, has_breakpoint && cuts, smin, smax, {}};
+  if (!has_breakpoint) {
+    const auto e = tf.piece(smin, smax);
+    LinearPiece& piece = shade.piece;
+    piece.s0 = smin, piece.ds = smax > smin ? 1.0 / (smax - smin) : 0.0;
+    piece.k0 = e.ka, piece.dk = e.kb - e.ka, piece.c0 = e.ca, piece.dc = e.cb - e.ca;
+  }
+  return shade;
+}
+
+// The per-pixel quantities of a vertex that interpolate affinely over a face's image: depth and
+// scalar, or 1/z and s/z in perspective.
+inline void affine_depth_scalar(const ScreenVertex& v, bool persp, double& q_depth, double& q_scalar) {
+  const double f = persp ? 1.0 / v.z : 1.0;
+  q_depth = persp ? f : v.z, q_scalar = v.s * f;
+}
+
 // A fragment that neither adds light nor hides anything (a ray grazing the cell) is not emitted.
 inline bool adds_nothing(const glm::dvec3& rgb, double alpha) {
   return alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0;
@@ -57,7 +99,7 @@ struct CompositeFragments {
 
 void ProjectionCounters::add(const ProjectionCounters& o) {
   tets += o.tets, class1 += o.class1, class2 += o.class2, empty += o.empty, behind_eye += o.behind_eye;
-  polyhedra += o.polyhedra, polygons += o.polygons, subdivisions_looked_up += o.subdivisions_looked_up;
+  polyhedra += o.polyhedra, polygons += o.polygons, layered += o.layered, unmatched += o.unmatched, subdivisions_looked_up += o.subdivisions_looked_up;
   fragments += o.fragments, breakpoint_cells += o.breakpoint_cells, direct_cells += o.direct_cells;
 }
 
@@ -200,20 +242,26 @@ CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p,
   return seen;
 }
 
-CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellType type, CellScratch& p,
-                                                  ProjectionCounters& counters) const {
+bool CellFragments::load_cell(const std::int64_t* ids, CellType type, ScreenVertex* v, CellScratch& p,
+                              ProjectionCounters& counters) const {
   ++counters.polyhedra;
   const int n = cell_def(type).vertices;
-  ScreenVertex v[8];
   p.smin = std::numeric_limits<double>::infinity(), p.smax = -p.smin;
   for (int k = 0; k < n; ++k) {
     v[k] = screen_.v[static_cast<std::size_t>(ids[k])];
     p.smin = std::min(p.smin, v[k].s), p.smax = std::max(p.smax, v[k].s);
     if (behind_eye(v[k].z)) {
       ++counters.behind_eye;  // split into tetrahedra for the view (--tetrahedralize problem), or not drawn
-      return Seen::behind_eye;
+      return false;
     }
   }
+  return true;
+}
+
+CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellType type, CellScratch& p,
+                                                  ProjectionCounters& counters) const {
+  ScreenVertex v[8];
+  if (!load_cell(ids, type, v, p, counters)) return Seen::behind_eye;
   p.tri.clear();
   const CellProjection cp = project_cell(v, ids, type, rays_.perspective(), front_sign_, p.tri, &p.subdivisions);
   counters.polygons += cp.polygons;
@@ -271,19 +319,15 @@ void CellFragments::project(const std::int64_t* ids, CellType type, Image& image
 template <class Emit>
 void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
                                  ProjectionCounters& counters) const {
+  if (type != CellType::Tetra && !method_.gouraud) return project_layers(ids, type, emit, p, counters);
   const Seen seen = triangles_of(ids, type, p, counters);
   if (seen == Seen::behind_eye && type == CellType::Tetra) ray_cast({ids[0], ids[1], ids[2], ids[3]}, emit, counters);
   if (seen != Seen::projected) return;
   std::int64_t emitted = 0;
   const int width = rays_.width(), height = rays_.height();
   const bool persp = rays_.perspective();
-  const double smin = p.smin, smax = p.smax;
-
-  // Whether a breakpoint of the transfer function lies inside the cell's scalar range.
-  const auto& bp = tf_.breakpoints();
-  const auto it = std::upper_bound(bp.begin(), bp.end(), smin);
-  const bool has_breakpoint = it != bp.end() && *it < smax;
-  counters.breakpoint_cells += has_breakpoint;
+  const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
+  counters.breakpoint_cells += exact.has_breakpoint;
 
   if (method_.gouraud) {
     // Colour, opacity (pt-table: kappa and thickness) are affine along a row of a triangle (Gouraud
@@ -320,23 +364,15 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
     return;
   }
 
-  // pt-analytic and pt-breakpoints: the segment's ends per pixel, then the closed-form integral.
-  // Depths and scalars are affine along a run of a triangle's pixels in orthographic projection; in
-  // perspective 1/z and s/z are (perspective-correct interpolation), so z = 1 / (1/z) and s = (s/z) z.
-  // A run starts from its first pixel's values and steps, as the Gouraud path above.
-  LinearPiece piece;
-  if (!has_breakpoint) {
-    const auto e = tf_.piece(smin, smax);
-    piece.s0 = smin, piece.ds = smax > smin ? 1.0 / (smax - smin) : 0.0;
-    piece.k0 = e.ka, piece.dk = e.kb - e.ka, piece.c0 = e.ca, piece.dc = e.cb - e.ca;
-  }
-  const bool cut = has_breakpoint && method_.cuts_at_breakpoints;
+  // pt-analytic and pt-breakpoints on a tetrahedron: the segment's ends per pixel, then the
+  // closed-form integral. Depths and scalars (1/z and s/z in perspective) are affine along a run of
+  // a triangle's pixels: a run starts from its first pixel's values and steps, as the Gouraud path.
   for (std::size_t t = 0; t < p.tri.size(); ++t) {
     const ThickVertex* V = p.tri[t].v;
     double q[3][4];  // per corner: front and back depth, front and back scalar (over depth in perspective)
     for (int k = 0; k < 3; ++k) {
-      const double f = persp ? 1.0 / V[k].zf : 1.0, b = persp ? 1.0 / V[k].zb : 1.0;
-      q[k][0] = persp ? f : V[k].zf, q[k][1] = persp ? b : V[k].zb, q[k][2] = V[k].sf * f, q[k][3] = V[k].sb * b;
+      affine_depth_scalar({V[k].x, V[k].y, V[k].zf, V[k].sf}, persp, q[k][0], q[k][2]);
+      affine_depth_scalar({V[k].x, V[k].y, V[k].zb, V[k].sb}, persp, q[k][1], q[k][3]);
     }
     const auto mix = [&q](const double* w, int m) { return w[0] * q[0][m] + w[1] * q[1][m] + w[2] * q[2][m]; };
     double dq[4];
@@ -349,24 +385,78 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
           const double q0[4] = {mix(w, 0), mix(w, 1), mix(w, 2), mix(w, 3)};
           for (int i = b; i < e; ++i) {
             const double k = i - b;  // steps from the run's start (no running sum: no drift)
-            double zf = q0[0] + k * dq[0], zb = q0[1] + k * dq[1];
-            double sf = q0[2] + k * dq[2], sb = q0[3] + k * dq[3];
-            if (persp) zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
-            sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
-            const double l = std::max(0.0, zb - zf) * rays_.length_per_depth_at_pixel(i, j);
-            SegmentLight light;
-            if (cut)
-              light = integrate_segment_closed_form(tf_, l, sf, sb);
-            else if (has_breakpoint)  // pt-analytic across a breakpoint: kappa and C linear between the ends' values
-              light =
-                  integrate_linear_closed_form(l, tf_.extinction(sf), tf_.extinction(sb), tf_.color(sf), tf_.color(sb));
-            else
-              light =
-                  integrate_linear_closed_form(l, piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb));
+            const SegmentLight light =
+                exact(i, j, q0[0] + k * dq[0], q0[1] + k * dq[1], q0[2] + k * dq[2], q0[3] + k * dq[3]);
             emitted += emit(i, j, light.rgb, light.opacity());
           }
         });
   }
+  counters.fragments += emitted;
+}
+
+template <class Emit>
+void CellFragments::project_layers(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
+                                   ProjectionCounters& counters) const {
+  ScreenVertex v[8];
+  if (!load_cell(ids, type, v, p, counters)) return;  // split into tetrahedra for the view, or not drawn
+  const FaceLayers faces = face_layers(v, ids, type, front_sign_);
+  const int n = cell_def(type).vertices;
+  double xmin = v[0].x, xmax = v[0].x, ymin = v[0].y, ymax = v[0].y;
+  for (int k = 1; k < n; ++k)
+    xmin = std::min(xmin, v[k].x), xmax = std::max(xmax, v[k].x), ymin = std::min(ymin, v[k].y),
+    ymax = std::max(ymax, v[k].y);
+  const int width = rays_.width(), height = rays_.height();
+  // Every face triangle's pixels lie in the box of the cell's vertices (the same rounding).
+  const PixelBox box({xmin, ymin}, {xmax, ymax}, {xmin, ymin}, width, height);
+  if (faces.n_front == 0 || box.empty()) {
+    ++counters.empty;
+    return;
+  }
+  ++counters.layered;
+  const bool persp = rays_.perspective();
+  const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
+  counters.breakpoint_cells += exact.has_breakpoint;
+  const int bw = box.i1 - box.i0 + 1;
+  // The back layer: 1/z and s/z (depth and scalar in orthographic projection) where the ray leaves,
+  // NaN where no back triangle covers the centre.
+  p.back.assign(2 * static_cast<std::size_t>(bw) * static_cast<std::size_t>(box.j1 - box.j0 + 1),
+                std::numeric_limits<double>::quiet_NaN());
+  // Calls at(i, j, depth, scalar) for every pixel centre triangle t covers, its two quantities
+  // stepped along each run from the run's first pixel (as project_with's runs).
+  const auto rasterize = [&](const std::array<std::uint8_t, 3>& t, auto&& at) {
+    double q[3][2];
+    for (int k = 0; k < 3; ++k) affine_depth_scalar(v[t[k]], persp, q[k][0], q[k][1]);
+    const auto mix = [&q](const double* w, int m) { return w[0] * q[0][m] + w[1] * q[1][m] + w[2] * q[2][m]; };
+    double dq[2];
+    rasterize_triangle_spans(
+        glm::dvec2(v[t[0]].x, v[t[0]].y), glm::dvec2(v[t[1]].x, v[t[1]].y), glm::dvec2(v[t[2]].x, v[t[2]].y), width,
+        height, [&](const double* dw) { dq[0] = mix(dw, 0), dq[1] = mix(dw, 1); },
+        [&](int j, int b, int e, const double* w) {
+          const double q0 = mix(w, 0), q1 = mix(w, 1);
+          for (int i = b; i < e; ++i) at(i, j, q0 + (i - b) * dq[0], q1 + (i - b) * dq[1]);
+        });
+  };
+  const auto back_at = [&](int i, int j) { return &p.back[2 * (static_cast<std::size_t>(j - box.j0) * bw + (i - box.i0))]; };
+  for (int t = 0; t < faces.n_back; ++t)
+    rasterize(faces.back[t], [&](int i, int j, double depth, double scalar) {
+      double* b = back_at(i, j);
+      b[0] = depth, b[1] = scalar;
+    });
+  // The front layer: the back triangles tile the same image with the same coverage rule (a
+  // silhouette edge is one front and one back triangle's, traversed alike once each is turned
+  // positive), so each centre a front triangle covers has its back; one that has none (a sliver's
+  // rounding) adds nothing.
+  std::int64_t emitted = 0;
+  for (int t = 0; t < faces.n_front; ++t)
+    rasterize(faces.front[t], [&](int i, int j, double depth, double scalar) {
+      const double* b = back_at(i, j);
+      if (std::isnan(b[0])) {
+        ++counters.unmatched;
+        return;
+      }
+      const SegmentLight light = exact(i, j, depth, b[0], scalar, b[1]);
+      emitted += emit(i, j, light.rgb, light.opacity());
+    });
   counters.fragments += emitted;
 }
 

@@ -21,7 +21,9 @@ namespace cellproj {
 struct ProjectionCounters {
   std::int64_t tets = 0;                    // tetrahedra projected
   std::int64_t polyhedra = 0;               // other cells projected whole (image-plane subdivision)
-  std::int64_t polygons = 0;                // their front ∩ back polygons
+  std::int64_t polygons = 0;                // their front ∩ back polygons (pt-linear and pt-table)
+  std::int64_t layered = 0;                 // polyhedra drawn as a front and a back layer instead (pt-analytic, pt-breakpoints)
+  std::int64_t unmatched = 0;               // their front-layer pixel centres with no back (0 but for rounding)
   std::int64_t subdivisions_looked_up = 0;  // cells whose projection topology was known (the fast path)
   std::int64_t class1 = 0, class2 = 0;
   std::int64_t empty = 0;       // zero projected area (slivers seen edge-on, zero-volume cells)
@@ -55,6 +57,7 @@ struct CellScratch {
   std::vector<GouraudCorner> corner;  // 3 per triangle
   double smin = 0, smax = 0;          // the cell's scalar range
   SubdivisionCache subdivisions;      // projection topologies met by this worker
+  std::vector<double> back;           // a whole cell's back layer: 2 per pixel of its box (project_layers)
 };
 
 // The frame's fixed inputs; project() is const and may run on many threads at once.
@@ -94,6 +97,15 @@ class CellFragments {
   template <class Emit>
   void project_with(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
                     ProjectionCounters& counters) const;
+  // pt-analytic and pt-breakpoints on a cell other than a tetrahedron: its back face triangles
+  // rasterized into a buffer over its pixels, then its front ones, each pixel meeting its back.
+  template <class Emit>
+  void project_layers(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
+                      ProjectionCounters& counters) const;
+  // A cell's screen vertices into v and its scalar range into p; false (counted) if one reaches
+  // behind the eye.
+  bool load_cell(const std::int64_t* ids, CellType type, ScreenVertex* v, CellScratch& p,
+                 ProjectionCounters& counters) const;
   // The tetrahedron's or cell's triangles into p (counted); the tetrahedra and cells not projected
   // say why.
   Seen triangles_of(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters) const;

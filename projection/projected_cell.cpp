@@ -187,10 +187,32 @@ struct CellFaces {
   SubdivisionKey key{};
 };
 
+// Calls add(a, b, c) for each triangle of the cell's faces, in local vertex numbers, turning
+// outward: a quad splits along the diagonal from its lowest id (grid/tetrahedralize's split_quad).
+// Returns the diagonals taken, 2 bits per face.
+template <class Add>
+std::uint64_t split_faces(const CellDef& def, const std::int64_t* ids, Add&& add) {
+  std::uint64_t diagonals = 0;
+  for (int f = 0; f < def.faces; ++f) {
+    const FaceDef& face = def.face[f];
+    if (face.size == 3) {
+      add(face.v[0], face.v[1], face.v[2]);
+      continue;
+    }
+    int k = 0;
+    for (int m = 1; m < 4; ++m)
+      if (ids[face.v[m]] < ids[face.v[k]]) k = m;
+    diagonals |= static_cast<std::uint64_t>(k) << (2 * f);
+    const int a = face.v[k], b = face.v[(k + 1) % 4], c = face.v[(k + 2) % 4], d = face.v[(k + 3) % 4];
+    add(a, b, c);
+    add(a, c, d);
+  }
+  return diagonals;
+}
+
 CellFaces cell_faces(const ScreenVertex* v, const std::int64_t* ids, const CellDef& def, CellType type,
                      const Orientations& orient, int front_sign) {
   CellFaces cf;
-  std::uint64_t diagonals = 0;
   auto add = [&](int a, int b, int c) {
     const int turn = orient(a, b, c);
     if (turn == 0) return;  // edge-on: covers no pixel
@@ -204,20 +226,7 @@ CellFaces cell_faces(const ScreenVertex* v, const std::int64_t* ids, const CellD
     else
       cf.back[cf.n_back++] = t;
   };
-  for (int f = 0; f < def.faces; ++f) {
-    const FaceDef& face = def.face[f];
-    if (face.size == 3) {
-      add(face.v[0], face.v[1], face.v[2]);
-      continue;
-    }
-    int k = 0;  // the diagonal from the lowest id (grid/tetrahedralize's split_quad)
-    for (int m = 1; m < 4; ++m)
-      if (ids[face.v[m]] < ids[face.v[k]]) k = m;
-    diagonals |= static_cast<std::uint64_t>(k) << (2 * f);
-    const int a = face.v[k], b = face.v[(k + 1) % 4], c = face.v[(k + 2) % 4], d = face.v[(k + 3) % 4];
-    add(a, b, c);
-    add(a, c, d);
-  }
+  const std::uint64_t diagonals = split_faces(def, ids, add);
   cf.key[0] = static_cast<std::uint64_t>(type) | static_cast<std::uint64_t>(front_sign > 0) << 8 | diagonals << 16;
   int bit = 0;
   for (int a = 0; a < def.vertices; ++a)
@@ -276,6 +285,17 @@ std::size_t SubdivisionKeyHash::operator()(const SubdivisionKey& k) const {
   std::uint64_t h = k[0] * 0x9E3779B97F4A7C15ull;
   for (int i = 1; i < 3; ++i) h = (h ^ (h >> 31) ^ k[i]) * 0x9E3779B97F4A7C15ull;
   return static_cast<std::size_t>(h ^ (h >> 29));
+}
+
+FaceLayers face_layers(const ScreenVertex* v, const std::int64_t* ids, CellType type, int front_sign) {
+  FaceLayers out;
+  split_faces(cell_def(type), ids, [&](int a, int b, int c) {
+    const int turn = exact_sign(v[a], v[b], v[c]);
+    if (turn == 0) return;  // edge-on: covers no pixel
+    auto& t = turn == front_sign ? out.front[out.n_front++] : out.back[out.n_back++];
+    t = {static_cast<std::uint8_t>(a), static_cast<std::uint8_t>(b), static_cast<std::uint8_t>(c)};
+  });
+  return out;
 }
 
 CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, CellType type, bool perspective,

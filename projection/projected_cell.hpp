@@ -71,4 +71,15 @@ struct CellProjection {
 CellProjection project_cell(const ScreenVertex* v, const std::int64_t* ids, CellType type, bool perspective,
                             int front_sign, std::vector<ProjectedTriangle>& out, SubdivisionCache* cache = nullptr);
 
+// The cell's face triangles (quads split as project_cell splits them) in local vertex numbers,
+// sorted by the exact orientation of their image into those turned towards the eye (front) and
+// away (back); edge-on ones are left out. Over a cell no ray crosses more than twice, the front
+// triangles tile its image once and so do the back ones: each ray enters through one and leaves
+// through one (MWSC section 2).
+struct FaceLayers {
+  std::array<std::uint8_t, 3> front[12], back[12];
+  int n_front = 0, n_back = 0;
+};
+FaceLayers face_layers(const ScreenVertex* v, const std::int64_t* ids, CellType type, int front_sign);
+
 }  // namespace cellproj

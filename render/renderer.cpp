@@ -96,6 +96,8 @@ class ProjectionMode final : public Renderer {
            {"cells_culled_transparent", p.culled_transparent},
            {"polyhedra", c.polyhedra},
            {"polygons", c.polygons},
+           {"layered_polyhedra", c.layered},
+           {"layer_pixels_unmatched", c.unmatched},
            {"subdivisions_looked_up", c.subdivisions_looked_up},
            {"class1_tets", c.class1},
            {"class2_tets", c.class2},

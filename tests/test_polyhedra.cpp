@@ -52,17 +52,24 @@ Image project(const Mesh& m, const std::string& field, const Camera& c, int size
 }  // namespace
 
 TEST(Polyhedra, ACubeIsOneHexagonOfPolygonsAndExact) {
-  // One cube seen obliquely: three faces in front, three behind, every pixel's segment exact.
+  // One cube seen obliquely: three faces in front, three behind. pt-breakpoints draws them as two
+  // layers, every pixel's segment exact and every front pixel meeting its back; the Gouraud
+  // methods subdivide the hexagon into front ∩ back polygons.
   Mesh m = make_box(1, 1, 1, glm::dvec3(-1), glm::dvec3(1), false);
   affine_field(m);
   for (const Camera& c : test::views_of_unit_mesh(3)) {
     ProjectionStats st;
     const Image img = project(m, "s", c, 64, Tetrahedralize::problem, &st);
     EXPECT_EQ(st.counters.polyhedra, 1);
+    EXPECT_EQ(st.counters.layered, 1);
+    EXPECT_EQ(st.counters.unmatched, 0);
     EXPECT_EQ(st.tets, 0);
-    EXPECT_GE(st.counters.polygons, 3);
     const Image ref = test::exact(m, "s", tf(), c, 64, 64, CellInterpolation::isoparametric);
     EXPECT_LT(compare(img, ref).max_abs, 2e-5);
+    ProjectionStats linear;
+    test::project(m, "s", tf(), c, 64, test::with_method(ProjectionMethod::pt_linear), Tetrahedralize::problem, &linear);
+    EXPECT_GE(linear.counters.polygons, 3);
+    EXPECT_EQ(linear.counters.layered, 0);
   }
 }
 
@@ -81,6 +88,7 @@ TEST(Polyhedra, WarpedGridsMatchExactAndSplitOnlyProblemCells) {
       EXPECT_LT(d.max_abs, 1e-3) << "mesh " << kind << " eye " << c.eye.x << " " << c.eye.y << " " << c.eye.z;
       EXPECT_LT(d.rmse, 2e-5) << "mesh " << kind << " eye " << c.eye.x << " " << c.eye.y << " " << c.eye.z;
       EXPECT_EQ(st.cells_split, st.problem_cells + st.cycle_splits);
+      EXPECT_EQ(st.counters.unmatched, 0);  // the front and back layers cover the same centres
       EXPECT_LT(st.problem_cells, m.n_cells() / 2);  // a heavily warped grid: up to a third in perspective
       EXPECT_TRUE(st.sort.cycles.empty());
       problem_views += st.problem_cells > 0;
