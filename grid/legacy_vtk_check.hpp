@@ -1,16 +1,21 @@
 #pragma once
+#include <cstdint>
 #include <string>
+
+#include "base/error.hpp"
 
 namespace cellproj {
 
 // Checks what VTK's legacy reader follows without bounds, before it runs: the version line (a
 // garbled one makes it read a format-5 file as the older layout) and, before format 5, the CELLS
 // block, where each cell is a count and that many ids, `size` numbers in all; a count that runs
-// past the block corrupts the reader's heap. Throws InputError naming the file and the cell.
+// past the block corrupts the reader's heap (the walk below checks it, finding the block as VTK
+// does: keywords by prefix in any case, after any whitespace). Throws InputError naming the file
+// and the cell.
 void check_legacy_cells(const std::string& path);
 
-// Walks an unstructured or structured grid's dataset blocks (POINTS, CELLS, CELL_TYPES; DIMENSIONS)
-// and then its POINT_DATA and CELL_DATA arrays as VTK's legacy reader does, and checks each FIELD
+// Walks an unstructured or structured grid's dataset blocks (POINTS, CELLS and their counts or
+// format 5's arrays, CELL_TYPES; DIMENSIONS) and then its POINT_DATA and CELL_DATA arrays as VTK's legacy reader does, and checks each FIELD
 // block: that reader uses what its field reader returns at the dataset level without a check, so a
 // block it cannot read (no array count, a garbled array header, an unknown type, values missing)
 // crashes it, and it reads arrays of a negative count anywhere. Throws InputError naming the file,
@@ -19,6 +24,25 @@ void check_legacy_cells(const std::string& path);
 // and VTK decomposes their face streams unchecked (a garbled one crashed it).
 // check_legacy_cells calls it; `binary` and `major` are the header's.
 void check_legacy_fields(const std::string& path, bool binary, int major);
+
+// The encoding the header's third line declares, read as VTK reads it: "ascii" or "binary" at
+// its start, in any case ("bINARY" is binary to VTK).
+enum class LegacyEncoding { ascii, binary, unknown };
+LegacyEncoding legacy_encoding(const std::string& third_line);
+
+// The offsets of n cells, at(0) .. at(n): cell c's point ids are connectivity entries at(c) up to
+// at(c + 1), so the offsets start at 0 and climb, never past the `ids` connectivity entries. VTK's
+// cell array takes them as they are (walking garbled ones crashed its reader). Throws InputError,
+// without the file's name, naming the first cell that does not fit.
+template <class At>
+void check_offsets(At&& at, std::int64_t n, std::int64_t ids) {
+  if (n > 0 && at(0) != 0) throw InputError("the cell offsets start at " + std::to_string(at(0)) + ", not 0");
+  for (std::int64_t c = 0; c < n; ++c)
+    if (at(c + 1) < at(c) || at(c + 1) > ids)
+      throw InputError("cell " + std::to_string(c) + "'s point ids run from offset " + std::to_string(at(c)) + " to " +
+                       std::to_string(at(c + 1)) + ", outside the " + std::to_string(ids) +
+                       " connectivity ids or backwards");
+}
 
 // Whether the file's DATASET line names `type` ("structured_grid"), matched as VTK's readers match
 // it: by prefix, in any case.

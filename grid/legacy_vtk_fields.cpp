@@ -71,7 +71,11 @@ class DatasetWalk {
         if (!(in_ >> n >> size)) return;
         if (n < 0 || size < 0) refuse_count("CELLS", std::min(n, size));
         if (major_ < 5) {
-          if (!skip(size, 4)) return;
+          legacy_cells(n, size);
+        } else if (!binary_) {
+          if (!ascii_arrays(n, size)) return;
+        } else if (n >= 1) {
+          if (!cell_types(binary_arrays(n, size))) return;
         } else if (!array("offsets", n) || !array("connectivity", size)) {
           return;
         }
@@ -113,6 +117,112 @@ class DatasetWalk {
     }
     numbers(count);  // VTK's look for METADATA clears the stream's error: the walk goes on from there
     return true;
+  }
+
+  // Before format 5, the CELLS block of `cells` cells in `size` numbers: each cell a count and that
+  // many ids. VTK's reader follows the counts unchecked (one that runs past the block corrupted
+  // its heap), so every count is checked against what is left of the block.
+  void legacy_cells(std::int64_t cells, std::int64_t size) {
+    const std::string block =
+        "the CELLS block (" + std::to_string(cells) + " cells, " + std::to_string(size) + " numbers)";
+    if (cells > size) throw InputError(where(path_, block + " cannot give each cell its count"));
+    if (binary_) {
+      std::string rest;
+      std::getline(in_, rest);  // VTK's binary values start on the next line
+    }
+    std::int64_t used = 0;
+    auto next = [&](std::int64_t c) {  // one number of the block
+      std::int64_t v = 0;
+      if (binary_) {
+        unsigned char b[4];
+        if (!in_.read(reinterpret_cast<char*>(b), 4))
+          v = -1;
+        else
+          v = static_cast<std::int32_t>(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
+                                        std::uint32_t(b[2]) << 8 | b[3]);
+      } else if (!(in_ >> v)) {
+        v = -1;
+      }
+      if (v == -1 && !in_) throw InputError(where(path_, block + " ends at cell " + std::to_string(c) + ": truncated"));
+      return v;
+    };
+    for (std::int64_t c = 0; c < cells; ++c) {
+      const std::int64_t count = next(c);
+      if (count < 0 || count > size - used - 1)
+        throw InputError(where(path_, "cell " + std::to_string(c) + " has " + std::to_string(count) +
+                                          " points, more than the " + std::to_string(size - used - 1) +
+                                          " numbers left in " + block));
+      used += 1 + count;
+      if (binary_)
+        in_.seekg(4 * count, std::ios::cur);
+      else
+        for (std::int64_t k = 0; k < count; ++k) next(c);
+    }
+    if (used != size) throw InputError(where(path_, block + ": its cells' counts and ids add up to " + std::to_string(used)));
+  }
+
+  // Format 5's offsets against its `ids` connectivity entries (check_offsets), naming the file.
+  void offsets_fit(const std::vector<std::int64_t>& offsets, std::int64_t ids) {
+    try {
+      check_offsets([&](std::int64_t c) { return offsets[static_cast<std::size_t>(c)]; },
+                    static_cast<std::int64_t>(offsets.size()) - 1, ids);
+    } catch (const InputError& e) {
+      throw InputError(where(path_, e.what()));
+    }
+  }
+
+  // Format 5, ASCII: "OFFSETS type" and `cells` numbers, checked; then the connectivity. False
+  // where the walk stops (VTK's own message: a keyword or a number missing).
+  bool ascii_arrays(std::int64_t cells, std::int64_t size) {
+    std::string word, type;
+    if (!(in_ >> word >> type) || !is_legacy_keyword(word, "offsets")) return false;
+    std::vector<std::int64_t> offsets;
+    std::int64_t v = 0;
+    while (static_cast<std::int64_t>(offsets.size()) < cells && in_ >> v)  // as many as the file holds
+      offsets.push_back(v);
+    if (static_cast<std::int64_t>(offsets.size()) < cells) return false;
+    offsets_fit(offsets, size);
+    return array("connectivity", size);
+  }
+
+  // Format 5, binary: "OFFSETS type", `cells` values, "CONNECTIVITY type", `size` values, then
+  // "CELL_TYPES cells - 1". VTK reads each array where it expects it and trusts what it finds.
+  // Returns the cell types' count, the stream at their values.
+  std::int64_t binary_arrays(std::int64_t cells, std::int64_t size) {
+    std::vector<std::int64_t> offsets;
+    auto array = [&](const std::string& keyword, std::int64_t count) {
+      std::string word, type, rest;
+      in_ >> word >> type;
+      std::getline(in_, rest);  // VTK's binary values start on the next line
+      if (!is_legacy_keyword(word, keyword))
+        throw InputError(where(path_, "the CELLS block has no " + keyword + " array where VTK reads it (it finds '" +
+                                          word.substr(0, 40) + "')"));
+      const int bytes = legacy_id_bytes(type);
+      if (bytes == 0) throw InputError(where(path_, keyword + ": unknown id type '" + type.substr(0, 40) + "'"));
+      if (keyword != "OFFSETS" || count > left() / bytes) {  // the ids are checked once read (check_cell_array)
+        in_.seekg(count * bytes, std::ios::cur);
+        return;
+      }
+      offsets.resize(static_cast<std::size_t>(count));  // big-endian integers of `bytes` bytes
+      std::vector<unsigned char> b(static_cast<std::size_t>(count * bytes));
+      in_.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(b.size()));
+      for (std::int64_t k = 0; k < count; ++k) {
+        std::uint64_t v = 0;
+        for (int m = 0; m < bytes; ++m) v = v << 8 | b[static_cast<std::size_t>(k * bytes + m)];
+        offsets[k] = bytes == 4 ? static_cast<std::int32_t>(v) : static_cast<std::int64_t>(v);
+      }
+    };
+    array("OFFSETS", cells);
+    array("CONNECTIVITY", size);
+    if (!offsets.empty()) offsets_fit(offsets, size);
+    std::string word;
+    std::int64_t types = -1;
+    in_ >> word >> types;
+    if (!is_legacy_keyword(word, "CELL_TYPES") || types != cells - 1)
+      throw InputError(where(path_, "CELLS declares " + std::to_string(cells - 1) + " cells (" + std::to_string(cells) +
+                                        " offsets), but its arrays are followed by '" + word.substr(0, 40) + " " +
+                                        std::to_string(types) + "', not CELL_TYPES " + std::to_string(cells - 1)));
+    return types;
   }
 
   // The cell types: a polyhedron (VTK type 42) is refused here, as validate() would refuse it

@@ -89,13 +89,7 @@ void check_cell_array(vtkDataSet* ds) {
                      std::to_string(ug->GetCellTypesArray() ? ug->GetCellTypesArray()->GetNumberOfValues() : 0) +
                      " cell types");
   if (n == 0 || !offsets) return;
-  auto at = [&](vtkIdType c) { return static_cast<vtkIdType>(offsets->GetTuple1(c)); };
-  if (at(0) != 0) throw InputError("the cell offsets start at " + std::to_string(at(0)) + ", not 0");
-  for (vtkIdType c = 0; c < n; ++c)
-    if (at(c + 1) < at(c) || at(c + 1) > ids)
-      throw InputError("cell " + std::to_string(c) + "'s point ids run from offset " + std::to_string(at(c)) + " to " +
-                       std::to_string(at(c + 1)) + ", outside the " + std::to_string(ids) +
-                       " connectivity ids or backwards");
+  check_offsets([&](std::int64_t c) { return static_cast<std::int64_t>(offsets->GetTuple1(c)); }, n, ids);
 }
 
 // Where each leaf's points and cells went in the assembled mesh.
@@ -311,7 +305,7 @@ void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
   std::string line;
   for (int i = 0; i < 3 && std::getline(in, line); ++i) {
   }
-  if (line.rfind("ASCII", 0) != 0) return;
+  if (legacy_encoding(line) != LegacyEncoding::ascii) return;
   std::uintmax_t numbers = 0;
   while (std::getline(in, line)) {
     const auto first = line.find_first_not_of(" \t\r");
@@ -349,7 +343,7 @@ void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
     needed += line.size() + 1;
     if (i == 0 && line.find("Version") != std::string::npos)
       version = std::atof(line.substr(line.find("Version") + 7).c_str());
-    if (i == 2 && line.rfind("BINARY", 0) != 0) return;
+    if (i == 2 && legacy_encoding(line) != LegacyEncoding::binary) return;
   }
   auto bytes = [](vtkAbstractArray* a) {
     return a ? static_cast<std::uintmax_t>(a->GetNumberOfValues()) * static_cast<std::uintmax_t>(a->GetDataTypeSize())

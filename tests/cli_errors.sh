@@ -316,6 +316,13 @@ expect 1 "poly5.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(fir
 # A negative count (VTK's binary reader took it as a huge size and wrote past its array).
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS -3 double\n0 0 0\n' > "$tmp/neg.vtk"
 expect 1 "neg.vtk: POINTS declares a negative count \\(-3\\)" -- info "$tmp/neg.vtk"
+# Fuzzed binary files that crashed VTK's reader: "bINARY" on the third line (binary to VTK, so the
+# CELLS block read as the older layout is checked as such), and a format-5 offset far past the
+# connectivity (VTK's SetCells walked it).
+cp "$src/tests/fuzz/regressions/vtk/crash-9945fbdb17b39809e79bb1da5b75f1c25eb2d6a9" "$tmp/lower.vtk"
+expect 1 "lower.vtk: cell 0 has 1330005587 points, more than the 135 numbers left in the CELLS block \\(27 cells, 136 numbers\\)" -- info "$tmp/lower.vtk"
+cp "$src/tests/fuzz/regressions/vtk/crash-c8ce9a162e423c81a64b094b4dda8261c2bdc275" "$tmp/offset.vtk"
+expect 1 "offset.vtk: cell 13's point ids run from offset 68 to 1095216660556, outside the 136 connectivity ids or backwards" -- info "$tmp/offset.vtk"
 # A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
 # array with it and wrote past it), and a structured grid with an array named field_strength (VTK
 # 9.1's metadata pass took the name for a FIELD block and crashed on a good file).
@@ -327,6 +334,12 @@ expect 0 "points 8, cells 1: hexahedron 1" -- info "$tmp/sg.vtk"
 # garbled version line (a format-5 body read as the older layout), offsets pointing anywhere.
 printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n9 0 1 2 3\nCELL_TYPES 1\n10\n' >"$tmp/count.vtk"
 expect 1 "count.vtk: cell 0 has 9 points, more than the 4 numbers left in the CELLS block \\(1 cells, 5 numbers\\)" -- info "$tmp/count.vtk"
+# VTK finds the block as a word starting with "cells" in any case, after any whitespace (fuzzed
+# files that crashed it: "CELLSPOINT_", "cELLS", a vertical tab before the line).
+for kw in 'CELLSPOINT_' 'cELLS' '\vCELLS'; do
+  sed "s/^CELLS/$kw/" "$tmp/count.vtk" >"$tmp/count2.vtk"
+  expect 1 "count2.vtk: cell 0 has 9 points, more than the 4 numbers left in the CELLS block \\(1 cells, 5 numbers\\)" -- info "$tmp/count2.vtk"
+done
 sed 's/Version 5.1/Version 5x1/' "$tmp/t.vtk" >"$tmp/version.vtk"
 expect 1 "version.vtk: line 1: the version is garbled" -- info "$tmp/version.vtk"
 awk '/^OFFSETS/{print; getline; $2=99; print; next} {print}' "$tmp/t.vtk" >"$tmp/offsets.vtk"
