@@ -7,6 +7,7 @@
 # usage: bench/vtk_1m.sh [BUILD_DIR] [A_EXE]
 set -euo pipefail
 cd "$(dirname "$0")/.."
+bash scripts/setup.sh --bench  # Xvfb for VTK's mapper
 exe=$(realpath "${1:-build}/bin/cellproj"); a=${2:-}
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 "$exe" generate box-tets -n 55 -o "$work/box_1m.vtu" >/dev/null

@@ -3,6 +3,7 @@
 # present it only asks dpkg (well under a second). apt-get as root, sudo otherwise.
 #   scripts/setup.sh          what the build and tests need
 #   scripts/setup.sh --fuzz   and clang's libFuzzer, for bench/fuzz.sh
+#   scripts/setup.sh --bench  and Xvfb and matplotlib, for VTK's mappers in bench/run and bench/vtk_1m.sh
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config python3
@@ -11,6 +12,7 @@ packages=(
   pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-meshio python3-vtk9
 )
 [ "${1:-}" = "--fuzz" ] && packages+=(clang libclang-rt-dev)
+[ "${1:-}" = "--bench" ] && packages+=(xvfb xauth python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
