@@ -423,9 +423,10 @@ void CellFragments::project_layers(const std::int64_t* ids, CellType type, Emit&
                 std::numeric_limits<double>::quiet_NaN());
   // Calls at(i, j, depth, scalar) for every pixel centre triangle t covers, its two quantities
   // stepped along each run from the run's first pixel (as project_with's runs).
+  double qv[8][2];  // per vertex, once: every face triangle interpolates these
+  for (int k = 0; k < n; ++k) affine_depth_scalar(v[k], persp, qv[k][0], qv[k][1]);
   const auto rasterize = [&](const std::array<std::uint8_t, 3>& t, auto&& at) {
-    double q[3][2];
-    for (int k = 0; k < 3; ++k) affine_depth_scalar(v[t[k]], persp, q[k][0], q[k][1]);
+    const double q[3][2] = {{qv[t[0]][0], qv[t[0]][1]}, {qv[t[1]][0], qv[t[1]][1]}, {qv[t[2]][0], qv[t[2]][1]}};
     const auto mix = [&q](const double* w, int m) { return w[0] * q[0][m] + w[1] * q[1][m] + w[2] * q[2][m]; };
     double dq[2];
     rasterize_triangle_spans(
