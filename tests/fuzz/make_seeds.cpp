@@ -92,6 +92,52 @@ int main(int argc, char** argv) {
   write_mesh(tets, (out / "vtk/box-tets-ascii.vtk").string());
   write_mesh(mixed, (out / "vtk/mixed-ascii.vtk").string());
   write_mesh(mixed, (out / "vtk/mixed-binary.vtk").string(), true);
+  // Legacy structured grids (read without VTK's metadata pass) and the attribute blocks the
+  // dataset walk checks in POINT_DATA and CELL_DATA, which cellproj's writer does not write.
+  std::ofstream(out / "vtk/structured-ascii.vtk") << R"(# vtk DataFile Version 3.0
+sg
+ASCII
+DATASET STRUCTURED_GRID
+DIMENSIONS 2 2 2
+POINTS 8 float
+0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1
+POINT_DATA 8
+SCALARS field_strength float 1
+LOOKUP_TABLE default
+0 1 2 3 4 5 6 7
+VECTORS v float
+0 0 1 0 1 0 1 0 0 0 0 1 0 1 0 1 0 0 0 0 1 1 1 1
+COLOR_SCALARS c 2
+0 1 0 1 0 1 0 1 0 1 0 1 0 1 0 1
+CELL_DATA 1
+FIELD FieldData 1
+heat 1 1 double
+2.5
+LOOKUP_TABLE t 1
+0 0 0 1
+)";
+  {
+    std::ofstream sg(out / "vtk/structured-binary.vtk", std::ios::binary);
+    sg << "# vtk DataFile Version 3.0\nsg\nBINARY\nDATASET STRUCTURED_GRID\nDIMENSIONS 2 2 2\nPOINTS 8 float\n";
+    auto big_endian = [&](const void* p, int n) {  // legacy binary values are big-endian
+      const auto* b = static_cast<const unsigned char*>(p);
+      for (int k = n - 1; k >= 0; --k) sg.put(static_cast<char>(b[k]));
+    };
+    for (int k = 0; k < 8; ++k)
+      for (int a = 0; a < 3; ++a) {
+        const float x = static_cast<float>((k >> a) & 1);
+        big_endian(&x, 4);
+      }
+    sg << "\nPOINT_DATA 8\nSCALARS s float 1\nLOOKUP_TABLE default\n";
+    for (int k = 0; k < 8; ++k) {
+      const float x = static_cast<float>(k);
+      big_endian(&x, 4);
+    }
+    sg << "\nCELL_DATA 1\nFIELD FieldData 1\nheat 1 1 double\n";
+    const double h = 2.5;
+    big_endian(&h, 8);
+    sg << "\n";
+  }
   write_mesh(mixed, (out / "exodus/mixed.exo").string());
   write_cgns(tets, (out / "cgns/box-tets.cgns").string());
   write_cgns(box, (out / "cgns/box.cgns").string());
