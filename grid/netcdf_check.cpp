@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <limits>
@@ -133,7 +134,36 @@ std::uint64_t ClassicHeader::dim(const std::string& name) const {
   return 0;
 }
 
+std::optional<std::uint64_t> hdf5_end_of_file(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  unsigned char b[64] = {};
+  in.read(reinterpret_cast<char*>(b), sizeof b);
+  static const unsigned char kSignature[8] = {0x89, 'H', 'D', 'F', '\r', '\n', 0x1a, '\n'};
+  if (in.gcount() < 48 || std::memcmp(b, kSignature, 8) != 0) return std::nullopt;  // or a user block first
+  // HDF5 file format, the superblock: versions 0 and 1 give the sizes of offsets at byte 13 and
+  // their addresses (base, free space, end of file) from byte 24 or 28; versions 2 and 3 give the
+  // size at byte 9 and the addresses (base, extension, end of file) from byte 12.
+  const int version = b[8];
+  const int size = version <= 1 ? b[13] : b[9];
+  const int first = version == 0 ? 24 : version == 1 ? 28 : 12;
+  if (version > 3 || (size != 4 && size != 8) || first + 3 * size > in.gcount()) return std::nullopt;
+  auto address = [&](int k) {  // little-endian
+    std::uint64_t v = 0;
+    for (int m = size - 1; m >= 0; --m) v = v << 8 | b[first + k * size + m];
+    return v;
+  };
+  const std::uint64_t base = address(0), end = address(2);
+  if (end > std::numeric_limits<std::uint64_t>::max() - base) return std::nullopt;
+  return base + end;
+}
+
 void check_netcdf_readable(const std::string& path) {
+  // A netCDF-4 file is HDF5: its superblock says where the file ends, and HDF5 refuses a file cut
+  // before that only with "HDF error".
+  if (const auto end = hdf5_end_of_file(path))
+    if (const std::uintmax_t file = std::filesystem::file_size(path); file < *end)
+      throw InputError(where(path, "truncated: its HDF5 superblock (netCDF-4) says the file ends at byte " +
+                                       std::to_string(*end) + ", the file has " + std::to_string(file) + " bytes"));
   int id = -1;
   if (int err = nc_open(path.c_str(), NC_NOWRITE, &id); err != NC_NOERR)
     throw InputError(where(path, std::string("not a readable Exodus II (netCDF) file: ") + nc_strerror(err)));

@@ -18,8 +18,13 @@ struct ClassicHeader {
 // nullopt when the file is not classic netCDF (netCDF-4 is HDF5) or its header is malformed.
 std::optional<ClassicHeader> read_classic_header(const std::string& path);
 
+// Where an HDF5 file (netCDF-4) ends by its superblock (base address plus end-of-file address);
+// nullopt when the file does not start with an HDF5 superblock this reads (versions 0 to 3).
+std::optional<std::uint64_t> hdf5_end_of_file(const std::string& path);
+
 // Checks a netCDF file (Exodus II is netCDF) before VTK's Exodus reader, which does not check and
-// crashes on a truncated file: a classic file must hold every byte its header places, every
+// crashes on a truncated file: a classic file must hold every byte its header places, a netCDF-4
+// one every byte its HDF5 superblock says the file has, every
 // variable must read, and element connectivity must name existing nodes. Throws InputError.
 void check_netcdf_readable(const std::string& path);
 }  // namespace cellproj

@@ -6,12 +6,17 @@
 
 #include <netcdf.h>
 
+#include <filesystem>
 #include <fstream>
+#include <iterator>
+#include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
 #include "grid/header_counts.hpp"
+#include "grid/netcdf_check.hpp"
 #include "grid/read_mesh.hpp"
 #include "test_util.hpp"
 
@@ -91,4 +96,33 @@ TEST(LibraryCounts, ANetcdf4ExodusFileBeyondTheMemoryLimitIsRefused) {
   const std::string message = read_error(path, 4);
   EXPECT_NE(message.find("huge.exo: its header declares 3000000000 points and 1000000000 cells"), std::string::npos)
       << message;
+}
+
+TEST(LibraryCounts, ANetcdf4ExodusFileCutShortIsCalledTruncated) {
+  // netCDF-4 is HDF5: its superblock says where the file ends. HDF5 alone refuses a cut file as
+  // "NetCDF: HDF error"; the check names the truncation, wherever the cut.
+  test::TempDir dir;
+  const std::string path = dir.file("whole.exo");
+  int id = 0, dim = 0, var = 0;
+  ASSERT_EQ(nc_create(path.c_str(), NC_NETCDF4 | NC_CLOBBER, &id), NC_NOERR);
+  nc_def_dim(id, "num_nodes", 4000, &dim);
+  nc_def_var(id, "coordx", NC_DOUBLE, 1, &dim, &var);
+  nc_enddef(id);
+  const std::vector<double> x(4000, 0.5);
+  nc_put_var_double(id, var, x.data());
+  ASSERT_EQ(nc_close(id), NC_NOERR);
+  const auto size = std::filesystem::file_size(path);
+  ASSERT_EQ(hdf5_end_of_file(path).value_or(0), size);
+  EXPECT_FALSE(hdf5_end_of_file(dir.file("absent.exo")).has_value());  // no file: no superblock
+  std::ifstream in(path, std::ios::binary);
+  const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  for (double part : {0.99, 0.5, 0.05}) {
+    const std::string cut = dir.file("cut.exo");
+    std::ofstream(cut, std::ios::binary) << bytes.substr(0, static_cast<std::size_t>(part * bytes.size()));
+    const std::string message = read_error(cut, 4);
+    EXPECT_NE(message.find("cut.exo: truncated: its HDF5 superblock (netCDF-4) says the file ends at byte " +
+                           std::to_string(size)),
+              std::string::npos)
+        << part << ": " << message;
+  }
 }
