@@ -323,6 +323,11 @@ cp "$src/tests/fuzz/regressions/vtk/crash-9945fbdb17b39809e79bb1da5b75f1c25eb2d6
 expect 1 "lower.vtk: cell 0 has 1330005587 points, more than the 135 numbers left in the CELLS block \\(27 cells, 136 numbers\\)" -- info "$tmp/lower.vtk"
 cp "$src/tests/fuzz/regressions/vtk/crash-c8ce9a162e423c81a64b094b4dda8261c2bdc275" "$tmp/offset.vtk"
 expect 1 "offset.vtk: cell 13's point ids run from offset 68 to 1095216660556, outside the 136 connectivity ids or backwards" -- info "$tmp/offset.vtk"
+# A message quoting a garbled file's bytes (VTK's "Unrecognized keyword" of binary data) reaches
+# the terminal with them written as \xNN; a file name in UTF-8 passes unchanged.
+cp "$src/tests/fuzz/regressions/vtk/crash-5aa79bf15d3f259fdd0be3011fcb804da059ef26" "$tmp/sgc.vtk"
+expect 1 "sgc.vtk: cannot be read: Unrecognized keyword: \\\\xF0$" -- info "$tmp/sgc.vtk"
+expect 1 "café.vtu: no such file" -- info "$tmp/café.vtu"
 # A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
 # array with it and wrote past it), and a structured grid with an array named field_strength (VTK
 # 9.1's metadata pass took the name for a FIELD block and crashed on a good file).

@@ -7,6 +7,7 @@
 #include "base/error.hpp"
 #include "distributed/communicator.hpp"
 #include "tools/commands.hpp"
+#include "tools/terminal_text.hpp"
 
 int main(int argc, char** argv) {
   using namespace cellproj;
@@ -34,13 +35,13 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("partition")) return partition();
     return generate();
   } catch (const UsageError& e) {
-    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", printable(e.what()).c_str());
     return kExitUsage;
   } catch (const InputError& e) {
-    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", printable(e.what()).c_str());
     return kExitInput;
   } catch (const ResourceError& e) {
-    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", e.what());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", printable(e.what()).c_str());
     return kExitInternal;
   } catch (const std::bad_alloc&) {
     std::string command;
@@ -53,10 +54,10 @@ int main(int argc, char** argv) {
   } catch (const std::filesystem::filesystem_error& e) {  // a path the checks above did not look up first
     if (report_errors)
       std::fprintf(stderr, "cellproj: error: %s\n",
-                   where(e.path1().string(), "cannot be used (" + e.code().message() + ")").c_str());
+                   printable(where(e.path1().string(), "cannot be used (" + e.code().message() + ")")).c_str());
     return kExitInput;
   } catch (const std::exception& e) {
-    if (report_errors) std::fprintf(stderr, "cellproj: internal error: %s\n", e.what());
+    if (report_errors) std::fprintf(stderr, "cellproj: internal error: %s\n", printable(e.what()).c_str());
     return kExitInternal;
   }
 }
