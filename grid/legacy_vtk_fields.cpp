@@ -227,7 +227,8 @@ class DatasetWalk {
 
   // The cell types: a polyhedron (VTK type 42) is refused here, as validate() would refuse it
   // after the read, because VTK's reader decomposes its face stream unchecked and a garbled one
-  // crashes it. False where the walk must stop.
+  // crashes it. VTK keeps only each type's low byte (its types are unsigned char): 298 or
+  // 1847604522 is a polyhedron to it too. False where the walk must stop.
   bool cell_types(std::int64_t n) {
     UnsupportedCellTypes polyhedra;
     if (binary_) {
@@ -237,16 +238,15 @@ class DatasetWalk {
       std::vector<unsigned char> b(4 * static_cast<std::size_t>(n));
       in_.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(b.size()));
       for (std::int64_t c = 0; c < n; ++c)
-        if (b[4 * c] == 0 && b[4 * c + 1] == 0 && b[4 * c + 2] == 0 && b[4 * c + 3] == kPolyhedron)
-          polyhedra.add(kPolyhedron, c);
+        if (b[4 * c + 3] == kPolyhedron) polyhedra.add(kPolyhedron, c);  // the low byte (see above)
     } else {
-      double v;
+      long long v;
       for (std::int64_t c = 0; c < n; ++c) {
         if (!(in_ >> v)) {
           in_.clear();  // as numbers(): VTK's message, or its look for METADATA
           break;
         }
-        if (v == kPolyhedron) polyhedra.add(kPolyhedron, c);
+        if ((v & 0xFF) == kPolyhedron) polyhedra.add(kPolyhedron, c);
       }
     }
     polyhedra.throw_if_any(path_);

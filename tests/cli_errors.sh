@@ -309,6 +309,10 @@ expect 1 "huge.exo: its header declares 2000000000 points and 26 cells: reading 
 # A legacy file whose cell is a polyhedron (42): the cell type is named, not a miscounted truncation.
 "$exe" generate box-tets -n 1 -o "$tmp/t.vtk" >/dev/null && awk 'f&&/^10$/&&!d{print "42";d=1;next} /CELL_TYPES/{f=1} {print}' "$tmp/t.vtk" >"$tmp/poly.vtk"
 expect 1 "poly.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(first: cell 0\\)" -- info "$tmp/poly.vtk"
+# VTK keeps a cell type's low byte: 298 is a polyhedron to it too (fuzzed binary files whose type
+# 1847604522 crashed it decomposing a face stream).
+cp "$src/tests/fuzz/regressions/vtk/crash-cbc1cf98f413ed89dce4a7c9f1db93cf9e018a23" "$tmp/polybyte.vtk"
+expect 1 "polybyte.vtk: unsupported cell types: polyhedron \\(42\\): 1 cells \\(first: cell 18\\)" -- info "$tmp/polybyte.vtk"
 # A binary format-5 file whose cell 24 became a polyhedron (a fuzzer's input that crashed VTK's
 # reader decomposing the garbled face stream): refused by the walk before VTK reads it.
 cp "$src/tests/fuzz/regressions/vtk/crash-3b40acd17da3c8afce31a4d129bae16e4eab1245" "$tmp/poly5.vtk"
