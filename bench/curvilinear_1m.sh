@@ -12,15 +12,8 @@ n=${2:-70}
 exe=$(realpath "$build/bin/cellproj")
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cd "$work"
-"$exe" generate swirl -n "$n" -o swirl.vtu
-cat > scene.json <<JSON
-{ "mesh": "swirl.vtu", "field": "temperature",
-  "transfer_function": { "color": [[0, 0.1, 0.2, 0.8], [0.5, 0.2, 0.8, 0.7], [0.8, 1, 0.8, 0.2], [1.2, 1, 0.2, 0.1]],
-                         "extinction": [[0, 0.1], [0.5, 1.5], [0.8, 4.0], [1.2, 8.0]] },
-  "camera": { "projection": "perspective", "eye": [2.2, -2.8, 2.0], "target": [0, 0, 0], "up": [0, 0, 1], "fov_y": 38 },
-  "image": { "width": 512, "height": 512 } }
-JSON
-keys='("method", "tetrahedralize", "cells", "cells_projected", "problem_cells", "polyhedra", "polygons", "subdivisions_looked_up", "frame_seconds", "min_frame_seconds", "max_frame_seconds", "prepare_seconds")'
+bash "$(dirname "$(realpath "$0")")/swirl_scene.sh" . "$n" "$exe"
+keys='("method", "tetrahedralize", "cells", "cells_projected", "problem_cells", "polyhedra", "polygons", "layered_polyhedra", "subdivisions_looked_up", "frame_seconds", "min_frame_seconds", "max_frame_seconds", "prepare_seconds")'
 run() {  # name, then render options
   local name=$1; shift
   "$exe" render scene.json --size 1024x1024 --threads 2 --frames 3 -o "$name.png" --stats "$@" 2>&1 >/dev/null | tail -1 |

@@ -14,6 +14,7 @@
 #include <vtkCompositeDataSet.h>
 #include <vtkDataArray.h>
 #include <vtkDataObjectTreeIterator.h>
+#include <vtkDataReader.h>
 #include <vtkDataSet.h>
 #include <vtkDataSetReader.h>
 #include <vtkExodusIIReader.h>
@@ -414,16 +415,22 @@ std::string plot3d_q_file(const std::string& xyz, const ReadOptions& o) {
   return path_exists(q.string()) ? q.string() : "";
 }
 
+// A legacy reader set to read `path` with every scalar, vector and field array, not only the
+// first of each kind.
+void read_every_array(vtkDataReader* r, const std::string& path) {
+  r->SetFileName(path.c_str());
+  r->ReadAllScalarsOn();
+  r->ReadAllVectorsOn();
+  r->ReadAllFieldsOn();
+}
+
 // A legacy structured grid is read by its own reader's mesh pass alone: VTK 9.1's pipeline first
 // runs a metadata pass (vtkStructuredGridReader::ReadMetaDataSimple) that takes every word of the
 // file starting with "field" for a FIELD block, so an array named "field_strength", or bytes of
 // the binary coordinates, crashed it on a good file.
 Mesh read_legacy_structured_grid(const std::string& path, const VtkMessages& messages) {
   auto r = vtkSmartPointer<vtkStructuredGridReader>::New();
-  r->SetFileName(path.c_str());
-  r->ReadAllScalarsOn();
-  r->ReadAllVectorsOn();
-  r->ReadAllFieldsOn();
+  read_every_array(r, path);
   auto grid = vtkSmartPointer<vtkStructuredGrid>::New();
   r->ReadMeshSimple(path, grid);
   messages.throw_if_failed(path);
@@ -464,10 +471,7 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     check_legacy_cells(path);
     if (legacy_dataset_is(path, "structured_grid")) return read_legacy_structured_grid(path, messages);
     auto r = vtkSmartPointer<vtkDataSetReader>::New();
-    r->SetFileName(path.c_str());
-    r->ReadAllScalarsOn();
-    r->ReadAllVectorsOn();
-    r->ReadAllFieldsOn();
+    read_every_array(r, path);
     r->Update();
     messages.throw_if_failed(path);
     if (!has_polyhedra(vtkDataSet::SafeDownCast(r->GetOutputDataObject(0)))) {

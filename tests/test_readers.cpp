@@ -16,6 +16,7 @@
 #include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
 #include "grid/write_mesh.hpp"
+#include "legacy_samples.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
@@ -327,18 +328,7 @@ TEST(Readers, ALegacyArrayOfANegativeCountInPointOrCellDataIsRefusedByName) {
 // pass alone, it renders; its dataset FIELD block is checked as an unstructured grid's is.
 TEST(Readers, ALegacyStructuredGridWithAnArrayNamedFieldSomethingReads) {
   test::TempDir dir;
-  const std::string grid = R"(# vtk DataFile Version 3.0
-sg
-ASCII
-DATASET STRUCTURED_GRID
-DIMENSIONS 2 2 2
-POINTS 8 float
-0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1
-POINT_DATA 8
-SCALARS field_strength float 1
-LOOKUP_TABLE default
-0 1 2 3 4 5 6 7
-)";
+  const std::string grid = test::kStructuredGridNamedField;
   spit(dir.file("sg.vtk"), grid);
   const Mesh m = read_mesh(dir.file("sg.vtk"));
   ASSERT_EQ(m.n_cells(), 1);

@@ -13,6 +13,7 @@
 
 #include "grid/generate.hpp"
 #include "grid/write_mesh.hpp"
+#include "tests/legacy_samples.hpp"
 
 namespace fs = std::filesystem;
 using namespace cellproj;
@@ -94,18 +95,7 @@ int main(int argc, char** argv) {
   write_mesh(mixed, (out / "vtk/mixed-binary.vtk").string(), true);
   // Legacy structured grids (read without VTK's metadata pass) and the attribute blocks the
   // dataset walk checks in POINT_DATA and CELL_DATA, which cellproj's writer does not write.
-  std::ofstream(out / "vtk/structured-ascii.vtk") << R"(# vtk DataFile Version 3.0
-sg
-ASCII
-DATASET STRUCTURED_GRID
-DIMENSIONS 2 2 2
-POINTS 8 float
-0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1
-POINT_DATA 8
-SCALARS field_strength float 1
-LOOKUP_TABLE default
-0 1 2 3 4 5 6 7
-VECTORS v float
+  std::ofstream(out / "vtk/structured-ascii.vtk") << test::kStructuredGridNamedField << R"(VECTORS v float
 0 0 1 0 1 0 1 0 0 0 0 1 0 1 0 1 0 0 0 0 1 1 1 1
 COLOR_SCALARS c 2
 0 1 0 1 0 1 0 1 0 1 0 1 0 1 0 1
