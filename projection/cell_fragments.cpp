@@ -47,10 +47,14 @@ struct ExactShade {
 
 // The shade of a cell with scalar range [smin, smax]: its transfer-function piece, or whether a
 // breakpoint lies inside the range (then cut there by pt-breakpoints, `cuts`).
-ExactShade exact_shade(const TransferFunction& tf, const PixelRays& rays, bool cuts, double smin, double smax) {
+bool holds_breakpoint(const TransferFunction& tf, double smin, double smax) {
   const auto& bp = tf.breakpoints();
   const auto it = std::upper_bound(bp.begin(), bp.end(), smin);
-  const bool has_breakpoint = it != bp.end() && *it < smax;
+  return it != bp.end() && *it < smax;
+}
+
+ExactShade exact_shade(const TransferFunction& tf, const PixelRays& rays, bool cuts, double smin, double smax) {
+  const bool has_breakpoint = holds_breakpoint(tf, smin, smax);
   ExactShade shade{tf, rays, rays.perspective(), has_breakpoint, has_breakpoint && cuts, smin, smax, {}};
   if (!has_breakpoint) {
     const auto e = tf.piece(smin, smax);
@@ -99,7 +103,8 @@ struct CompositeFragments {
 
 void ProjectionCounters::add(const ProjectionCounters& o) {
   tets += o.tets, class1 += o.class1, class2 += o.class2, empty += o.empty, behind_eye += o.behind_eye;
-  polyhedra += o.polyhedra, polygons += o.polygons, layered += o.layered, unmatched += o.unmatched, subdivisions_looked_up += o.subdivisions_looked_up;
+  polyhedra += o.polyhedra, polygons += o.polygons, layered += o.layered, unmatched += o.unmatched;
+  subdivisions_looked_up += o.subdivisions_looked_up;
   fragments += o.fragments, breakpoint_cells += o.breakpoint_cells, direct_cells += o.direct_cells;
 }
 
@@ -326,10 +331,8 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
   std::int64_t emitted = 0;
   const int width = rays_.width(), height = rays_.height();
   const bool persp = rays_.perspective();
-  const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
-  counters.breakpoint_cells += exact.has_breakpoint;
-
   if (method_.gouraud) {
+    counters.breakpoint_cells += holds_breakpoint(tf_, p.smin, p.smax);
     // Colour, opacity (pt-table: kappa and thickness) are affine along a row of a triangle (Gouraud
     // shading, MWSC section 2): a run of pixels starts from its first pixel's values and steps.
     const bool table = method_.opacity_table;
@@ -367,6 +370,8 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
   // pt-analytic and pt-breakpoints on a tetrahedron: the segment's ends per pixel, then the
   // closed-form integral. Depths and scalars (1/z and s/z in perspective) are affine along a run of
   // a triangle's pixels: a run starts from its first pixel's values and steps, as the Gouraud path.
+  const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
+  counters.breakpoint_cells += exact.has_breakpoint;
   for (std::size_t t = 0; t < p.tri.size(); ++t) {
     const ThickVertex* V = p.tri[t].v;
     double q[3][4];  // per corner: front and back depth, front and back scalar (over depth in perspective)
