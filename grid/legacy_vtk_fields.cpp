@@ -86,7 +86,7 @@ class DatasetWalk {
         if (!cell_types(n)) return;
       } else if (structured && (starts(word, "dimensions") || starts(word, "extent"))) {
         if (numbers(word[0] == 'd' ? 3 : 6) < (word[0] == 'd' ? 3 : 6)) return;  // VTK's message
-      } else if (is_legacy_keyword(word, "metadata")) {
+      } else if (starts(word, "metadata")) {
         metadata();
       } else if (starts(word, "point_data") || starts(word, "cell_data")) {
         return attributes(word);
@@ -264,11 +264,12 @@ class DatasetWalk {
     return count;
   }
 
-  // "METADATA" after an array: lines up to a blank one.
+  // "METADATA" after an array (VTK looks at its first 8 characters only): lines up to a blank one,
+  // blank as VTK sees it: nothing before its end or a NUL byte.
   void metadata() {
     std::string line;
     std::getline(in_, line);
-    while (std::getline(in_, line) && !line.empty() && line != "\r") {
+    while (std::getline(in_, line) && !line.empty() && line[0] != '\0' && line != "\r") {
     }
   }
 
@@ -400,7 +401,7 @@ class DatasetWalk {
   void skip_metadata() {
     const std::streampos at = in_.tellg();
     std::string word;
-    if (in_ >> word && is_legacy_keyword(word, "metadata")) return metadata();
+    if (in_ >> word && starts(lower(word), "metadata")) return metadata();
     in_.clear();
     in_.seekg(at);
   }

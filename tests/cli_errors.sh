@@ -332,6 +332,11 @@ expect 1 "offset.vtk: cell 13's point ids run from offset 68 to 1095216660556, o
 cp "$src/tests/fuzz/regressions/vtk/crash-5aa79bf15d3f259fdd0be3011fcb804da059ef26" "$tmp/sgc.vtk"
 expect 1 "sgc.vtk: cannot be read: Unrecognized keyword: \\\\xF0$" -- info "$tmp/sgc.vtk"
 expect 1 "café.vtu: no such file" -- info "$tmp/café.vtu"
+# VTK takes a line starting "METADATA" after an array for metadata and ends it at a line starting
+# with a NUL byte, then reads on: the walk follows it there to the CELLS block (a fuzzed file whose
+# block of 0 numbers for 1417395 cells crashed VTK).
+cp "$src/tests/fuzz/regressions/vtk/crash-10c78117cc34acbf73718a48209bc61862a5a5a3" "$tmp/meta.vtk"
+expect 1 "meta.vtk: the CELLS block \\(1417395 cells, 0 numbers\\) cannot give each cell its count" -- info "$tmp/meta.vtk"
 # A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
 # array with it and wrote past it), and a structured grid with an array named field_strength (VTK
 # 9.1's metadata pass took the name for a FIELD block and crashed on a good file).
