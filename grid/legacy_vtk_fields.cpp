@@ -65,7 +65,11 @@ class DatasetWalk {
         std::int64_t n = 0;
         if (!(in_ >> n >> type)) return;
         if (n < 0) refuse_count("POINTS", n);  // VTK reads it as a huge size and writes past its array
-        if (!skip(3 * n, value_bytes(lower(type)))) return;
+        const int bytes = value_bytes(lower(type));
+        if (bytes == kVariable)  // VTK's reader of string arrays wrote past its buffer on a fuzzed one
+          throw InputError(where(path_, "POINTS has the type '" + type.substr(0, 40) +
+                                            "', which VTK reads as strings: coordinates are numbers"));
+        if (!skip(3 * n, bytes)) return;
       } else if (unstructured && starts(word, "cells")) {
         std::int64_t n = 0, size = 0;
         if (!(in_ >> n >> size)) return;

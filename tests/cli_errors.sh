@@ -337,6 +337,10 @@ expect 1 "café.vtu: no such file" -- info "$tmp/café.vtu"
 # block of 0 numbers for 1417395 cells crashed VTK).
 cp "$src/tests/fuzz/regressions/vtk/crash-10c78117cc34acbf73718a48209bc61862a5a5a3" "$tmp/meta.vtk"
 expect 1 "meta.vtk: the CELLS block \\(1417395 cells, 0 numbers\\) cannot give each cell its count" -- info "$tmp/meta.vtk"
+# POINTS typed as strings ("stringdouble": VTK matches the prefix): VTK's string reader wrote past
+# its buffer on it (AddressSanitizer, in a fuzz run); coordinates are numbers.
+cp "$src/tests/fuzz/regressions/vtk/crash-6780a877e5b19815aaf4e6753cc85b22d0644115" "$tmp/strpts.vtk"
+expect 1 "strpts.vtk: POINTS has the type 'stringdouble', which VTK reads as strings: coordinates are numbers" -- info "$tmp/strpts.vtk"
 # A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
 # array with it and wrote past it), and a structured grid with an array named field_strength (VTK
 # 9.1's metadata pass took the name for a FIELD block and crashed on a good file).
