@@ -50,11 +50,8 @@ bool legacy_dataset_is(const std::string& path, const std::string& type) {
   std::ifstream in(path, std::ios::binary);
   std::string line, word, name;
   for (int k = 0; k < 3; ++k) std::getline(in, line);  // the version, the title, ASCII or BINARY
-  auto starts = [](std::string w, const std::string& prefix) {
-    for (char& ch : w) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
-    return w.rfind(prefix, 0) == 0;
-  };
-  return (in >> word >> name) && starts(word, "dataset") && starts(name, type);
+  return (in >> word >> name) && is_legacy_keyword(word.substr(0, 7), "dataset") &&
+         is_legacy_keyword(name.substr(0, type.size()), type);
 }
 
 void check_legacy_cells(const std::string& path) {

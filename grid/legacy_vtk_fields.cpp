@@ -37,6 +37,13 @@ int value_bytes(const std::string& type) {
   return kUnknown;
 }
 
+// A signed big-endian integer of 4 or 8 bytes: how legacy binary files store ids and counts.
+std::int64_t big_endian(const unsigned char* b, int bytes) {
+  std::uint64_t v = 0;
+  for (int m = 0; m < bytes; ++m) v = v << 8 | b[m];
+  return bytes == 4 ? static_cast<std::int32_t>(v) : static_cast<std::int64_t>(v);
+}
+
 // A walk through the dataset section of a legacy unstructured or structured grid, block by block
 // as VTK's reader reads it (vtkUnstructuredGridReader::ReadMeshSimple and its structured-grid
 // twin), then through its point and cell data (vtkDataReader::ReadPointData).
@@ -139,11 +146,7 @@ class DatasetWalk {
       std::int64_t v = 0;
       if (binary_) {
         unsigned char b[4];
-        if (!in_.read(reinterpret_cast<char*>(b), 4))
-          v = -1;
-        else
-          v = static_cast<std::int32_t>(std::uint32_t(b[0]) << 24 | std::uint32_t(b[1]) << 16 |
-                                        std::uint32_t(b[2]) << 8 | b[3]);
+        v = in_.read(reinterpret_cast<char*>(b), 4) ? big_endian(b, 4) : -1;
       } else if (!(in_ >> v)) {
         v = -1;
       }
@@ -210,11 +213,7 @@ class DatasetWalk {
       offsets.resize(static_cast<std::size_t>(count));  // big-endian integers of `bytes` bytes
       std::vector<unsigned char> b(static_cast<std::size_t>(count * bytes));
       in_.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(b.size()));
-      for (std::int64_t k = 0; k < count; ++k) {
-        std::uint64_t v = 0;
-        for (int m = 0; m < bytes; ++m) v = v << 8 | b[static_cast<std::size_t>(k * bytes + m)];
-        offsets[k] = bytes == 4 ? static_cast<std::int32_t>(v) : static_cast<std::int64_t>(v);
-      }
+      for (std::int64_t k = 0; k < count; ++k) offsets[k] = big_endian(&b[static_cast<std::size_t>(k * bytes)], bytes);
     };
     array("OFFSETS", cells);
     array("CONNECTIVITY", size);
