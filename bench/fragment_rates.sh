@@ -18,8 +18,9 @@ for m in pt-linear pt-table pt-analytic pt-breakpoints; do
   for t in 1 2; do
     "$exe" render "$work/box.json" --method $m --threads $t --frames 3 -o "$work/m.png" --stats 2>&1 >/dev/null |
       tail -1 | $py -c "import json, sys; j = json.load(sys.stdin)
-print('| $m | $t | %.2f | %.1f | %.1f | %.1f | %s |' % (j['frame_seconds'], j['ns_per_fragment'],
-      j['fragments_per_second'] / 1e6, j['fragment_traffic_gb_per_second'],
+traffic = j.get('fragment_traffic_gb_per_second')  # none with tiles: no fragment is stored
+print('| $m | $t | %.2f | %.1f | %.1f | %s | %s |' % (j['frame_seconds'], j['ns_per_fragment'],
+      j['fragments_per_second'] / 1e6, '%.1f' % traffic if traffic is not None else '-',
       '%.3f' % j['blend_seconds'] if j.get('blend_seconds') is not None else '-'))"
   done
 done

@@ -7,6 +7,12 @@
 
 namespace cellproj {
 
+// How the software back end composites the cells in order: image tiles owned by tasks, each
+// drawing the cells that reach it straight onto the image (composite/tiled_compositor.hpp), or the
+// ordered stream of buffered fragments blended by bands (composite/ordered_pipeline.hpp; always
+// used when small cells are splatted).
+enum class Compositing { tiles, stream };
+
 struct ProjectionOptions {
   ProjectionMethod method = ProjectionMethod::pt_breakpoints;
   Backend backend = Backend::software;  // the OpenGL ones draw the Gouraud methods
@@ -16,6 +22,8 @@ struct ProjectionOptions {
   int batch_cells = 0;                    // cells per pipeline token; 0: about 16 tokens per thread, 64 to 2048
   SplatOptions splat;                     // cells whose projection covers few pixel centres: splatted
   bool cull_transparent = true;           // cells with extinction 0 over their scalar range not drawn (same picture)
+  Compositing compositing = Compositing::tiles;
+  int tile_rows = 0;  // rows per tile (tiles); 0: tile_rows(), about 4 tiles per thread, 16 to 64 rows
 };
 // Throws InputError for options that do not go together (a method the back end cannot draw) or a
 // table size outside [2, 8192]: before a frame starts, never in the middle of one.

@@ -13,6 +13,7 @@
 #include "base/error.hpp"
 #include "base/timing.hpp"
 #include "composite/ordered_pipeline.hpp"
+#include "composite/tiled_compositor.hpp"
 #include "grid/geometry.hpp"
 #include "parallel/gl_frame.hpp"
 #include "parallel/splat_stencil.hpp"
@@ -47,6 +48,34 @@ std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& sc
         }
       });
   return area;
+}
+
+// The image rows each cell may draw on: those whose centres its vertices' image box holds; one
+// more each way for a cell reaching behind an orthographic eye plane (ray cast over that wider
+// box), every row for one reaching behind a perspective eye (ray cast over the whole image).
+std::vector<RowRange> cell_rows(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
+  std::vector<RowRange> rows(static_cast<std::size_t>(cells.n_cells));
+  const int h = rays.height();
+  tbb::parallel_for(
+      tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
+        for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+          const std::int64_t* id = cells.cell(c);
+          double y0 = INFINITY, y1 = -INFINITY;
+          bool behind = false, nan = false;
+          for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
+            const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
+            behind = behind || behind_eye(v.z), nan = nan || std::isnan(v.y);
+            y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+          }
+          const double lo = behind ? std::floor(y0 - 0.5) : std::ceil(y0 - 0.5),
+                       hi = behind ? std::ceil(y1 - 0.5) : std::floor(y1 - 0.5);
+          rows[static_cast<std::size_t>(c)] =
+              (behind && rays.perspective()) || nan
+                  ? RowRange{0, h}
+                  : RowRange{int(std::clamp(lo, 0.0, double(h))), int(std::clamp(hi + 1.0, 0.0, double(h)))};
+        }
+      });
+  return rows;
 }
 
 // Which cells of the frame are small: their projection covers fewer than `threshold` pixel
@@ -137,6 +166,16 @@ struct OrderedCells {
   void composite(std::size_t k, Image& image, Scratch& s, Counters& c) const {
     project.project(cells.cell(order[k]), cells.type(order[k]), image, s, c.projection);
     ++c.projection.direct_cells;
+  }
+  // A tile's rows of the k-th cell (composite_in_tiles; never with splats): the cell counted by its
+  // first tile, its pixels by each.
+  void composite(std::size_t k, Image& image, RowRange rows, bool first, Scratch& s, Counters& c) const {
+    const std::int64_t cell = order[k];
+    if (mode == SmallCells::skip && small[static_cast<std::size_t>(cell)]) return;
+    if (first) return project.project(cells.cell(cell), cells.type(cell), image, rows, s, c.projection);
+    ProjectionCounters pixels;
+    project.project(cells.cell(cell), cells.type(cell), image, rows, s, pixels);
+    c.projection.add_pixels(pixels);
   }
 };
 // The opacity table of pt-table: extinction up to the transfer function's largest, lengths up to
@@ -261,12 +300,26 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
       st.phase_seconds.emplace_back("splats and stencil", seconds_since(t_splats));
     }
     t = std::chrono::steady_clock::now();
-    const std::vector<float> footprint = cell_footprints(cells, screen, rays);
-    PipelineLimits limits;
-    limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
-    const FrameCounters counters = composite_in_order(
-        image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
-        OrderedCells{project, cells, order, small, st.small_cells, splats}, &st.blend_seconds);
+    const OrderedCells source{project, cells, order, small, st.small_cells, splats};
+    FrameCounters counters;
+    if (options.compositing == Compositing::tiles && st.small_cells != SmallCells::splat) {
+      const std::vector<RowRange> reach = cell_rows(cells, screen, rays);
+      const int rows = options.tile_rows > 0 ? options.tile_rows
+                                             : tile_rows(height, tbb::this_task_arena::max_concurrency());
+      std::size_t visits = 0;
+      counters = composite_in_tiles(
+          image, order.size(), [&](std::size_t k) { return reach[static_cast<std::size_t>(order[k])]; }, rows, source,
+          &visits);
+      st.tiles = (height + rows - 1) / rows;
+      st.tile_visits = static_cast<std::int64_t>(visits);
+    } else {
+      const std::vector<float> footprint = cell_footprints(cells, screen, rays);
+      PipelineLimits limits;
+      limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
+      counters = composite_in_order(
+          image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
+          source, &st.blend_seconds);
+    }
     st.counters = counters.projection;
     st.splat.add(counters.splat);
   }

@@ -40,7 +40,9 @@ struct ProjectionStats {
   std::int64_t cycle_splits = 0;   // of which split because they were in a visibility cycle
   std::int64_t culled_transparent = 0;  // cells not drawn: extinction 0 over their scalar range
   std::vector<std::pair<std::string, double>> phase_seconds;  // project points, sort, project and composite
-  double blend_seconds = 0.0;  // of project and composite: the ordered blend stage (software back end)
+  double blend_seconds = 0.0;  // of project and composite: the ordered blend stage (software back end, stream)
+  int tiles = 0;               // the image tiles composited by (software back end, tiles; 0: the stream)
+  std::int64_t tile_visits = 0;  // cells drawn by tile: cells plus the repeats of those straddling tiles
   std::string gl_renderer;                                    // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;
 };

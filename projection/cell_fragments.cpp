@@ -141,7 +141,7 @@ CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, 
 }
 
 template <class Emit>
-void CellFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const {
+void CellFragments::ray_cast(const Tet& tet, RowRange rows, Emit& emit, ProjectionCounters& counters) const {
   glm::dvec3 p[4];
   double s[4];
   for (int k = 0; k < 4; ++k) p[k] = points_(tet[k]), s[k] = screen_.v[static_cast<std::size_t>(tet[k])].s;
@@ -175,6 +175,7 @@ void CellFragments::ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& cou
     auto hi = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - 0.5), -1.0, double(n - 1))); };
     i0 = lo(x0, rays_.width()), i1 = hi(x1, rays_.width()), j0 = lo(y0, rays_.height()), j1 = hi(y1, rays_.height());
   }
+  j0 = std::max(j0, rows.begin), j1 = std::min(j1, rows.end - 1);
   std::int64_t emitted = 0;
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) {
@@ -312,21 +313,27 @@ void CellFragments::triangles(const std::int64_t* ids, CellType type, std::int64
 void CellFragments::project(const std::int64_t* ids, CellType type, FragmentBands& out, CellScratch& scratch,
                             ProjectionCounters& counters) const {
   AppendFragments emit{out};
-  project_with(ids, type, emit, scratch, counters);
+  project_with(ids, type, {0, rays_.height()}, emit, scratch, counters);
 }
 
 void CellFragments::project(const std::int64_t* ids, CellType type, Image& image, CellScratch& scratch,
                             ProjectionCounters& counters) const {
+  project(ids, type, image, {0, rays_.height()}, scratch, counters);
+}
+
+void CellFragments::project(const std::int64_t* ids, CellType type, Image& image, RowRange rows,
+                            CellScratch& scratch, ProjectionCounters& counters) const {
   CompositeFragments emit{image};
-  project_with(ids, type, emit, scratch, counters);
+  project_with(ids, type, rows, emit, scratch, counters);
 }
 
 template <class Emit>
-void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
+void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                                  ProjectionCounters& counters) const {
-  if (type != CellType::Tetra && !method_.gouraud) return project_layers(ids, type, emit, p, counters);
+  if (type != CellType::Tetra && !method_.gouraud) return project_layers(ids, type, rows, emit, p, counters);
   const Seen seen = triangles_of(ids, type, p, counters);
-  if (seen == Seen::behind_eye && type == CellType::Tetra) ray_cast({ids[0], ids[1], ids[2], ids[3]}, emit, counters);
+  if (seen == Seen::behind_eye && type == CellType::Tetra)
+    ray_cast({ids[0], ids[1], ids[2], ids[3]}, rows, emit, counters);
   if (seen != Seen::projected) return;
   std::int64_t emitted = 0;
   const int width = rays_.width(), height = rays_.height();
@@ -347,6 +354,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
       double da = 0, dl = 0;
       rasterize_triangle_spans(
           glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
+          rows.begin, rows.end,
           [&](const double* dw) {
             dc = mix(dw, &GouraudCorner::c), da = mix(dw, &GouraudCorner::a), dl = mix(dw, &GouraudCorner::l);
           },
@@ -383,6 +391,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
     double dq[4];
     rasterize_triangle_spans(
         glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
+        rows.begin, rows.end,
         [&](const double* dw) {
           for (int m = 0; m < 4; ++m) dq[m] = mix(dw, m);
         },
@@ -400,8 +409,8 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, Emit& e
 }
 
 template <class Emit>
-void CellFragments::project_layers(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
-                                   ProjectionCounters& counters) const {
+void CellFragments::project_layers(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
+                                   CellScratch& p, ProjectionCounters& counters) const {
   ScreenVertex v[8];
   if (!load_cell(ids, type, v, p, counters)) return;  // split into tetrahedra for the view, or not drawn
   const FaceLayers faces = face_layers(v, ids, type, front_sign_);
@@ -412,15 +421,17 @@ void CellFragments::project_layers(const std::int64_t* ids, CellType type, Emit&
     ymax = std::max(ymax, v[k].y);
   const int width = rays_.width(), height = rays_.height();
   // Every face triangle's pixels lie in the box of the cell's vertices (the same rounding).
-  const PixelBox box({xmin, ymin}, {xmax, ymax}, {xmin, ymin}, width, height);
+  PixelBox box({xmin, ymin}, {xmax, ymax}, {xmin, ymin}, width, height);
   if (faces.n_front == 0 || box.empty()) {
     ++counters.empty;
     return;
   }
   ++counters.layered;
+  counters.breakpoint_cells += holds_breakpoint(tf_, p.smin, p.smax);
+  box.j0 = std::max(box.j0, rows.begin), box.j1 = std::min(box.j1, rows.end - 1);  // the tile's rows of it
+  if (box.empty()) return;
   const bool persp = rays_.perspective();
   const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
-  counters.breakpoint_cells += exact.has_breakpoint;
   const int bw = box.i1 - box.i0 + 1;
   // The back layer: 1/z and s/z (depth and scalar in orthographic projection) where the ray leaves,
   // NaN where no back triangle covers the centre.
@@ -436,7 +447,7 @@ void CellFragments::project_layers(const std::int64_t* ids, CellType type, Emit&
     double dq[2];
     rasterize_triangle_spans(
         glm::dvec2(v[t[0]].x, v[t[0]].y), glm::dvec2(v[t[1]].x, v[t[1]].y), glm::dvec2(v[t[2]].x, v[t[2]].y), width,
-        height, [&](const double* dw) { dq[0] = mix(dw, 0), dq[1] = mix(dw, 1); },
+        height, box.j0, box.j1 + 1, [&](const double* dw) { dq[0] = mix(dw, 0), dq[1] = mix(dw, 1); },
         [&](int j, int b, int e, const double* w) {
           const double q0 = mix(w, 0), q1 = mix(w, 1);
           for (int i = b; i < e; ++i) at(i, j, q0 + (i - b) * dq[0], q1 + (i - b) * dq[1]);

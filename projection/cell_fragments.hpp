@@ -33,7 +33,11 @@ struct ProjectionCounters {
   std::int64_t breakpoint_cells = 0;  // cells whose scalar range holds a breakpoint (cut by pt-breakpoints)
   std::int64_t direct_cells = 0;      // cells too large to buffer, drawn by the compositor itself
   void add(const ProjectionCounters& o);
+  // Only the per-pixel counts (fragments, unmatched): a cell drawn tile by tile is counted once,
+  // by its first tile, and its pixels by every tile.
+  void add_pixels(const ProjectionCounters& o) { fragments += o.fragments, unmatched += o.unmatched; }
 };
+
 
 // Extinction and colour at every point (the corners of the Gouraud-shaded methods), once per frame.
 struct PointOptics {
@@ -78,6 +82,10 @@ class CellFragments {
   // that their fragments are not worth storing. In visibility order, from one thread.
   void project(const std::int64_t* ids, CellType type, Image& image, CellScratch& scratch,
                ProjectionCounters& counters) const;
+  // The same over image rows `rows` only: a tile's share of the cell, composited by the thread that
+  // owns the tile, in visibility order (the pixels outside are left alone).
+  void project(const std::int64_t* ids, CellType type, Image& image, RowRange rows, CellScratch& scratch,
+               ProjectionCounters& counters) const;
   // Appends the cell's triangles (3 corners each) for the OpenGL back end (pt-linear, pt-table),
   // with texture coordinates on the opacity table's texel centres. `cell` picks the cell's shift of
   // the dither noise, so a pixel's layers get independent noise.
@@ -92,15 +100,15 @@ class CellFragments {
   // A cell reaching behind the eye: every pixel's ray from the eye clipped against its four face
   // planes, the segment integrated exactly (pt-breakpoints' integral, whatever the method).
   template <class Emit>
-  void ray_cast(const Tet& tet, Emit& emit, ProjectionCounters& counters) const;
+  void ray_cast(const Tet& tet, RowRange rows, Emit& emit, ProjectionCounters& counters) const;
   // project()'s body; emit(i, j, rgb, alpha) stores or composites a fragment, true if it did.
   template <class Emit>
-  void project_with(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
+  void project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                     ProjectionCounters& counters) const;
   // pt-analytic and pt-breakpoints on a cell other than a tetrahedron: its back face triangles
   // rasterized into a buffer over its pixels, then its front ones, each pixel meeting its back.
   template <class Emit>
-  void project_layers(const std::int64_t* ids, CellType type, Emit& emit, CellScratch& p,
+  void project_layers(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                       ProjectionCounters& counters) const;
   // A cell's screen vertices into v and its scalar range into p; false (counted) if one reaches
   // behind the eye.

@@ -58,7 +58,7 @@ class ProjectionMode final : public Renderer {
   std::string name() const override { return name_of(options_.method); }
   std::vector<std::string> settings_used() const override {
     return {"method",      "backend",         "sort",           "gaps", "table-size", "tetrahedralize",
-            "small-cells", "splat-threshold", "splat-prefilter", "cull-transparent"};
+            "small-cells", "splat-threshold", "splat-prefilter", "cull-transparent", "compositing", "tile-rows"};
   }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 
@@ -119,9 +119,10 @@ class ProjectionMode final : public Renderer {
     warn(r, p);
   }
 
-  // Wall time per fragment of the projection and compositing phase, and the memory traffic of the
-  // fragments: each written to its batch (20 bytes), read back by the blend (20), and its pixel
-  // read and written (16 + 16): 72 bytes, against what the machine's memory moves (docs/methods.md).
+  // Wall time per fragment of the projection and compositing phase, and with the stream compositor
+  // the memory traffic of the fragments: each written to its batch (20 bytes), read back by the
+  // blend (20), and its pixel read and written (16 + 16): 72 bytes, against what the machine's
+  // memory moves (docs/methods.md). Tiles store no fragment, and their pixels stay in cache.
   static void add_fragment_rates(RenderReport& r, const ProjectionStats& p) {
     double seconds = 0.0;
     for (const auto& [phase, s] : p.phase_seconds)
@@ -130,8 +131,12 @@ class ProjectionMode final : public Renderer {
     const bool rated = n > 0 && seconds > 0;
     r.add("ns_per_fragment", rated ? ReportValue(1e9 * seconds / n) : ReportValue());
     r.add("fragments_per_second", rated ? ReportValue(n / seconds) : ReportValue());
-    r.add("fragment_traffic_gb_per_second", rated ? ReportValue(72.0 * n / seconds / 1e9) : ReportValue());
-    r.add("blend_seconds", rated ? ReportValue(p.blend_seconds) : ReportValue());
+    const bool stream = rated && p.tiles == 0;
+    r.add("compositing", p.tiles > 0 ? "tiles" : "stream");
+    r.add("tiles", p.tiles);
+    r.add("tile_visits", p.tile_visits);
+    r.add("fragment_traffic_gb_per_second", stream ? ReportValue(72.0 * n / seconds / 1e9) : ReportValue());
+    r.add("blend_seconds", stream ? ReportValue(p.blend_seconds) : ReportValue());
   }
 
   void warn(RenderReport& r, const ProjectionStats& p) const {

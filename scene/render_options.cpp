@@ -131,6 +131,12 @@ RenderSettings settings_from(const RenderOptions& o) {
   if (o.cull_transparent != "on" && o.cull_transparent != "off")
     throw InputError("--cull-transparent: expected on or off, got '" + o.cull_transparent + "'");
   s.projection.cull_transparent = o.cull_transparent == "on";
+  if (o.compositing != "tiles" && o.compositing != "stream")
+    throw InputError("--compositing: expected tiles or stream, got '" + o.compositing + "'");
+  s.projection.compositing = o.compositing == "tiles" ? Compositing::tiles : Compositing::stream;
+  if (o.tile_rows < 0 || o.tile_rows > 65536)
+    throw InputError("--tile-rows: expected an integer in [0, 65536] (0: automatic), got " + std::to_string(o.tile_rows));
+  s.projection.tile_rows = o.tile_rows;
   return s;
 }
 
@@ -138,7 +144,7 @@ std::vector<std::string> render_option_names() {
   return {"method",         "sort",        "gaps",       "backend", "tetrahedralize",  "interpolation",  "slice-axis",
           "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter",
           "iso",            "layer",       "layer-weights", "silhouettes", "silhouette-epsilon", "volume", "iso-mode",
-          "iso-opacity",    "cull-transparent"};
+          "iso-opacity",    "cull-transparent", "compositing", "tile-rows"};
 }
 
 void set_option(RenderOptions& o, const std::string& given_name, const std::string& value) {
@@ -160,6 +166,7 @@ void set_option(RenderOptions& o, const std::string& given_name, const std::stri
                       : name == "iso-mode"       ? &o.iso_mode
                       : name == "iso-opacity"    ? &o.iso_opacity
                       : name == "cull-transparent" ? &o.cull_transparent
+                      : name == "compositing"    ? &o.compositing
                                                  : nullptr;
   if (text)
     *text = value;
@@ -169,6 +176,8 @@ void set_option(RenderOptions& o, const std::string& given_name, const std::stri
     o.table_size = number_of<int>(name, value);
   else if (name == "slices")
     o.slices = number_of<int>(name, value);
+  else if (name == "tile-rows")
+    o.tile_rows = number_of<int>(name, value);
   else if (name == "splat-threshold")
     o.splat_threshold = number_of<double>(name, value);
   else if (name == "splat-prefilter")

@@ -147,18 +147,20 @@ TEST(Projection, OneAndManyThreadsGiveTheSameBits) {
   const Mesh m = wavy_tets(6);
   const TransferFunction tf = hard_tf();
   const Camera c = view_from({0.5, -3, 2}, Projection::Perspective);
-  for (ProjectionMethod method : {ProjectionMethod::pt_analytic, ProjectionMethod::pt_table}) {
-    ProjectionOptions o;
-    o.method = method;
-    o.batch_cells = 64;  // many tokens in flight
-    const ProjectionRenderer r(m.view());
-    const double* s = test::field_values(m, "s");
-    Image one, many;
-    tbb::task_arena(1).execute([&] { one = r.render(s, tf, c, 100, 100, o); });
-    tbb::task_arena(4).execute([&] { many = r.render(s, tf, c, 100, 100, o); });
-    ASSERT_EQ(one.rgba.size(), many.rgba.size());
-    EXPECT_EQ(one.rgba, many.rgba) << name_of(method);
-  }
+  for (ProjectionMethod method : {ProjectionMethod::pt_analytic, ProjectionMethod::pt_table})
+    for (Compositing compositing : {Compositing::tiles, Compositing::stream}) {
+      ProjectionOptions o;
+      o.method = method;
+      o.compositing = compositing;
+      o.batch_cells = 64;  // the stream: many tokens in flight
+      const ProjectionRenderer r(m.view());
+      const double* s = test::field_values(m, "s");
+      Image one, many;
+      tbb::task_arena(1).execute([&] { one = r.render(s, tf, c, 100, 100, o); });
+      tbb::task_arena(4).execute([&] { many = r.render(s, tf, c, 100, 100, o); });
+      ASSERT_EQ(one.rgba.size(), many.rgba.size());
+      EXPECT_EQ(one.rgba, many.rgba) << name_of(method);
+    }
 }
 
 TEST(Projection, HexahedraAreSplitCanonically) {
@@ -304,22 +306,26 @@ TEST(Projection, CameraInsideTheMeshRayCastsTheCellsAroundTheEye) {
 
 TEST(Projection, HugeCellsAreCompositedDirectlyInOrder) {
   // At 1200^2 each of these 48 tetrahedra covers more than 1M pixels of bounding box, so the
-  // compositor draws them itself instead of buffering their fragments: still exact, still the same
-  // bits from any number of threads.
+  // stream's compositor draws them itself instead of buffering their fragments: still exact, still
+  // the same bits from any number of threads, and as the tiles draw them.
   Mesh m = make_box(2, 2, 2, glm::dvec3(-1), glm::dvec3(1), true);
   set_field(m, "s", [](const glm::dvec3& x) { return 0.5 * x.x + 0.3 * x.y * x.y - 0.2 * x.z; });
   const TransferFunction tf = hard_tf();
   const Camera c = view_from({0.9, -1.7, 1.2}, Projection::Perspective);  // close: the box fills the image
   ProjectionOptions o;
   o.method = ProjectionMethod::pt_breakpoints;
+  o.compositing = Compositing::stream;
   const ProjectionRenderer r(m.view());
   const double* s = test::field_values(m, "s");
-  Image one, many;
+  Image one, many, tiles;
   ProjectionStats st;
   tbb::task_arena(1).execute([&] { one = r.render(s, tf, c, 1200, 1200, o, &st); });
   tbb::task_arena(3).execute([&] { many = r.render(s, tf, c, 1200, 1200, o); });
+  o.compositing = Compositing::tiles;
+  tbb::task_arena(3).execute([&] { tiles = r.render(s, tf, c, 1200, 1200, o); });
   EXPECT_GT(st.counters.direct_cells, 0);
   EXPECT_LT(st.counters.direct_cells, st.tets);  // and the others buffered, interleaved in order
   EXPECT_EQ(one.rgba, many.rgba);
+  EXPECT_EQ(one.rgba, tiles.rgba);
   EXPECT_LT(compare(one, exact(m, tf, c, 1200)).max_abs, 2e-5);
 }

@@ -316,6 +316,12 @@ Action add_render(CLI::App& app) {
   setting("cull-transparent", args->options.cull_transparent,
           "projection methods: leave out the cells whose scalar range has extinction 0 "
           "throughout, on (default: the same picture, less work) or off");
+  setting("compositing", args->options.compositing,
+          "software projection: tiles (default: image tiles each drawing the cells that reach it, in order, "
+          "no fragment stored) or stream (fragments buffered by batch, blended in order); the same picture");
+  setting("tile-rows", args->options.tile_rows,
+          "software projection with --compositing tiles: rows per image tile (default 0: about 4 tiles per thread, "
+          "16 to 64 rows)");
   setting("sort", args->options.sort, "Visibility sort for the projection methods: " + sort_method_names());
   setting("gaps", args->options.gaps,
           "How mpvo-abuffer finds the relations across gaps: " + gap_method_names() + " (as sortbench's)");

@@ -20,6 +20,12 @@ struct Image {
   const float* pixel(int i, int j) const { return rgba.data() + (static_cast<std::size_t>(j) * width + i) * 4; }
 };
 
+// Image rows begin <= j < end: the rows a call draws (an image tile's, or all).
+struct RowRange {
+  int begin = 0, end = 0;
+  bool empty() const { return end <= begin; }
+};
+
 // The picture for people: 8-bit RGB, row-major from the top.
 struct Rgb8Image {
   int width = 0, height = 0;

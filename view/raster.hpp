@@ -189,17 +189,27 @@ void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int
 // width x height image on which the triangle covers the centres of pixels begin <= i < end (and at
 // least one), with the weights w at the centre of pixel `begin`: for shading a run of pixels by
 // plane equations instead of weights per pixel.
+// Only rows row_begin <= j < row_end are visited (an image tile's rows); a triangle whose centres
+// all lie outside them is passed over before its set-up (steps() is not called).
 template <class Steps, class Span>
-void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Steps&& steps,
-                              Span&& span) {
+void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, int row_begin,
+                              int row_end, Steps&& steps, Span&& span) {
+  // Rows j it may cover have ymin <= j + 0.5 <= ymax (NaN passes on to the coverage's own test).
+  if (std::max({p0.y, p1.y, p2.y}) - 0.5 < row_begin || std::min({p0.y, p1.y, p2.y}) - 0.5 > row_end - 1) return;
   const TriangleCoverage t(p0, p1, p2, width, height);
   double w[3];
   t.weight_steps(w);
   steps(static_cast<const double*>(w));
-  for_each_run(t, 0, height, [&](int j, const TriangleCoverage::Row& r, int b, int e) {
+  for_each_run(t, row_begin, row_end, [&](int j, const TriangleCoverage::Row& r, int b, int e) {
     t.weights(r, b, w);
     span(j, b, e, static_cast<const double*>(w));
   });
+}
+
+template <class Steps, class Span>
+void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, Steps&& steps,
+                              Span&& span) {
+  rasterize_triangle_spans(p0, p1, p2, width, height, 0, height, steps, span);
 }
 
 // The same over every row of the image.

@@ -1,0 +1,128 @@
+#pragma once
+// Compositing by image tiles (issue 21; the sort-last tiling of MWSC section 7 on one machine):
+// the image is cut into tiles of whole rows, each owned by one task; a tile's task draws, in
+// visibility order, every item that reaches its rows, clipped to them, "over" straight onto the
+// image. No fragment is stored and there is no serial blend: a pixel is written by one task only,
+// in the items' order, so 1 and N threads give the same image bit for bit, and the work of an item
+// is repeated only on the tiles it straddles. Items are binned to tiles in parallel first, in order.
+#include <algorithm>
+#include <cstddef>
+#include <numeric>
+#include <vector>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/partitioner.h>
+
+#include "view/image.hpp"
+
+namespace cellproj {
+
+// Rows per tile for a `height`-row image: about 4 tiles per thread (the tasks balance by stealing
+// whole tiles), at most 64 rows (a 1024-wide tile of 64 float RGBA rows is 1 MB, the size of a
+// core's L2 cache), at least 16: a cell straddling tiles is set up once per tile, and a cell h rows
+// tall meets about 1 + (h - 1) / rows tiles (1.12 for the 1M box at 1024² with 64 rows, 1.24 with
+// 32, 1.61 with 16: docs/methods.md, "Tiles").
+inline int tile_rows(int height, int threads) {
+  const int rows = height / std::max(1, 4 * threads);
+  return std::clamp(rows, 16, 64);
+}
+
+// The position of each item in its tiles' lists: tile t holds items order[first[t] .. first[t+1]).
+struct TileBins {
+  std::vector<std::size_t> first;  // tiles + 1 offsets
+  std::vector<std::size_t> items;  // each tile's items, in order
+};
+
+// Bins items [0, n) to tiles of `rows` rows; rows_of(k) is the RowRange item k may draw on (an
+// empty one is binned to the tile of its first row, clamped, so that each item is met at least
+// once: its counters count it). Parallel over chunks of the order; each tile's list stays in order.
+template <class RowsOf>
+TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of) {
+  const int tiles = std::max(1, (height + rows - 1) / rows);
+  auto span = [&](std::size_t k, int& t0, int& t1) {
+    const RowRange r = rows_of(k);
+    t0 = std::clamp(r.begin, 0, height - 1) / rows;
+    t1 = r.empty() ? t0 : std::clamp(r.end - 1, 0, height - 1) / rows;
+    t1 = std::max(t0, t1);
+  };
+  constexpr std::size_t kChunk = 16384;
+  const std::size_t chunks = (n + kChunk - 1) / kChunk;
+  std::vector<std::size_t> count(chunks * static_cast<std::size_t>(tiles), 0);  // per chunk, per tile
+  tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+    std::size_t* here = &count[c * static_cast<std::size_t>(tiles)];
+    for (std::size_t k = c * kChunk, e = std::min(n, k + kChunk); k < e; ++k) {
+      int t0, t1;
+      span(k, t0, t1);
+      for (int t = t0; t <= t1; ++t) ++here[t];
+    }
+  });
+  TileBins bins;
+  bins.first.assign(static_cast<std::size_t>(tiles) + 1, 0);
+  std::size_t at = 0;  // offsets: tile by tile, chunk by chunk (each chunk's start in its tile)
+  for (int t = 0; t < tiles; ++t) {
+    bins.first[static_cast<std::size_t>(t)] = at;
+    for (std::size_t c = 0; c < chunks; ++c) {
+      std::size_t& m = count[c * static_cast<std::size_t>(tiles) + static_cast<std::size_t>(t)];
+      const std::size_t here = m;
+      m = at, at += here;
+    }
+  }
+  bins.first.back() = at;
+  bins.items.resize(at);
+  tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
+    std::size_t* next = &count[c * static_cast<std::size_t>(tiles)];
+    for (std::size_t k = c * kChunk, e = std::min(n, k + kChunk); k < e; ++k) {
+      int t0, t1;
+      span(k, t0, t1);
+      for (int t = t0; t <= t1; ++t) bins.items[next[t]++] = k;
+    }
+  });
+  return bins;
+}
+
+// Composites items [0, n) of the order onto `image` tile by tile. A Source provides
+//   Scratch, Counters (as composite_in_order's, composite/ordered_pipeline.hpp), and
+//   void composite(std::size_t k, Image& image, RowRange rows, bool first, Scratch&, Counters&) const
+//             draws item k "over" the image in `rows` only; `first`: the first of its tiles (count
+//             the item there, its pixels everywhere); called from many threads, one per tile.
+// Returns the sum of the tiles' counters.
+// `visits`, when given, receives the number of (item, tile) pairs drawn: n plus the repeats of the
+// items that straddle tiles.
+template <class Source, class RowsOf>
+typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const RowsOf& rows_of, int rows,
+                                             const Source& source, std::size_t* visits = nullptr) {
+  const TileBins bins = bin_to_tiles(n, image.height, rows, rows_of);
+  if (visits) *visits = bins.items.size();
+  const std::size_t tiles = bins.first.size() - 1;
+  // The busiest tiles first (most items), so that the last tasks to start are short ones.
+  std::vector<std::size_t> by_load(tiles);
+  std::iota(by_load.begin(), by_load.end(), std::size_t(0));
+  std::stable_sort(by_load.begin(), by_load.end(), [&](std::size_t a, std::size_t b) {
+    return bins.first[a + 1] - bins.first[a] > bins.first[b + 1] - bins.first[b];
+  });
+  std::vector<typename Source::Counters> counters(tiles);
+  tbb::enumerable_thread_specific<typename Source::Scratch> scratch;
+  tbb::parallel_for(
+      tbb::blocked_range<std::size_t>(0, tiles, 1),
+      [&](const tbb::blocked_range<std::size_t>& r) {
+        typename Source::Scratch& s = scratch.local();
+        for (std::size_t q = r.begin(); q != r.end(); ++q) {
+          const std::size_t t = by_load[q];
+          const RowRange tile{static_cast<int>(t) * rows, std::min(image.height, static_cast<int>(t + 1) * rows)};
+          for (std::size_t m = bins.first[t]; m < bins.first[t + 1]; ++m) {
+            const std::size_t k = bins.items[m];
+            const RowRange reach = rows_of(k);
+            const bool first = std::clamp(reach.begin, 0, image.height - 1) / rows == static_cast<int>(t);
+            source.composite(k, image, tile, first, s, counters[t]);
+          }
+        }
+      },
+      tbb::simple_partitioner());
+  typename Source::Counters total{};
+  for (const auto& c : counters) total.add(c);
+  return total;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,124 @@
+// Compositing by image tiles (composite/tiled_compositor.hpp) against the ordered stream: the same
+// bits and the same counts for any tile height and thread count, on tetrahedra and whole cells, with
+// the eye outside, inside (cells ray cast from it) and an orthographic eye plane through the mesh.
+#include <cmath>
+#include <string>
+
+#include <gtest/gtest.h>
+#include <tbb/task_arena.h>
+
+#include "composite/tiled_compositor.hpp"
+#include "grid/generate.hpp"
+#include "parallel/projection_renderer.hpp"
+#include "scene/names.hpp"
+#include "test_util.hpp"
+
+using namespace cellproj;
+
+namespace {
+
+TransferFunction tiles_tf() {
+  return TransferFunction({{-1, {0.1, 0.2, 0.9}}, {0.0, {0.9, 0.9, 0.2}}, {1, {1, 1, 1}}},
+                          {{-1, 0.4}, {-0.3, 3.0}, {0.2, 0.5}, {1, 2.0}});
+}
+
+Mesh wavy(bool tetrahedra) {
+  Mesh m = make_curvilinear(
+      5, 5, 5,
+      [](const glm::dvec3& u) {
+        return glm::dvec3(2 * u.x - 1 + 0.15 * std::sin(3 * u.y), 2 * u.y - 1, 2 * u.z - 1 + 0.2 * u.x * u.y);
+      },
+      tetrahedra);
+  set_field(m, "s", [](const glm::dvec3& x) { return std::sin(2 * x.x) * std::cos(1.5 * x.y) + 0.4 * x.z; });
+  return m;
+}
+
+Camera inside(Projection p) {
+  Camera c;
+  c.projection = p;
+  c.eye = {0.13, -0.41, 0.07};
+  c.target = {1.0, 0.3, -0.2};
+  c.up = {0, 0, 1};
+  c.fov_y = 70;
+  c.height = 1.5;
+  return c;
+}
+
+void expect_same_counts(const ProjectionStats& a, const ProjectionStats& b, const std::string& what) {
+  const ProjectionCounters &x = a.counters, &y = b.counters;
+  EXPECT_EQ(x.tets, y.tets) << what;
+  EXPECT_EQ(x.class1, y.class1) << what;
+  EXPECT_EQ(x.class2, y.class2) << what;
+  EXPECT_EQ(x.empty, y.empty) << what;
+  EXPECT_EQ(x.behind_eye, y.behind_eye) << what;
+  EXPECT_EQ(x.polyhedra, y.polyhedra) << what;
+  EXPECT_EQ(x.polygons, y.polygons) << what;
+  EXPECT_EQ(x.layered, y.layered) << what;
+  EXPECT_EQ(x.unmatched, y.unmatched) << what;
+  EXPECT_EQ(x.breakpoint_cells, y.breakpoint_cells) << what;
+  EXPECT_EQ(x.fragments, y.fragments) << what;
+}
+
+}  // namespace
+
+TEST(Tiles, TheSameBitsAndCountsAsTheStreamForAnyTileHeightAndThreads) {
+  const TransferFunction tf = tiles_tf();
+  for (bool tetrahedra : {true, false}) {
+    const Mesh m = wavy(tetrahedra);
+    const ProjectionRenderer r(m.view(), tetrahedra ? Tetrahedralize::problem : Tetrahedralize::none);
+    const double* s = test::field_values(m, "s");
+    const Camera cams[3] = {test::view_from({0.5, -3, 2}, Projection::Perspective), inside(Projection::Perspective),
+                            inside(Projection::Orthographic)};
+    for (int v = 0; v < 3; ++v)
+      for (ProjectionMethod method : {ProjectionMethod::pt_linear, ProjectionMethod::pt_breakpoints}) {
+        if (!tetrahedra && v > 0) continue;  // whole cells reaching behind the eye are not drawn
+        ProjectionOptions o;
+        o.method = method;
+        o.compositing = Compositing::stream;
+        ProjectionStats st_stream;
+        Image stream;
+        tbb::task_arena(1).execute([&] { stream = r.render(s, tf, cams[v], 90, 70, o, &st_stream); });
+        EXPECT_GT(st_stream.counters.fragments, 1000);
+        if (v > 0 && tetrahedra) EXPECT_GT(st_stream.counters.behind_eye, 0);
+        if (!tetrahedra && method == ProjectionMethod::pt_breakpoints) EXPECT_GT(st_stream.counters.layered, 0);
+        o.compositing = Compositing::tiles;
+        for (int rows : {0, 1, 7, 64})
+          for (int threads : {1, 3}) {
+            o.tile_rows = rows;
+            ProjectionStats st;
+            Image tiles;
+            tbb::task_arena(threads).execute([&] { tiles = r.render(s, tf, cams[v], 90, 70, o, &st); });
+            const std::string what = std::string(tetrahedra ? "tets" : "hexes") + " view " + std::to_string(v) + " " +
+                                     name_of(method) + " rows " + std::to_string(rows) + " threads " +
+                                     std::to_string(threads);
+            EXPECT_EQ(stream.rgba, tiles.rgba) << what;
+            expect_same_counts(st_stream, st, what);
+            EXPECT_GT(st.tiles, 0) << what;
+            EXPECT_GE(st.tile_visits, st.cells) << what;  // every cell met at least once
+          }
+      }
+  }
+}
+
+TEST(Tiles, BinsKeepTheOrderAndMeetEveryItemOnce) {
+  // Items reaching rows [k, k + 3) of a 10-row image (clamped), tiles of 4 rows; item 5 covers no row.
+  const auto rows_of = [](std::size_t k) {
+    return k == 5 ? RowRange{7, 7} : RowRange{static_cast<int>(k), std::min(10, static_cast<int>(k) + 3)};
+  };
+  const TileBins bins = bin_to_tiles(10, 10, 4, rows_of);
+  ASSERT_EQ(bins.first.size(), 4u);  // 3 tiles: rows 0-3, 4-7, 8-9
+  const std::vector<std::size_t> tile0(bins.items.begin() + bins.first[0], bins.items.begin() + bins.first[1]);
+  const std::vector<std::size_t> tile1(bins.items.begin() + bins.first[1], bins.items.begin() + bins.first[2]);
+  const std::vector<std::size_t> tile2(bins.items.begin() + bins.first[2], bins.items.begin() + bins.first[3]);
+  EXPECT_EQ(tile0, (std::vector<std::size_t>{0, 1, 2, 3}));
+  EXPECT_EQ(tile1, (std::vector<std::size_t>{2, 3, 4, 5, 6, 7}));  // item 5 once, in its first row's tile
+  EXPECT_EQ(tile2, (std::vector<std::size_t>{6, 7, 8, 9}));
+}
+
+TEST(Tiles, TileHeightIsAboutFourTilesPerThreadWithin16To64Rows) {
+  EXPECT_EQ(tile_rows(1024, 2), 64);
+  EXPECT_EQ(tile_rows(1024, 8), 32);
+  EXPECT_EQ(tile_rows(1024, 64), 16);
+  EXPECT_EQ(tile_rows(256, 2), 32);
+  EXPECT_EQ(tile_rows(100, 4), 16);
+}
