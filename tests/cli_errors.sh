@@ -88,6 +88,9 @@ else  # a build without OSMesa says so, before it reads the mesh
   expect 3 "OpenGL back ends were not built" -- render "$tmp/ok.json" --method pt-table --backend opengl
 fi
 expect 2 "table-size" -- render "$tmp/ok.json" --method pt-table --table-size 1
+expect 2 "--compositing: expected tiles or stream, got 'fast'" -- render "$tmp/ok.json" --compositing fast
+expect 2 "--tile-rows: expected an integer in \[0, 65536\]" -- render "$tmp/ok.json" --tile-rows -3
+expect 2 "--compositing does not apply to --method exact" -- render "$tmp/ok.json" --method exact --compositing stream
 expect 0 '"max_abs": 0, "rmse": 0' -- compare "$tmp/ok.npy" "$tmp/ok.npy"
 expect 1 "no such file|cannot open" -- compare "$tmp/ok.npy" "$tmp/none.npy"
 expect 2 "unknown sort 'zsort' \(known: auto, centroid" -- sortbench "$tmp/box.vtu" --sorts mpvo,zsort
