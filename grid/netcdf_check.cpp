@@ -7,6 +7,8 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <string>
+#include <system_error>
 #include <vector>
 
 #include <netcdf.h>
@@ -18,7 +20,9 @@ namespace {
 
 // Big-endian fields of a classic netCDF header (CDF-1, CDF-2 64-bit offset, CDF-5), bounds-checked.
 struct HeaderCursor {
-  const std::vector<unsigned char>& bytes;
+  const std::vector<unsigned char>& bytes;  // the file's first bytes (or all of it)
+  std::uint64_t file_size = 0;
+  std::string* problem = nullptr;  // set (and the walk stopped) when a count exceeds what the file holds
   std::size_t at = 0;
   bool ok = true;
   std::uint64_t read(int n) {
@@ -33,6 +37,18 @@ struct HeaderCursor {
     else
       at += static_cast<std::size_t>(n);
   }
+  // Whether `count` entries of at least `each` bytes fit in the rest of the file; if not, says so
+  // in *problem: netCDF sizes its tables by such counts before it reads the entries (a 530-byte
+  // file declaring 16 million dimensions ran its hash map out of memory).
+  bool fits(std::uint64_t count, std::uint64_t each, const char* what) {
+    const std::uint64_t rest = file_size > at ? file_size - at : 0;
+    if (!ok || count <= rest / each) return ok;
+    if (problem)
+      *problem = "its header declares " + std::to_string(count) + " " + what + " at byte " + std::to_string(at) +
+                 ", more than the " + std::to_string(rest) + " bytes after it can hold (at least " +
+                 std::to_string(each) + " bytes each)";
+    return ok = false;
+  }
 };
 
 std::uint64_t type_size(std::uint64_t type) {
@@ -44,8 +60,9 @@ std::uint64_t type_size(std::uint64_t type) {
 // Specification"): magic numrecs dim_list gatt_list var_list, each var = name dimids vatt_list
 // nc_type vsize begin. Unpadded sizes, so that a last variable written without its padding still
 // counts as complete.
-std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char>& bytes) {
-  HeaderCursor c{bytes};
+std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char>& bytes, std::uint64_t file_size,
+                                                 std::string* problem) {
+  HeaderCursor c{bytes, file_size, problem};
   if (c.read(3) != 0x434446) return std::nullopt;  // "CDF"
   const std::uint64_t version = c.read(1);
   if (version != 1 && version != 2 && version != 5) return std::nullopt;
@@ -54,23 +71,27 @@ std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char
   const bool streaming = numrecs == (word == 8 ? ~0ull : 0xFFFFFFFFull);
   auto name = [&] {
     const std::uint64_t n = c.read(word);
-    if (n > bytes.size()) c.ok = false;
+    if (!c.fits(n, 1, "name bytes")) return std::string();
     const std::size_t from = c.at;
     c.skip((n + 3) / 4 * 4);
     return c.ok ? std::string(bytes.begin() + from, bytes.begin() + from + n) : std::string();
   };
   auto attributes = [&] {
     c.read(4);  // NC_ATTRIBUTE, or ZERO when absent
-    for (std::uint64_t a = 0, n = c.read(word); a < n && c.ok; ++a) {
+    const std::uint64_t n = c.read(word);
+    c.fits(n, 2 * word + 4, "attributes");  // name, type, count
+    for (std::uint64_t a = 0; a < n && c.ok; ++a) {
       name();
       const std::uint64_t size = type_size(c.read(4)), count = c.read(word);
-      if (size == 0 || count > bytes.size()) return void(c.ok = false);
+      if (size == 0 || !c.fits(count, size, "attribute values")) return void(c.ok = false);
       c.skip((count * size + 3) / 4 * 4);
     }
   };
   ClassicHeader out;
   c.read(4);  // NC_DIMENSION, or ZERO when absent
-  for (std::uint64_t d = 0, n = c.read(word); d < n && c.ok && n <= bytes.size(); ++d) {
+  const std::uint64_t n_dims = c.read(word);
+  c.fits(n_dims, 2 * word, "dimensions");  // name, length
+  for (std::uint64_t d = 0; d < n_dims && c.ok; ++d) {
     std::string dim_name = name();
     out.dims.emplace_back(std::move(dim_name), c.read(word));
   }
@@ -82,9 +103,13 @@ std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char
   };
   std::vector<Var> vars;
   c.read(4);  // NC_VARIABLE, or ZERO when absent
-  for (std::uint64_t v = 0, n = c.read(word); v < n && c.ok && n <= bytes.size(); ++v) {
+  const std::uint64_t n_vars = c.read(word);
+  c.fits(n_vars, 4 * word + 8 + offset, "variables");  // name, dimensions, attributes, type, vsize, begin
+  for (std::uint64_t v = 0; v < n_vars && c.ok; ++v) {
     Var var{name(), 0, 1, false};
-    for (std::uint64_t k = 0, nd = c.read(word); k < nd && c.ok && nd <= bytes.size(); ++k) {
+    const std::uint64_t nd = c.read(word);
+    c.fits(nd, word, "dimension ids of a variable");
+    for (std::uint64_t k = 0; k < nd && c.ok; ++k) {
       const std::uint64_t id = c.read(word);
       if (id >= out.dims.size()) return std::nullopt;
       const std::uint64_t len = out.dims[id].second;
@@ -114,8 +139,11 @@ std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char
 
 }  // namespace
 
-std::optional<ClassicHeader> read_classic_header(const std::string& path) {
+std::optional<ClassicHeader> read_classic_header(const std::string& path, std::string* problem) {
   // The header's size is not known before it is walked: read more until it fits (or 256 MB).
+  std::error_code error;
+  const std::uint64_t file_size = std::filesystem::file_size(path, error);
+  if (error) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   std::vector<unsigned char> bytes;
   for (std::size_t want = 1 << 16;; want *= 16) {
@@ -123,8 +151,9 @@ std::optional<ClassicHeader> read_classic_header(const std::string& path) {
     bytes.resize(want);
     in.read(reinterpret_cast<char*>(bytes.data() + had), static_cast<std::streamsize>(want - had));
     bytes.resize(had + static_cast<std::size_t>(in.gcount()));
-    auto header = walk_classic_header(bytes);
-    if (header || bytes.size() < want || want >= (std::size_t(1) << 28)) return header;
+    auto header = walk_classic_header(bytes, file_size, problem);
+    if (header || (problem && !problem->empty()) || bytes.size() < want || want >= (std::size_t(1) << 28))
+      return header;
   }
 }
 
@@ -164,6 +193,10 @@ void check_netcdf_readable(const std::string& path) {
     if (const std::uintmax_t file = std::filesystem::file_size(path); file < *end)
       throw InputError(where(path, "truncated: its HDF5 superblock (netCDF-4) says the file ends at byte " +
                                        std::to_string(*end) + ", the file has " + std::to_string(file) + " bytes"));
+  // A classic header's counts, before netCDF sizes its tables by them.
+  std::string problem;
+  const auto placed = read_classic_header(path, &problem);  // classic formats only: netCDF-4 is HDF5
+  if (!problem.empty()) throw InputError(where(path, "corrupt: " + problem));
   int id = -1;
   if (int err = nc_open(path.c_str(), NC_NOWRITE, &id); err != NC_NOERR)
     throw InputError(where(path, std::string("not a readable Exodus II (netCDF) file: ") + nc_strerror(err)));
@@ -220,7 +253,7 @@ void check_netcdf_readable(const std::string& path) {
   };
   // What the header promises, before anything is read: netCDF reads past the end of a truncated
   // classic file as fill values, silently (and VTK then sees node 0 in the connectivity).
-  if (const auto placed = read_classic_header(path)) {  // classic formats only: netCDF-4 is HDF5
+  if (placed) {
     if (const std::uintmax_t file = std::filesystem::file_size(path); file < placed->data_end) {
       nc_close(id);
       throw InputError(where(path, "truncated: the header places variable '" + placed->last_variable + "' up to byte " +

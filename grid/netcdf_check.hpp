@@ -15,8 +15,10 @@ struct ClassicHeader {
   std::string last_variable;   // the variable ending there
   std::uint64_t dim(const std::string& name) const;  // 0 when absent
 };
-// nullopt when the file is not classic netCDF (netCDF-4 is HDF5) or its header is malformed.
-std::optional<ClassicHeader> read_classic_header(const std::string& path);
+// nullopt when the file is not classic netCDF (netCDF-4 is HDF5) or its header is malformed; then
+// *problem, when given, says what when a count of the header (dimensions, attributes, variables,
+// a name's or values' length) exceeds what the rest of the file can hold.
+std::optional<ClassicHeader> read_classic_header(const std::string& path, std::string* problem = nullptr);
 
 // Where an HDF5 file (netCDF-4) ends by its superblock (base address plus end-of-file address);
 // nullopt when the file does not start with an HDF5 superblock this reads (versions 0 to 3).

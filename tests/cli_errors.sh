@@ -344,6 +344,10 @@ expect 1 "meta.vtk: the CELLS block \\(1417395 cells, 0 numbers\\) cannot give e
 # its buffer on it (AddressSanitizer, in a fuzz run); coordinates are numbers.
 cp "$src/tests/fuzz/regressions/vtk/crash-6780a877e5b19815aaf4e6753cc85b22d0644115" "$tmp/strpts.vtk"
 expect 1 "strpts.vtk: POINTS has the type 'stringdouble', which VTK reads as strings: coordinates are numbers" -- info "$tmp/strpts.vtk"
+# A classic netCDF (Exodus) header declaring 16 million dimensions in a 183-byte file: netCDF sized
+# its hash map by the count (out of memory in a fuzz run, "Argument list too long" here before).
+cp "$src/tests/fuzz/regressions/exodus/crash-a74af697e3c6b5a64ae19e308f1bbdf91b187dd4" "$tmp/dims.exo"
+expect 1 "dims.exo: corrupt: its header declares 16777216 dimensions at byte 16, more than the 167 bytes after it can hold" -- info "$tmp/dims.exo"
 # A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
 # array with it and wrote past it), and a structured grid with an array named field_strength (VTK
 # 9.1's metadata pass took the name for a FIELD block and crashed on a good file).

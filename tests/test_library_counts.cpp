@@ -126,3 +126,35 @@ TEST(LibraryCounts, ANetcdf4ExodusFileCutShortIsCalledTruncated) {
         << part << ": " << message;
   }
 }
+
+TEST(LibraryCounts, AClassicNetcdfHeaderCountingMoreThanTheFileHoldsIsRefusedByCount) {
+  // netCDF sizes its tables by the header's counts before reading the entries: a fuzzed 530-byte
+  // Exodus file declaring 16 million dimensions ran its hash map out of memory ("Argument list too
+  // long" at best). The walk refuses such a count first, saying where and how much fits.
+  test::TempDir dir;
+  const std::string path = dir.file("classic.exo");
+  int id = 0, dim = 0;
+  ASSERT_EQ(nc_create(path.c_str(), NC_64BIT_OFFSET | NC_CLOBBER, &id), NC_NOERR);  // CDF-2
+  nc_def_dim(id, "num_nodes", 4, &dim);
+  nc_put_att_text(id, NC_GLOBAL, "title", 5, "cells");
+  ASSERT_EQ(nc_close(id), NC_NOERR);
+  EXPECT_NO_THROW(check_netcdf_readable(path));
+  std::ifstream in(path, std::ios::binary);
+  const std::string good((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  // CDF-2: "CDF\2", numrecs, NC_DIMENSION, the dimension count at byte 12 (big-endian).
+  const auto with = [&](std::size_t at, const std::string& count) {
+    std::string bytes = good;
+    bytes.replace(at, 4, count);
+    const std::string bad = dir.file("bad.exo");
+    std::ofstream(bad, std::ios::binary) << bytes;
+    return test::input_error([&] { check_netcdf_readable(bad); });
+  };
+  const std::string size = std::to_string(good.size() - 16);
+  EXPECT_NE(with(12, std::string("\x00\xff\xff\xff", 4))
+                .find("bad.exo: corrupt: its header declares 16777215 dimensions at byte 16, more than the " + size +
+                      " bytes after it can hold (at least 8 bytes each)"),
+            std::string::npos);
+  // The attribute count follows the dimension "num_nodes" (4 + 12 name bytes + 4) and NC_ATTRIBUTE.
+  const std::string message = with(40, std::string("\x7f\x00\x00\x00", 4));
+  EXPECT_NE(message.find("corrupt: its header declares 2130706432 attributes at byte 44"), std::string::npos) << message;
+}
