@@ -40,6 +40,11 @@ struct HeaderCursor {
   // Whether `count` entries of at least `each` bytes fit in the rest of the file; if not, says so
   // in *problem: netCDF sizes its tables by such counts before it reads the entries (a 530-byte
   // file declaring 16 million dimensions ran its hash map out of memory).
+  // Stops the walk with *problem = what (a header netCDF itself misreads).
+  void refuse(const std::string& what) {
+    if (problem && ok) *problem = what;
+    ok = false;
+  }
   bool fits(std::uint64_t count, std::uint64_t each, const char* what) {
     const std::uint64_t rest = file_size > at ? file_size - at : 0;
     if (!ok || count <= rest / each) return ok;
@@ -113,13 +118,21 @@ std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char
       const std::uint64_t id = c.read(word);
       if (id >= out.dims.size()) return std::nullopt;
       const std::uint64_t len = out.dims[id].second;
+      // netCDF divides by the product of a variable's later dimensions (NC_check_vlen): the record
+      // dimension (length 0) past the first made it divide by zero (a fuzzed Exodus file).
+      if (k > 0 && len == 0)
+        c.refuse("variable '" + var.name + "' has the record dimension '" + out.dims[id].first + "' as its dimension " +
+                 std::to_string(k + 1) + ": only the first may be");
       if (k == 0 && len == 0)
         var.record = true;
       else if (len != 0)
         var.record_bytes = len > (1ull << 62) / var.record_bytes ? 1ull << 62 : var.record_bytes * len;
     }
     attributes();
-    var.record_bytes *= type_size(c.read(4));
+    const std::uint64_t type = c.read(4), size = type_size(type);
+    if (c.ok && (size == 0 || (version != 5 && type > 6)))  // NC_BYTE .. NC_DOUBLE; CDF-5 up to NC_UINT64
+      c.refuse("variable '" + var.name + "' has the unknown type " + std::to_string(type));
+    var.record_bytes *= size;
     c.read(word);  // vsize, padded and 32 bits only in CDF-1 and CDF-2: computed above instead
     var.begin = c.read(offset);
     vars.push_back(var);
@@ -251,6 +264,29 @@ void check_netcdf_readable(const std::string& path) {
     nc_inq_type(id, type, nullptr, &size);
     return type;
   };
+  // What VTK's Exodus reader takes for granted (fuzzed files crashed it): element blocks come with
+  // nodes, each coordinate holds one value per node, and declared results are named.
+  const auto refuse = [&](const std::string& what) {
+    nc_close(id);
+    throw InputError(where(path, "corrupt: " + what));
+  };
+  if (blocks > 0 && nodes == 0) refuse(std::to_string(blocks) + " element blocks but no nodes (no dimension 'num_nodes')");
+  for (const char* coordinate : {"coordx", "coordy", "coordz"})
+    if (int v; nodes > 0 && nc_inq_varid(id, coordinate, &v) == NC_NOERR) {
+      std::size_t count = 0, size = 0;
+      elements(v, count, size);
+      if (count != nodes)
+        refuse(std::string("coordinate '") + coordinate + "' holds " + std::to_string(count) + " values for " +
+               std::to_string(nodes) + " nodes");
+    }
+  for (const char* kind : {"nod", "elem", "glo", "nset", "sset"}) {
+    const std::string count_dim = std::string("num_") + kind + "_var", names = std::string("name_") + kind + "_var";
+    std::size_t declared = 0;
+    if (int dim; nc_inq_dimid(id, count_dim.c_str(), &dim) == NC_NOERR) nc_inq_dimlen(id, dim, &declared);
+    if (int v; declared > 0 && nc_inq_varid(id, names.c_str(), &v) != NC_NOERR)
+      refuse("it declares " + std::to_string(declared) + " result variables ('" + count_dim + "') but has no '" + names +
+             "' naming them");
+  }
   // What the header promises, before anything is read: netCDF reads past the end of a truncated
   // classic file as fill values, silently (and VTK then sees node 0 in the connectivity).
   if (placed) {

@@ -348,6 +348,10 @@ expect 1 "strpts.vtk: POINTS has the type 'stringdouble', which VTK reads as str
 # its hash map by the count (out of memory in a fuzz run, "Argument list too long" here before).
 cp "$src/tests/fuzz/regressions/exodus/crash-a74af697e3c6b5a64ae19e308f1bbdf91b187dd4" "$tmp/dims.exo"
 expect 1 "dims.exo: corrupt: its header declares 16777216 dimensions at byte 16, more than the 167 bytes after it can hold" -- info "$tmp/dims.exo"
+# A variable of type 12 (netCDF-4's string) in a classic file: netCDF divided by its size, 0, while
+# opening it (a floating-point exception in a fuzz run).
+cp "$src/tests/fuzz/regressions/exodus/crash-f011fcb3e88d9105a76805b3c250a9105505be84" "$tmp/type.exo"
+expect 1 "type.exo: corrupt: variable 'eb_prop1' has the unknown type 12" -- info "$tmp/type.exo"
 # A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
 # array with it and wrote past it), and a structured grid with an array named field_strength (VTK
 # 9.1's metadata pass took the name for a FIELD block and crashed on a good file).

@@ -158,3 +158,39 @@ TEST(LibraryCounts, AClassicNetcdfHeaderCountingMoreThanTheFileHoldsIsRefusedByC
   const std::string message = with(40, std::string("\x7f\x00\x00\x00", 4));
   EXPECT_NE(message.find("corrupt: its header declares 2130706432 attributes at byte 44"), std::string::npos) << message;
 }
+
+TEST(LibraryCounts, ExodusBlocksWithoutNodesShortCoordinatesAndUnnamedResultsAreRefused) {
+  // What VTK's Exodus reader takes for granted and crashed on in fuzzed files: blocks without a
+  // num_nodes dimension (it indexed an empty point array), a coordinate shorter than num_nodes, and
+  // nodal results declared but not named (it ran strlen past unterminated names).
+  test::TempDir dir;
+  const auto write = [&](const std::string& name, bool nodes, std::size_t coordinates, bool names) {
+    const std::string path = dir.file(name);
+    int id = 0, d_nodes = 0, d_coord = 0, d_blk = 0, d_el = 0, d_per = 0, d_var = 0, v = 0;
+    EXPECT_EQ(nc_create(path.c_str(), NC_64BIT_OFFSET | NC_CLOBBER, &id), NC_NOERR);
+    nc_def_dim(id, nodes ? "num_nodes" : "num_points", 4, &d_nodes);
+    nc_def_dim(id, "num_coord", coordinates, &d_coord);
+    nc_def_dim(id, "num_el_blk", 1, &d_blk);
+    nc_def_dim(id, "num_el_in_blk1", 1, &d_el);
+    nc_def_dim(id, "num_nod_per_el1", 4, &d_per);
+    nc_def_dim(id, "num_nod_var", 1, &d_var);
+    nc_def_var(id, "coordx", NC_DOUBLE, 1, &d_coord, &v);
+    const int connect_dims[2] = {d_el, d_per};
+    int connect = 0;
+    nc_def_var(id, "connect1", NC_INT, 2, connect_dims, &connect);
+    if (names) nc_def_var(id, "name_nod_var", NC_CHAR, 1, &d_var, &v);
+    nc_enddef(id);
+    const int ids[4] = {1, 2, 3, 4};
+    nc_put_var_int(id, connect, ids);
+    EXPECT_EQ(nc_close(id), NC_NOERR);
+    return test::input_error([&] { check_netcdf_readable(path); });
+  };
+  EXPECT_EQ(write("good.exo", true, 4, true), "");
+  EXPECT_NE(write("blocks.exo", false, 4, true).find("blocks.exo: corrupt: 1 element blocks but no nodes"),
+            std::string::npos);
+  EXPECT_NE(write("short.exo", true, 3, true).find("short.exo: corrupt: coordinate 'coordx' holds 3 values for 4 nodes"),
+            std::string::npos);
+  EXPECT_NE(write("unnamed.exo", true, 4, false)
+                .find("unnamed.exo: corrupt: it declares 1 result variables ('num_nod_var') but has no 'name_nod_var'"),
+            std::string::npos);
+}
