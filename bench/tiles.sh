@@ -2,7 +2,8 @@
 # Compositing by image tiles against the ordered stream of fragments (docs/methods.md, "Tiles"),
 # side by side in one run (bench/ab_frames.sh, A = --compositing stream, B = tiles, 2 threads, the
 # pictures compared bit for bit): the 1M-tetrahedra box at 1024² (4 methods), the 1M-hexahedra
-# swirl at 1024² (whole cells), tets-10k at 1024²; then tiles on 1 and 2 threads (the speed-up).
+# swirl at 1024² (whole cells), tets-10k at 1024²; then tiles on 1 and 2 threads (the speed-up), and
+# the straddle (visits per cell) of 16-, 32- and 64-row tiles.
 # usage: bench/tiles.sh [BUILD_DIR] [ROUNDS=4]   (about 8 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -26,4 +27,10 @@ for m in pt-linear pt-breakpoints; do
       tail -1 | python3 -c "import json, sys; j = json.load(sys.stdin)
 print('$m threads $t: %.3f s, %d tiles, %.3f visits per cell' % (j['frame_seconds'], j['tiles'], j['tile_visits'] / j['cells']))"
   done
+done
+echo "tile height against straddle (1M box, 1024², pt-linear, 1 frame):"
+for rows in 16 32 64; do
+  "$exe" render "$work/box_1m.json" --method pt-linear --threads 2 --tile-rows $rows -o "$work/t.png" --stats 2>&1 >/dev/null |
+    tail -1 | python3 -c "import json, sys; j = json.load(sys.stdin)
+print('$rows rows: %d tiles, %.3f visits per cell, %.3f s' % (j['tiles'], j['tile_visits'] / j['cells'], j['frame_seconds']))"
 done

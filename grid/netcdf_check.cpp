@@ -213,6 +213,10 @@ void check_netcdf_readable(const std::string& path) {
   int id = -1;
   if (int err = nc_open(path.c_str(), NC_NOWRITE, &id); err != NC_NOERR)
     throw InputError(where(path, std::string("not a readable Exodus II (netCDF) file: ") + nc_strerror(err)));
+  const auto refuse = [&](const std::string& what) {  // closes the file, then throws
+    nc_close(id);
+    throw InputError(where(path, what));
+  };
   int nvars = 0;
   nc_inq_nvars(id, &nvars);
   std::size_t nodes = 0;
@@ -236,16 +240,11 @@ void check_netcdf_readable(const std::string& path) {
     const std::string n = std::to_string(b);
     int found = 0;
     for (const std::string& dim : {"num_el_in_blk" + n, "num_nod_per_el" + n})
-      if (nc_inq_dimid(id, dim.c_str(), &found) != NC_NOERR) {
-        nc_close(id);
-        throw InputError(where(
-            path, "corrupt: element block " + n + " of " + std::to_string(blocks) + " has no dimension '" + dim + "'"));
-      }
-    if (nc_inq_varid(id, ("connect" + n).c_str(), &found) != NC_NOERR) {
-      nc_close(id);
-      throw InputError(where(path, "corrupt: element block " + n + " of " + std::to_string(blocks) +
-                                       " has no connectivity variable 'connect" + n + "'"));
-    }
+      if (nc_inq_dimid(id, dim.c_str(), &found) != NC_NOERR)
+        refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + " has no dimension '" + dim + "'");
+    if (nc_inq_varid(id, ("connect" + n).c_str(), &found) != NC_NOERR)
+      refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + " has no connectivity variable 'connect" +
+             n + "'");
   }
   auto elements = [&](int v, std::size_t& count, std::size_t& size) {
     int ndims = 0;
@@ -266,17 +265,13 @@ void check_netcdf_readable(const std::string& path) {
   };
   // What VTK's Exodus reader takes for granted (fuzzed files crashed it): element blocks come with
   // nodes, each coordinate holds one value per node, and declared results are named.
-  const auto refuse = [&](const std::string& what) {
-    nc_close(id);
-    throw InputError(where(path, "corrupt: " + what));
-  };
-  if (blocks > 0 && nodes == 0) refuse(std::to_string(blocks) + " element blocks but no nodes (no dimension 'num_nodes')");
+  if (blocks > 0 && nodes == 0) refuse("corrupt: " + std::to_string(blocks) + " element blocks but no nodes (no dimension 'num_nodes')");
   for (const char* coordinate : {"coordx", "coordy", "coordz"})
     if (int v; nodes > 0 && nc_inq_varid(id, coordinate, &v) == NC_NOERR) {
       std::size_t count = 0, size = 0;
       elements(v, count, size);
       if (count != nodes)
-        refuse(std::string("coordinate '") + coordinate + "' holds " + std::to_string(count) + " values for " +
+        refuse(std::string("corrupt: coordinate '") + coordinate + "' holds " + std::to_string(count) + " values for " +
                std::to_string(nodes) + " nodes");
     }
   for (const char* kind : {"nod", "elem", "glo", "nset", "sset"}) {
@@ -284,18 +279,15 @@ void check_netcdf_readable(const std::string& path) {
     std::size_t declared = 0;
     if (int dim; nc_inq_dimid(id, count_dim.c_str(), &dim) == NC_NOERR) nc_inq_dimlen(id, dim, &declared);
     if (int v; declared > 0 && nc_inq_varid(id, names.c_str(), &v) != NC_NOERR)
-      refuse("it declares " + std::to_string(declared) + " result variables ('" + count_dim + "') but has no '" + names +
+      refuse("corrupt: it declares " + std::to_string(declared) + " result variables ('" + count_dim + "') but has no '" + names +
              "' naming them");
   }
   // What the header promises, before anything is read: netCDF reads past the end of a truncated
   // classic file as fill values, silently (and VTK then sees node 0 in the connectivity).
   if (placed) {
-    if (const std::uintmax_t file = std::filesystem::file_size(path); file < placed->data_end) {
-      nc_close(id);
-      throw InputError(where(path, "truncated: the header places variable '" + placed->last_variable + "' up to byte " +
-                                       std::to_string(placed->data_end) + ", the file has " + std::to_string(file) +
-                                       " bytes"));
-    }
+    if (const std::uintmax_t file = std::filesystem::file_size(path); file < placed->data_end)
+      refuse("truncated: the header places variable '" + placed->last_variable + "' up to byte " +
+             std::to_string(placed->data_end) + ", the file has " + std::to_string(file) + " bytes");
   }
   std::vector<unsigned char> buf;
   for (int v = 0; v < nvars; ++v) {
@@ -306,9 +298,7 @@ void check_netcdf_readable(const std::string& path) {
     if (int err = nc_get_var(id, v, buf.data()); err != NC_NOERR) {
       char name[NC_MAX_NAME + 1] = {};
       nc_inq_varname(id, v, name);
-      nc_close(id);
-      throw InputError(where(path, std::string("truncated or corrupt: variable '") + name + "' cannot be read (" +
-                                       nc_strerror(err) + ")"));
+      refuse(std::string("truncated or corrupt: variable '") + name + "' cannot be read (" + nc_strerror(err) + ")");
     }
     // Element connectivity (1-based node numbers): VTK's reader indexes with it unchecked.
     char name[NC_MAX_NAME + 1] = {};
@@ -317,11 +307,9 @@ void check_netcdf_readable(const std::string& path) {
       std::vector<long long> ids(count);
       nc_get_var_longlong(id, v, ids.data());
       for (std::size_t i = 0; i < count; ++i)
-        if (ids[i] < 1 || ids[i] > static_cast<long long>(nodes)) {
-          nc_close(id);
-          throw InputError(where(path, std::string("corrupt: ") + name + " entry " + std::to_string(i) + " is node " +
-                                           std::to_string(ids[i]) + ", outside [1, " + std::to_string(nodes) + "]"));
-        }
+        if (ids[i] < 1 || ids[i] > static_cast<long long>(nodes))
+          refuse(std::string("corrupt: ") + name + " entry " + std::to_string(i) + " is node " + std::to_string(ids[i]) +
+                 ", outside [1, " + std::to_string(nodes) + "]");
     }
   }
   nc_close(id);

@@ -24,29 +24,45 @@
 namespace cellproj {
 namespace {
 
+// A cell's image box: its vertices' extent on the screen, whether one reaches behind the eye (or
+// the orthographic eye plane), whether one has no image position (NaN).
+struct ImageExtent {
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  bool behind = false, nan = false;
+};
+
+ImageExtent image_extent(const MeshView& cells, std::int64_t c, const ScreenPoints& screen) {
+  ImageExtent e;
+  const std::int64_t* id = cells.cell(c);
+  for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
+    const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
+    e.behind = e.behind || behind_eye(v.z), e.nan = e.nan || std::isnan(v.x) || std::isnan(v.y);
+    e.x0 = std::min(e.x0, v.x), e.x1 = std::max(e.x1, v.x), e.y0 = std::min(e.y0, v.y), e.y1 = std::max(e.y1, v.y);
+  }
+  return e;
+}
+
+// f(c, extent) for every cell, in parallel.
+template <class F>
+void for_each_extent(const MeshView& cells, const ScreenPoints& screen, F&& f) {
+  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096),
+                    [&](const tbb::blocked_range<std::int64_t>& r) {
+                      for (std::int64_t c = r.begin(); c < r.end(); ++c) f(c, image_extent(cells, c, screen));
+                    });
+}
+
 // Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind a
 // perspective eye has no image box and is ray cast over the whole image (an orthographic one only
 // over its box).
 std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
   std::vector<float> area(static_cast<std::size_t>(cells.n_cells));
   const double w = rays.width(), h = rays.height();
-  tbb::parallel_for(
-      tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-        for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-          const std::int64_t* id = cells.cell(c);
-          double x0 = w, x1 = 0, y0 = h, y1 = 0;
-          bool behind = false;
-          for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
-            const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
-            behind = behind || (rays.perspective() && behind_eye(v.z));
-            x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
-          }
-          const double dx = std::clamp(x1, 0.0, w) - std::clamp(x0, 0.0, w),
-                       dy = std::clamp(y1, 0.0, h) - std::clamp(y0, 0.0, h);
-          area[static_cast<std::size_t>(c)] =
-              behind ? static_cast<float>(w * h) : static_cast<float>((dx + 1) * (dy + 1));
-        }
-      });
+  for_each_extent(cells, screen, [&](std::int64_t c, const ImageExtent& e) {
+    const double dx = std::clamp(e.x1, 0.0, w) - std::clamp(e.x0, 0.0, w),
+                 dy = std::clamp(e.y1, 0.0, h) - std::clamp(e.y0, 0.0, h);
+    area[static_cast<std::size_t>(c)] =
+        e.behind && rays.perspective() ? static_cast<float>(w * h) : static_cast<float>((dx + 1) * (dy + 1));
+  });
   return area;
 }
 
@@ -56,25 +72,14 @@ std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& sc
 std::vector<RowRange> cell_rows(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
   std::vector<RowRange> rows(static_cast<std::size_t>(cells.n_cells));
   const int h = rays.height();
-  tbb::parallel_for(
-      tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096), [&](const tbb::blocked_range<std::int64_t>& r) {
-        for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-          const std::int64_t* id = cells.cell(c);
-          double y0 = INFINITY, y1 = -INFINITY;
-          bool behind = false, nan = false;
-          for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
-            const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
-            behind = behind || behind_eye(v.z), nan = nan || std::isnan(v.y);
-            y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
-          }
-          const double lo = behind ? std::floor(y0 - 0.5) : std::ceil(y0 - 0.5),
-                       hi = behind ? std::ceil(y1 - 0.5) : std::floor(y1 - 0.5);
-          rows[static_cast<std::size_t>(c)] =
-              (behind && rays.perspective()) || nan
-                  ? RowRange{0, h}
-                  : RowRange{int(std::clamp(lo, 0.0, double(h))), int(std::clamp(hi + 1.0, 0.0, double(h)))};
-        }
-      });
+  for_each_extent(cells, screen, [&](std::int64_t c, const ImageExtent& e) {
+    const double lo = e.behind ? std::floor(e.y0 - 0.5) : std::ceil(e.y0 - 0.5),
+                 hi = e.behind ? std::ceil(e.y1 - 0.5) : std::floor(e.y1 - 0.5);
+    rows[static_cast<std::size_t>(c)] =
+        (e.behind && rays.perspective()) || e.nan
+            ? RowRange{0, h}
+            : RowRange{int(std::clamp(lo, 0.0, double(h))), int(std::clamp(hi + 1.0, 0.0, double(h)))};
+  });
   return rows;
 }
 
