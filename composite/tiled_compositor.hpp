@@ -29,6 +29,9 @@ inline int tile_rows(int height, int threads) {
   return std::clamp(rows, 16, 64);
 }
 
+// The tile holding an item's first row (clamped to the image): where it is counted.
+inline int first_tile(const RowRange& reach, int height, int rows) { return std::clamp(reach.begin, 0, height - 1) / rows; }
+
 // The position of each item in its tiles' lists: tile t holds items order[first[t] .. first[t+1]).
 struct TileBins {
   std::vector<std::size_t> first;  // tiles + 1 offsets
@@ -43,7 +46,7 @@ TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of
   const int tiles = std::max(1, (height + rows - 1) / rows);
   auto span = [&](std::size_t k, int& t0, int& t1) {
     const RowRange r = rows_of(k);
-    t0 = std::clamp(r.begin, 0, height - 1) / rows;
+    t0 = first_tile(r, height, rows);
     t1 = r.empty() ? t0 : std::clamp(r.end - 1, 0, height - 1) / rows;
     t1 = std::max(t0, t1);
   };
@@ -113,8 +116,7 @@ typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const 
           const RowRange tile{static_cast<int>(t) * rows, std::min(image.height, static_cast<int>(t + 1) * rows)};
           for (std::size_t m = bins.first[t]; m < bins.first[t + 1]; ++m) {
             const std::size_t k = bins.items[m];
-            const RowRange reach = rows_of(k);
-            const bool first = std::clamp(reach.begin, 0, image.height - 1) / rows == static_cast<int>(t);
+            const bool first = first_tile(rows_of(k), image.height, rows) == static_cast<int>(t);
             source.composite(k, image, tile, first, s, counters[t]);
           }
         }
