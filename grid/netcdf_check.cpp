@@ -238,13 +238,27 @@ void check_netcdf_readable(const std::string& path) {
   for (std::size_t b = 1; b <= blocks; ++b) {
     if (status[b - 1] == 0) continue;
     const std::string n = std::to_string(b);
-    int found = 0;
-    for (const std::string& dim : {"num_el_in_blk" + n, "num_nod_per_el" + n})
-      if (nc_inq_dimid(id, dim.c_str(), &found) != NC_NOERR)
+    int found = 0, shape[2] = {-1, -1};  // the block's element count and nodes per element
+    for (int k : {0, 1}) {
+      const std::string dim = (k == 0 ? "num_el_in_blk" : "num_nod_per_el") + n;
+      if (nc_inq_dimid(id, dim.c_str(), &shape[k]) != NC_NOERR)
         refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + " has no dimension '" + dim + "'");
+    }
     if (nc_inq_varid(id, ("connect" + n).c_str(), &found) != NC_NOERR)
       refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + " has no connectivity variable 'connect" +
              n + "'");
+    // VTK reads connectN as num_el_in_blkN x num_nod_per_elN whatever its own shape (a fuzzed file
+    // with connect1 and connect2 swapped crashed it).
+    int ndims = 0, dims[2] = {-1, -1};
+    if (nc_inq_varndims(id, found, &ndims) != NC_NOERR || ndims != 2 || nc_inq_vardimid(id, found, dims) != NC_NOERR ||
+        dims[0] != shape[0] || dims[1] != shape[1])
+      refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + ": its connectivity 'connect" + n +
+             "' is not shaped (num_el_in_blk" + n + ", num_nod_per_el" + n + ")");
+    // VTK registers a block by its element type; without one it looked up a block it never sorted.
+    nc_type type;
+    if (nc_inq_atttype(id, found, "elem_type", &type) != NC_NOERR || type != NC_CHAR)
+      refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + ": its connectivity 'connect" + n +
+             "' has no text attribute 'elem_type'");
   }
   auto elements = [&](int v, std::size_t& count, std::size_t& size) {
     int ndims = 0;

@@ -159,12 +159,15 @@ TEST(LibraryCounts, AClassicNetcdfHeaderCountingMoreThanTheFileHoldsIsRefusedByC
   EXPECT_NE(message.find("corrupt: its header declares 2130706432 attributes at byte 44"), std::string::npos) << message;
 }
 
-TEST(LibraryCounts, ExodusBlocksWithoutNodesShortCoordinatesAndUnnamedResultsAreRefused) {
+TEST(LibraryCounts, ExodusBlocksWithoutNodesTypeOrShapeShortCoordinatesAndUnnamedResultsAreRefused) {
   // What VTK's Exodus reader takes for granted and crashed on in fuzzed files: blocks without a
-  // num_nodes dimension (it indexed an empty point array), a coordinate shorter than num_nodes, and
-  // nodal results declared but not named (it ran strlen past unterminated names).
+  // num_nodes dimension (it indexed an empty point array), a coordinate shorter than num_nodes,
+  // nodal results declared but not named (it ran strlen past unterminated names), a block
+  // without its element type (it looked up a block it had not sorted), and a connectivity not
+  // shaped by its block's dimensions (connect1 and connect2 swapped).
   test::TempDir dir;
-  const auto write = [&](const std::string& name, bool nodes, std::size_t coordinates, bool names) {
+  const auto write = [&](const std::string& name, bool nodes, std::size_t coordinates, bool names,
+                         bool typed = true, bool shaped = true) {
     const std::string path = dir.file(name);
     int id = 0, d_nodes = 0, d_coord = 0, d_blk = 0, d_el = 0, d_per = 0, d_var = 0, v = 0;
     EXPECT_EQ(nc_create(path.c_str(), NC_64BIT_OFFSET | NC_CLOBBER, &id), NC_NOERR);
@@ -175,9 +178,10 @@ TEST(LibraryCounts, ExodusBlocksWithoutNodesShortCoordinatesAndUnnamedResultsAre
     nc_def_dim(id, "num_nod_per_el1", 4, &d_per);
     nc_def_dim(id, "num_nod_var", 1, &d_var);
     nc_def_var(id, "coordx", NC_DOUBLE, 1, &d_coord, &v);
-    const int connect_dims[2] = {d_el, d_per};
+    const int connect_dims[2] = {shaped ? d_el : d_per, shaped ? d_per : d_el};
     int connect = 0;
     nc_def_var(id, "connect1", NC_INT, 2, connect_dims, &connect);
+    if (typed) nc_put_att_text(id, connect, "elem_type", 5, "TETRA");
     if (names) nc_def_var(id, "name_nod_var", NC_CHAR, 1, &d_var, &v);
     nc_enddef(id);
     const int ids[4] = {1, 2, 3, 4};
@@ -192,5 +196,13 @@ TEST(LibraryCounts, ExodusBlocksWithoutNodesShortCoordinatesAndUnnamedResultsAre
             std::string::npos);
   EXPECT_NE(write("unnamed.exo", true, 4, false)
                 .find("unnamed.exo: corrupt: it declares 1 result variables ('num_nod_var') but has no 'name_nod_var'"),
+            std::string::npos);
+  EXPECT_NE(write("untyped.exo", true, 4, true, false)
+                .find("untyped.exo: corrupt: element block 1 of 1: its connectivity 'connect1' has no text attribute "
+                      "'elem_type'"),
+            std::string::npos);
+  EXPECT_NE(write("swapped.exo", true, 4, true, true, false)
+                .find("swapped.exo: corrupt: element block 1 of 1: its connectivity 'connect1' is not shaped "
+                      "(num_el_in_blk1, num_nod_per_el1)"),
             std::string::npos);
 }
