@@ -27,8 +27,8 @@ std::optional<std::uint64_t> hdf5_end_of_file(const std::string& path);
 // Checks a netCDF file (Exodus II is netCDF) before VTK's Exodus reader, which does not check and
 // crashes on a truncated file: a classic file must hold every byte its header places, a netCDF-4
 // one every byte its HDF5 superblock says the file has; a classic header's counts must fit in the
-// file and its variables have known types; element blocks need nodes, an elem_type and a connectivity of their shape, coordinates one value per
-// node, declared results their names; every variable must read, and element connectivity must name
-// existing nodes. Throws InputError.
+// file and its variables have known types; element blocks need nodes, an elem_type and a
+// connectivity of their shape, coordinates one value per node, declared results their names; every
+// variable must read, and element connectivity must name existing nodes. Throws InputError.
 void check_netcdf_readable(const std::string& path);
 }  // namespace cellproj
