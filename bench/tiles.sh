@@ -3,7 +3,8 @@
 # side by side in one run (bench/ab_frames.sh, A = --compositing stream, B = tiles, 2 threads, the
 # pictures compared bit for bit): the 1M-tetrahedra box at 1024² (4 methods), the 1M-hexahedra
 # swirl at 1024² (whole cells), tets-10k at 1024²; then tiles on 1 and 2 threads (the speed-up), and
-# the straddle (visits per cell) of 16-, 32- and 64-row tiles.
+# the straddle (visits per cell) of 16-, 32- and 64-row tiles; the 1- and 2-thread lines give the
+# sort's serial share and the phase speed-up that docs/methods.md's Amdahl figures come from.
 # usage: bench/tiles.sh [BUILD_DIR] [ROUNDS=4]   (about 8 minutes)
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -25,7 +26,9 @@ for m in pt-linear pt-breakpoints; do
   for t in 1 2; do
     "$exe" render "$work/box_1m.json" --method $m --threads $t --frames 3 -o "$work/t.png" --stats 2>&1 >/dev/null |
       tail -1 | python3 -c "import json, sys; j = json.load(sys.stdin)
-print('$m threads $t: %.3f s, %d tiles, %.3f visits per cell' % (j['frame_seconds'], j['tiles'], j['tile_visits'] / j['cells']))"
+p = j['phase_seconds']
+print('$m threads $t: %.3f s (sort %.3f s, project and composite %.3f s), %d tiles, %.3f visits per cell' % (
+      j['frame_seconds'], p['sort'], p['project and composite'], j['tiles'], j['tile_visits'] / j['cells']))"
   done
 done
 echo "tile height against straddle (1M box, 1024², pt-linear, 1 frame):"

@@ -37,22 +37,21 @@ struct HeaderCursor {
     else
       at += static_cast<std::size_t>(n);
   }
-  // Whether `count` entries of at least `each` bytes fit in the rest of the file; if not, says so
-  // in *problem: netCDF sizes its tables by such counts before it reads the entries (a 530-byte
-  // file declaring 16 million dimensions ran its hash map out of memory).
   // Stops the walk with *problem = what (a header netCDF itself misreads).
   void refuse(const std::string& what) {
     if (problem && ok) *problem = what;
     ok = false;
   }
+  // Whether `count` entries of at least `each` bytes fit in the rest of the file; if not, refuses:
+  // netCDF sizes its tables by such counts before it reads the entries (a 530-byte file declaring
+  // 16 million dimensions ran its hash map out of memory).
   bool fits(std::uint64_t count, std::uint64_t each, const char* what) {
     const std::uint64_t rest = file_size > at ? file_size - at : 0;
     if (!ok || count <= rest / each) return ok;
-    if (problem)
-      *problem = "its header declares " + std::to_string(count) + " " + what + " at byte " + std::to_string(at) +
-                 ", more than the " + std::to_string(rest) + " bytes after it can hold (at least " +
-                 std::to_string(each) + " bytes each)";
-    return ok = false;
+    refuse("its header declares " + std::to_string(count) + " " + what + " at byte " + std::to_string(at) +
+           ", more than the " + std::to_string(rest) + " bytes after it can hold (at least " + std::to_string(each) +
+           " bytes each)");
+    return false;
   }
 };
 
@@ -159,14 +158,15 @@ std::optional<ClassicHeader> read_classic_header(const std::string& path, std::s
   if (error) return std::nullopt;
   std::ifstream in(path, std::ios::binary);
   std::vector<unsigned char> bytes;
+  std::string refused;  // a problem is final (counts are checked against the whole file): read no more
   for (std::size_t want = 1 << 16;; want *= 16) {
     const std::size_t had = bytes.size();
     bytes.resize(want);
     in.read(reinterpret_cast<char*>(bytes.data() + had), static_cast<std::streamsize>(want - had));
     bytes.resize(had + static_cast<std::size_t>(in.gcount()));
-    auto header = walk_classic_header(bytes, file_size, problem);
-    if (header || (problem && !problem->empty()) || bytes.size() < want || want >= (std::size_t(1) << 28))
-      return header;
+    auto header = walk_classic_header(bytes, file_size, &refused);
+    if (!refused.empty() && problem) *problem = refused;
+    if (header || !refused.empty() || bytes.size() < want || want >= (std::size_t(1) << 28)) return header;
   }
 }
 
