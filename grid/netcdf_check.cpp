@@ -199,6 +199,55 @@ std::optional<std::uint64_t> hdf5_end_of_file(const std::string& path) {
   return base + end;
 }
 
+namespace {
+
+// Exodus II's global "maximum_name_length" sizes VTK's name buffers, while netCDF copies names of
+// up to len_name into them: outside 1..NC_MAX_NAME it overflowed them (fuzzed files with 0 and
+// -2147483616). Empty when the attribute is absent or fine.
+std::string name_length_problem(int id) {
+  nc_type type;
+  std::size_t len = 0;
+  if (nc_inq_att(id, NC_GLOBAL, "maximum_name_length", &type, &len) != NC_NOERR) return "";
+  long long value = 0;
+  if (type == NC_CHAR || type == NC_STRING || type == NC_FLOAT || type == NC_DOUBLE || len != 1 ||
+      nc_get_att_longlong(id, NC_GLOBAL, "maximum_name_length", &value) != NC_NOERR)
+    return "its attribute 'maximum_name_length' is not one integer";
+  if (value < 1 || value > NC_MAX_NAME)
+    return "its attribute 'maximum_name_length' is " + std::to_string(value) + ", outside [1, " +
+           std::to_string(NC_MAX_NAME) + "]";
+  return "";
+}
+
+// Exodus II gives each object an id (its first property, "ID": eb_prop1 for element blocks) that
+// must be unique within its kind: VTK's reader maps ids to objects, and repeated ids crashed it (all
+// 0) or merged two blocks into one, silently (1, 1, 2, 3). Empty when every id is distinct.
+std::string repeated_id_problem(int id) {
+  static const std::pair<const char*, const char*> kinds[] = {
+      {"eb", "element block"}, {"ns", "node set"},     {"ss", "side set"},    {"em", "element map"},
+      {"nm", "node map"},      {"ed", "edge block"},   {"fa", "face block"},  {"es", "edge set"},
+      {"fs", "face set"},      {"els", "element set"}, {"edm", "edge map"},   {"fam", "face map"}};
+  for (const auto& [prefix, kind] : kinds) {
+    const std::string name = std::string(prefix) + "_prop1";
+    int v = -1, ndims = 0, dim = -1;
+    std::size_t count = 0;
+    if (nc_inq_varid(id, name.c_str(), &v) != NC_NOERR || nc_inq_varndims(id, v, &ndims) != NC_NOERR || ndims != 1 ||
+        nc_inq_vardimid(id, v, &dim) != NC_NOERR || nc_inq_dimlen(id, dim, &count) != NC_NOERR || count < 2)
+      continue;
+    std::vector<long long> ids(count);
+    if (nc_get_var_longlong(id, v, ids.data()) != NC_NOERR) continue;  // the read loop names the failure
+    std::vector<std::size_t> order(count);
+    for (std::size_t i = 0; i < count; ++i) order[i] = i;
+    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
+    for (std::size_t k = 1; k < count; ++k)
+      if (ids[order[k]] == ids[order[k - 1]])
+        return std::string(kind) + "s " + std::to_string(order[k - 1] + 1) + " and " + std::to_string(order[k] + 1) +
+               " both have the id " + std::to_string(ids[order[k]]) + " ('" + name + "'); ids must be unique";
+  }
+  return "";
+}
+
+}  // namespace
+
 void check_netcdf_readable(const std::string& path) {
   // A netCDF-4 file is HDF5: its superblock says where the file ends, and HDF5 refuses a file cut
   // before that only with "HDF error".
@@ -303,6 +352,8 @@ void check_netcdf_readable(const std::string& path) {
       refuse("truncated: the header places variable '" + placed->last_variable + "' up to byte " +
              std::to_string(placed->data_end) + ", the file has " + std::to_string(file) + " bytes");
   }
+  for (const std::string& problem : {name_length_problem(id), repeated_id_problem(id)})
+    if (!problem.empty()) refuse("corrupt: " + problem);
   std::vector<unsigned char> buf;
   for (int v = 0; v < nvars; ++v) {
     std::size_t count = 0, size = 0;

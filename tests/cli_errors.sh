@@ -352,6 +352,12 @@ expect 1 "dims.exo: corrupt: its header declares 16777216 dimensions at byte 16,
 # opening it (a floating-point exception in a fuzz run).
 cp "$src/tests/fuzz/regressions/exodus/crash-f011fcb3e88d9105a76805b3c250a9105505be84" "$tmp/type.exo"
 expect 1 "type.exo: corrupt: variable 'eb_prop1' has the unknown type 12" -- info "$tmp/type.exo"
+# Element block ids all 0 (VTK's reader crashed in BuildSIL), and a maximum_name_length of 0
+# (netCDF wrote names past the buffers VTK sized by it): fuzz inputs.
+cp "$src/tests/fuzz/regressions/exodus/crash-6ca593643c7d652ff6abfb7d9b4240c500866b9c" "$tmp/ids.exo"
+expect 1 "ids.exo: corrupt: element blocks 1 and 2 both have the id 0 \\('eb_prop1'\\); ids must be unique" -- info "$tmp/ids.exo"
+cp "$src/tests/fuzz/regressions/exodus/crash-86d96a60e213e0de1b3b1c1a851a698d3576a558" "$tmp/names.exo"
+expect 1 "names.exo: corrupt: its attribute 'maximum_name_length' is 0, outside \\[1, 256\\]" -- info "$tmp/names.exo"
 # A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
 # array with it and wrote past it), and a structured grid with an array named field_strength (VTK
 # 9.1's metadata pass took the name for a FIELD block and crashed on a good file).

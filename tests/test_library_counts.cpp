@@ -206,3 +206,50 @@ TEST(LibraryCounts, ExodusBlocksWithoutNodesTypeOrShapeShortCoordinatesAndUnname
                       "(num_el_in_blk1, num_nod_per_el1)"),
             std::string::npos);
 }
+
+TEST(LibraryCounts, ExodusRepeatedBlockIdsAndNameLengthsOutOfRangeAreRefused) {
+  // Fuzzed files: element block ids all 0 crashed VTK's reader (BuildSIL), and ids 1, 1, 2, 3 lost
+  // a block without a word; a maximum_name_length of 0 or below made netCDF write names past the
+  // buffers VTK sized by it.
+  test::TempDir dir;
+  const auto write = [&](const std::string& name, std::vector<int> ids, int max_name_length) {
+    const std::string path = dir.file(name);
+    int id = 0, d_nodes = 0, d_blk = 0, v = 0;
+    EXPECT_EQ(nc_create(path.c_str(), NC_64BIT_OFFSET | NC_CLOBBER, &id), NC_NOERR);
+    nc_def_dim(id, "num_nodes", 4, &d_nodes);
+    nc_def_dim(id, "num_el_blk", ids.size(), &d_blk);
+    nc_def_var(id, "coordx", NC_DOUBLE, 1, &d_nodes, &v);
+    int prop = 0;
+    nc_def_var(id, "eb_prop1", NC_INT, 1, &d_blk, &prop);
+    nc_put_att_text(id, prop, "name", 2, "ID");
+    std::vector<int> connect(ids.size());
+    for (std::size_t b = 0; b < ids.size(); ++b) {
+      const std::string n = std::to_string(b + 1);
+      int dims[2];
+      nc_def_dim(id, ("num_el_in_blk" + n).c_str(), 1, &dims[0]);
+      nc_def_dim(id, ("num_nod_per_el" + n).c_str(), 4, &dims[1]);
+      nc_def_var(id, ("connect" + n).c_str(), NC_INT, 2, dims, &connect[b]);
+      nc_put_att_text(id, connect[b], "elem_type", 5, "TETRA");
+    }
+    nc_put_att_int(id, NC_GLOBAL, "maximum_name_length", NC_INT, 1, &max_name_length);
+    nc_enddef(id);
+    nc_put_var_int(id, prop, ids.data());
+    const int nodes[4] = {1, 2, 3, 4};
+    for (int c : connect) nc_put_var_int(id, c, nodes);
+    EXPECT_EQ(nc_close(id), NC_NOERR);
+    return test::input_error([&] { check_netcdf_readable(path); });
+  };
+  EXPECT_EQ(write("good.exo", {7, 8, 0}, 32), "");
+  EXPECT_EQ(write("longest.exo", {7}, 256), "");
+  EXPECT_NE(write("zeros.exo", {0, 0}, 32)
+                .find("zeros.exo: corrupt: element blocks 1 and 2 both have the id 0 ('eb_prop1'); ids must be unique"),
+            std::string::npos);
+  EXPECT_NE(write("repeat.exo", {1, 2, 1}, 32)
+                .find("repeat.exo: corrupt: element blocks 1 and 3 both have the id 1"),
+            std::string::npos);
+  EXPECT_NE(write("empty.exo", {1}, 0)
+                .find("empty.exo: corrupt: its attribute 'maximum_name_length' is 0, outside [1, 256]"),
+            std::string::npos);
+  EXPECT_NE(write("negative.exo", {1}, -2147483616).find("is -2147483616, outside [1, 256]"), std::string::npos);
+  EXPECT_NE(write("long.exo", {1}, 257).find("is 257, outside [1, 256]"), std::string::npos);
+}
