@@ -1,6 +1,7 @@
 #include "grid/netcdf_check.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdint>
 #include <cstring>
 #include <filesystem>
@@ -14,6 +15,7 @@
 #include <netcdf.h>
 
 #include "base/error.hpp"
+#include "grid/exodus_rules.hpp"
 
 namespace cellproj {
 namespace {
@@ -199,55 +201,6 @@ std::optional<std::uint64_t> hdf5_end_of_file(const std::string& path) {
   return base + end;
 }
 
-namespace {
-
-// Exodus II's global "maximum_name_length" sizes VTK's name buffers, while netCDF copies names of
-// up to len_name into them: outside 1..NC_MAX_NAME it overflowed them (fuzzed files with 0 and
-// -2147483616). Empty when the attribute is absent or fine.
-std::string name_length_problem(int id) {
-  nc_type type;
-  std::size_t len = 0;
-  if (nc_inq_att(id, NC_GLOBAL, "maximum_name_length", &type, &len) != NC_NOERR) return "";
-  long long value = 0;
-  if (type == NC_CHAR || type == NC_STRING || type == NC_FLOAT || type == NC_DOUBLE || len != 1 ||
-      nc_get_att_longlong(id, NC_GLOBAL, "maximum_name_length", &value) != NC_NOERR)
-    return "its attribute 'maximum_name_length' is not one integer";
-  if (value < 1 || value > NC_MAX_NAME)
-    return "its attribute 'maximum_name_length' is " + std::to_string(value) + ", outside [1, " +
-           std::to_string(NC_MAX_NAME) + "]";
-  return "";
-}
-
-// Exodus II gives each object an id (its first property, "ID": eb_prop1 for element blocks) that
-// must be unique within its kind: VTK's reader maps ids to objects, and repeated ids crashed it (all
-// 0) or merged two blocks into one, silently (1, 1, 2, 3). Empty when every id is distinct.
-std::string repeated_id_problem(int id) {
-  static const std::pair<const char*, const char*> kinds[] = {
-      {"eb", "element block"}, {"ns", "node set"},     {"ss", "side set"},    {"em", "element map"},
-      {"nm", "node map"},      {"ed", "edge block"},   {"fa", "face block"},  {"es", "edge set"},
-      {"fs", "face set"},      {"els", "element set"}, {"edm", "edge map"},   {"fam", "face map"}};
-  for (const auto& [prefix, kind] : kinds) {
-    const std::string name = std::string(prefix) + "_prop1";
-    int v = -1, ndims = 0, dim = -1;
-    std::size_t count = 0;
-    if (nc_inq_varid(id, name.c_str(), &v) != NC_NOERR || nc_inq_varndims(id, v, &ndims) != NC_NOERR || ndims != 1 ||
-        nc_inq_vardimid(id, v, &dim) != NC_NOERR || nc_inq_dimlen(id, dim, &count) != NC_NOERR || count < 2)
-      continue;
-    std::vector<long long> ids(count);
-    if (nc_get_var_longlong(id, v, ids.data()) != NC_NOERR) continue;  // the read loop names the failure
-    std::vector<std::size_t> order(count);
-    for (std::size_t i = 0; i < count; ++i) order[i] = i;
-    std::stable_sort(order.begin(), order.end(), [&](std::size_t a, std::size_t b) { return ids[a] < ids[b]; });
-    for (std::size_t k = 1; k < count; ++k)
-      if (ids[order[k]] == ids[order[k - 1]])
-        return std::string(kind) + "s " + std::to_string(order[k - 1] + 1) + " and " + std::to_string(order[k] + 1) +
-               " both have the id " + std::to_string(ids[order[k]]) + " ('" + name + "'); ids must be unique";
-  }
-  return "";
-}
-
-}  // namespace
-
 void check_netcdf_readable(const std::string& path) {
   // A netCDF-4 file is HDF5: its superblock says where the file ends, and HDF5 refuses a file cut
   // before that only with "HDF error".
@@ -280,35 +233,17 @@ void check_netcdf_readable(const std::string& path) {
   if (int var; blocks > 0 && nc_inq_varid(id, "eb_status", &var) == NC_NOERR) {
     std::size_t len = 0;
     int dim = 0, ndims = 0;
-    if (nc_inq_varndims(id, var, &ndims) == NC_NOERR && ndims == 1 && nc_inq_vardimid(id, var, &dim) == NC_NOERR &&
-        nc_inq_dimlen(id, dim, &len) == NC_NOERR && len == blocks)
-      nc_get_var_int(id, var, status.data());
-  }
-  for (std::size_t b = 1; b <= blocks; ++b) {
-    if (status[b - 1] == 0) continue;
-    const std::string n = std::to_string(b);
-    int found = 0, shape[2] = {-1, -1};  // the block's element count and nodes per element
-    for (int k : {0, 1}) {
-      const std::string dim = (k == 0 ? "num_el_in_blk" : "num_nod_per_el") + n;
-      if (nc_inq_dimid(id, dim.c_str(), &shape[k]) != NC_NOERR)
-        refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + " has no dimension '" + dim + "'");
-    }
-    if (nc_inq_varid(id, ("connect" + n).c_str(), &found) != NC_NOERR)
-      refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + " has no connectivity variable 'connect" +
-             n + "'");
-    // VTK reads connectN as num_el_in_blkN x num_nod_per_elN whatever its own shape (a fuzzed file
-    // with connect1 and connect2 swapped crashed it).
-    int ndims = 0, dims[2] = {-1, -1};
-    if (nc_inq_varndims(id, found, &ndims) != NC_NOERR || ndims != 2 || nc_inq_vardimid(id, found, dims) != NC_NOERR ||
-        dims[0] != shape[0] || dims[1] != shape[1])
-      refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + ": its connectivity 'connect" + n +
-             "' is not shaped (num_el_in_blk" + n + ", num_nod_per_el" + n + ")");
-    // VTK registers a block by its element type; without one it looked up a block it never sorted.
     nc_type type;
-    if (nc_inq_atttype(id, found, "elem_type", &type) != NC_NOERR || type != NC_CHAR)
-      refuse("corrupt: element block " + n + " of " + std::to_string(blocks) + ": its connectivity 'connect" + n +
-             "' has no text attribute 'elem_type'");
+    if (nc_inq_varndims(id, var, &ndims) != NC_NOERR || ndims != 1 || nc_inq_vardimid(id, var, &dim) != NC_NOERR ||
+        nc_inq_dimlen(id, dim, &len) != NC_NOERR || len != blocks || nc_inq_vartype(id, var, &type) != NC_NOERR ||
+        !integer_type(type))  // VTK's reader read a text eb_status as numbers and freed a block twice
+      refuse("corrupt: 'eb_status' is not one integer per element block (num_el_blk)");
+    nc_get_var_int(id, var, status.data());
   }
+  for (std::size_t b = 1; b <= blocks; ++b)
+    if (status[b - 1] != 0)
+      if (const std::string problem = block_problem(id, b); !problem.empty())
+        refuse("corrupt: element block " + std::to_string(b) + " of " + std::to_string(blocks) + problem);
   auto elements = [&](int v, std::size_t& count, std::size_t& size) {
     int ndims = 0;
     nc_type type;
@@ -359,15 +294,18 @@ void check_netcdf_readable(const std::string& path) {
     std::size_t count = 0, size = 0;
     const nc_type type = elements(v, count, size);
     if (count == 0 || type == NC_CHAR) continue;
-    buf.resize(count * size);
-    if (int err = nc_get_var(id, v, buf.data()); err != NC_NOERR) {
-      char name[NC_MAX_NAME + 1] = {};
-      nc_inq_varname(id, v, name);
-      refuse(std::string("truncated or corrupt: variable '") + name + "' cannot be read (" + nc_strerror(err) + ")");
-    }
-    // Element connectivity (1-based node numbers): VTK's reader indexes with it unchecked.
     char name[NC_MAX_NAME + 1] = {};
     nc_inq_varname(id, v, name);
+    // A classic file stores every value: no variable holds more bytes than the file (a record count
+    // of 2^32 - 1, "streaming", made netCDF report 4294967295 records of a 5 kB file).
+    if (placed && count > std::filesystem::file_size(path) / size)
+      refuse(std::string("corrupt: variable '") + name + "' declares " + std::to_string(count) + " values of " +
+             std::to_string(size) + " bytes, more than the file's " + std::to_string(std::filesystem::file_size(path)) +
+             " bytes hold");
+    buf.resize(count * size);
+    if (int err = nc_get_var(id, v, buf.data()); err != NC_NOERR)
+      refuse(std::string("truncated or corrupt: variable '") + name + "' cannot be read (" + nc_strerror(err) + ")");
+    // Element connectivity (1-based node numbers): VTK's reader indexes with it unchecked.
     if (std::string(name).rfind("connect", 0) == 0 && nodes > 0) {
       std::vector<long long> ids(count);
       nc_get_var_longlong(id, v, ids.data());

@@ -28,8 +28,10 @@ std::optional<std::uint64_t> hdf5_end_of_file(const std::string& path);
 // crashes on a truncated file: a classic file must hold every byte its header places, a netCDF-4
 // one every byte its HDF5 superblock says the file has; a classic header's counts must fit in the
 // file and its variables have known types; element blocks need nodes, an elem_type and a
-// connectivity of their shape, coordinates one value per node, declared results their names, object
-// ids (eb_prop1, ...) must be unique and maximum_name_length within 1..NC_MAX_NAME; every
-// variable must read, and element connectivity must name existing nodes. Throws InputError.
+// connectivity of their shape holding integers and a node count their elem_type has, coordinates
+// one value per node, declared results their names, object ids (eb_prop1, ...) and eb_status
+// integers, ids unique, maximum_name_length within 1..NC_MAX_NAME, no classic variable more
+// values than the file's bytes; every variable must read, and element connectivity must name
+// existing nodes. Throws InputError.
 void check_netcdf_readable(const std::string& path);
 }  // namespace cellproj

@@ -6,6 +6,7 @@
 
 #include <netcdf.h>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -252,4 +253,57 @@ TEST(LibraryCounts, ExodusRepeatedBlockIdsAndNameLengthsOutOfRangeAreRefused) {
             std::string::npos);
   EXPECT_NE(write("negative.exo", {1}, -2147483616).find("is -2147483616, outside [1, 256]"), std::string::npos);
   EXPECT_NE(write("long.exo", {1}, 257).find("is 257, outside [1, 256]"), std::string::npos);
+}
+
+TEST(LibraryCounts, ExodusNodeCountsOfTheElementTypeIntegerStatusesAndRecordCountsAreChecked) {
+  // Fuzzed files: a HEX block of 5 nodes per element (VTK's reader built hexahedra of 8 and read
+  // past the block, crashing or shifting every node after), a text eb_status (VTK freed a block
+  // twice), and a record count of 2^32 - 1 in a 5 kB file (netCDF reported that many records).
+  test::TempDir dir;
+  const auto write = [&](const std::string& name, const char* elem_type, int per_element, nc_type status_type,
+                         bool streaming = false) {
+    const std::string path = dir.file(name);
+    int id = 0, d_nodes = 0, d_blk = 0, d_time = 0, dims[2], v = 0, connect = 0, status = 0;
+    EXPECT_EQ(nc_create(path.c_str(), NC_CLOBBER, &id), NC_NOERR);
+    nc_def_dim(id, "time_step", NC_UNLIMITED, &d_time);
+    nc_def_dim(id, "num_nodes", 8, &d_nodes);
+    nc_def_dim(id, "num_el_blk", 1, &d_blk);
+    nc_def_dim(id, "num_el_in_blk1", 1, &dims[0]);
+    nc_def_dim(id, "num_nod_per_el1", static_cast<std::size_t>(per_element), &dims[1]);
+    nc_def_var(id, "time_whole", NC_DOUBLE, 1, &d_time, &v);
+    nc_def_var(id, "eb_status", status_type, 1, &d_blk, &status);
+    nc_def_var(id, "connect1", NC_INT, 2, dims, &connect);
+    nc_put_att_text(id, connect, "elem_type", std::strlen(elem_type), elem_type);
+    nc_enddef(id);
+    const std::size_t first = 0;
+    const double t = 0.0;
+    nc_put_var1_double(id, v, &first, &t);
+    if (status_type == NC_CHAR) nc_put_var_text(id, status, "\1");
+    else nc_put_var1_int(id, status, &first, &per_element);
+    std::vector<int> nodes(static_cast<std::size_t>(per_element));
+    for (int k = 0; k < per_element; ++k) nodes[static_cast<std::size_t>(k)] = 1 + k % 8;
+    nc_put_var_int(id, connect, nodes.data());
+    EXPECT_EQ(nc_close(id), NC_NOERR);
+    if (streaming) {  // numrecs, bytes 4 to 7 of a CDF-1 header: 2^32 - 1 means "streaming"
+      std::fstream f(path, std::ios::in | std::ios::out | std::ios::binary);
+      f.seekp(4);
+      f.write("\xff\xff\xff\xff", 4);
+    }
+    return test::input_error([&] { check_netcdf_readable(path); });
+  };
+  EXPECT_EQ(write("hex.exo", "HEX8", 8, NC_INT), "");
+  EXPECT_EQ(write("wedge.exo", "wedge", 6, NC_SHORT), "");
+  EXPECT_EQ(write("tet10.exo", "TETRA10", 10, NC_INT), "");  // quadratic: left to VTK, then refused by type
+  EXPECT_NE(write("five.exo", "HEX", 5, NC_INT)
+                .find("five.exo: corrupt: element block 1 of 1: its elements of type 'HEX' have 5 nodes each "
+                      "(num_nod_per_el1); that type has 8, 9, 20 or 27"),
+            std::string::npos);
+  EXPECT_NE(write("one.exo", "pyramid", 1, NC_INT).find("type 'pyramid' have 1 node each"), std::string::npos);
+  EXPECT_NE(write("text.exo", "HEX", 8, NC_CHAR)
+                .find("text.exo: corrupt: 'eb_status' is not one integer per element block (num_el_blk)"),
+            std::string::npos);
+  EXPECT_NE(write("stream.exo", "HEX", 8, NC_INT, true)
+                .find("stream.exo: corrupt: variable 'time_whole' declares 4294967295 values of 8 bytes, more than "
+                      "the file's"),
+            std::string::npos);
 }
