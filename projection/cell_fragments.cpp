@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include <tbb/blocked_range.h>
@@ -265,7 +266,7 @@ bool CellFragments::load_cell(const std::int64_t* ids, CellType type, ScreenVert
 }
 
 CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellType type, CellScratch& p,
-                                                  ProjectionCounters& counters) const {
+                                                  ProjectionCounters& counters, bool shade) const {
   ScreenVertex v[8];
   if (!load_cell(ids, type, v, p, counters)) return Seen::behind_eye;
   p.tri.clear();
@@ -278,21 +279,31 @@ CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellT
   }
   if (method_.gouraud) {
     p.corner.resize(3 * p.tri.size());
-    for (std::size_t t = 0; t < p.tri.size(); ++t)
-      for (int k = 0; k < 3; ++k) p.corner[3 * t + k] = shade(p.tri[t].v[k]);
+    if (shade)
+      for (std::size_t t = 0; t < p.tri.size(); ++t) shade_corners(p, t, t - 1);
   }
   return Seen::projected;
 }
 
+void CellFragments::shade_corners(CellScratch& p, std::size_t t, std::size_t reuse) const {
+  // The same thick vertex, bit for bit, gives the same corner: shaded once.
+  for (int k = 0; k < 3; ++k) {
+    const ThickVertex& v = p.tri[t].v[k];
+    int m = 0;
+    while (reuse < t && m < 3 && std::memcmp(&p.tri[reuse].v[m], &v, sizeof v) != 0) ++m;
+    p.corner[3 * t + k] = reuse < t && m < 3 ? p.corner[3 * reuse + m] : shade(v);
+  }
+}
+
 CellFragments::Seen CellFragments::triangles_of(const std::int64_t* ids, CellType type, CellScratch& p,
-                                                ProjectionCounters& counters) const {
+                                                ProjectionCounters& counters, bool shade_cells) const {
   if (type == CellType::Tetra) return tet_triangles({ids[0], ids[1], ids[2], ids[3]}, p, counters);
-  return cell_triangles(ids, type, p, counters);
+  return cell_triangles(ids, type, p, counters, shade_cells);
 }
 
 void CellFragments::triangles(const std::int64_t* ids, CellType type, std::int64_t cell, std::vector<GLCorner>& out,
                               CellScratch& p, ProjectionCounters& counters) const {
-  if (triangles_of(ids, type, p, counters) != Seen::projected) return;
+  if (triangles_of(ids, type, p, counters, true) != Seen::projected) return;
   const bool table = method_.opacity_table;
   // Texel centres: node i of n sits at (i + 0.5) / n, so GL_LINEAR reads the table as OpacityTable does.
   const double n = table ? table_->size() : 1.0;
@@ -331,7 +342,7 @@ template <class Emit>
 void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                                  ProjectionCounters& counters) const {
   if (type != CellType::Tetra && !method_.gouraud) return project_layers(ids, type, rows, emit, p, counters);
-  const Seen seen = triangles_of(ids, type, p, counters);
+  const Seen seen = triangles_of(ids, type, p, counters, false);
   if (seen == Seen::behind_eye && type == CellType::Tetra)
     ray_cast({ids[0], ids[1], ids[2], ids[3]}, rows, emit, counters);
   if (seen != Seen::projected) return;
@@ -343,8 +354,18 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
     // Colour, opacity (pt-table: kappa and thickness) are affine along a row of a triangle (Gouraud
     // shading, MWSC section 2): a run of pixels starts from its first pixel's values and steps.
     const bool table = method_.opacity_table;
+    // A cell's image-plane subdivision has many triangles covering no pixel centre: their corners
+    // are not shaded (a tetrahedron's were, from its thick vertex and the point optics).
+    const bool shade_when_drawn = type != CellType::Tetra;
+    std::size_t shaded = p.tri.size();  // the last triangle shaded here (none yet)
     for (std::size_t t = 0; t < p.tri.size(); ++t) {
       const ThickVertex* V = p.tri[t].v;
+      if (shade_when_drawn) {
+        const PixelBox box({V[0].x, V[0].y}, {V[1].x, V[1].y}, {V[2].x, V[2].y}, width, height);
+        if (box.empty() || box.j1 < rows.begin || box.j0 >= rows.end) continue;
+        shade_corners(p, t, shaded);
+        shaded = t;
+      }
       const GouraudCorner* g = &p.corner[3 * t];
       // A corner quantity weighted by w: at a pixel (the weights) or its change per pixel (their steps).
       const auto mix = [g](const double* w, auto GouraudCorner::*q) {

@@ -116,11 +116,18 @@ class CellFragments {
                  ProjectionCounters& counters) const;
   // The tetrahedron's or cell's triangles into p (counted); the tetrahedra and cells not projected
   // say why.
-  Seen triangles_of(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters) const;
+  // A cell's corners (Gouraud methods) are shaded with its triangles when shade_cells, else left
+  // to shade_corners() as each triangle is drawn (a tetrahedron's always are).
+  Seen triangles_of(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters,
+                    bool shade_cells) const;
   Seen tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters) const;
-  Seen cell_triangles(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters) const;
+  Seen cell_triangles(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters,
+                      bool shade) const;
   // The corner of a Gouraud-shaded method from a thick vertex's segment (MWSC section 2).
   GouraudCorner shade(const ThickVertex& t) const;
+  // Triangle t's three corners into p.corner, each copied from triangle `reuse`'s (when reuse < t)
+  // where that has the same thick vertex, bit for bit: a polygon's fan triangles share two.
+  void shade_corners(CellScratch& p, std::size_t t, std::size_t reuse) const;
 
   const ScreenPoints& screen_;
   const PixelRays& rays_;

@@ -100,7 +100,10 @@ struct PixelBox {
 class TriangleCoverage {
  public:
   TriangleCoverage(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height)
-      : TriangleCoverage(p0, p1, p2, raster_detail::edge(p0, p1, p2.x, p2.y), width, height) {}
+      : TriangleCoverage(p0, p1, p2, PixelBox(p0, p1, p2, width, height)) {}
+  // The same with the triangle's pixel box already known (PixelBox(p0, p1, p2, width, height)).
+  TriangleCoverage(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, const PixelBox& box)
+      : TriangleCoverage(p0, p1, p2, raster_detail::edge(p0, p1, p2.x, p2.y), box) {}
   // Rows first_row() <= j <= last_row() may hold covered centres (none when last < first).
   int first_row() const { return box_.j0; }
   int last_row() const { return box_.j1; }
@@ -135,14 +138,14 @@ class TriangleCoverage {
 
  private:
   // The edges of (p0, p1, p2), or of (p0, p2, p1) when that turns negative.
-  TriangleCoverage(const glm::dvec2& p0, const glm::dvec2& p1, const glm::dvec2& p2, double area, int width, int height)
+  TriangleCoverage(const glm::dvec2& p0, const glm::dvec2& p1, const glm::dvec2& p2, double area, const PixelBox& box)
       : swapped_(area < 0),
         f0_(p0, swapped_ ? p2 : p1),
         f1_(swapped_ ? p2 : p1, swapped_ ? p1 : p2),
         f2_(swapped_ ? p1 : p2, p0),
         inv_(1.0 / std::abs(area)) {
     if (!(area != 0.0) || !std::isfinite(area)) return;  // degenerate: covers nothing
-    box_ = PixelBox(p0, p1, p2, width, height);
+    box_ = box;
   }
   bool swapped_;
   raster_detail::EdgeFunction f0_, f1_, f2_;
@@ -189,14 +192,15 @@ void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int
 // width x height image on which the triangle covers the centres of pixels begin <= i < end (and at
 // least one), with the weights w at the centre of pixel `begin`: for shading a run of pixels by
 // plane equations instead of weights per pixel.
-// Only rows row_begin <= j < row_end are visited (an image tile's rows); a triangle whose centres
-// all lie outside them is passed over before its set-up (steps() is not called).
+// Only rows row_begin <= j < row_end are visited (an image tile's rows). A triangle whose box holds
+// no pixel centre of them (most of a small cell's image-plane subdivision) is passed over before
+// its set-up: steps() is not called.
 template <class Steps, class Span>
 void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, int row_begin,
                               int row_end, Steps&& steps, Span&& span) {
-  // Rows j it may cover have ymin <= j + 0.5 <= ymax (NaN passes on to the coverage's own test).
-  if (std::max({p0.y, p1.y, p2.y}) - 0.5 < row_begin || std::min({p0.y, p1.y, p2.y}) - 0.5 > row_end - 1) return;
-  const TriangleCoverage t(p0, p1, p2, width, height);
+  const PixelBox box(p0, p1, p2, width, height);  // empty for NaN
+  if (box.empty() || box.j1 < row_begin || box.j0 >= row_end) return;
+  const TriangleCoverage t(p0, p1, p2, box);
   double w[3];
   t.weight_steps(w);
   steps(static_cast<const double*>(w));
