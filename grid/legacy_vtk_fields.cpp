@@ -62,8 +62,14 @@ class DatasetWalk {
     std::string word, type;
     if (!(in_ >> word >> type) || !starts(lower(word), "dataset")) return;  // VTK matches both by prefix
     type = lower(type);
+    if (starts(type, "polydata"))  // VTK's reader indexed POLYGONS' ids unchecked (a crash), for nothing
+      throw InputError(where(path_, "its dataset is POLYDATA (surfaces, lines and points), which holds no volume "
+                                    "cells: cellproj renders unstructured, structured and rectilinear grids and "
+                                    "structured points"));
     const bool unstructured = starts(type, "unstructured_grid"), structured = starts(type, "structured_grid");
-    if (!unstructured && !structured) return;
+    const bool rectilinear = starts(type, "rectilinear_grid");
+    if (!unstructured && !structured && !rectilinear) return;
+    std::int64_t dims[3] = {-1, -1, -1};  // a rectilinear grid's, once read
     while (in_ >> word) {
       word = lower(word);
       if (starts(word, "field")) {
@@ -97,6 +103,24 @@ class DatasetWalk {
         if (!cell_types(n)) return;
       } else if (structured && (starts(word, "dimensions") || starts(word, "extent"))) {
         if (numbers(word[0] == 'd' ? 3 : 6) < (word[0] == 'd' ? 3 : 6)) return;  // VTK's message
+      } else if (rectilinear && starts(word, "dimensions")) {
+        if (!(in_ >> dims[0] >> dims[1] >> dims[2])) return;  // VTK's message
+      } else if (rectilinear && word.size() > 1 && word[0] >= 'x' && word[0] <= 'z' && word.substr(1) == "_coordinates") {
+        // VTK's reader builds the points from DIMENSIONS and reads each axis's values unchecked: an
+        // axis with fewer values than its dimension gave coordinates from past the array.
+        const int axis = word[0] - 'x';
+        std::int64_t n = 0;
+        if (!(in_ >> n >> type)) return;
+        if (n < 0) refuse_count(std::string(1, static_cast<char>(std::toupper(word[0]))) + "_COORDINATES", n);
+        if (dims[axis] >= 0 && n != dims[axis])
+          throw InputError(where(path_, std::string(1, static_cast<char>(std::toupper(word[0]))) + "_COORDINATES holds " +
+                                            std::to_string(n) + " values for the " + std::to_string(dims[axis]) +
+                                            " points along its axis that DIMENSIONS gives"));
+        const int bytes = value_bytes(lower(type));
+        if (bytes == kVariable)
+          throw InputError(where(path_, word + " has the type '" + type.substr(0, 40) +
+                                            "', which VTK reads as strings: coordinates are numbers"));
+        if (!skip(n, bytes)) return;
       } else if (starts(word, "metadata")) {
         metadata();
       } else if (starts(word, "point_data") || starts(word, "cell_data")) {

@@ -371,6 +371,15 @@ cp "$src/tests/fuzz/regressions/vtk/crash-c7982eb7bfd2cd5f09bb3141237137c87a4621
 expect 1 "negfield.vtk: POINT_DATA's FIELD block 'FieldData', array 0 \\('scalar'\\): a negative count \\(1 components of -9 tuples\\)" -- info "$tmp/negfield.vtk"
 printf '# vtk DataFile Version 3.0\nsg\nASCII\nDATASET STRUCTURED_GRID\nDIMENSIONS 2 2 2\nPOINTS 8 float\n0 0 0 1 0 0 0 1 0 1 1 0 0 0 1 1 0 1 0 1 1 1 1 1\nPOINT_DATA 8\nSCALARS field_strength float 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7\n' >"$tmp/sg.vtk"
 expect 0 "points 8, cells 1: hexahedron 1" -- info "$tmp/sg.vtk"
+# A rectilinear grid's axis with fewer coordinates than DIMENSIONS gives (VTK's reader took the
+# missing ones from past its array: y up to 3e-41 and exit 0), and POLYDATA, whose out-of-range
+# polygon ids crashed VTK's reader though it holds no volume cells.
+printf '# vtk DataFile Version 3.0\nrg\nASCII\nDATASET RECTILINEAR_GRID\nDIMENSIONS 2 2 2\nX_COORDINATES 2 float\n0 1\nY_COORDINATES 1 float\n0\nZ_COORDINATES 2 float\n0 1\nPOINT_DATA 8\nSCALARS s float 1\nLOOKUP_TABLE default\n0 1 2 3 4 5 6 7\n' >"$tmp/rg.vtk"
+expect 1 "rg.vtk: Y_COORDINATES holds 1 values for the 2 points along its axis that DIMENSIONS gives" -- info "$tmp/rg.vtk"
+sed 's/^Y_COORDINATES 1 float$/Y_COORDINATES 2 float/; s/^0$/0 1/' "$tmp/rg.vtk" >"$tmp/rg2.vtk"
+expect 0 "points 8, cells 1: hexahedron 1" -- info "$tmp/rg2.vtk"
+printf '# vtk DataFile Version 3.0\npd\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 7\n' >"$tmp/pd.vtk"
+expect 1 "pd.vtk: its dataset is POLYDATA \\(surfaces, lines and points\\), which holds no volume cells" -- info "$tmp/pd.vtk"
 # Legacy .vtk structure VTK's reader follows without bounds: a cell count past the CELLS block, a
 # garbled version line (a format-5 body read as the older layout), offsets pointing anywhere.
 printf '# vtk DataFile Version 3.0\nt\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 4 double\n0 0 0 1 0 0 0 1 0 0 0 1\nCELLS 1 5\n9 0 1 2 3\nCELL_TYPES 1\n10\n' >"$tmp/count.vtk"

@@ -128,6 +128,35 @@ LOOKUP_TABLE t 1
     big_endian(&h, 8);
     sg << "\n";
   }
+  // A rectilinear grid (its axes' coordinates checked against DIMENSIONS) and structured points.
+  std::ofstream(out / "vtk/rectilinear-ascii.vtk") << R"(# vtk DataFile Version 3.0
+rg
+ASCII
+DATASET RECTILINEAR_GRID
+DIMENSIONS 3 2 2
+X_COORDINATES 3 float
+0 0.5 1
+Y_COORDINATES 2 float
+0 1
+Z_COORDINATES 2 double
+0 1
+POINT_DATA 12
+SCALARS s float 1
+LOOKUP_TABLE default
+0 1 2 3 4 5 6 7 8 9 10 11
+)";
+  std::ofstream(out / "vtk/points-ascii.vtk") << R"(# vtk DataFile Version 3.0
+sp
+ASCII
+DATASET STRUCTURED_POINTS
+DIMENSIONS 2 2 3
+ORIGIN 0 0 0
+SPACING 1 1 0.5
+POINT_DATA 12
+SCALARS s float 1
+LOOKUP_TABLE default
+0 1 2 3 4 5 6 7 8 9 10 11
+)";
   write_mesh(mixed, (out / "exodus/mixed.exo").string());
   write_cgns(tets, (out / "cgns/box-tets.cgns").string());
   write_cgns(box, (out / "cgns/box.cgns").string());
