@@ -68,13 +68,15 @@ HeaderCounts xml_counts(const std::string& path, const std::string& ext) {
   return c;
 }
 
-// Legacy VTK: the counts after the keywords "POINTS" and "CELLS" at a line's start. In a binary file
-// they sit between the arrays, so the whole file is scanned, a block at a time.
+// Legacy VTK: the counts after the keywords "POINTS" and "CELLS" at a line's start, or for the
+// grids without them (structured points, rectilinear) the points and cells of "DIMENSIONS nx ny nz".
+// In a binary file they sit between the arrays, so the whole file is scanned, a block at a time.
 HeaderCounts legacy_counts(const std::string& path) {
   HeaderCounts c;
   std::ifstream in(path, std::ios::binary);
   std::string block = block_for(path), carry;
-  bool points = false, cells = false;
+  bool points = false, cells = false, dimensions = false;
+  HeaderCounts grid;  // from DIMENSIONS
   while (!(points && cells) && in) {
     in.read(&block[0], static_cast<std::streamsize>(block.size()));
     const std::string text = carry + block.substr(0, static_cast<std::size_t>(in.gcount()));
@@ -85,8 +87,18 @@ HeaderCounts legacy_counts(const std::string& path) {
       *out = saturated(std::atof(text.c_str() + at + std::strlen(key)));
       *seen = true;
     }
+    if (const auto at = text.find("\nDIMENSIONS ");
+        !dimensions && at != std::string::npos && text.find('\n', at + 1) != std::string::npos) {
+      std::istringstream s(text.substr(at + 12, 96));
+      double n[3] = {1, 1, 1};
+      s >> n[0] >> n[1] >> n[2];
+      grid.points = saturated(n[0] * n[1] * n[2]);
+      grid.cells = saturated(std::max(n[0] - 1, 1.0) * std::max(n[1] - 1, 1.0) * std::max(n[2] - 1, 1.0));
+      dimensions = true;
+    }
     carry = text.substr(text.size() - std::min<std::size_t>(text.size(), 64));
   }
+  c.points = std::max(c.points, grid.points), c.cells = std::max(c.cells, grid.cells);
   return c;
 }
 

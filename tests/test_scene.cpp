@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
+#include "grid/read_mesh.hpp"
 #include "grid/write_mesh.hpp"
 #include "scene/prepare.hpp"
 #include "scene/scene_file.hpp"
@@ -71,6 +72,23 @@ TEST(MemoryBudget, CountsFromVtkXmlHeaders) {
   EXPECT_EQ(b.points, 40 * 32 * 32);
   EXPECT_EQ(b.cells, 39 * 31 * 31);
   EXPECT_GT(estimate_mesh_bytes(b), 0u);
+}
+
+TEST(MemoryBudget, CountsFromLegacyDimensionsWithoutPoints) {
+  // Structured points and rectilinear grids declare no POINTS or CELLS: their DIMENSIONS count, and
+  // what reading finds agrees.
+  test::TempDir dir;
+  std::ofstream(dir.file("sp.vtk")) << "# vtk DataFile Version 3.0\nsp\nASCII\nDATASET STRUCTURED_POINTS\n"
+                                       "DIMENSIONS 3 4 5\nORIGIN 0 0 0\nSPACING 1 1 1\n";
+  const HeaderCounts c = header_counts(dir.file("sp.vtk"));
+  EXPECT_EQ(c.points, 3 * 4 * 5);
+  EXPECT_EQ(c.cells, 2 * 3 * 4);
+  const Mesh m = read_mesh(dir.file("sp.vtk"));
+  EXPECT_EQ(m.n_points(), c.points);
+  EXPECT_EQ(m.n_cells(), c.cells);
+  std::ofstream(dir.file("huge.vtk")) << "# vtk DataFile Version 3.0\nrg\nASCII\nDATASET RECTILINEAR_GRID\n"
+                                         "DIMENSIONS 3000 3000 3000\nX_COORDINATES 3000 float\n";
+  EXPECT_EQ(header_counts(dir.file("huge.vtk")).points, std::int64_t(27000000000));
 }
 
 namespace cellproj {
