@@ -11,4 +11,8 @@ namespace cellproj {
 
 void check_vtk_xml_appended(const std::string& path);
 
+// A structured file's (.vts, .vtr, .vti) pieces must cover its WholeExtent: VTK's reader leaves the
+// points no piece holds undefined. Throws InputError naming the file and the extent.
+void check_vtk_xml_extents(const std::string& path);
+
 }  // namespace cellproj

@@ -3,6 +3,7 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <iterator>
 #include <thread>
 
@@ -344,6 +345,38 @@ TEST(Readers, ALegacyStructuredGridWithAnArrayNamedFieldSomethingReads) {
 
 // A parallel file: two pieces of one box, their interface points repeated. Read as one conforming
 // mesh, the interface points merged and its faces shared again.
+TEST(Readers, StructuredXmlPiecesMustCoverTheWholeExtent) {
+  // VTK's reader fills each piece's points of the WholeExtent's array and leaves the rest as the
+  // memory held: a fuzzed .vts whose WholeExtent outgrew its one piece read with bounds of 1e31.
+  test::TempDir dir;
+  const auto vts = [&](const std::string& name, const std::string& whole, const std::vector<std::string>& pieces) {
+    std::ofstream f(dir.file(name));
+    f << "<?xml version=\"1.0\"?>\n<VTKFile type=\"StructuredGrid\" version=\"0.1\">\n<StructuredGrid WholeExtent=\""
+      << whole << "\">\n";
+    for (const std::string& e : pieces) {
+      std::istringstream in(e);
+      int x[6];
+      for (int& v : x) in >> v;
+      f << "<Piece Extent=\"" << e << "\"><Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">";
+      for (int k = x[4]; k <= x[5]; ++k)
+        for (int j = x[2]; j <= x[3]; ++j)
+          for (int i = x[0]; i <= x[1]; ++i) f << i << " " << j << " " << k << " ";
+      f << "</DataArray></Points></Piece>\n";
+    }
+    f << "</StructuredGrid>\n</VTKFile>\n";
+    return dir.file(name);
+  };
+  // Two pieces sharing the plane i = 1 cover 0..2: read whole.
+  const Mesh m = read_mesh(vts("two.vts", "0 2 0 1 0 1", {"0 1 0 1 0 1", "1 2 0 1 0 1"}));
+  EXPECT_EQ(m.n_cells(), 2);
+  for (const std::string& gap : {std::string("0 3 0 1 0 1"), std::string("0 2 0 2 0 1")}) {
+    const std::string what =
+        test::input_error([&] { read_mesh(vts("gap.vts", gap, {"0 1 0 1 0 1", "1 2 0 1 0 1"})); });
+    EXPECT_NE(what.find("gap.vts: its pieces' extents do not cover its WholeExtent (" + gap + ")"), std::string::npos)
+        << what;
+  }
+}
+
 TEST(Readers, ParallelVtuPiecesAreMergedAtTheirInterface) {
   test::TempDir dir;
   auto half = [](double x0, double x1) {
