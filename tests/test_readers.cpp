@@ -8,7 +8,11 @@
 #include <thread>
 
 #include <gtest/gtest.h>
+#include <vtkDoubleArray.h>
 #include <vtkLogger.h>
+#include <vtkRectilinearGrid.h>
+#include <vtkSmartPointer.h>
+#include <vtkXMLRectilinearGridWriter.h>
 
 #include "base/bytes.hpp"
 #include "base/error.hpp"
@@ -375,6 +379,38 @@ TEST(Readers, StructuredXmlPiecesMustCoverTheWholeExtent) {
     EXPECT_NE(what.find("gap.vts: its pieces' extents do not cover its WholeExtent (" + gap + ")"), std::string::npos)
         << what;
   }
+}
+
+TEST(Readers, ARectilinearAxisShorterThanItsExtentIsRefused) {
+  // VTK's XML reader takes a short axis of coordinates without a word and reads the missing ones
+  // from past its array: a .vtr of 3 x-points with 2 x-coordinates read with an inverted cell.
+  test::TempDir dir;
+  const auto write = [&](const std::string& name, int nx, bool ascii) {
+    auto g = vtkSmartPointer<vtkRectilinearGrid>::New();
+    g->SetDimensions(3, 2, 2);
+    const int n[3] = {nx, 2, 2};
+    vtkSmartPointer<vtkDoubleArray> axis[3];
+    for (int a = 0; a < 3; ++a) {
+      axis[a] = vtkSmartPointer<vtkDoubleArray>::New();
+      for (int k = 0; k < n[a]; ++k) axis[a]->InsertNextValue(k);
+    }
+    g->SetXCoordinates(axis[0]), g->SetYCoordinates(axis[1]), g->SetZCoordinates(axis[2]);
+    auto w = vtkSmartPointer<vtkXMLRectilinearGridWriter>::New();
+    w->SetInputData(g);
+    w->SetFileName(dir.file(name).c_str());
+    if (ascii) w->SetDataModeToAscii();
+    w->Write();
+    return dir.file(name);
+  };
+  EXPECT_EQ(read_mesh(write("good.vtr", 3, false)).n_cells(), 2);
+  EXPECT_EQ(read_mesh(write("good_ascii.vtr", 3, true)).n_cells(), 2);
+  std::string what = test::input_error([&] { read_mesh(write("short.vtr", 2, false)); });
+  EXPECT_NE(what.find("short.vtr: DataArray"), std::string::npos) << what;
+  EXPECT_NE(what.find("it holds 16 bytes where 3 points of 1 Float64 need 24"), std::string::npos) << what;
+  what = test::input_error([&] { read_mesh(write("short_ascii.vtr", 2, true)); });
+  EXPECT_NE(what.find("short_ascii.vtr: piece 0's x coordinates hold 2 values for the 3 points of its extent"),
+            std::string::npos)
+      << what;
 }
 
 TEST(Readers, ParallelVtuPiecesAreMergedAtTheirInterface) {
