@@ -58,9 +58,9 @@ class DatasetWalk {
 
   void run() {
     std::string line;
-    for (int k = 0; k < 3; ++k) std::getline(in_, line);  // the version, the title, ASCII or BINARY
-    std::string word, type;
-    if (!(in_ >> word >> type) || !starts(lower(word), "dataset")) return;  // VTK matches both by prefix
+    for (int k = 0; k < 2; ++k) std::getline(in_, line);  // the version, the title
+    std::string word, type;  // then ASCII or BINARY, DATASET and its type: words, as VTK reads them
+    if (!(in_ >> word >> word >> type) || !starts(lower(word), "dataset")) return;  // VTK matches both by prefix
     type = lower(type);
     if (starts(type, "polydata"))  // VTK's reader indexed POLYGONS' ids unchecked (a crash), for nothing
       throw InputError(where(path_, "its dataset is POLYDATA (surfaces, lines and points), which holds no volume "

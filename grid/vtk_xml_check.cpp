@@ -220,7 +220,12 @@ void check_vtk_xml_appended(const std::string& path) {
     for (const char* s : {"<PointData", "<CellData", "<Points", "<Cells", "<FieldData", "<Coordinates"})
       if (tag.rfind(s, 0) == 0) section = s + 1, axis = 0;
     const int this_axis = tag.rfind("<DataArray", 0) == 0 && section == "Coordinates" ? axis++ : -1;
-    if (tag.rfind("<DataArray", 0) != 0 || attribute(tag, "format").value_or("") != "appended") continue;
+    // An array VTK reads from the appended data: "appended", or a format it does not know with an
+    // offset (a fuzzed format="appe" was read as appended, its garbled header sizing 16 GB).
+    const std::string format = attribute(tag, "format").value_or("");
+    if (tag.rfind("<DataArray", 0) != 0 || format == "ascii" || format == "binary" ||
+        (format != "appended" && !attribute(tag, "offset")))
+      continue;
     const std::string name = attribute(tag, "Name").value_or("?");
     const std::uint64_t offset = std::strtoull(attribute(tag, "offset").value_or("0").c_str(), nullptr, 10);
     const std::string what = "DataArray '" + name + "' (appended at offset " + std::to_string(offset) + ")";

@@ -380,6 +380,10 @@ sed 's/^Y_COORDINATES 1 float$/Y_COORDINATES 2 float/; s/^0$/0 1/' "$tmp/rg.vtk"
 expect 0 "points 8, cells 1: hexahedron 1" -- info "$tmp/rg2.vtk"
 printf '# vtk DataFile Version 3.0\npd\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 7\n' >"$tmp/pd.vtk"
 expect 1 "pd.vtk: its dataset is POLYDATA \\(surfaces, lines and points\\), which holds no volume cells" -- info "$tmp/pd.vtk"
+# A fuzzed .vtu whose offsets array says format="appe": VTK read it as appended, and its garbled
+# compression header sized 16 GB (95 s and 16 GB before the address-space limit stopped it).
+cp "$src/tests/fuzz/regressions/vtu/crash-6d88ac0e517ccc57f7fcba81c76df9f7fd358354" "$tmp/appe.vtu"
+expect 1 "appe.vtu: DataArray 'offsets' \\(appended at offset 808\\): its compression header runs past the end of the file, or is not base64" -- info "$tmp/appe.vtu"
 printf '# vtk DataFile Version 3.0\nsp\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2000 2000 2000\nORIGIN 0 0 0\nSPACING 1 1 1\n' >"$tmp/sp.vtk"
 expect 1 "sp.vtk: its header declares 8000000000 points and 7988005999 cells: reading them needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- info "$tmp/sp.vtk" --max-memory 4
 # Legacy .vtk structure VTK's reader follows without bounds: a cell count past the CELLS block, a
