@@ -10,9 +10,10 @@ set -euo pipefail
 build=${1:-build}
 n=${2:-70}
 exe=$(realpath "$build/bin/cellproj")
+here=$(dirname "$(realpath "$0")")  # before the cd below: a relative $0 would not resolve after it
 work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 cd "$work"
-bash "$(dirname "$(realpath "$0")")/swirl_scene.sh" . "$n" "$exe"
+bash "$here/swirl_scene.sh" . "$n" "$exe"
 keys='("method", "tetrahedralize", "cells", "cells_projected", "problem_cells", "polyhedra", "polygons", "layered_polyhedra", "subdivisions_looked_up", "frame_seconds", "min_frame_seconds", "max_frame_seconds", "prepare_seconds")'
 run() {  # name, then render options
   local name=$1; shift
