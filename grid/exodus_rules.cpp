@@ -102,10 +102,11 @@ std::string repeated_id_problem(int id) {
     int v = -1, ndims = 0, dim = -1;
     std::size_t count = 0;
     if (nc_inq_varid(id, name.c_str(), &v) != NC_NOERR || nc_inq_varndims(id, v, &ndims) != NC_NOERR || ndims != 1 ||
-        nc_inq_vardimid(id, v, &dim) != NC_NOERR || nc_inq_dimlen(id, dim, &count) != NC_NOERR || count < 2)
+        nc_inq_vardimid(id, v, &dim) != NC_NOERR || nc_inq_dimlen(id, dim, &count) != NC_NOERR || count == 0)
       continue;
     if (nc_type type; nc_inq_vartype(id, v, &type) != NC_NOERR || !integer_type(type))
       return std::string(kind) + " ids '" + name + "' are not integers";
+    if (count < 2) continue;
     std::vector<long long> ids(count);
     if (nc_get_var_longlong(id, v, ids.data()) != NC_NOERR) continue;  // the read loop names the failure
     std::vector<std::size_t> order(count);
