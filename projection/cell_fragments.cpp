@@ -280,7 +280,7 @@ CellFragments::Seen CellFragments::cell_triangles(const std::int64_t* ids, CellT
   if (method_.gouraud) {
     p.corner.resize(3 * p.tri.size());
     if (shade)
-      for (std::size_t t = 0; t < p.tri.size(); ++t) shade_corners(p, t, t - 1);
+      for (std::size_t t = 0; t < p.tri.size(); ++t) shade_corners(p, t, t > 0 ? t - 1 : t);  // t: none before
   }
   return Seen::projected;
 }
@@ -362,7 +362,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
       const ThickVertex* V = p.tri[t].v;
       if (shade_when_drawn) {
         const PixelBox box({V[0].x, V[0].y}, {V[1].x, V[1].y}, {V[2].x, V[2].y}, width, height);
-        if (box.empty() || box.j1 < rows.begin || box.j0 >= rows.end) continue;
+        if (!box.reaches(rows.begin, rows.end)) continue;
         shade_corners(p, t, shaded);
         shaded = t;
       }

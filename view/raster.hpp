@@ -92,6 +92,8 @@ struct PixelBox {
     return !(v > -1.0) ? -1 : v > size ? size : static_cast<int>(v);  // NaN: -1
   }
   bool empty() const { return i1 < i0 || j1 < j0; }
+  // Whether it holds a pixel centre of rows row_begin <= j < row_end (an image tile's).
+  bool reaches(int row_begin, int row_end) const { return !empty() && j1 >= row_begin && j0 < row_end; }
 };
 
 // A triangle in pixel coordinates (x right, y down), turned positive, with its edge functions:
@@ -199,7 +201,7 @@ template <class Steps, class Span>
 void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, int row_begin,
                               int row_end, Steps&& steps, Span&& span) {
   const PixelBox box(p0, p1, p2, width, height);  // empty for NaN
-  if (box.empty() || box.j1 < row_begin || box.j0 >= row_end) return;
+  if (!box.reaches(row_begin, row_end)) return;
   const TriangleCoverage t(p0, p1, p2, box);
   double w[3];
   t.weight_steps(w);
