@@ -2,6 +2,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <fstream>
 #include <numeric>
 
 #include <CGAL/Delaunay_triangulation_3.h>
@@ -16,6 +17,16 @@
 namespace cellproj {
 
 Mesh read_off(const std::string& path) {
+  {  // Geomview's OFF (a surface of polygons) shares the extension: say so, not "not a number"
+    std::ifstream head(path);
+    std::string word;
+    while (head >> word && word[0] == '#') std::getline(head, word);
+    if (word.size() >= 3 && word.compare(word.size() - 3, 3, "OFF") == 0)
+      throw InputError(where(path, "line 1: '" + word.substr(0, 8) +
+                                       "' starts a Geomview OFF surface (polygons); cellproj's .off is the tetrahedral "
+                                       "format of the sorting benchmarks ('nverts ntets', then 'x y z s' and 'a b c d' "
+                                       "lines): tetrahedralize the surface first (e.g. TetGen's .node/.ele)"));
+  }
   TextScanner in(path);
   const std::int64_t nv = in.integer("the vertex count"), nt = in.integer("the tetrahedron count");
   if (nv < 4 || nt < 1)

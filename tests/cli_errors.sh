@@ -384,6 +384,9 @@ expect 1 "pd.vtk: its dataset is POLYDATA \\(surfaces, lines and points\\), whic
 # compression header sized 16 GB (95 s and 16 GB before the address-space limit stopped it).
 cp "$src/tests/fuzz/regressions/vtu/crash-6d88ac0e517ccc57f7fcba81c76df9f7fd358354" "$tmp/appe.vtu"
 expect 1 "appe.vtu: DataArray 'offsets' \\(appended at offset 808\\): its compression header runs past the end of the file, or is not base64" -- info "$tmp/appe.vtu"
+# Geomview's OFF, a surface, shares the .off extension with the tetrahedral benchmark format.
+printf 'OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' >"$tmp/geomview.off"
+expect 1 "geomview.off: line 1: 'OFF' starts a Geomview OFF surface \\(polygons\\)" -- info "$tmp/geomview.off"
 printf '# vtk DataFile Version 3.0\nsp\nASCII\nDATASET STRUCTURED_POINTS\nDIMENSIONS 2000 2000 2000\nORIGIN 0 0 0\nSPACING 1 1 1\n' >"$tmp/sp.vtk"
 expect 1 "sp.vtk: its header declares 8000000000 points and 7988005999 cells: reading them needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- info "$tmp/sp.vtk" --max-memory 4
 # Legacy .vtk structure VTK's reader follows without bounds: a cell count past the CELLS block, a
