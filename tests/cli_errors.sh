@@ -52,6 +52,10 @@ done
 expect 0 '"max_abs": [0-9.e-]+' -- compare "$tmp/ct.npy" "$tmp/pt-breakpoints.npy"
 python3 -c "import json,sys; d=json.load(open(sys.argv[1])); sys.exit(0 if d['max_abs'] < 1e-5 else 1)" <("$exe" compare "$tmp/ct.npy" "$tmp/pt-breakpoints.npy") \
   || { echo "FAIL: pt-breakpoints differs from exact canonical-tets"; failed=$((failed+1)); }
+# compare: a .npy that is not float32 names its file once; --downsample that does not divide B names B.
+printf '\x93NUMPY\x01\x00\x76\x00{"descr": "<f8", "fortran_order": False, "shape": (30, 40), }' >"$tmp/f8.npy"
+expect 1 "^cellproj: error: [^ ]*f8.npy: expected little-endian float32 in C order" -- compare "$tmp/ct.npy" "$tmp/f8.npy"
+expect 1 "ct.npy: downsample: 7 does not divide" -- compare "$tmp/ct.npy" "$tmp/ct.npy" --downsample 7
 expect 2 "unknown sort 'zsort'" -- render "$tmp/ok.json" --sort zsort
 expect 1 "ok.json: reading .*box.vtu \(64 cells\) and rendering 16384x16384 needs about 9.6 GiB, more than the 2.0 GiB allowed by --max-memory" -- render "$tmp/ok.json" --size 16384x16384 --max-memory 2
 # A mesh too large for memory is refused from its header, before anything is read.

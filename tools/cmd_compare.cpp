@@ -24,11 +24,11 @@ Action add_compare(CLI::App& app) {
                   "Box-filter B down by K first (B rendered at K times A's size: the anti-aliased reference)")
       ->check(CLI::Range(1, 64));
   return [args] {
-    const Image a = read_npy(args->a);
+    const Image a = read_npy(args->a), b_read = read_npy(args->b);  // each names its file when it fails
     Image b;
     try {
-      b = downsample(read_npy(args->b), args->downsample);
-    } catch (const InputError& e) {
+      b = downsample(b_read, args->downsample);
+    } catch (const InputError& e) {  // a size --downsample does not divide: which file
       throw InputError(args->b + ": " + e.what());
     }
     const ImageDifference d = compare(a, b);
