@@ -290,6 +290,7 @@ void check_netcdf_readable(const std::string& path) {
   for (const std::string& problem : {name_length_problem(id), repeated_id_problem(id)})
     if (!problem.empty()) refuse("corrupt: " + problem);
   std::vector<unsigned char> buf;
+  const std::uintmax_t file_size = std::filesystem::file_size(path);
   for (int v = 0; v < nvars; ++v) {
     std::size_t count = 0, size = 0;
     const nc_type type = elements(v, count, size);
@@ -298,10 +299,9 @@ void check_netcdf_readable(const std::string& path) {
     nc_inq_varname(id, v, name);
     // A classic file stores every value: no variable holds more bytes than the file (a record count
     // of 2^32 - 1, "streaming", made netCDF report 4294967295 records of a 5 kB file).
-    if (placed && count > std::filesystem::file_size(path) / size)
+    if (placed && count > file_size / size)
       refuse(std::string("corrupt: variable '") + name + "' declares " + std::to_string(count) + " values of " +
-             std::to_string(size) + " bytes, more than the file's " + std::to_string(std::filesystem::file_size(path)) +
-             " bytes hold");
+             std::to_string(size) + " bytes, more than the file's " + std::to_string(file_size) + " bytes hold");
     buf.resize(count * size);
     if (int err = nc_get_var(id, v, buf.data()); err != NC_NOERR)
       refuse(std::string("truncated or corrupt: variable '") + name + "' cannot be read (" + nc_strerror(err) + ")");

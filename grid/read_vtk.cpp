@@ -457,8 +457,7 @@ Mesh read_vtk_family(const std::string& path, const std::string& format, const R
     in.read(tail.data(), static_cast<std::streamsize>(tail.size()));
     if (tail.find("</VTKFile>") == std::string::npos)
       throw InputError(where(path, "truncated: a VTK XML file ends with </VTKFile>, this one does not"));
-    check_vtk_xml_appended(path);
-    check_vtk_xml_extents(path);
+    check_vtk_xml(path);
     auto r = vtkSmartPointer<vtkXMLGenericDataObjectReader>::New();
     r->SetFileName(path.c_str());
     Mesh mesh = run(r.Get(), path, messages);

@@ -131,12 +131,8 @@ bool pieces_cover(const std::array<long long, 6>& whole, const std::vector<std::
   return true;
 }
 
-}  // namespace
-
-void check_vtk_xml_extents(const std::string& path) {
-  const auto head = xml_head(path);
-  if (!head) return;
-  const std::string& xml = head->first;
+// A structured file's pieces against its WholeExtent, and a rectilinear piece's ASCII axes.
+void check_extents(const std::string& path, const std::string& xml) {
   const std::size_t end = std::min(xml.find("<AppendedData"), xml.size());
   std::optional<std::array<long long, 6>> whole;
   std::vector<std::array<long long, 6>> pieces;
@@ -183,11 +179,8 @@ void check_vtk_xml_extents(const std::string& path) {
                                      "): the points no piece holds would be undefined"));
 }
 
-void check_vtk_xml_appended(const std::string& path) {
-  const auto head = xml_head(path);
-  if (!head) return;
-  const std::string& xml = head->first;
-  const std::uint64_t file_size = head->second;
+// Each appended DataArray's block header against the file and the Piece's counts.
+void check_appended(const std::string& path, const std::string& xml, std::uint64_t file_size) {
   const std::size_t appended = xml.find("<AppendedData");
   if (appended == std::string::npos) return;  // inline data: VTK parses it as text
   const std::size_t open_end = xml.find('>', appended);
@@ -273,6 +266,15 @@ void check_vtk_xml_appended(const std::string& path) {
                  (section == "CellData" || section == "Cells" ? "cells" : "points") + " of " + std::to_string(comps) +
                  " " + attribute(tag, "type").value_or("") + " need " + std::to_string(expected));
   }
+}
+
+}  // namespace
+
+void check_vtk_xml(const std::string& path) {
+  const auto head = xml_head(path);  // read once for both checks
+  if (!head) return;
+  check_appended(path, head->first, head->second);
+  check_extents(path, head->first);
 }
 
 }  // namespace cellproj

@@ -360,12 +360,9 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
     std::size_t shaded = p.tri.size();  // the last triangle shaded here (none yet)
     for (std::size_t t = 0; t < p.tri.size(); ++t) {
       const ThickVertex* V = p.tri[t].v;
-      if (shade_when_drawn) {
-        const PixelBox box({V[0].x, V[0].y}, {V[1].x, V[1].y}, {V[2].x, V[2].y}, width, height);
-        if (!box.reaches(rows.begin, rows.end)) continue;
-        shade_corners(p, t, shaded);
-        shaded = t;
-      }
+      const PixelBox box({V[0].x, V[0].y}, {V[1].x, V[1].y}, {V[2].x, V[2].y}, width, height);
+      if (!box.reaches(rows.begin, rows.end)) continue;
+      if (shade_when_drawn) shade_corners(p, t, shaded), shaded = t;
       const GouraudCorner* g = &p.corner[3 * t];
       // A corner quantity weighted by w: at a pixel (the weights) or its change per pixel (their steps).
       const auto mix = [g](const double* w, auto GouraudCorner::*q) {
@@ -374,8 +371,8 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
       glm::dvec3 dc;
       double da = 0, dl = 0;
       rasterize_triangle_spans(
-          glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
-          rows.begin, rows.end,
+          glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), box, rows.begin,
+          rows.end,
           [&](const double* dw) {
             dc = mix(dw, &GouraudCorner::c), da = mix(dw, &GouraudCorner::a), dl = mix(dw, &GouraudCorner::l);
           },

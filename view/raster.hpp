@@ -197,11 +197,11 @@ void rasterize_triangle_weights(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int
 // Only rows row_begin <= j < row_end are visited (an image tile's rows). A triangle whose box holds
 // no pixel centre of them (most of a small cell's image-plane subdivision) is passed over before
 // its set-up: steps() is not called.
+// The triangle's pixel box, PixelBox(p0, p1, p2, width, height), is given when the caller has it.
 template <class Steps, class Span>
-void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, int row_begin,
+void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, const PixelBox& box, int row_begin,
                               int row_end, Steps&& steps, Span&& span) {
-  const PixelBox box(p0, p1, p2, width, height);  // empty for NaN
-  if (!box.reaches(row_begin, row_end)) return;
+  if (!box.reaches(row_begin, row_end)) return;  // (a NaN vertex gives an empty box)
   const TriangleCoverage t(p0, p1, p2, box);
   double w[3];
   t.weight_steps(w);
@@ -210,6 +210,12 @@ void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int w
     t.weights(r, b, w);
     span(j, b, e, static_cast<const double*>(w));
   });
+}
+
+template <class Steps, class Span>
+void rasterize_triangle_spans(glm::dvec2 p0, glm::dvec2 p1, glm::dvec2 p2, int width, int height, int row_begin,
+                              int row_end, Steps&& steps, Span&& span) {
+  rasterize_triangle_spans(p0, p1, p2, PixelBox(p0, p1, p2, width, height), row_begin, row_end, steps, span);
 }
 
 template <class Steps, class Span>
