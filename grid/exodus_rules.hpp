@@ -13,8 +13,8 @@ namespace cellproj {
 // netCDF's integer types: Exodus II stores ids, statuses and connectivity as int or int64.
 bool integer_type(nc_type t);
 
-// The node counts Exodus II defines for an element type, by the first three letters of its name
-// (TETRA4, tet, ...); empty for a type it does not know (VTK's reader refuses those itself).
+// The node counts of an element type VTK's Exodus reader reads right, by the first three letters
+// of its name (TETRA4, tet, ...); empty for a type it does not know (its reader refuses those).
 std::vector<int> exodus_node_counts(const std::string& elem_type);
 
 // Active element block b (1-based) of the open file `id`, after "element block b of n" (so

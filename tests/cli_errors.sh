@@ -365,7 +365,7 @@ expect 1 "names.exo: corrupt: its attribute 'maximum_name_length' is 0, outside 
 # A HEX block of 5 nodes per element (VTK's reader read hexahedra of 8 past the block), and a
 # record count of 2^32 - 1 in a 5 kB file (our own check sized a buffer by it: "out of memory").
 cp "$src/tests/fuzz/regressions/exodus/crash-6de9d79f8f819eeeeff2c85c8d71ef1b508be8a2" "$tmp/hex5.exo"
-expect 1 "hex5.exo: corrupt: element block 2 of 4: its elements of type 'HEX' have 5 nodes each \\(num_nod_per_el2\\); that type has 8, 9, 20 or 27" -- info "$tmp/hex5.exo"
+expect 1 "hex5.exo: corrupt: element block 2 of 4: its elements of type 'HEX' have 5 nodes each \\(num_nod_per_el2\\); VTK's Exodus reader reads that type with 8, 20 or 27" -- info "$tmp/hex5.exo"
 cp "$src/tests/fuzz/regressions/exodus/crash-eff4922f02b1491bd0e700e4ecf90f4a0f4a10fa" "$tmp/records.exo"
 expect 1 "records.exo: corrupt: variable 'time_whole' declares 4294967295 values of 8 bytes, more than the file's 5072 bytes hold" -- info "$tmp/records.exo"
 # A fuzzer's binary file whose POINT_DATA holds a FIELD array of -9 tuples (VTK's reader sized the
