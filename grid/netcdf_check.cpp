@@ -27,17 +27,26 @@ struct HeaderCursor {
   std::string* problem = nullptr;  // set (and the walk stopped) when a count exceeds what the file holds
   std::size_t at = 0;
   bool ok = true;
+  bool started = false;  // past the magic number and version: a classic file's header
   std::uint64_t read(int n) {
-    if (!ok || at + static_cast<std::size_t>(n) > bytes.size()) return ok = false, 0;
+    if (!ok || at + static_cast<std::size_t>(n) > bytes.size()) return ran_out(), 0;
     std::uint64_t v = 0;
     for (int k = 0; k < n; ++k) v = v << 8 | bytes[at++];
     return v;
   }
   void skip(std::uint64_t n) {
     if (!ok || n > bytes.size() - at)
-      ok = false;
+      ran_out();
     else
       at += static_cast<std::size_t>(n);
+  }
+  // Past the bytes read: when they are the whole file, the header is cut short, and netCDF reads
+  // on past the end (a 15-byte file took it 15 s of zero-filled dimensions before it gave up).
+  void ran_out() {
+    if (started && bytes.size() >= file_size)
+      refuse("its classic netCDF header is cut short: the file ends at byte " + std::to_string(file_size) +
+             ", inside it");
+    ok = false;
   }
   // Stops the walk with *problem = what (a header netCDF itself misreads).
   void refuse(const std::string& what) {
@@ -72,6 +81,7 @@ std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char
   if (c.read(3) != 0x434446) return std::nullopt;  // "CDF"
   const std::uint64_t version = c.read(1);
   if (version != 1 && version != 2 && version != 5) return std::nullopt;
+  c.started = true;
   const int word = version == 5 ? 8 : 4, offset = version == 1 ? 4 : 8;
   const std::uint64_t numrecs = c.read(word);
   const bool streaming = numrecs == (word == 8 ? ~0ull : 0xFFFFFFFFull);

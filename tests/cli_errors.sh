@@ -364,6 +364,10 @@ cp "$src/tests/fuzz/regressions/exodus/crash-86d96a60e213e0de1b3b1c1a851a698d357
 expect 1 "names.exo: corrupt: its attribute 'maximum_name_length' is 0, outside \\[1, 256\\]" -- info "$tmp/names.exo"
 # A HEX block of 5 nodes per element (VTK's reader read hexahedra of 8 past the block), and a
 # record count of 2^32 - 1 in a 5 kB file (our own check sized a buffer by it: "out of memory").
+# A 15-byte classic netCDF file cut inside its header: netCDF read zero-filled dimensions past the
+# end for 15 s before it gave up.
+cp "$src/tests/fuzz/regressions/exodus/slow-unit-f55ffdc3852d1fbcb9dd7c3eec681903854a09d1" "$tmp/cut15.exo"
+expect 1 "cut15.exo: corrupt: its classic netCDF header is cut short: the file ends at byte 15, inside it" -- info "$tmp/cut15.exo"
 cp "$src/tests/fuzz/regressions/exodus/crash-6de9d79f8f819eeeeff2c85c8d71ef1b508be8a2" "$tmp/hex5.exo"
 expect 1 "hex5.exo: corrupt: element block 2 of 4: its elements of type 'HEX' have 5 nodes each \\(num_nod_per_el2\\); VTK's Exodus reader reads that type with 8, 20 or 27" -- info "$tmp/hex5.exo"
 cp "$src/tests/fuzz/regressions/exodus/crash-eff4922f02b1491bd0e700e4ecf90f4a0f4a10fa" "$tmp/records.exo"
