@@ -17,8 +17,10 @@ bool integer_type(nc_type t) {
 // know (its reader refuses those itself). VTK builds its cell from the type and the count and steps
 // through the connectivity by its cell's size: for any other count it reads the wrong nodes (a
 // HEX of 5 ran past the block and crashed; HEX9, TETRA8 or WEDGE12 read with exit 0 and every
-// element after the first on the wrong nodes: bench/exodus_node_counts.py). The volume counts: linear,
-// then the quadratic and Lagrange cells VTK makes of them (which cellproj refuses by type).
+// element after the first on the wrong nodes: bench/exodus_node_counts.py). The volume counts, as
+// measured: linear, then the quadratic and Lagrange cells VTK makes of them (which cellproj refuses
+// by type). The surface and line types, whose cells cellproj skips, keep Exodus II's counts: what
+// matters there is a count below the linear one, which read past the block.
 std::vector<int> exodus_node_counts(const std::string& elem_type) {
   std::string k = elem_type.substr(0, 3);
   for (char& ch : k) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
