@@ -46,14 +46,18 @@ LegacyEncoding legacy_encoding(const std::string& third_line) {
   return LegacyEncoding::unknown;
 }
 
+std::string read_legacy_dataset_type(std::istream& in) {
+  std::string line, word, type;
+  for (int k = 0; k < 2; ++k) std::getline(in, line);  // the version, the title
+  // (a vertical tab after ASCII put DATASET on the encoding's line in a fuzzed file: VTK read it)
+  if (!(in >> word >> word >> type) || !is_legacy_keyword(word.substr(0, 7), "dataset")) return "";
+  for (char& ch : type) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
+  return type;
+}
+
 bool legacy_dataset_is(const std::string& path, const std::string& type) {
   std::ifstream in(path, std::ios::binary);
-  std::string line, word, name;
-  for (int k = 0; k < 2; ++k) std::getline(in, line);  // the version, the title
-  // ASCII or BINARY, then DATASET and its type: words, as VTK's reader reads them (a vertical tab
-  // after ASCII put DATASET on the encoding's line in a fuzzed file, and VTK still read it)
-  return (in >> word >> word >> name) && is_legacy_keyword(word.substr(0, 7), "dataset") &&
-         is_legacy_keyword(name.substr(0, type.size()), type);
+  return read_legacy_dataset_type(in).rfind(type, 0) == 0 && !type.empty();
 }
 
 void check_legacy_cells(const std::string& path) {

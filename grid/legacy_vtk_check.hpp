@@ -1,5 +1,6 @@
 #pragma once
 #include <cstdint>
+#include <istream>
 #include <string>
 
 #include "base/error.hpp"
@@ -43,6 +44,11 @@ void check_offsets(At&& at, std::int64_t n, std::int64_t ids) {
                        std::to_string(at(c + 1)) + ", outside the " + std::to_string(ids) +
                        " connectivity ids or backwards");
 }
+
+// The dataset type a legacy file declares, lower case ("structured_grid", ...), read as VTK's readers
+// read it: two lines (the version, the title), then words (the encoding, DATASET, the type; a
+// vertical tab may join them on one line). Leaves `in` after the type; "" when there is no DATASET.
+std::string read_legacy_dataset_type(std::istream& in);
 
 // Whether the file's DATASET line names `type` ("structured_grid"), matched as VTK's readers match
 // it: by prefix, in any case.

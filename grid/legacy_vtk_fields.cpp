@@ -57,11 +57,7 @@ class DatasetWalk {
   }
 
   void run() {
-    std::string line;
-    for (int k = 0; k < 2; ++k) std::getline(in_, line);  // the version, the title
-    std::string word, type;  // then ASCII or BINARY, DATASET and its type: words, as VTK reads them
-    if (!(in_ >> word >> word >> type) || !starts(lower(word), "dataset")) return;  // VTK matches both by prefix
-    type = lower(type);
+    std::string word, type = read_legacy_dataset_type(in_);  // VTK matches the type by prefix
     if (starts(type, "polydata"))  // VTK's reader indexed POLYGONS' ids unchecked (a crash), for nothing
       throw InputError(where(path_, "its dataset is POLYDATA (surfaces, lines and points), which holds no volume "
                                     "cells: cellproj renders unstructured, structured and rectilinear grids and "
@@ -78,11 +74,7 @@ class DatasetWalk {
         std::int64_t n = 0;
         if (!(in_ >> n >> type)) return;
         if (n < 0) refuse_count("POINTS", n);  // VTK reads it as a huge size and writes past its array
-        const int bytes = value_bytes(lower(type));
-        if (bytes == kVariable)  // VTK's reader of string arrays wrote past its buffer on a fuzzed one
-          throw InputError(where(path_, "POINTS has the type '" + type.substr(0, 40) +
-                                            "', which VTK reads as strings: coordinates are numbers"));
-        if (!skip(3 * n, bytes)) return;
+        if (!skip(3 * n, coordinate_bytes("POINTS", type))) return;
       } else if (unstructured && starts(word, "cells")) {
         std::int64_t n = 0, size = 0;
         if (!(in_ >> n >> size)) return;
@@ -109,18 +101,14 @@ class DatasetWalk {
         // VTK's reader builds the points from DIMENSIONS and reads each axis's values unchecked: an
         // axis with fewer values than its dimension gave coordinates from past the array.
         const int axis = word[0] - 'x';
+        const std::string block = std::string(1, static_cast<char>('X' + axis)) + "_COORDINATES";
         std::int64_t n = 0;
         if (!(in_ >> n >> type)) return;
-        if (n < 0) refuse_count(std::string(1, static_cast<char>(std::toupper(word[0]))) + "_COORDINATES", n);
+        if (n < 0) refuse_count(block, n);
         if (dims[axis] >= 0 && n != dims[axis])
-          throw InputError(where(path_, std::string(1, static_cast<char>(std::toupper(word[0]))) + "_COORDINATES holds " +
-                                            std::to_string(n) + " values for the " + std::to_string(dims[axis]) +
-                                            " points along its axis that DIMENSIONS gives"));
-        const int bytes = value_bytes(lower(type));
-        if (bytes == kVariable)
-          throw InputError(where(path_, word + " has the type '" + type.substr(0, 40) +
-                                            "', which VTK reads as strings: coordinates are numbers"));
-        if (!skip(n, bytes)) return;
+          throw InputError(where(path_, block + " holds " + std::to_string(n) + " values for the " +
+                                            std::to_string(dims[axis]) + " points along its axis that DIMENSIONS gives"));
+        if (!skip(n, coordinate_bytes(block, type))) return;
       } else if (starts(word, "metadata")) {
         metadata();
       } else if (starts(word, "point_data") || starts(word, "cell_data")) {
@@ -304,6 +292,16 @@ class DatasetWalk {
   bool array(const char* keyword, std::int64_t count) {
     std::string word, type;
     return (in_ >> word >> type) && is_legacy_keyword(word, keyword) && skip(count, legacy_id_bytes(type));
+  }
+
+  // The bytes of one value of a coordinate block (POINTS, X_COORDINATES, ...) of `type`; a string
+  // type is refused: VTK's reader of string arrays wrote past its buffer on a fuzzed one.
+  int coordinate_bytes(const std::string& block, const std::string& type) {
+    const int bytes = value_bytes(lower(type));
+    if (bytes == kVariable)
+      throw InputError(where(path_, block + " has the type '" + type.substr(0, 40) +
+                                        "', which VTK reads as strings: coordinates are numbers"));
+    return bytes;
   }
 
   [[noreturn]] void refuse_count(const std::string& block, std::int64_t n) {
