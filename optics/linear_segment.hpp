@@ -4,6 +4,8 @@
 //   int_0^L C kappa e^-tau dt = C0 (1 - F) + C1 (F - e^-D),   F = (1/L) int_0^L e^-tau dt,
 // by parts (d/dt of -e^-tau is kappa e^-tau); only F needs special functions: erfcx when kappa
 // grows along the ray, Dawson's integral when it falls.
+#include <cstddef>
+
 #include <glm/vec3.hpp>
 
 #include "optics/segment_integral.hpp"
@@ -25,6 +27,9 @@ struct EndWeights {
 // (small cells, kappa L <= 0.5 and a change of at most 0.02 along the segment: Taylor series in
 // both, relative error ~1e-15) to any depth (asymptotic forms; no NaN, weights -> 1, 0).
 EndWeights linear_segment_weights(double L, double k0, double k1);
+// The same for n segments (w[k] from L[k], k0[k], k1[k]), to the bit: the small cells, most
+// fragments of a fine mesh, four at a time in SIMD registers.
+void linear_segment_weights(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w);
 
 // The whole segment: kappa and colour linear from (k0, c0) at the front to (k1, c1) at the back.
 inline SegmentLight integrate_linear_closed_form(double L, double k0, double k1, const glm::dvec3& c0,

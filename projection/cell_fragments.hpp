@@ -13,6 +13,7 @@
 #include "projection/method.hpp"
 #include "projection/projected_cell.hpp"
 #include "projection/projected_tet.hpp"
+#include "projection/segment_batch.hpp"
 #include "view/image.hpp"
 #include "view/screen.hpp"
 
@@ -62,6 +63,7 @@ struct CellScratch {
   double smin = 0, smax = 0;          // the cell's scalar range
   SubdivisionCache subdivisions;      // projection topologies met by this worker
   std::vector<double> back;           // a whole cell's back layer: 2 per pixel of its box (project_layers)
+  SegmentBatch segments;              // pt-analytic's and pt-breakpoints' fragments of the cell
 };
 
 // The frame's fixed inputs; project() is const and may run on many threads at once.

@@ -159,3 +159,29 @@ TEST(LinearSegment, BreakpointsCutExactly) {
     for (int k = 0; k < 3; ++k) EXPECT_LT(std::abs(got.rgb[k] - ref.rgb[k]), 1e-11) << s0 << " " << s1;
   }
 }
+
+TEST(LinearSegment, ManySegmentsAtOnceGiveEachSegmentsBits) {
+  // The batch evaluates small cells four at a time in SIMD lanes and the rest one by one; every
+  // segment must get exactly linear_segment_weights' values, whatever its neighbours in the batch
+  // (small, thick, empty, zero length), and whatever the batch's length (a tail of 1 to 3).
+  std::vector<double> L, k0, k1;
+  const double lengths[] = {0.0, 1e-9, 0.01, 0.3, 1.0, 7.0};
+  const double kappas[] = {0.0, 1e-300, 1e-6, 0.05, 0.4, 0.45, 2.0, 50.0};
+  for (double l : lengths)
+    for (double a : kappas)
+      for (double b : kappas) L.push_back(l), k0.push_back(a), k1.push_back(b);
+  for (std::size_t n : {L.size(), L.size() - 1, L.size() - 2, L.size() - 3, std::size_t(3), std::size_t(0)}) {
+    std::vector<EndWeights> w(n);
+    linear_segment_weights(n, L.data(), k0.data(), k1.data(), w.data());
+    int small = 0;
+    for (std::size_t k = 0; k < n; ++k) {
+      const EndWeights one = linear_segment_weights(L[k], k0[k], k1[k]);
+      small += one.opacity >= 0.0;
+      EXPECT_EQ(w[k].front, one.front) << k;
+      EXPECT_EQ(w[k].back, one.back) << k;
+      EXPECT_EQ(w[k].depth, one.depth) << k;
+      EXPECT_EQ(w[k].opacity, one.opacity) << k;
+    }
+    if (n > 100) EXPECT_GT(small, 50);  // the vector path ran
+  }
+}

@@ -80,6 +80,9 @@ class PixelRays {
     if (!perspective()) return 1.0;
     return std::sqrt(1.0 + u2_[static_cast<std::size_t>(i)] + v2_[static_cast<std::size_t>(j)]);
   }
+  // Its terms for loops over many pixels: u^2 per column and v^2 per row (empty in orthographic).
+  const double* u_squared() const { return u2_.data(); }
+  const double* v_squared() const { return v2_.data(); }
   bool perspective() const { return camera_.projection == Projection::Perspective; }
   int width() const { return width_; }
   int height() const { return height_; }

@@ -1,0 +1,45 @@
+#pragma once
+// The exact methods' fragments of one cell gathered before their light, so that the per-pixel
+// work runs over arrays in SIMD lanes (each lane the same bits as the scalar code).
+#include <algorithm>
+#include <cstddef>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "optics/linear_segment.hpp"
+#include "view/camera.hpp"
+
+namespace cellproj {
+
+// Colour and extinction as linear functions of s over a cell's scalar range holding no breakpoint.
+struct LinearPiece {
+  double s0 = 0, ds = 0;  // s0 and 1 / (s1 - s0) (0 for a constant cell)
+  double k0 = 0, dk = 0;
+  glm::dvec3 c0{0.0}, dc{0.0};
+  double kappa(double s) const { return std::max(0.0, k0 + dk * (s - s0) * ds); }
+  glm::dvec3 color(double s) const { return c0 + dc * ((s - s0) * ds); }
+};
+
+// pt-analytic's and pt-breakpoints' fragments of one cell before their light, so the closed forms
+// run over the cell at once: pixel and the interpolated ends (depth and scalar, or 1/z and s/z in
+// perspective), then the segments' lengths, end extinctions and weights.
+struct SegmentBatch {
+  std::size_t n = 0;  // fragments gathered
+  std::vector<int> i, j;
+  std::vector<double> zf, zb, sf, sb;
+  std::vector<double> length, k0, k1;
+  std::vector<EndWeights> weights;
+  void push(int pi, int pj, double qzf, double qzb, double qsf, double qsb) {
+    if (n == i.size()) grow();
+    i[n] = pi, j[n] = pj, zf[n] = qzf, zb[n] = qzb, sf[n] = qsf, sb[n] = qsb;
+    ++n;
+  }
+  void grow();  // room for twice as many
+};
+
+// The lengths, end scalars (clamped to [smin, smax]) and end extinctions of the batch's segments,
+// from their interpolated ends: length = (back - front depth) times the ray's length per depth.
+void segment_ends(SegmentBatch& b, const PixelRays& rays, double smin, double smax, const LinearPiece& piece);
+
+}  // namespace cellproj
