@@ -107,14 +107,17 @@ template <class T>
   return {g, e - g, d, e};
 }
 
-// Four small cells at once: AVX2 where the processor has it (one function per target, chosen
-// when the library loads), two SSE2 halves elsewhere.
-__attribute__((target_clones("avx2", "default"))) void small_cells_x4(const double* a, const double* b,
-                                                                      EndWeights* w) {
-  f64x4 va, vb;
-  std::memcpy(&va, a, sizeof va), std::memcpy(&vb, b, sizeof vb);
-  const SmallCellWeights<f64x4> s = small_cell_weights(va, vb);
-  for (int m = 0; m < 4; ++m) w[m] = {s.front[m], s.back[m], s.depth[m], s.opacity[m]};
+// The weights of segments 0 .. n - 1 (n a multiple of 4) as if each were a small cell, four at a
+// time; the caller replaces those that are not. One function per target: AVX2 where the processor
+// has it (chosen when the library loads), pairs of SSE2 lanes elsewhere.
+__attribute__((target_clones("avx2", "default"))) void small_cells(std::size_t n, const double* L, const double* k0,
+                                                                   const double* k1, EndWeights* w) {
+  for (std::size_t k = 0; k < n; k += 4) {
+    f64x4 l, c0, c1;
+    std::memcpy(&l, L + k, sizeof l), std::memcpy(&c0, k0 + k, sizeof c0), std::memcpy(&c1, k1 + k, sizeof c1);
+    const SmallCellWeights<f64x4> s = small_cell_weights(c0 * l, 0.5 * (c1 - c0) * l);  // a, b as below
+    for (int m = 0; m < 4; ++m) w[k + m] = {s.front[m], s.back[m], s.depth[m], s.opacity[m]};
+  }
 }
 
 // M_k(a) = int_0^1 u^k e^{-a u} du for k = 0 .. kmax, by the recursion M_k = (k M_{k-1} - e^-a) / a
@@ -232,20 +235,13 @@ SegmentLight integrate_segment_closed_form(const TransferFunction& tf, double le
 }
 
 void linear_segment_weights(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w) {
-  std::size_t k = 0;
-  for (; k + 4 <= n; k += 4) {
-    double a[4], b[4];  // as linear_segment_weights: tau(u) = a u + b u^2
-    bool small[4];
-    for (int m = 0; m < 4; ++m) {
-      const std::size_t q = k + m;
-      a[m] = k0[q] * L[q], b[m] = 0.5 * (k1[q] - k0[q]) * L[q];
-      small[m] = L[q] > 0.0 && k0[q] + k1[q] > 0.0 && a[m] <= kSmallA && std::abs(b[m]) <= kSmallB;
-    }
-    small_cells_x4(a, b, w + k);  // the other lanes' values are dropped
-    for (int m = 0; m < 4; ++m)
-      if (!small[m]) w[k + m] = linear_segment_weights(L[k + m], k0[k + m], k1[k + m]);
+  const std::size_t lanes = n - n % 4;
+  small_cells(lanes, L, k0, k1, w);
+  for (std::size_t k = 0; k < n; ++k) {  // the others as linear_segment_weights decides
+    const double a = k0[k] * L[k], b = 0.5 * (k1[k] - k0[k]) * L[k];
+    const bool small = L[k] > 0.0 && k0[k] + k1[k] > 0.0 && a <= kSmallA && std::abs(b) <= kSmallB;
+    if (!small || k >= lanes) w[k] = linear_segment_weights(L[k], k0[k], k1[k]);
   }
-  for (; k < n; ++k) w[k] = linear_segment_weights(L[k], k0[k], k1[k]);
 }
 
 }  // namespace cellproj

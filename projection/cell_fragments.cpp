@@ -63,11 +63,10 @@ struct ExactFragments {
     SegmentBatch& b = batch;
     segment_ends(b, shade.rays, shade.smin, shade.smax, shade.piece);
     linear_segment_weights(b.n, b.length.data(), b.k0.data(), b.k1.data(), b.weights.data());
-    const LinearPiece& piece = shade.piece;
-    for (std::size_t k = 0; k < b.n; ++k) {  // as integrate_linear_closed_form
-      const EndWeights& w = b.weights[k];
-      const SegmentLight light{piece.color(b.sf[k]) * w.front + piece.color(b.sb[k]) * w.back, w.depth, w.opacity};
-      emitted += emit(b.i[k], b.j[k], light.rgb, light.opacity());
+    segment_light(b, shade.piece);
+    for (std::size_t k = 0; k < b.n; ++k) {
+      const double alpha = b.opacity[k] >= 0.0 ? b.opacity[k] : -std::expm1(-b.weights[k].depth);  // SegmentLight
+      emitted += emit(b.i[k], b.j[k], glm::dvec3(b.red[k], b.green[k], b.blue[k]), alpha);
     }
     return emitted;
   }

@@ -53,12 +53,36 @@ __attribute__((target_clones("avx2", "default"))) void orthographic_ends(Segment
   ends<false>(b, rays, smin, smax, piece);
 }
 
+// segment_light over n segments: LinearPiece::color at both ends, weighted.
+[[gnu::always_inline]] inline void light(std::size_t n, const EndWeights* __restrict w, const double* __restrict sf,
+                                         const double* __restrict sb, double* __restrict red,
+                                         double* __restrict green, double* __restrict blue,
+                                         double* __restrict opacity, const LinearPiece& piece) {
+  const double s0 = piece.s0, ds = piece.ds;
+  const double c0[3] = {piece.c0.r, piece.c0.g, piece.c0.b}, dc[3] = {piece.dc.r, piece.dc.g, piece.dc.b};
+  for (std::size_t k = 0; k < n; ++k) {
+    const double tf = (sf[k] - s0) * ds, tb = (sb[k] - s0) * ds, front = w[k].front, back = w[k].back;
+    red[k] = (c0[0] + dc[0] * tf) * front + (c0[0] + dc[0] * tb) * back;
+    green[k] = (c0[1] + dc[1] * tf) * front + (c0[1] + dc[1] * tb) * back;
+    blue[k] = (c0[2] + dc[2] * tf) * front + (c0[2] + dc[2] * tb) * back;
+    opacity[k] = w[k].opacity;
+  }
+}
+
+__attribute__((target_clones("avx2", "default"))) void light(SegmentBatch& b, const LinearPiece& piece) {
+  light(b.n, b.weights.data(), b.sf.data(), b.sb.data(), b.red.data(), b.green.data(), b.blue.data(),
+        b.opacity.data(), piece);
+}
+
 }  // namespace
+
+void segment_light(SegmentBatch& b, const LinearPiece& piece) { light(b, piece); }
 
 void SegmentBatch::grow() {
   const std::size_t m = std::max<std::size_t>(64, 2 * i.size());
   i.resize(m), j.resize(m), zf.resize(m), zb.resize(m), sf.resize(m), sb.resize(m);
   length.resize(m), k0.resize(m), k1.resize(m), weights.resize(m);
+  red.resize(m), green.resize(m), blue.resize(m), opacity.resize(m);
 }
 
 void segment_ends(SegmentBatch& b, const PixelRays& rays, double smin, double smax, const LinearPiece& piece) {

@@ -30,6 +30,7 @@ struct SegmentBatch {
   std::vector<double> zf, zb, sf, sb;
   std::vector<double> length, k0, k1;
   std::vector<EndWeights> weights;
+  std::vector<double> red, green, blue, opacity;  // opacity < 0: 1 - e^-depth still to compute
   void push(int pi, int pj, double qzf, double qzb, double qsf, double qsb) {
     if (n == i.size()) grow();
     i[n] = pi, j[n] = pj, zf[n] = qzf, zb[n] = qzb, sf[n] = qsf, sb[n] = qsb;
@@ -41,5 +42,8 @@ struct SegmentBatch {
 // The lengths, end scalars (clamped to [smin, smax]) and end extinctions of the batch's segments,
 // from their interpolated ends: length = (back - front depth) times the ray's length per depth.
 void segment_ends(SegmentBatch& b, const PixelRays& rays, double smin, double smax, const LinearPiece& piece);
+// The light of the batch's segments from their weights, as integrate_linear_closed_form: the ends'
+// colours weighted, premultiplied, and the opacity where the weights brought it.
+void segment_light(SegmentBatch& b, const LinearPiece& piece);
 
 }  // namespace cellproj
