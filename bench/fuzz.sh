@@ -23,6 +23,10 @@ per=$(( seconds / ${#harnesses[@]} )); [ $per -ge 1 ] || per=1
 # capped at 512 MiB (the harnesses' --max-memory is 128 MiB): ASan zero-fills and poisons what it
 # hands out, so a garbled header that has a library calloc gigabytes costs seconds per execution.
 export ASAN_OPTIONS=detect_leaks=0:allocator_may_return_null=1:max_allocation_size_mb=512 UBSAN_OPTIONS=print_stacktrace=1
+# Each fuzzing process writes its inputs to a folder of its own under TMPDIR: this run's, removed
+# at the end (forked jobs killed by a crash or a timeout leave theirs behind).
+TMPDIR=$(mktemp -d "${TMPDIR:-/tmp}/cellproj-fuzz-run-XXXXXX"); export TMPDIR
+trap 'rm -rf "$TMPDIR"' EXIT
 printf '%-8s %12s %8s %8s %8s %9s %9s\n' harness executions exec/s corpus cov crashes findings
 findings=0; : >$dir/findings.txt
 for h in "${harnesses[@]}"; do

@@ -15,6 +15,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "fuzz_folder.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
 
@@ -22,9 +23,8 @@ namespace {
 
 std::string& folder() {  // one per fuzzing process
   static std::string dir = [] {
-    char name[] = "/tmp/cellproj-fuzz-XXXXXX";
-    if (!mkdtemp(name)) std::abort();
-    return std::string(name);
+    const std::string name = make_fuzz_folder();
+    return name;
   }();
   return dir;
 }

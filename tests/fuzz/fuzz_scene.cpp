@@ -9,6 +9,7 @@
 #include <string>
 
 #include "base/error.hpp"
+#include "fuzz_folder.hpp"
 #include "grid/generate.hpp"
 #include "grid/write_mesh.hpp"
 #include "scene/prepare.hpp"
@@ -19,10 +20,9 @@ namespace {
 
 const std::string& folder() {  // one per fuzzing process, holding box.vtu for the scenes to name
   static const std::string dir = [] {
-    char name[] = "/tmp/cellproj-fuzz-XXXXXX";
-    if (!mkdtemp(name)) std::abort();
-    cellproj::write_vtu(cellproj::generate("box-tets", 2), std::string(name) + "/box.vtu");
-    return std::string(name);
+    const std::string name = make_fuzz_folder();
+    cellproj::write_vtu(cellproj::generate("box-tets", 2), name + "/box.vtu");
+    return name;
   }();
   return dir;
 }
