@@ -1,6 +1,7 @@
 #include "grid/vtk_xml_check.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <array>
 #include <cstdint>
 #include <cstdlib>
@@ -34,26 +35,35 @@ std::uint64_t type_size(const std::string& type) {
   return 0;  // String, Bit, ...: not checked
 }
 
-// The appended data section: raw bytes, or base64 text whose units (a header, then the data) are
-// each encoded on their own, as VTK writes them.
-class Appended {
+// An array's encoded data: the appended data section (raw bytes, or base64) in the file, or an
+// inline binary array's base64 text. As VTK writes it, an uncompressed array's byte count and data
+// are one base64 run; a compressed one's header and its data are each encoded on their own.
+class EncodedData {
  public:
-  Appended(const std::string& path, std::uint64_t data_start, std::uint64_t file_size, bool uint64, bool big,
-           bool base64)
+  // The appended section, from byte data_start of the file.
+  EncodedData(const std::string& path, std::uint64_t data_start, std::uint64_t file_size, bool uint64, bool big,
+              bool base64)
       : in_(path, std::ios::binary), start_(data_start), size_(file_size), word_(uint64 ? 8 : 4), big_(big),
         base64_(base64) {}
+  // An inline array's base64 text, white space removed.
+  EncodedData(std::string text, bool uint64, bool big)
+      : text_(std::move(text)), start_(0), size_(text_.size()), word_(uint64 ? 8 : 4), big_(big), base64_(true) {}
   std::uint64_t word() const { return word_; }
-  // The file bytes that `n` bytes of a unit take.
+  // The stored bytes that `n` bytes of a unit take.
   std::uint64_t stored(std::uint64_t n) const { return base64_ ? (n + 2) / 3 * 4 : n; }
-  // The file bytes after position `at` of the section.
+  // The stored bytes after position `at`.
   std::uint64_t left(std::uint64_t at) const { return start_ + at >= size_ ? 0 : size_ - start_ - at; }
   // The first `words` header integers of the unit at `at`, or nullopt past the end or not base64.
   std::optional<std::vector<std::uint64_t>> header(std::uint64_t at, std::uint64_t words) {
     const std::uint64_t n = words * word_;
     if (stored(n) > left(at)) return std::nullopt;
     std::string text(static_cast<std::size_t>(stored(n)), '\0');
-    in_.seekg(static_cast<std::streamoff>(start_ + at));
-    in_.read(&text[0], static_cast<std::streamsize>(text.size()));
+    if (in_.is_open()) {
+      in_.seekg(static_cast<std::streamoff>(start_ + at));
+      in_.read(&text[0], static_cast<std::streamsize>(text.size()));
+    } else {
+      text = text_.substr(static_cast<std::size_t>(at), text.size());
+    }
     std::vector<unsigned char> bytes;
     if (!base64_)
       bytes.assign(text.begin(), text.end());
@@ -81,6 +91,7 @@ class Appended {
     return true;
   }
   std::ifstream in_;
+  std::string text_;
   std::uint64_t start_, size_, word_;
   bool big_, base64_;
 };
@@ -179,56 +190,78 @@ void check_extents(const std::string& path, const std::string& xml) {
                                      "): the points no piece holds would be undefined"));
 }
 
-// Each appended DataArray's block header against the file and the Piece's counts.
-void check_appended(const std::string& path, const std::string& xml, std::uint64_t file_size) {
+// Each binary DataArray's byte count or compression header against its data and the Piece's
+// counts: those in the appended data section, and those inline as base64 text.
+void check_binary_arrays(const std::string& path, const std::string& xml, std::uint64_t file_size) {
   const std::size_t appended = xml.find("<AppendedData");
-  if (appended == std::string::npos) return;  // inline data: VTK parses it as text
-  const std::size_t open_end = xml.find('>', appended);
-  if (open_end == std::string::npos) return;
-  const std::string encoding = attribute(xml.substr(appended, open_end - appended), "encoding").value_or("raw");
-  if (encoding != "raw" && encoding != "base64")
-    throw InputError(where(path, "the AppendedData encoding '" + encoding + "' is neither raw nor base64"));
-  const std::size_t underscore = xml.find('_', open_end);
-  if (underscore == std::string::npos) return;
+  const std::size_t end = std::min(appended, xml.size());  // the XML before any appended data
   const std::size_t file_tag = xml.find("<VTKFile");
   const std::string file = file_tag == std::string::npos ? "" : xml.substr(file_tag, xml.find('>', file_tag) - file_tag);
   const bool compressed = attribute(file, "compressor").has_value();
-  Appended data(path, underscore + 1, file_size, attribute(file, "header_type").value_or("UInt32") == "UInt64",
-                attribute(file, "byte_order").value_or("LittleEndian") == "BigEndian", encoding == "base64");
+  const bool uint64 = attribute(file, "header_type").value_or("UInt32") == "UInt64";
+  const bool big = attribute(file, "byte_order").value_or("LittleEndian") == "BigEndian";
+  std::optional<EncodedData> section;  // the appended data, from its underscore on
+  std::string encoding = "base64";
+  if (appended != std::string::npos) {
+    const std::size_t open_end = xml.find('>', appended);
+    if (open_end == std::string::npos) return;
+    encoding = attribute(xml.substr(appended, open_end - appended), "encoding").value_or("raw");
+    if (encoding != "raw" && encoding != "base64")
+      throw InputError(where(path, "the AppendedData encoding '" + encoding + "' is neither raw nor base64"));
+    const std::size_t underscore = xml.find('_', open_end);
+    if (underscore != std::string::npos)
+      section.emplace(path, underscore + 1, file_size, uint64, big, encoding == "base64");
+  }
   // One Piece: its counts give the arrays' sizes (several: only the blocks are checked).
   std::int64_t points = -1, cells = -1;
   std::optional<std::array<long long, 6>> piece_extent;  // a rectilinear grid's: its axes' lengths
-  if (xml.find("<Piece") == xml.rfind("<Piece", appended) && xml.find("<Piece") != std::string::npos) {
+  if (xml.find("<Piece") == xml.rfind("<Piece", end) && xml.find("<Piece") != std::string::npos) {
     const std::size_t p = xml.find("<Piece");
     const std::string piece = xml.substr(p, xml.find('>', p) - p);
     points = std::atoll(attribute(piece, "NumberOfPoints").value_or("-1").c_str());
     cells = std::atoll(attribute(piece, "NumberOfCells").value_or("-1").c_str());
     if (const auto e = attribute(piece, "Extent")) piece_extent = extent(*e);
   }
-  std::string section;  // PointData, CellData, Points, Cells, Coordinates
-  int axis = 0;         // in Coordinates: the axis of the next DataArray
-  for (std::size_t at = xml.find('<'); at < appended; at = xml.find('<', at + 1)) {
-    const std::size_t end = xml.find('>', at);
-    const std::string tag = xml.substr(at, end - at);
+  std::string section_name;  // PointData, CellData, Points, Cells, Coordinates
+  int axis = 0;              // in Coordinates: the axis of the next DataArray
+  for (std::size_t at = xml.find('<'); at < end; at = xml.find('<', at + 1)) {
+    const std::size_t close = std::min(xml.find('>', at), xml.size());
+    const std::string tag = xml.substr(at, close - at);
     for (const char* s : {"<PointData", "<CellData", "<Points", "<Cells", "<FieldData", "<Coordinates"})
-      if (tag.rfind(s, 0) == 0) section = s + 1, axis = 0;
-    const int this_axis = tag.rfind("<DataArray", 0) == 0 && section == "Coordinates" ? axis++ : -1;
+      if (tag.rfind(s, 0) == 0) section_name = s + 1, axis = 0;
+    const int this_axis = tag.rfind("<DataArray", 0) == 0 && section_name == "Coordinates" ? axis++ : -1;
+    if (tag.rfind("<DataArray", 0) != 0) continue;
     // An array VTK reads from the appended data: "appended", or a format it does not know with an
     // offset (a fuzzed format="appe" was read as appended, its garbled header sizing 16 GB).
     const std::string format = attribute(tag, "format").value_or("");
-    if (tag.rfind("<DataArray", 0) != 0 || format == "ascii" || format == "binary" ||
-        (format != "appended" && !attribute(tag, "offset")))
-      continue;
     const std::string name = attribute(tag, "Name").value_or("?");
-    const std::uint64_t offset = std::strtoull(attribute(tag, "offset").value_or("0").c_str(), nullptr, 10);
-    const std::string what = "DataArray '" + name + "' (appended at offset " + std::to_string(offset) + ")";
+    std::optional<EncodedData> inline_data;
+    std::uint64_t offset = 0;
+    std::string what = "DataArray '" + name + "'";
+    if (format == "binary") {  // VTK reads an inline array cut short without a word: a wrong mesh
+      const std::size_t stop = xml.find('<', close);  // the data ends at </DataArray> or an InformationKey
+      if (stop == std::string::npos || stop > end) continue;  // past the head: not checked
+      std::string text;
+      for (std::size_t k = close + 1; k < stop; ++k)
+        if (!std::isspace(static_cast<unsigned char>(xml[k]))) text += xml[k];
+      inline_data.emplace(std::move(text), uint64, big);
+      what += " (inline binary)";
+    } else if (format != "ascii" && (format == "appended" || attribute(tag, "offset")) && section) {
+      offset = std::strtoull(attribute(tag, "offset").value_or("0").c_str(), nullptr, 10);
+      what += " (appended at offset " + std::to_string(offset) + ")";
+    } else {
+      continue;
+    }
+    EncodedData& data = inline_data ? *inline_data : *section;
+    const std::string stored_as = inline_data ? "base64" : encoding;
     const auto fail = [&](const std::string& why) { return InputError(where(path, what + ": " + why)); };
     // What the Piece says it holds, in bytes (0: unknown).
     const std::uint64_t item = type_size(attribute(tag, "type").value_or(""));
     const std::uint64_t comps = std::strtoull(attribute(tag, "NumberOfComponents").value_or("1").c_str(), nullptr, 10);
     std::int64_t tuples = -1;
-    if (section == "PointData" || section == "Points") tuples = points;
-    if (section == "CellData" || (section == "Cells" && (name == "types" || name == "offsets"))) tuples = cells;
+    if (section_name == "PointData" || section_name == "Points") tuples = points;
+    if (section_name == "CellData" || (section_name == "Cells" && (name == "types" || name == "offsets")))
+      tuples = cells;
     // VTK's reader takes an axis's coordinates short without a word and reads the missing ones from
     // past its array (a .vtr read with exit 0 and an inverted cell).
     if (this_axis >= 0 && this_axis < 3 && piece_extent)
@@ -237,18 +270,18 @@ void check_appended(const std::string& path, const std::string& xml, std::uint64
     std::uint64_t bytes = 0;  // uncompressed
     if (compressed) {
       const auto head = data.header(offset, 3);
-      if (!head) throw fail("its compression header runs past the end of the file, or is not " + encoding);
+      if (!head) throw fail("its compression header runs past the end of its data, or is not " + stored_as);
       const std::uint64_t blocks = (*head)[0], block = (*head)[1], last = (*head)[2];
       if (blocks > data.left(offset) / data.word())
         throw fail("its compression header declares " + std::to_string(blocks) + " blocks, more than the file holds");
       const auto sizes = data.header(offset, 3 + blocks);
-      if (!sizes) throw fail("its compression header runs past the end of the file, or is not " + encoding);
+      if (!sizes) throw fail("its compression header runs past the end of its data, or is not " + stored_as);
       std::uint64_t packed = 0;
       for (std::uint64_t k = 0; k < blocks; ++k) packed += (*sizes)[3 + k];
       const std::uint64_t after = offset + data.stored((3 + blocks) * data.word());
       if (data.stored(packed) > data.left(after))
         throw fail("its " + std::to_string(blocks) + " compressed blocks declare " + std::to_string(packed) +
-                   " bytes, past the end of the file");
+                   " bytes, past the end of its data");
       bytes = blocks == 0 ? 0 : (blocks - 1) * block + (last == 0 ? block : last);
       if (blocks > 0 && (block == 0 || last > block || bytes / 1032 > packed + 64))
         throw fail("its compression header declares " + std::to_string(bytes) + " bytes from " + std::to_string(packed) +
@@ -256,15 +289,17 @@ void check_appended(const std::string& path, const std::string& xml, std::uint64
                    "): deflate expands at most 1032 times");
     } else {
       const auto n = data.header(offset, 1);
-      if (!n) throw fail("its byte count runs past the end of the file, or is not " + encoding);
-      if (data.stored((*n)[0]) > data.left(offset + data.stored(data.word())))
-        throw fail("it declares " + std::to_string((*n)[0]) + " bytes, past the end of the file");
+      if (!n) throw fail("its byte count runs past the end of its data, or is not " + stored_as);
+      if (data.stored(data.word() + (*n)[0]) > data.left(offset))  // count and data: one run
+        throw fail("it declares " + std::to_string((*n)[0]) + " bytes, past the end of its data (" +
+                   std::to_string(data.left(offset)) + (stored_as == "base64" ? " base64 characters" : " bytes") +
+                   " from its start)");
       bytes = (*n)[0];
     }
     if (expected > 0 && bytes != expected)
       throw fail("it holds " + std::to_string(bytes) + " bytes where " + std::to_string(tuples) + " " +
-                 (section == "CellData" || section == "Cells" ? "cells" : "points") + " of " + std::to_string(comps) +
-                 " " + attribute(tag, "type").value_or("") + " need " + std::to_string(expected));
+                 (section_name == "CellData" || section_name == "Cells" ? "cells" : "points") + " of " +
+                 std::to_string(comps) + " " + attribute(tag, "type").value_or("") + " need " + std::to_string(expected));
   }
 }
 
@@ -273,7 +308,7 @@ void check_appended(const std::string& path, const std::string& xml, std::uint64
 void check_vtk_xml(const std::string& path) {
   const auto head = xml_head(path);  // read once for both checks
   if (!head) return;
-  check_appended(path, head->first, head->second);
+  check_binary_arrays(path, head->first, head->second);
   check_extents(path, head->first);
 }
 

@@ -12,7 +12,10 @@
 #include <vtkLogger.h>
 #include <vtkRectilinearGrid.h>
 #include <vtkSmartPointer.h>
+#include <vtkUnstructuredGrid.h>
 #include <vtkXMLRectilinearGridWriter.h>
+#include <vtkXMLUnstructuredGridReader.h>
+#include <vtkXMLUnstructuredGridWriter.h>
 
 #include "base/bytes.hpp"
 #include "base/error.hpp"
@@ -385,7 +388,8 @@ TEST(Readers, ARectilinearAxisShorterThanItsExtentIsRefused) {
   // VTK's XML reader takes a short axis of coordinates without a word and reads the missing ones
   // from past its array: a .vtr of 3 x-points with 2 x-coordinates read with an inverted cell.
   test::TempDir dir;
-  const auto write = [&](const std::string& name, int nx, bool ascii) {
+  enum Mode { appended, ascii, inline_binary };
+  const auto write = [&](const std::string& name, int nx, Mode mode) {
     auto g = vtkSmartPointer<vtkRectilinearGrid>::New();
     g->SetDimensions(3, 2, 2);
     const int n[3] = {nx, 2, 2};
@@ -398,19 +402,55 @@ TEST(Readers, ARectilinearAxisShorterThanItsExtentIsRefused) {
     auto w = vtkSmartPointer<vtkXMLRectilinearGridWriter>::New();
     w->SetInputData(g);
     w->SetFileName(dir.file(name).c_str());
-    if (ascii) w->SetDataModeToAscii();
+    if (mode == ascii) w->SetDataModeToAscii();
+    if (mode == inline_binary) w->SetDataModeToBinary();
     w->Write();
     return dir.file(name);
   };
-  EXPECT_EQ(read_mesh(write("good.vtr", 3, false)).n_cells(), 2);
-  EXPECT_EQ(read_mesh(write("good_ascii.vtr", 3, true)).n_cells(), 2);
-  std::string what = test::input_error([&] { read_mesh(write("short.vtr", 2, false)); });
-  EXPECT_NE(what.find("short.vtr: DataArray"), std::string::npos) << what;
-  EXPECT_NE(what.find("it holds 16 bytes where 3 points of 1 Float64 need 24"), std::string::npos) << what;
-  what = test::input_error([&] { read_mesh(write("short_ascii.vtr", 2, true)); });
+  EXPECT_EQ(read_mesh(write("good.vtr", 3, appended)).n_cells(), 2);
+  EXPECT_EQ(read_mesh(write("good_ascii.vtr", 3, ascii)).n_cells(), 2);
+  EXPECT_EQ(read_mesh(write("good_inline.vtr", 3, inline_binary)).n_cells(), 2);
+  for (const auto& [name, mode] : {std::pair("short.vtr", appended), std::pair("short_inline.vtr", inline_binary)}) {
+    const std::string what = test::input_error([&, n = name, m = mode] { read_mesh(write(n, 2, m)); });
+    EXPECT_NE(what.find(std::string(name) + ": DataArray"), std::string::npos) << what;
+    EXPECT_NE(what.find("it holds 16 bytes where 3 points of 1 Float64 need 24"), std::string::npos) << what;
+  }
+  const std::string what = test::input_error([&] { read_mesh(write("short_ascii.vtr", 2, ascii)); });
   EXPECT_NE(what.find("short_ascii.vtr: piece 0's x coordinates hold 2 values for the 3 points of its extent"),
             std::string::npos)
       << what;
+}
+
+TEST(Readers, AnInlineBinaryArrayCutShortIsRefused) {
+  // VTK's XML reader takes an inline base64 array shorter than its byte count without a word: a
+  // .vtu with half its connectivity read with exit 0 and 81 degenerate cells, one with a third of
+  // its field read as a wrong field. Written by VTK's own writer, then cut.
+  test::TempDir dir;
+  write_vtu(make_box(2, 2, 2, {0, 0, 0}, {1, 1, 1}, true), dir.file("box.vtu"));
+  auto reader = vtkSmartPointer<vtkXMLUnstructuredGridReader>::New();
+  reader->SetFileName(dir.file("box.vtu").c_str());
+  reader->Update();
+  for (bool compressed : {false, true}) {
+    const std::string tag = compressed ? "z" : "raw";
+    auto w = vtkSmartPointer<vtkXMLUnstructuredGridWriter>::New();
+    w->SetInputData(reader->GetOutput());
+    w->SetDataModeToBinary();
+    if (!compressed) w->SetCompressorTypeToNone();
+    w->SetFileName(dir.file(tag + ".vtu").c_str());
+    w->Write();
+    const std::string good = slurp(dir.file(tag + ".vtu"));
+    ASSERT_NE(good.find("format=\"binary\""), std::string::npos);
+    EXPECT_EQ(read_mesh(dir.file(tag + ".vtu")).n_cells(), read_mesh(dir.file("box.vtu")).n_cells()) << tag;
+    // The connectivity's base64 text, cut to half.
+    const std::size_t array = good.find("Name=\"connectivity\"");
+    const std::size_t start = good.find_first_not_of(" \n", good.find('>', array) + 1);
+    const std::size_t stop = good.find('<', start);
+    const std::size_t length = good.find_last_not_of(" \n", stop - 1) + 1 - start;
+    spit(dir.file(tag + "_cut.vtu"), good.substr(0, start + length / 2) + good.substr(start + length));
+    const std::string what = test::input_error([&] { read_mesh(dir.file(tag + "_cut.vtu")); });
+    EXPECT_NE(what.find(tag + "_cut.vtu: DataArray 'connectivity' (inline binary): "), std::string::npos) << what;
+    EXPECT_NE(what.find("past the end of its data"), std::string::npos) << what;
+  }
 }
 
 TEST(Readers, ParallelVtuPiecesAreMergedAtTheirInterface) {
