@@ -19,7 +19,7 @@ namespace cellproj {
 namespace {
 
 // pt-analytic's and pt-breakpoints' light at pixel (i, j) from the ray's entry and exit: depth and
-// scalar, or in perspective 1/z and s/z (perspective-correct interpolation: z = 1 / (1/z), s = (s/z) z).
+// scalar, or in perspective 1/z and s/z (segment_between).
 struct ExactShade {
   const TransferFunction& tf;
   const PixelRays& rays;
@@ -29,9 +29,9 @@ struct ExactShade {
   // The segment's length and its ends' scalars (clamped to the cell's range) from the
   // interpolated quantities.
   double ends(int i, int j, double zf, double zb, double& sf, double& sb) const {
-    if (persp) zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
-    sf = std::clamp(sf, smin, smax), sb = std::clamp(sb, smin, smax);
-    return std::max(0.0, zb - zf) * rays.length_per_depth_at_pixel(i, j);
+    const double per_depth = rays.length_per_depth_at_pixel(i, j);
+    return persp ? segment_between<true>(zf, zb, sf, sb, per_depth, smin, smax)
+                 : segment_between<false>(zf, zb, sf, sb, per_depth, smin, smax);
   }
   SegmentLight operator()(int i, int j, double zf, double zb, double sf, double sb) const {
     const double l = ends(i, j, zf, zb, sf, sb);
@@ -65,8 +65,8 @@ struct ExactFragments {
     linear_segment_weights(b.n, b.length.data(), b.k0.data(), b.k1.data(), b.weights.data());
     segment_light(b, shade.piece);
     for (std::size_t k = 0; k < b.n; ++k) {
-      const double alpha = b.opacity[k] >= 0.0 ? b.opacity[k] : -std::expm1(-b.weights[k].depth);  // SegmentLight
-      emitted += emit(b.i[k], b.j[k], glm::dvec3(b.red[k], b.green[k], b.blue[k]), alpha);
+      const SegmentLight light{{b.red[k], b.green[k], b.blue[k]}, b.weights[k].depth, b.opacity[k]};
+      emitted += emit(b.i[k], b.j[k], light.rgb, light.opacity());
     }
     return emitted;
   }

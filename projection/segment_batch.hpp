@@ -13,13 +13,31 @@
 namespace cellproj {
 
 // Colour and extinction as linear functions of s over a cell's scalar range holding no breakpoint.
+// Written with selects of values (std::max's comparison), as is segment_between, so that loops over
+// many fragments run in SIMD lanes with each lane the same bits as one call.
 struct LinearPiece {
   double s0 = 0, ds = 0;  // s0 and 1 / (s1 - s0) (0 for a constant cell)
   double k0 = 0, dk = 0;
   glm::dvec3 c0{0.0}, dc{0.0};
-  double kappa(double s) const { return std::max(0.0, k0 + dk * (s - s0) * ds); }
+  double kappa(double s) const {
+    const double k = k0 + dk * (s - s0) * ds;
+    return 0.0 < k ? k : 0.0;
+  }
   glm::dvec3 color(double s) const { return c0 + dc * ((s - s0) * ds); }
 };
+
+// The segment a pixel's ray crosses, from the interpolated ends (depth and scalar, or in
+// perspective 1/z and s/z: perspective-correct interpolation, z = 1 / (1/z), s = (s/z) z): its
+// length, with per_depth the ray's length per unit of depth there, and the ends' scalars clamped
+// to [smin, smax] (as std::clamp).
+template <bool perspective>
+inline double segment_between(double zf, double zb, double& sf, double& sb, double per_depth, double smin,
+                              double smax) {
+  if constexpr (perspective) zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
+  sf = sf < smin ? smin : smax < sf ? smax : sf, sb = sb < smin ? smin : smax < sb ? smax : sb;
+  const double thick = zb - zf;
+  return (0.0 < thick ? thick : 0.0) * per_depth;
+}
 
 // pt-analytic's and pt-breakpoints' fragments of one cell before their light, so the closed forms
 // run over the cell at once: pixel and the interpolated ends (depth and scalar, or 1/z and s/z in
