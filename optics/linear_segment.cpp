@@ -56,20 +56,25 @@ constexpr auto kE = [] {
 
 constexpr int floor_log2(int n) { return n < 2 ? 0 : 1 + floor_log2(n / 2); }
 
-// Four segments' values in one register (GCC's vector extension, also clang's): each lane is
-// computed by the scalar code's operations in the scalar code's order, so it holds the same bits.
+// Segments' values side by side in one register (GCC's vector extension, also clang's): each
+// lane is computed by the scalar code's operations in the scalar code's order, so it holds the same
+// bits. Four lanes with AVX2, two with SSE2 (every x86-64 processor; NEON elsewhere).
 using f64x4 = double __attribute__((vector_size(32)));
-// The templates below take and return f64x4 by value, always inlined: no call passes one, so the
-// ABI note for 32-byte vectors without AVX does not apply.
+using f64x2 = double __attribute__((vector_size(16)));
+// The templates below take and return vectors by value, always inlined into a function of the
+// vector's target: no call passes one, so the ABI note for 32-byte vectors does not apply.
 #pragma GCC diagnostic ignored "-Wpsabi"
 
 // A coefficient as a value of the evaluation's type: itself, or the same in every lane.
 template <class T, class C>
 [[gnu::always_inline]] inline T lift(const C& c) {
-  if constexpr (std::is_same_v<T, C>)
+  if constexpr (std::is_same_v<T, C>) {
     return c;
-  else
-    return T{c, c, c, c};
+  } else {
+    T v{};
+    for (std::size_t m = 0; m < sizeof(T) / sizeof(double); ++m) v[m] = c;
+    return v;
+  }
 }
 
 // c[0] + c[1] x + ... + c[N-1] x^(N-1) by Estrin's scheme: the two halves independently, joined by
@@ -107,17 +112,33 @@ template <class T>
   return {g, e - g, d, e};
 }
 
-// The weights of segments 0 .. n - 1 (n a multiple of 4) as if each were a small cell, four at a
-// time; the caller replaces those that are not. One function per target: AVX2 where the processor
-// has it (chosen when the library loads), pairs of SSE2 lanes elsewhere.
-__attribute__((target_clones("avx2", "default"))) void small_cells(std::size_t n, const double* L, const double* k0,
-                                                                   const double* k1, EndWeights* w) {
-  for (std::size_t k = 0; k < n; k += 4) {
-    f64x4 l, c0, c1;
+// The weights of segments 0 .. n - 1 (n a multiple of 4) as if each were a small cell, V's lanes at
+// a time; the caller replaces those that are not.
+template <class V>
+[[gnu::always_inline]] inline void small_cells(std::size_t n, const double* L, const double* k0, const double* k1,
+                                               EndWeights* w) {
+  constexpr std::size_t lanes = sizeof(V) / sizeof(double);
+  for (std::size_t k = 0; k < n; k += lanes) {
+    V l, c0, c1;
     std::memcpy(&l, L + k, sizeof l), std::memcpy(&c0, k0 + k, sizeof c0), std::memcpy(&c1, k1 + k, sizeof c1);
-    const SmallCellWeights<f64x4> s = small_cell_weights(c0 * l, 0.5 * (c1 - c0) * l);  // a, b as below
-    for (int m = 0; m < 4; ++m) w[k + m] = {s.front[m], s.back[m], s.depth[m], s.opacity[m]};
+    const SmallCellWeights<V> s = small_cell_weights(c0 * l, 0.5 * (c1 - c0) * l);  // a, b as below
+    for (std::size_t m = 0; m < lanes; ++m) w[k + m] = {s.front[m], s.back[m], s.depth[m], s.opacity[m]};
   }
+}
+
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+__attribute__((target("avx2"))) void small_cells_avx2(std::size_t n, const double* L, const double* k0,
+                                                      const double* k1, EndWeights* w) {
+  small_cells<f64x4>(n, L, k0, k1, w);
+}
+#endif
+
+// Four lanes where the processor has AVX2, else two.
+void small_cells(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w) {
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+  if (__builtin_cpu_supports("avx2")) return small_cells_avx2(n, L, k0, k1, w);
+#endif
+  small_cells<f64x2>(n, L, k0, k1, w);
 }
 
 // M_k(a) = int_0^1 u^k e^{-a u} du for k = 0 .. kmax, by the recursion M_k = (k M_{k-1} - e^-a) / a

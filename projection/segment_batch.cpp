@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "base/simd.hpp"
+
 namespace cellproj {
 namespace {
 
@@ -31,12 +33,12 @@ template <bool perspective>
 }
 
 // One function per projection and target: the build's default, or AVX2 where the processor has it.
-__attribute__((target_clones("avx2", "default"))) void perspective_ends(SegmentBatch& b, const PixelRays& rays,
+CELLPROJ_AVX2_CLONES void perspective_ends(SegmentBatch& b, const PixelRays& rays,
                                                                         double smin, double smax,
                                                                         const LinearPiece& piece) {
   ends<true>(b, rays, smin, smax, piece);
 }
-__attribute__((target_clones("avx2", "default"))) void orthographic_ends(SegmentBatch& b, const PixelRays& rays,
+CELLPROJ_AVX2_CLONES void orthographic_ends(SegmentBatch& b, const PixelRays& rays,
                                                                          double smin, double smax,
                                                                          const LinearPiece& piece) {
   ends<false>(b, rays, smin, smax, piece);
@@ -54,7 +56,7 @@ __attribute__((target_clones("avx2", "default"))) void orthographic_ends(Segment
   }
 }
 
-__attribute__((target_clones("avx2", "default"))) void light(SegmentBatch& b, const LinearPiece& piece) {
+CELLPROJ_AVX2_CLONES void light(SegmentBatch& b, const LinearPiece& piece) {
   light(b.n, b.weights.data(), b.sf.data(), b.sb.data(), b.red.data(), b.green.data(), b.blue.data(),
         b.opacity.data(), piece);
 }

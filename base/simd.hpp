@@ -1,0 +1,10 @@
+#pragma once
+// CELLPROJ_AVX2_CLONES before a function: it is compiled twice, for the build's target and for
+// AVX2, and the processor picks one when the library loads (target_clones, on x86-64 with GCC or
+// clang). Its loops that vectorize then run four doubles wide where the processor can. On other
+// processors: the build's target only.
+#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#define CELLPROJ_AVX2_CLONES __attribute__((target_clones("avx2", "default")))
+#else
+#define CELLPROJ_AVX2_CLONES
+#endif
