@@ -392,6 +392,10 @@ expect 1 "pd.vtk: its dataset is POLYDATA \\(surfaces, lines and points\\), whic
 # compression header sized 16 GB (95 s and 16 GB before the address-space limit stopped it).
 cp "$src/tests/fuzz/regressions/vtu/crash-6d88ac0e517ccc57f7fcba81c76df9f7fd358354" "$tmp/appe.vtu"
 expect 1 "appe.vtu: DataArray 'offsets' \\(appended at offset 808\\): its compression header runs past the end of its data, or is not base64" -- info "$tmp/appe.vtu"
+# A fuzzed .vtu whose AppendedData lost its '_': VTK's reader looked for its data for 13 to 97 s and
+# asked for 20 GB.
+cp "$src/tests/fuzz/regressions/vtu/crash-ca079d298646bd75ab4a6c7babb37e84173afd11" "$tmp/nounderscore.vtu"
+expect 1 "nounderscore.vtu: its AppendedData section does not begin with '_' \\(byte 1297\\): where its arrays' offsets count from is unknown" -- info "$tmp/nounderscore.vtu"
 # Geomview's OFF, a surface, shares the .off extension with the tetrahedral benchmark format.
 printf 'OFF\n4 4 6\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 0 3 2\n' >"$tmp/geomview.off"
 expect 1 "geomview.off: line 1: 'OFF' starts a Geomview OFF surface \\(polygons\\)" -- info "$tmp/geomview.off"
