@@ -413,6 +413,12 @@ for kw in 'CELLSPOINT_' 'cELLS' '\vCELLS'; do
 done
 sed 's/Version 5.1/Version 5x1/' "$tmp/t.vtk" >"$tmp/version.vtk"
 expect 1 "version.vtk: line 1: the version is garbled" -- info "$tmp/version.vtk"
+# A format-5 CONNECTIVITY one id short: VTK's reader read it with exit 0 and degenerate cells; a
+# fuzzed file's short OFFSETS crashed it.
+awk '/^CONNECTIVITY/{print; getline; $1=""; print; next} {print}' "$tmp/t.vtk" >"$tmp/shortconn.vtk"
+expect 1 "shortconn.vtk: CELLS 7 24: its CONNECTIVITY array holds 23 numbers where the block declares 24: truncated or corrupt" -- info "$tmp/shortconn.vtk"
+awk '/^OFFSETS/{print; getline; $1=""; print; next} {print}' "$tmp/t.vtk" >"$tmp/shortoff.vtk"
+expect 1 "shortoff.vtk: CELLS 7 24: its OFFSETS array holds 6 numbers where the block declares 7: truncated or corrupt" -- info "$tmp/shortoff.vtk"
 awk '/^OFFSETS/{print; getline; $2=99; print; next} {print}' "$tmp/t.vtk" >"$tmp/offsets.vtk"
 expect 1 "offsets.vtk: cell 0's point ids run from offset 0 to 99, outside the [0-9]+ connectivity ids or backwards" -- info "$tmp/offsets.vtk"
 # An .off count behind a comment: the header check reads it as the reader does.
