@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <array>
 #include <cstdint>
 #include <cstdlib>
@@ -153,6 +154,16 @@ void check_extents(const std::string& path, const std::string& xml) {
     const std::string tag = xml.substr(at, close - at);
     if (tag.rfind("<StructuredGrid", 0) == 0 || tag.rfind("<RectilinearGrid", 0) == 0 || tag.rfind("<ImageData", 0) == 0) {
       if (const auto w = attribute(tag, "WholeExtent")) whole = extent(*w);
+      // VTK's reader keeps its default for an Origin or Spacing it cannot parse ("1 nan 1" read as
+      // spacing 1 without a word): the points would be placed where the file does not say.
+      for (const char* name : {"Origin", "Spacing"})
+        if (const auto value = attribute(tag, name); value && tag.rfind("<ImageData", 0) == 0) {
+          std::istringstream words(*value);
+          double v[3];
+          if (!(words >> v[0] >> v[1] >> v[2]) || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
+            throw InputError(where(path, std::string("its ImageData ") + name + " '" + value->substr(0, 60) +
+                                             "' is not three finite numbers"));
+        }
     } else if (tag.rfind("<Piece", 0) == 0) {
       if (const auto e = attribute(tag, "Extent"); e && extent(*e)) pieces.push_back(*extent(*e));
     } else if (tag.rfind("<Coordinates", 0) == 0) {

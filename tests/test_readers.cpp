@@ -6,6 +6,7 @@
 #include <sstream>
 #include <iterator>
 #include <thread>
+#include <tuple>
 
 #include <gtest/gtest.h>
 #include <vtkDoubleArray.h>
@@ -380,6 +381,27 @@ TEST(Readers, StructuredXmlPiecesMustCoverTheWholeExtent) {
     const std::string what =
         test::input_error([&] { read_mesh(vts("gap.vts", gap, {"0 1 0 1 0 1", "1 2 0 1 0 1"})); });
     EXPECT_NE(what.find("gap.vts: its pieces' extents do not cover its WholeExtent (" + gap + ")"), std::string::npos)
+        << what;
+  }
+}
+
+TEST(Readers, AnImageDatasOriginAndSpacingMustBeThreeFiniteNumbers) {
+  // VTK's reader keeps its default for an Origin or Spacing it cannot parse: "1 nan 1" read as
+  // spacing 1, with exit 0.
+  test::TempDir dir;
+  const auto vti = [&](const std::string& name, const std::string& origin, const std::string& spacing) {
+    std::ofstream(dir.file(name)) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n"
+                                  << "<ImageData WholeExtent=\"0 2 0 1 0 1\" Origin=\"" << origin << "\" Spacing=\""
+                                  << spacing << "\">\n<Piece Extent=\"0 2 0 1 0 1\"></Piece>\n</ImageData>\n</VTKFile>\n";
+    return dir.file(name);
+  };
+  const Mesh m = read_mesh(vti("good.vti", "0 0 0", "0.5 2 1"));
+  EXPECT_EQ(m.n_cells(), 2);
+  for (const auto& [origin, spacing, bad] :
+       {std::tuple("0 0 0", "1 nan 1", "Spacing '1 nan 1'"), std::tuple("0 x 0", "1 1 1", "Origin '0 x 0'"),
+        std::tuple("0 0", "1 1 1", "Origin '0 0'"), std::tuple("0 0 0", "1 inf 1", "Spacing '1 inf 1'")}) {
+    const std::string what = test::input_error([&, o = origin, sp = spacing] { read_mesh(vti("bad.vti", o, sp)); });
+    EXPECT_NE(what.find(std::string("bad.vti: its ImageData ") + bad + " is not three finite numbers"), std::string::npos)
         << what;
   }
 }
