@@ -1,9 +1,9 @@
 #include "grid/vtk_xml_check.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cctype>
 #include <cmath>
-#include <array>
 #include <cstdint>
 #include <cstdlib>
 #include <filesystem>
@@ -50,6 +50,7 @@ class EncodedData {
   EncodedData(std::string text, bool uint64, bool big)
       : text_(std::move(text)), start_(0), size_(text_.size()), word_(uint64 ? 8 : 4), big_(big), base64_(true) {}
   std::uint64_t word() const { return word_; }
+  std::string encoding() const { return base64_ ? "base64" : "raw"; }
   // The stored bytes that `n` bytes of a unit take.
   std::uint64_t stored(std::uint64_t n) const { return base64_ ? (n + 2) / 3 * 4 : n; }
   // The stored bytes after position `at`.
@@ -201,6 +202,40 @@ void check_extents(const std::string& path, const std::string& xml) {
                                      "): the points no piece holds would be undefined"));
 }
 
+// The uncompressed bytes of the array at `offset` of `data`: its byte count, or what its compression
+// header declares, each checked against the data there. `fail(why)` makes the error naming the array.
+template <class Fail>
+std::uint64_t data_bytes(EncodedData& data, std::uint64_t offset, bool compressed, const Fail& fail) {
+  if (compressed) {
+    const auto head = data.header(offset, 3);
+    if (!head) throw fail("its compression header runs past the end of its data, or is not " + data.encoding());
+    const std::uint64_t blocks = (*head)[0], block = (*head)[1], last = (*head)[2];
+    if (blocks > data.left(offset) / data.word())
+      throw fail("its compression header declares " + std::to_string(blocks) + " blocks, more than its data holds");
+    const auto sizes = data.header(offset, 3 + blocks);
+    if (!sizes) throw fail("its compression header runs past the end of its data, or is not " + data.encoding());
+    std::uint64_t packed = 0;
+    for (std::uint64_t k = 0; k < blocks; ++k) packed += (*sizes)[3 + k];
+    const std::uint64_t after = offset + data.stored((3 + blocks) * data.word());
+    if (data.stored(packed) > data.left(after))
+      throw fail("its " + std::to_string(blocks) + " compressed blocks declare " + std::to_string(packed) +
+                 " bytes, past the end of its data");
+    const std::uint64_t bytes = blocks == 0 ? 0 : (blocks - 1) * block + (last == 0 ? block : last);
+    if (blocks > 0 && (block == 0 || last > block || bytes / 1032 > packed + 64))
+      throw fail("its compression header declares " + std::to_string(bytes) + " bytes from " + std::to_string(packed) +
+                 " compressed ones (block size " + std::to_string(block) + ", last block " + std::to_string(last) +
+                 "): deflate expands at most 1032 times");
+    return bytes;
+  }
+  const auto n = data.header(offset, 1);
+  if (!n) throw fail("its byte count runs past the end of its data, or is not " + data.encoding());
+  if (data.stored(data.word() + (*n)[0]) > data.left(offset))  // count and data: one run
+    throw fail("it declares " + std::to_string((*n)[0]) + " bytes, past the end of its data (" +
+               std::to_string(data.left(offset)) + (data.encoding() == "base64" ? " base64 characters" : " bytes") +
+               " from its start)");
+  return (*n)[0];
+}
+
 // Each binary DataArray's byte count or compression header against its data and the Piece's
 // counts: those in the appended data section, and those inline as base64 text.
 void check_binary_arrays(const std::string& path, const std::string& xml, std::uint64_t file_size) {
@@ -212,11 +247,10 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
   const bool uint64 = attribute(file, "header_type").value_or("UInt32") == "UInt64";
   const bool big = attribute(file, "byte_order").value_or("LittleEndian") == "BigEndian";
   std::optional<EncodedData> section;  // the appended data, from its underscore on
-  std::string encoding = "base64";
   if (appended != std::string::npos) {
     const std::size_t open_end = xml.find('>', appended);
     if (open_end == std::string::npos) return;
-    encoding = attribute(xml.substr(appended, open_end - appended), "encoding").value_or("raw");
+    const std::string encoding = attribute(xml.substr(appended, open_end - appended), "encoding").value_or("raw");
     if (encoding != "raw" && encoding != "base64")
       throw InputError(where(path, "the AppendedData encoding '" + encoding + "' is neither raw nor base64"));
     // The data starts after an underscore, the section's first character (VTK's reader, not finding
@@ -269,7 +303,6 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
       continue;
     }
     EncodedData& data = inline_data ? *inline_data : *section;
-    const std::string stored_as = inline_data ? "base64" : encoding;
     const auto fail = [&](const std::string& why) { return InputError(where(path, what + ": " + why)); };
     // What the Piece says it holds, in bytes (0: unknown).
     const std::uint64_t item = type_size(attribute(tag, "type").value_or(""));
@@ -283,35 +316,7 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
     if (this_axis >= 0 && this_axis < 3 && piece_extent)
       tuples = (*piece_extent)[2 * this_axis + 1] - (*piece_extent)[2 * this_axis] + 1;
     const std::uint64_t expected = tuples >= 0 && item > 0 ? std::uint64_t(tuples) * comps * item : 0;
-    std::uint64_t bytes = 0;  // uncompressed
-    if (compressed) {
-      const auto head = data.header(offset, 3);
-      if (!head) throw fail("its compression header runs past the end of its data, or is not " + stored_as);
-      const std::uint64_t blocks = (*head)[0], block = (*head)[1], last = (*head)[2];
-      if (blocks > data.left(offset) / data.word())
-        throw fail("its compression header declares " + std::to_string(blocks) + " blocks, more than its data holds");
-      const auto sizes = data.header(offset, 3 + blocks);
-      if (!sizes) throw fail("its compression header runs past the end of its data, or is not " + stored_as);
-      std::uint64_t packed = 0;
-      for (std::uint64_t k = 0; k < blocks; ++k) packed += (*sizes)[3 + k];
-      const std::uint64_t after = offset + data.stored((3 + blocks) * data.word());
-      if (data.stored(packed) > data.left(after))
-        throw fail("its " + std::to_string(blocks) + " compressed blocks declare " + std::to_string(packed) +
-                   " bytes, past the end of its data");
-      bytes = blocks == 0 ? 0 : (blocks - 1) * block + (last == 0 ? block : last);
-      if (blocks > 0 && (block == 0 || last > block || bytes / 1032 > packed + 64))
-        throw fail("its compression header declares " + std::to_string(bytes) + " bytes from " + std::to_string(packed) +
-                   " compressed ones (block size " + std::to_string(block) + ", last block " + std::to_string(last) +
-                   "): deflate expands at most 1032 times");
-    } else {
-      const auto n = data.header(offset, 1);
-      if (!n) throw fail("its byte count runs past the end of its data, or is not " + stored_as);
-      if (data.stored(data.word() + (*n)[0]) > data.left(offset))  // count and data: one run
-        throw fail("it declares " + std::to_string((*n)[0]) + " bytes, past the end of its data (" +
-                   std::to_string(data.left(offset)) + (stored_as == "base64" ? " base64 characters" : " bytes") +
-                   " from its start)");
-      bytes = (*n)[0];
-    }
+    const std::uint64_t bytes = data_bytes(data, offset, compressed, fail);
     if (expected > 0 && bytes != expected)
       throw fail("it holds " + std::to_string(bytes) + " bytes where " + std::to_string(tuples) + " " +
                  (section_name == "CellData" || section_name == "Cells" ? "cells" : "points") + " of " +
