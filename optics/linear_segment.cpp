@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <type_traits>
 #include <utility>
 
@@ -112,8 +113,9 @@ template <class T>
   return {g, e - g, d, e};
 }
 
-// The weights of segments 0 .. n - 1 (n a multiple of 4) as if each were a small cell, V's lanes at
-// a time; the caller replaces those that are not.
+// The weights of segments 0 .. n - 1 (n a multiple of 4) that are small cells by
+// linear_segment_weights' rule, V's lanes at a time; the others get a NaN depth (a small cell's is
+// finite), for the caller to work out one by one.
 template <class V>
 [[gnu::always_inline]] inline void small_cells(std::size_t n, const double* L, const double* k0, const double* k1,
                                                EndWeights* w) {
@@ -121,8 +123,12 @@ template <class V>
   for (std::size_t k = 0; k < n; k += lanes) {
     V l, c0, c1;
     std::memcpy(&l, L + k, sizeof l), std::memcpy(&c0, k0 + k, sizeof c0), std::memcpy(&c1, k1 + k, sizeof c1);
-    const SmallCellWeights<V> s = small_cell_weights(c0 * l, 0.5 * (c1 - c0) * l);  // a, b as below
-    for (std::size_t m = 0; m < lanes; ++m) w[k + m] = {s.front[m], s.back[m], s.depth[m], s.opacity[m]};
+    const V a = c0 * l, b = 0.5 * (c1 - c0) * l;  // as linear_segment_weights
+    const auto small = (l > 0.0) & (c0 + c1 > 0.0) & (a <= kSmallA) & ((b < 0.0 ? -b : b) <= kSmallB);
+    const SmallCellWeights<V> s = small_cell_weights(a, b);
+    for (std::size_t m = 0; m < lanes; ++m)
+      w[k + m] = {s.front[m], s.back[m], small[m] ? s.depth[m] : std::numeric_limits<double>::quiet_NaN(),
+                  s.opacity[m]};
   }
 }
 
@@ -258,11 +264,8 @@ SegmentLight integrate_segment_closed_form(const TransferFunction& tf, double le
 void linear_segment_weights(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w) {
   const std::size_t lanes = n - n % 4;
   small_cells(lanes, L, k0, k1, w);
-  for (std::size_t k = 0; k < n; ++k) {  // the others as linear_segment_weights decides
-    const double a = k0[k] * L[k], b = 0.5 * (k1[k] - k0[k]) * L[k];
-    const bool small = L[k] > 0.0 && k0[k] + k1[k] > 0.0 && a <= kSmallA && std::abs(b) <= kSmallB;
-    if (!small || k >= lanes) w[k] = linear_segment_weights(L[k], k0[k], k1[k]);
-  }
+  for (std::size_t k = 0; k < n; ++k)  // the others, and the last n % 4, one by one
+    if (k >= lanes || std::isnan(w[k].depth)) w[k] = linear_segment_weights(L[k], k0[k], k1[k]);
 }
 
 }  // namespace cellproj
