@@ -7,6 +7,8 @@
 #include <type_traits>
 #include <utility>
 
+#include "base/simd.hpp"
+
 namespace cellproj {
 namespace {
 
@@ -132,7 +134,7 @@ template <class V>
   }
 }
 
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if CELLPROJ_AVX2_DISPATCH
 __attribute__((target("avx2"))) void small_cells_avx2(std::size_t n, const double* L, const double* k0,
                                                       const double* k1, EndWeights* w) {
   small_cells<f64x4>(n, L, k0, k1, w);
@@ -141,7 +143,7 @@ __attribute__((target("avx2"))) void small_cells_avx2(std::size_t n, const doubl
 
 // Four lanes where the processor has AVX2, else two.
 void small_cells(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w) {
-#if defined(__x86_64__) && (defined(__GNUC__) || defined(__clang__))
+#if CELLPROJ_AVX2_DISPATCH
   if (__builtin_cpu_supports("avx2")) return small_cells_avx2(n, L, k0, k1, w);
 #endif
   small_cells<f64x2>(n, L, k0, k1, w);

@@ -17,8 +17,7 @@ template <bool perspective>
                                         double* __restrict k0, double* __restrict k1, double smin, double smax,
                                         const LinearPiece piece) {
   for (std::size_t k = 0; k < n; ++k) {
-    // PixelRays::length_per_depth_at_pixel, from its per-column and per-row terms
-    const double per_depth = perspective ? std::sqrt(1.0 + u2[pi[k]] + v2[pj[k]]) : 1.0;
+    const double per_depth = perspective ? PixelRays::length_per_depth_from(u2[pi[k]], v2[pj[k]]) : 1.0;
     double s0 = sf[k], s1 = sb[k];
     length[k] = segment_between<perspective>(zf[k], zb[k], s0, s1, per_depth, smin, smax);
     sf[k] = s0, sb[k] = s1, k0[k] = piece.kappa(s0), k1[k] = piece.kappa(s1);

@@ -78,8 +78,10 @@ class PixelRays {
   // and v computed once per column and row: the same bits, without two divisions per pixel.
   double length_per_depth_at_pixel(int i, int j) const {
     if (!perspective()) return 1.0;
-    return std::sqrt(1.0 + u2_[static_cast<std::size_t>(i)] + v2_[static_cast<std::size_t>(j)]);
+    return length_per_depth_from(u2_[static_cast<std::size_t>(i)], v2_[static_cast<std::size_t>(j)]);
   }
+  // The same from a column's u^2 and a row's v^2 (u_squared(), v_squared()).
+  static double length_per_depth_from(double u2, double v2) { return std::sqrt(1.0 + u2 + v2); }
   // Its terms for loops over many pixels: u^2 per column and v^2 per row (empty in orthographic).
   const double* u_squared() const { return u2_.data(); }
   const double* v_squared() const { return v2_.data(); }
