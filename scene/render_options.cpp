@@ -1,6 +1,7 @@
 #include "scene/render_options.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "base/error.hpp"
@@ -123,6 +124,9 @@ RenderSettings settings_from(const RenderOptions& o) {
   s.slicing.table_size = o.table_size;
   s.slicing.slices = o.slices;
   s.slicing.backend = s.projection.backend;
+  // NaN stands for "the method's default": given by name, it is a mistake.
+  if (std::isnan(o.splat_threshold) && std::find(o.given.begin(), o.given.end(), "splat-threshold") != o.given.end())
+    throw InputError("--splat-threshold must be a finite number >= 0, not nan");
   s.projection.splat.threshold = o.splat_threshold;
   s.projection.splat.prefilter = o.splat_prefilter;
   s.slicing.splat = s.projection.splat;

@@ -189,6 +189,15 @@ expect 2 "is a scene file: edit its transfer_function" -- render "$tmp/ok.json" 
 expect 2 "a frame pattern takes one %d" -- render "$tmp/box.vtu" -o "$tmp/f%s.png" --frames 2
 expect 2 "needs --frames N" -- render "$tmp/box.vtu" -o "$tmp/f%03d.png"
 expect 2 "--orbit turns the camera over --frames" -- render "$tmp/box.vtu" --orbit 90
+expect 2 "--orbit: expected a finite angle in degrees, got nan" -- render "$tmp/box.vtu" --orbit nan --frames 3
+# Number options: one line naming the value and what it must be (not CLI11's range up to DBL_MAX), nan refused.
+for v in 0 -1 nan inf abc; do
+  expect 2 "^--max-memory: expected a finite number > 0 \\(GiB\\), got '$v'$" -- render "$tmp/box.vtu" --max-memory $v
+done
+expect 2 "^--max-memory: expected a finite number > 0" -- info "$tmp/box.vtu" --max-memory 0
+expect 2 "^--scale: expected a finite number > 0 \\(a gain\\), got 'nan'" -- compare "$tmp/ok.npy" "$tmp/ok.npy" --scale nan
+expect 2 "^--time-step: Value -1 not in range 0 to 2147483647" -- info "$tmp/box.vtu" --time-step -1
+expect 2 "--splat-threshold must be a finite number >= 0, not nan" -- render "$tmp/box.vtu" --splat-threshold nan
 expect 0 "wrote .*q.json" -- scene "$tmp/box.vtu" -o "$tmp/q/q.json" --view +y --colormap viridis --size 40x30
 grep -q '"mesh": "../box.vtu"' "$tmp/q/q.json" || { echo "FAIL: scene names the mesh relative to it"; failed=$((failed+1)); }
 expect 0 "wrote" -- render "$tmp/q/q.json" --npy "$tmp/q/a.npy"

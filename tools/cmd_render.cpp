@@ -1,6 +1,7 @@
 // cellproj render SCENE.json
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <memory>
@@ -79,6 +80,7 @@ int run_render(const RenderArgs& given) {
   if (is_distributed(a, world)) check_distributed(a, settings);
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
   make_output_folders(paths);
+  if (!std::isfinite(a.orbit)) throw UsageError("--orbit: expected a finite angle in degrees, got " + std::to_string(a.orbit));
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
   const Input input = load_input(a, *renderer, settings, levels, std::move(scene_read));
   if (input.partition || world.size > 1) return render_distributed(a, input, settings, world);

@@ -1,6 +1,7 @@
 #pragma once
 // The cellproj subcommands. Each registers its options on the CLI11 app and returns the action to
 // run once the command line is parsed; the action returns the exit code.
+#include <cmath>
 #include <functional>
 #include <string>
 
@@ -35,6 +36,19 @@ auto usage(F&& f) {
 
 using Action = std::function<int()>;
 
+// A number option's check with a one-line message (CLI11's PositiveNumber and NonNegativeNumber
+// accept nan and print their range up to DBL_MAX in full): `what` names the value, e.g. "GiB".
+inline CLI::Validator finite_number(const std::string& what, bool zero_allowed) {
+  const std::string rule = std::string(zero_allowed ? "a finite number >= 0" : "a finite number > 0");
+  return CLI::Validator(
+      [what, rule, zero_allowed](std::string& text) -> std::string {
+        double v = 0.0;
+        const bool ok = CLI::detail::lexical_cast(text, v) && std::isfinite(v) && (zero_allowed ? v >= 0.0 : v > 0.0);
+        return ok ? std::string() : "expected " + rule + " (" + what + "), got '" + text + "'";
+      },
+      zero_allowed ? "NUMBER >= 0" : "NUMBER > 0");
+}
+
 // --max-memory GiB: `what` ("Refuse renders") estimated to need more, and the limit of a mesh
 // reader's process (default: the memory available now).
 inline void add_max_memory_option(CLI::App& cmd, double& gib, const std::string& what) {
@@ -42,7 +56,7 @@ inline void add_max_memory_option(CLI::App& cmd, double& gib, const std::string&
                  what +
                      " estimated to need more than this many GiB, and stop a mesh reader at it (default: the "
                      "memory available now)")
-      ->check(CLI::PositiveNumber);
+      ->check(finite_number("GiB", false));
 }
 
 Action add_render(CLI::App& app);

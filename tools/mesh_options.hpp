@@ -1,6 +1,8 @@
 #pragma once
 // Options shared by the commands that take a mesh file: how to read it, and how to look at it
 // without a scene file (`render MESH`, `scene MESH`).
+#include <limits>
+
 #include <CLI/CLI.hpp>
 
 #include "grid/read_mesh.hpp"
@@ -16,7 +18,7 @@ inline void add_reader_options(CLI::App& cmd, ReadOptions& reader) {
   cmd.add_option("--q", reader.q_file, "PLOT3D solution (q) file");
   cmd.add_option("--zone", reader.zone, "CGNS: read only this zone");
   cmd.add_option("--time-step", reader.time_step, "Exodus II: time step of the fields (from 0)")
-      ->check(CLI::NonNegativeNumber);
+      ->check(CLI::Range(0, std::numeric_limits<int>::max()));
 }
 
 // The look of a mesh rendered without a scene; the options given are listed in `given`.
