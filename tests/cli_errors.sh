@@ -198,6 +198,8 @@ expect 2 "^--max-memory: expected a finite number > 0" -- info "$tmp/box.vtu" --
 expect 2 "^--scale: expected a finite number > 0 \\(a gain\\), got 'nan'" -- compare "$tmp/ok.npy" "$tmp/ok.npy" --scale nan
 expect 2 "^--time-step: Value -1 not in range 0 to 2147483647" -- info "$tmp/box.vtu" --time-step -1
 expect 2 "--splat-threshold must be a finite number >= 0, not nan" -- render "$tmp/box.vtu" --splat-threshold nan
+expect 2 "^--format: unknown format 'nope' \\(known: vtk-xml, vtk-legacy, exodus" -- info "$tmp/box.vtu" --format nope
+expect 2 "generate: unknown kind 'nope'; the kinds are: box" -- generate nope -o "$tmp/nope.vtu"
 expect 0 "wrote .*q.json" -- scene "$tmp/box.vtu" -o "$tmp/q/q.json" --view +y --colormap viridis --size 40x30
 grep -q '"mesh": "../box.vtu"' "$tmp/q/q.json" || { echo "FAIL: scene names the mesh relative to it"; failed=$((failed+1)); }
 expect 0 "wrote" -- render "$tmp/q/q.json" --npy "$tmp/q/a.npy"

@@ -68,7 +68,7 @@ Action add_generate(CLI::App& app) {
                   "along x: -o a .pvd (its files beside it) or a pattern such as out/mesh_%04d.vtu")
       ->check(CLI::Range(1, 100000));
   return [args] {
-    const Mesh m = generate(args->kind, args->n);
+    const Mesh m = usage([&] { return generate(args->kind, args->n); });  // an unknown kind: exit 2
     if (args->steps > 1) {
       const std::vector<std::string> files = write_series(m, args->out, args->steps, args->binary);
       std::printf("wrote %s ... %s (%d key frames of %lld points, %lld cells)\n", files.front().c_str(),

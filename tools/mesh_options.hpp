@@ -14,7 +14,17 @@ namespace cellproj {
 inline void add_reader_options(CLI::App& cmd, ReadOptions& reader) {
   cmd.add_option("--format", reader.format,
                  "Override the format chosen by extension: vtk-xml, vtk-legacy, exodus, cgns, plot3d, tetgen, off, "
-                 "points");
+                 "points")
+      ->check(CLI::Validator(
+          [](std::string& format) -> std::string {  // a bad command line (exit 2), before any file is read
+            std::string known;
+            for (const auto& [name, extensions] : known_formats()) {
+              if (name == format) return "";
+              known += (known.empty() ? "" : ", ") + name;
+            }
+            return "unknown format '" + format + "' (known: " + known + ")";
+          },
+          "FORMAT"));
   cmd.add_option("--q", reader.q_file, "PLOT3D solution (q) file");
   cmd.add_option("--zone", reader.zone, "CGNS: read only this zone");
   cmd.add_option("--time-step", reader.time_step, "Exodus II: time step of the fields (from 0)")
