@@ -212,6 +212,18 @@ TEST(Splat, TheRuleCountsThePixelCentresTheHullCovers) {
       }
     EXPECT_EQ(covered_pixels(p, n, 16, 16, 1000), brute) << "trial " << trial;
     EXPECT_EQ(covered_pixels(p, n, 16, 16, 3), std::min(brute, 3));
+    EXPECT_EQ(covered_pixels(p, n, 16, 16, 1), std::min(brute, 1)) << "trial " << trial;  // the early answer
+  }
+  // Centres on a hull edge or vertex, against the rule's count: with a limit of 1 the centre nearest
+  // the mean is tried first, and one on an edge must not be taken as covered unless the rule says so.
+  const ScreenVertex on[][4] = {
+      {{1.5, 1.5, 1, 0}, {3.5, 1.5, 1, 0}, {1.5, 3.5, 1, 0}, {2.5, 2.5, 1, 0}},  // centres on every edge
+      {{2.5, 2.0, 1, 0}, {3.0, 2.5, 1, 0}, {2.5, 3.0, 1, 0}, {2.0, 2.5, 1, 0}},  // the diamond around centre (2.5, 2.5)
+      {{2.5, 2.5, 1, 0}, {2.6, 2.5, 1, 0}, {2.5, 2.6, 1, 0}, {2.55, 2.55, 1, 0}},  // a corner on a centre
+      {{1.0, 1.0, 1, 0}, {9.0, 1.0, 1, 0}, {1.0, 1.0 + 1e-13, 1, 0}, {5.0, 1.0, 1, 0}}};  // a sliver
+  for (const auto& cell : on) {
+    const ScreenVertex* q[4] = {&cell[0], &cell[1], &cell[2], &cell[3]};
+    EXPECT_EQ(covered_pixels(q, 4, 16, 16, 1), std::min(covered_pixels(q, 4, 16, 16, 1000), 1));
   }
   ScreenVertex behind[4] = {{1, 1, 1, 0}, {2, 1, 1, 0}, {1, 2, 1, 0}, {1, 1, -1, 0}};
   const ScreenVertex* b[4] = {&behind[0], &behind[1], &behind[2], &behind[3]};
