@@ -92,10 +92,12 @@ TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of
 //             the item there, its pixels everywhere); called from many threads, one per tile.
 // Returns the sum of the tiles' counters.
 // `visits`, when given, receives the number of (item, tile) pairs drawn: n plus the repeats of the
-// items that straddle tiles.
+// items that straddle tiles. `front_to_back`: each tile takes its items from the last to the first
+// (the source composites "under": early ray termination).
 template <class Source, class RowsOf>
 typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const RowsOf& rows_of, int rows,
-                                             const Source& source, std::size_t* visits = nullptr) {
+                                             const Source& source, std::size_t* visits = nullptr,
+                                             bool front_to_back = false) {
   const TileBins bins = bin_to_tiles(n, image.height, rows, rows_of);
   if (visits) *visits = bins.items.size();
   const std::size_t tiles = bins.first.size() - 1;
@@ -114,8 +116,9 @@ typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const 
         for (std::size_t q = r.begin(); q != r.end(); ++q) {
           const std::size_t t = by_load[q];
           const RowRange tile{static_cast<int>(t) * rows, std::min(image.height, static_cast<int>(t + 1) * rows)};
-          for (std::size_t m = bins.first[t]; m < bins.first[t + 1]; ++m) {
-            const std::size_t k = bins.items[m];
+          const std::size_t b = bins.first[t], e = bins.first[t + 1];
+          for (std::size_t m = b; m < e; ++m) {
+            const std::size_t k = bins.items[front_to_back ? e - 1 - (m - b) : m];
             const bool first = first_tile(rows_of(k), image.height, rows) == static_cast<int>(t);
             source.composite(k, image, tile, first, s, counters[t]);
           }

@@ -24,6 +24,10 @@ struct ProjectionOptions {
   bool cull_transparent = true;           // cells with extinction 0 over their scalar range not drawn (same picture)
   Compositing compositing = Compositing::tiles;
   int tile_rows = 0;  // rows per tile (tiles); 0: tile_rows(), about 4 tiles per thread, 16 to 64 rows
+  // Tiles composited front to back, each pixel closed once within kOpaqueWithin (1e-6) of opaque
+  // and cells wholly behind closed pixels not projected (composite/opaque_mask.hpp). Not the same
+  // bits as back to front: the sums round in another order.
+  bool early_termination = false;
 };
 // Throws InputError for options that do not go together (a method the back end cannot draw) or a
 // table size outside [2, 8192]: before a frame starts, never in the middle of one.

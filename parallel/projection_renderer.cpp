@@ -160,6 +160,7 @@ struct OrderedCells {
   const std::vector<std::uint8_t>& small;  // per cell: drawn by its splat (or not at all)
   SmallCells mode;
   const ProjectionSplats& splats;
+  OpaqueMask* opaque = nullptr;  // early ray termination: composited front to back, tiles only
   void fragments(std::size_t k, FragmentBands& out, Scratch& s, Counters& c) const {
     const std::int64_t cell = order[k];
     if (mode != SmallCells::draw && small[static_cast<std::size_t>(cell)]) {
@@ -177,10 +178,17 @@ struct OrderedCells {
   void composite(std::size_t k, Image& image, RowRange rows, bool first, Scratch& s, Counters& c) const {
     const std::int64_t cell = order[k];
     if (mode == SmallCells::skip && small[static_cast<std::size_t>(cell)]) return;
-    if (first) return project.project(cells.cell(cell), cells.type(cell), image, rows, s, c.projection);
+    const std::int64_t* ids = cells.cell(cell);
+    const CellType type = cells.type(cell);
     ProjectionCounters pixels;
-    project.project(cells.cell(cell), cells.type(cell), image, rows, s, pixels);
-    c.projection.add_pixels(pixels);
+    ProjectionCounters& into = first ? c.projection : pixels;
+    if (!opaque)
+      project.project(ids, type, image, rows, s, into);
+    else if (project.hidden_by(ids, type, rows, *opaque))
+      ++into.hidden_cells;
+    else
+      project.project_under(ids, type, image, rows, *opaque, s, into);
+    if (!first) c.projection.add_pixels(pixels);
   }
 };
 // The opacity table of pt-table: extinction up to the transfer function's largest, lengths up to
@@ -215,7 +223,10 @@ std::vector<std::int64_t> without_transparent(const std::vector<std::int64_t>& o
 void check_options(const ProjectionOptions& o) {
   check_built(o.backend);
   OpacityTable::check_size(o.table_size);
-  resolve(o.splat, o.backend);
+  const SmallCells small = resolve(o.splat, o.backend);
+  if (o.early_termination && (is_opengl(o.backend) || o.compositing != Compositing::tiles || small == SmallCells::splat))
+    throw InputError("--early-termination on composites image tiles front to back: it needs the software back end, "
+                     "--compositing tiles and no splats (--small-cells draw or skip)");
   if (is_opengl(o.backend) && !traits(o.method).opengl) {
     std::string drawable;
     for (const MethodTraits& t : kProjectionMethods)
@@ -305,7 +316,9 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
       st.phase_seconds.emplace_back("splats and stencil", seconds_since(t_splats));
     }
     t = std::chrono::steady_clock::now();
-    const OrderedCells source{project, cells, order, small, st.small_cells, splats};
+    std::optional<OpaqueMask> opaque;
+    if (options.early_termination) opaque.emplace(width, height);
+    const OrderedCells source{project, cells, order, small, st.small_cells, splats, opaque ? &*opaque : nullptr};
     FrameCounters counters;
     if (options.compositing == Compositing::tiles && st.small_cells != SmallCells::splat) {
       const std::vector<RowRange> reach = cell_rows(cells, screen, rays);
@@ -314,7 +327,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
       std::size_t visits = 0;
       counters = composite_in_tiles(
           image, order.size(), [&](std::size_t k) { return reach[static_cast<std::size_t>(order[k])]; }, rows, source,
-          &visits);
+          &visits, opaque.has_value());
       st.tiles = (height + rows - 1) / rows;
       st.tile_visits = static_cast<std::int64_t>(visits);
     } else {

@@ -54,6 +54,7 @@ struct ExactFragments {
   std::int64_t emitted = 0;
   ExactFragments(const ExactShade& s, Emit& e, SegmentBatch& b) : shade(s), emit(e), batch(b) { batch.n = 0; }
   void operator()(int i, int j, double zf, double zb, double sf, double sb) {
+    if (emit.hidden(i, j)) return;  // an opaque pixel (front to back): no integral
     if (!shade.has_breakpoint) return batch.push(i, j, zf, zb, sf, sb);
     const SegmentLight light = shade(i, j, zf, zb, sf, sb);
     emitted += emit(i, j, light.rgb, light.opacity());
@@ -112,6 +113,7 @@ struct AppendFragments {
     out.append(i, j, rgb.r, rgb.g, rgb.b, alpha);
     return true;
   }
+  static bool hidden(int, int) { return false; }
 };
 
 // Composites fragments onto the image at once (a cell drawn in order by the compositor itself).
@@ -124,6 +126,33 @@ struct CompositeFragments {
     over(image.pixel(i, j), src);
     return true;
   }
+  static bool hidden(int, int) { return false; }
+};
+
+// Composites fragments front to back ("under") onto the image: early ray termination drops those
+// at pixels within kOpaqueWithin of opaque (counted) and marks the pixels that become so.
+struct UnderFragments {
+  Image& image;
+  OpaqueMask& opaque;
+  ProjectionCounters& counters;
+  bool hidden(int i, int j) {
+    if (!opaque.opaque(i, j)) return false;
+    ++counters.hidden_fragments;
+    return true;
+  }
+  bool operator()(int i, int j, const glm::dvec3& rgb, double alpha) {
+    if (adds_nothing(rgb, alpha)) return false;
+    float* dst = image.pixel(i, j);
+    if (dst[3] >= kOpaqueAlpha) {
+      ++counters.hidden_fragments;
+      return false;
+    }
+    const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
+                          static_cast<float>(alpha)};
+    under(dst, src);
+    if (dst[3] >= kOpaqueAlpha) opaque.set(i, j);
+    return true;
+  }
 };
 
 }  // namespace
@@ -133,6 +162,7 @@ void ProjectionCounters::add(const ProjectionCounters& o) {
   polyhedra += o.polyhedra, polygons += o.polygons, layered += o.layered, unmatched += o.unmatched;
   subdivisions_looked_up += o.subdivisions_looked_up;
   fragments += o.fragments, breakpoint_cells += o.breakpoint_cells, direct_cells += o.direct_cells;
+  hidden_cells += o.hidden_cells, hidden_fragments += o.hidden_fragments;
 }
 
 PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf) {
@@ -362,6 +392,26 @@ void CellFragments::project(const std::int64_t* ids, CellType type, Image& image
                             CellScratch& scratch, ProjectionCounters& counters) const {
   CompositeFragments emit{image};
   project_with(ids, type, rows, emit, scratch, counters);
+}
+
+void CellFragments::project_under(const std::int64_t* ids, CellType type, Image& image, RowRange rows,
+                                  OpaqueMask& opaque, CellScratch& scratch, ProjectionCounters& counters) const {
+  UnderFragments emit{image, opaque, counters};
+  project_with(ids, type, rows, emit, scratch, counters);
+}
+
+bool CellFragments::hidden_by(const std::int64_t* ids, CellType type, RowRange rows, const OpaqueMask& opaque) const {
+  const ScreenVertex& v0 = screen_.v[static_cast<std::size_t>(ids[0])];
+  double xmin = v0.x, xmax = v0.x, ymin = v0.y, ymax = v0.y;
+  for (int k = 0, n = cell_def(type).vertices; k < n; ++k) {
+    const ScreenVertex& v = screen_.v[static_cast<std::size_t>(ids[k])];
+    if (behind_eye(v.z)) return false;
+    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x), ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
+  }
+  // Every triangle of the cell has its pixels in this box (the same rounding as PixelBox's).
+  const PixelBox box({xmin, ymin}, {xmax, ymax}, {xmin, ymin}, rays_.width(), rays_.height());
+  const int j0 = std::max(box.j0, rows.begin), j1 = std::min(box.j1, rows.end - 1);
+  return !box.empty() && j0 <= j1 && opaque.all(box.i0, box.i1, j0, j1);
 }
 
 template <class Emit>

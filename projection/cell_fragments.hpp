@@ -8,6 +8,7 @@
 
 #include "composite/fragment.hpp"
 #include "composite/gl_corner.hpp"
+#include "composite/opaque_mask.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "optics/transfer_function.hpp"
 #include "projection/method.hpp"
@@ -33,10 +34,15 @@ struct ProjectionCounters {
   std::int64_t fragments = 0;
   std::int64_t breakpoint_cells = 0;  // cells whose scalar range holds a breakpoint (cut by pt-breakpoints)
   std::int64_t direct_cells = 0;      // cells too large to buffer, drawn by the compositor itself
+  // Early ray termination (front to back): cells not projected in the tile that counts them, every
+  // pixel of theirs there opaque already; fragments dropped at opaque pixels.
+  std::int64_t hidden_cells = 0, hidden_fragments = 0;
   void add(const ProjectionCounters& o);
-  // Only the per-pixel counts (fragments, unmatched): a cell drawn tile by tile is counted once,
-  // by its first tile, and its pixels by every tile.
-  void add_pixels(const ProjectionCounters& o) { fragments += o.fragments, unmatched += o.unmatched; }
+  // Only the per-pixel counts (fragments, unmatched, hidden fragments): a cell drawn tile by tile is
+  // counted once, by its first tile, and its pixels by every tile.
+  void add_pixels(const ProjectionCounters& o) {
+    fragments += o.fragments, unmatched += o.unmatched, hidden_fragments += o.hidden_fragments;
+  }
 };
 
 
@@ -88,6 +94,14 @@ class CellFragments {
   // owns the tile, in visibility order (the pixels outside are left alone).
   void project(const std::int64_t* ids, CellType type, Image& image, RowRange rows, CellScratch& scratch,
                ProjectionCounters& counters) const;
+  // The same front to back ("under"), for early ray termination: fragments at pixels `opaque`
+  // holds are dropped, and the pixels they make opaque are added to it.
+  void project_under(const std::int64_t* ids, CellType type, Image& image, RowRange rows, OpaqueMask& opaque,
+                     CellScratch& scratch, ProjectionCounters& counters) const;
+  // Whether every pixel centre of rows `rows` the cell's vertices' box holds is opaque: then
+  // nothing of it shows there. False for a cell reaching behind the eye (ray cast) or whose box
+  // there holds no centre.
+  bool hidden_by(const std::int64_t* ids, CellType type, RowRange rows, const OpaqueMask& opaque) const;
   // Appends the cell's triangles (3 corners each) for the OpenGL back end (pt-linear, pt-table),
   // with texture coordinates on the opacity table's texel centres. `cell` picks the cell's shift of
   // the dither noise, so a pixel's layers get independent noise.

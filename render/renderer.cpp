@@ -58,7 +58,8 @@ class ProjectionMode final : public Renderer {
   std::string name() const override { return name_of(options_.method); }
   std::vector<std::string> settings_used() const override {
     return {"method",      "backend",         "sort",           "gaps", "table-size", "tetrahedralize",
-            "small-cells", "splat-threshold", "splat-prefilter", "cull-transparent", "compositing", "tile-rows"};
+            "small-cells", "splat-threshold", "splat-prefilter", "cull-transparent", "compositing", "tile-rows",
+            "early-termination"};
   }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 
@@ -106,6 +107,8 @@ class ProjectionMode final : public Renderer {
            {"fragments", c.fragments},
            {"breakpoint_cells", c.breakpoint_cells},
            {"direct_cells", c.direct_cells},
+           {"hidden_cells", c.hidden_cells},
+           {"hidden_fragments", c.hidden_fragments},
            {"face_relations", s.face_relations},
            {"gap_relations", s.gap_relations},
            {"gap_pair_tests", s.gap_pair_tests},

@@ -141,6 +141,9 @@ RenderSettings settings_from(const RenderOptions& o) {
   if (o.tile_rows < 0 || o.tile_rows > 65536)
     throw InputError("--tile-rows: expected an integer in [0, 65536] (0: automatic), got " + std::to_string(o.tile_rows));
   s.projection.tile_rows = o.tile_rows;
+  if (o.early_termination != "on" && o.early_termination != "off")
+    throw InputError("--early-termination: expected on or off, got '" + o.early_termination + "'");
+  s.projection.early_termination = o.early_termination == "on";
   return s;
 }
 
@@ -148,7 +151,7 @@ std::vector<std::string> render_option_names() {
   return {"method",         "sort",        "gaps",       "backend", "tetrahedralize",  "interpolation",  "slice-axis",
           "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter",
           "iso",            "layer",       "layer-weights", "silhouettes", "silhouette-epsilon", "volume", "iso-mode",
-          "iso-opacity",    "cull-transparent", "compositing", "tile-rows"};
+          "iso-opacity",    "cull-transparent", "compositing", "tile-rows", "early-termination"};
 }
 
 void set_option(RenderOptions& o, const std::string& given_name, const std::string& value) {
@@ -171,6 +174,7 @@ void set_option(RenderOptions& o, const std::string& given_name, const std::stri
                       : name == "iso-opacity"    ? &o.iso_opacity
                       : name == "cull-transparent" ? &o.cull_transparent
                       : name == "compositing"    ? &o.compositing
+                      : name == "early-termination" ? &o.early_termination
                                                  : nullptr;
   if (text)
     *text = value;

@@ -166,12 +166,7 @@ TEST(Projection, OneAndManyThreadsGiveTheSameBits) {
 TEST(Projection, HexahedraAreSplitCanonically) {
   // A curvilinear hexahedral grid: projected through its canonical tetrahedra (--tetrahedralize
   // all), it matches the exact renderer in canonical-tets mode.
-  Mesh m = make_curvilinear(
-      4, 4, 4,
-      [](const glm::dvec3& u) {
-        return glm::dvec3(2 * u.x - 1 + 0.15 * std::sin(3 * u.y), 2 * u.y - 1, 2 * u.z - 1 + 0.2 * u.x * u.y);
-      },
-      false);
+  Mesh m = test::wavy_grid(4, false);
   set_field(m, "s", [](const glm::dvec3& x) { return x.x * x.y + 0.5 * x.z; });
   const TransferFunction tf = hard_tf();
   const Camera c = view_from({2.5, -2, 1.8}, Projection::Perspective);
@@ -292,12 +287,7 @@ TEST(Projection, CameraInsideTheMeshRayCastsTheCellsAroundTheEye) {
   // projected; together they equal the exact renderer.
   const Mesh m = wavy_tets(6);
   const TransferFunction tf = hard_tf();
-  Camera c;
-  c.projection = Projection::Perspective;
-  c.eye = {0.13, -0.41, 0.07};
-  c.target = {1.0, 0.3, -0.2};
-  c.up = {0, 0, 1};
-  c.fov_y = 70;
+  const Camera c = test::inside_wavy_grid(Projection::Perspective);
   ProjectionStats st;
   const Image img = project(m, tf, c, 72, ProjectionMethod::pt_breakpoints, &st);
   EXPECT_GT(st.counters.behind_eye, 0);

@@ -22,28 +22,6 @@ TransferFunction tiles_tf() {
                           {{-1, 0.4}, {-0.3, 3.0}, {0.2, 0.5}, {1, 2.0}});
 }
 
-Mesh wavy(bool tetrahedra) {
-  Mesh m = make_curvilinear(
-      5, 5, 5,
-      [](const glm::dvec3& u) {
-        return glm::dvec3(2 * u.x - 1 + 0.15 * std::sin(3 * u.y), 2 * u.y - 1, 2 * u.z - 1 + 0.2 * u.x * u.y);
-      },
-      tetrahedra);
-  set_field(m, "s", [](const glm::dvec3& x) { return std::sin(2 * x.x) * std::cos(1.5 * x.y) + 0.4 * x.z; });
-  return m;
-}
-
-Camera inside(Projection p) {
-  Camera c;
-  c.projection = p;
-  c.eye = {0.13, -0.41, 0.07};
-  c.target = {1.0, 0.3, -0.2};
-  c.up = {0, 0, 1};
-  c.fov_y = 70;
-  c.height = 1.5;
-  return c;
-}
-
 void expect_same_counts(const ProjectionStats& a, const ProjectionStats& b, const std::string& what) {
   const ProjectionCounters &x = a.counters, &y = b.counters;
   EXPECT_EQ(x.tets, y.tets) << what;
@@ -64,11 +42,11 @@ void expect_same_counts(const ProjectionStats& a, const ProjectionStats& b, cons
 TEST(Tiles, TheSameBitsAndCountsAsTheStreamForAnyTileHeightAndThreads) {
   const TransferFunction tf = tiles_tf();
   for (bool tetrahedra : {true, false}) {
-    const Mesh m = wavy(tetrahedra);
+    const Mesh m = test::wavy_grid(5, tetrahedra);
     const ProjectionRenderer r(m.view(), tetrahedra ? Tetrahedralize::problem : Tetrahedralize::none);
     const double* s = test::field_values(m, "s");
-    const Camera cams[3] = {test::view_from({0.5, -3, 2}, Projection::Perspective), inside(Projection::Perspective),
-                            inside(Projection::Orthographic)};
+    const Camera cams[3] = {test::view_from({0.5, -3, 2}, Projection::Perspective), test::inside_wavy_grid(Projection::Perspective),
+                            test::inside_wavy_grid(Projection::Orthographic)};
     for (int v = 0; v < 3; ++v)
       for (ProjectionMethod method : {ProjectionMethod::pt_linear, ProjectionMethod::pt_breakpoints}) {
         if (!tetrahedra && v > 0) continue;  // whole cells reaching behind the eye are not drawn

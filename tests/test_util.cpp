@@ -142,6 +142,28 @@ Mesh warped_hexahedra(int n) {
   return m;
 }
 
+Mesh wavy_grid(int n, bool tetrahedra) {
+  Mesh m = make_curvilinear(
+      n, n, n,
+      [](const glm::dvec3& u) {
+        return glm::dvec3(2 * u.x - 1 + 0.15 * std::sin(3 * u.y), 2 * u.y - 1, 2 * u.z - 1 + 0.2 * u.x * u.y);
+      },
+      tetrahedra);
+  set_field(m, "s", [](const glm::dvec3& x) { return std::sin(2 * x.x) * std::cos(1.5 * x.y) + 0.4 * x.z; });
+  return m;
+}
+
+Camera inside_wavy_grid(Projection projection) {
+  Camera c;
+  c.projection = projection;
+  c.eye = {0.13, -0.41, 0.07};
+  c.target = {1.0, 0.3, -0.2};
+  c.up = {0, 0, 1};
+  c.fov_y = 70;
+  c.height = 1.5;
+  return c;
+}
+
 Mesh twisted_mixed(int n) {
   return make_mixed(n, n, n, [](const glm::dvec3& u) {
     const double a = 1.0 * (u.z - 0.5);

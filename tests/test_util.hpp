@@ -68,6 +68,11 @@ ProjectionOptions with_method(ProjectionMethod method, SortMethod sort = SortMet
 Mesh warped_hexahedra(int n);
 // A twisted mixed mesh of n^3 blocks (hexahedra, wedges, pyramids and tetrahedra).
 Mesh twisted_mixed(int n);
+// An n^3 grid over [-1, 1]^3 sheared and bent (x by sin 3y, z by xy), hexahedra or their canonical
+// tetrahedra, with the field "s" = sin 2x cos 1.5y + 0.4z.
+Mesh wavy_grid(int n, bool tetrahedra);
+// A camera whose eye lies inside wavy_grid's mesh (the cells around it reach behind the eye).
+Camera inside_wavy_grid(Projection projection);
 
 }  // namespace cellproj::test
 

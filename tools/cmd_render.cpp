@@ -321,6 +321,10 @@ Action add_render(CLI::App& app) {
   setting("compositing", args->options.compositing,
           "software projection: tiles (default: image tiles each drawing the cells that reach it, in order, "
           "no fragment stored) or stream (fragments buffered by batch, blended in order); the same picture");
+  setting("early-termination", args->options.early_termination,
+          "software projection with --compositing tiles: on composites each tile front to back, closing a pixel "
+          "once within 1e-6 of opaque and leaving out the cells behind closed pixels (faster on opaque "
+          "scenes; the picture within 1e-6, not the same bits), or off (default)");
   setting("tile-rows", args->options.tile_rows,
           "software projection with --compositing tiles: rows per image tile (default 0: about 4 tiles per thread, "
           "16 to 64 rows)");
