@@ -16,21 +16,12 @@
 #include "grid/plot3d_header.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/text_scanner.hpp"
+#include "grid/xml_attribute.hpp"
 
 namespace fs = std::filesystem;
 
 namespace cellproj {
 namespace {
-
-// The integers of attribute `name` (e.g. NumberOfPoints="12") at every occurrence in `xml`.
-template <class F>
-void each_attribute(const std::string& xml, const std::string& name, F&& f) {
-  const std::string key = " " + name + "=\"";  // the whole name: Extent, not WholeExtent
-  for (std::size_t at = xml.find(key); at != std::string::npos; at = xml.find(key, at + key.size())) {
-    const std::size_t end = xml.find('"', at + key.size());
-    if (end != std::string::npos) f(xml.substr(at + key.size(), end - at - key.size()));
-  }
-}
 
 // Counts from a garbled header can be anything: sums and products saturate instead of overflowing.
 std::int64_t saturated(double v) { return v <= 0 ? 0 : v >= 1e15 ? std::int64_t(1e15) : static_cast<std::int64_t>(v); }
@@ -52,12 +43,12 @@ HeaderCounts xml_counts(const std::string& path, const std::string& ext) {
   xml.resize(static_cast<std::size_t>(in.gcount()));
   const std::size_t data = xml.find("<AppendedData");
   if (data != std::string::npos) xml.resize(data);
-  each_attribute(xml, "NumberOfPoints",
+  each_xml_attribute(xml, "NumberOfPoints",
                  [&](const std::string& v) { c.points = saturated(double(c.points) + std::atof(v.c_str())); });
-  each_attribute(xml, "NumberOfCells",
+  each_xml_attribute(xml, "NumberOfCells",
                  [&](const std::string& v) { c.cells = saturated(double(c.cells) + std::atof(v.c_str())); });
   if (ext == ".vts")
-    each_attribute(xml, "Extent", [&](const std::string& v) {  // a Piece's extent: i0 i1 j0 j1 k0 k1
+    each_xml_attribute(xml, "Extent", [&](const std::string& v) {  // a Piece's extent: i0 i1 j0 j1 k0 k1
       std::istringstream s(v);
       double e[6] = {};
       for (auto& x : e) s >> x;

@@ -14,19 +14,10 @@
 #include <vector>
 
 #include "base/error.hpp"
+#include "grid/xml_attribute.hpp"
 
 namespace cellproj {
 namespace {
-
-// The value of attribute `name` in the element text `tag`, or nullopt.
-std::optional<std::string> attribute(const std::string& tag, const std::string& name) {
-  const std::string key = " " + name + "=\"";
-  const std::size_t at = tag.find(key);
-  if (at == std::string::npos) return std::nullopt;
-  const std::size_t end = tag.find('"', at + key.size());
-  if (end == std::string::npos) return std::nullopt;
-  return tag.substr(at + key.size(), end - at - key.size());
-}
 
 std::uint64_t type_size(const std::string& type) {
   if (type == "Int8" || type == "UInt8") return 1;
@@ -154,11 +145,11 @@ void check_extents(const std::string& path, const std::string& xml) {
     const std::size_t close = std::min(xml.find('>', at), end);
     const std::string tag = xml.substr(at, close - at);
     if (tag.rfind("<StructuredGrid", 0) == 0 || tag.rfind("<RectilinearGrid", 0) == 0 || tag.rfind("<ImageData", 0) == 0) {
-      if (const auto w = attribute(tag, "WholeExtent")) whole = extent(*w);
+      if (const auto w = xml_attribute(tag, "WholeExtent")) whole = extent(*w);
       // VTK's reader keeps its default for an Origin or Spacing it cannot parse ("1 nan 1" read as
       // spacing 1 without a word): the points would be placed where the file does not say.
       for (const char* name : {"Origin", "Spacing"})
-        if (const auto value = attribute(tag, name); value && tag.rfind("<ImageData", 0) == 0) {
+        if (const auto value = xml_attribute(tag, name); value && tag.rfind("<ImageData", 0) == 0) {
           std::istringstream words(*value);
           double v[3];
           if (!(words >> v[0] >> v[1] >> v[2]) || !std::isfinite(v[0]) || !std::isfinite(v[1]) || !std::isfinite(v[2]))
@@ -166,7 +157,7 @@ void check_extents(const std::string& path, const std::string& xml) {
                                              "' is not three finite numbers"));
         }
     } else if (tag.rfind("<Piece", 0) == 0) {
-      if (const auto e = attribute(tag, "Extent"); e && extent(*e)) pieces.push_back(*extent(*e));
+      if (const auto e = xml_attribute(tag, "Extent"); e && extent(*e)) pieces.push_back(*extent(*e));
     } else if (tag.rfind("<Coordinates", 0) == 0) {
       axis = 0;
     } else if (tag.rfind("</Coordinates", 0) == 0) {
@@ -176,7 +167,7 @@ void check_extents(const std::string& path, const std::string& xml) {
       // missing ones from past its array (a .vtr read with exit 0 and an inverted cell).
       const auto& e = pieces.back();
       const long long need = e[2 * axis + 1] - e[2 * axis] + 1;
-      if (attribute(tag, "format").value_or("") == "ascii" && need > 0) {
+      if (xml_attribute(tag, "format").value_or("") == "ascii" && need > 0) {
         std::istringstream values(xml.substr(close + 1, xml.find("</DataArray", close) - close - 1));
         long long n = 0;
         for (std::string word; n < need && values >> word;) ++n;
@@ -243,14 +234,14 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
   const std::size_t end = std::min(appended, xml.size());  // the XML before any appended data
   const std::size_t file_tag = xml.find("<VTKFile");
   const std::string file = file_tag == std::string::npos ? "" : xml.substr(file_tag, xml.find('>', file_tag) - file_tag);
-  const bool compressed = attribute(file, "compressor").has_value();
-  const bool uint64 = attribute(file, "header_type").value_or("UInt32") == "UInt64";
-  const bool big = attribute(file, "byte_order").value_or("LittleEndian") == "BigEndian";
+  const bool compressed = xml_attribute(file, "compressor").has_value();
+  const bool uint64 = xml_attribute(file, "header_type").value_or("UInt32") == "UInt64";
+  const bool big = xml_attribute(file, "byte_order").value_or("LittleEndian") == "BigEndian";
   std::optional<EncodedData> section;  // the appended data, from its underscore on
   if (appended != std::string::npos) {
     const std::size_t open_end = xml.find('>', appended);
     if (open_end == std::string::npos) return;
-    const std::string encoding = attribute(xml.substr(appended, open_end - appended), "encoding").value_or("raw");
+    const std::string encoding = xml_attribute(xml.substr(appended, open_end - appended), "encoding").value_or("raw");
     if (encoding != "raw" && encoding != "base64")
       throw InputError(where(path, "the AppendedData encoding '" + encoding + "' is neither raw nor base64"));
     // The data starts after an underscore, the section's first character (VTK's reader, not finding
@@ -268,9 +259,9 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
   if (xml.find("<Piece") == xml.rfind("<Piece", end) && xml.find("<Piece") != std::string::npos) {
     const std::size_t p = xml.find("<Piece");
     const std::string piece = xml.substr(p, xml.find('>', p) - p);
-    points = std::atoll(attribute(piece, "NumberOfPoints").value_or("-1").c_str());
-    cells = std::atoll(attribute(piece, "NumberOfCells").value_or("-1").c_str());
-    if (const auto e = attribute(piece, "Extent")) piece_extent = extent(*e);
+    points = std::atoll(xml_attribute(piece, "NumberOfPoints").value_or("-1").c_str());
+    cells = std::atoll(xml_attribute(piece, "NumberOfCells").value_or("-1").c_str());
+    if (const auto e = xml_attribute(piece, "Extent")) piece_extent = extent(*e);
   }
   std::string section_name;  // PointData, CellData, Points, Cells, Coordinates
   int axis = 0;              // in Coordinates: the axis of the next DataArray
@@ -283,8 +274,8 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
     if (tag.rfind("<DataArray", 0) != 0) continue;
     // An array VTK reads from the appended data: "appended", or a format it does not know with an
     // offset (a fuzzed format="appe" was read as appended, its garbled header sizing 16 GB).
-    const std::string format = attribute(tag, "format").value_or("");
-    const std::string name = attribute(tag, "Name").value_or("?");
+    const std::string format = xml_attribute(tag, "format").value_or("");
+    const std::string name = xml_attribute(tag, "Name").value_or("?");
     std::optional<EncodedData> inline_data;
     std::uint64_t offset = 0;
     std::string what = "DataArray '" + name + "'";
@@ -296,8 +287,8 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
         if (!std::isspace(static_cast<unsigned char>(xml[k]))) text += xml[k];
       inline_data.emplace(std::move(text), uint64, big);
       what += " (inline binary)";
-    } else if (format != "ascii" && (format == "appended" || attribute(tag, "offset")) && section) {
-      offset = std::strtoull(attribute(tag, "offset").value_or("0").c_str(), nullptr, 10);
+    } else if (format != "ascii" && (format == "appended" || xml_attribute(tag, "offset")) && section) {
+      offset = std::strtoull(xml_attribute(tag, "offset").value_or("0").c_str(), nullptr, 10);
       what += " (appended at offset " + std::to_string(offset) + ")";
     } else {
       continue;
@@ -305,8 +296,8 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
     EncodedData& data = inline_data ? *inline_data : *section;
     const auto fail = [&](const std::string& why) { return InputError(where(path, what + ": " + why)); };
     // What the Piece says it holds, in bytes (0: unknown).
-    const std::uint64_t item = type_size(attribute(tag, "type").value_or(""));
-    const std::uint64_t comps = std::strtoull(attribute(tag, "NumberOfComponents").value_or("1").c_str(), nullptr, 10);
+    const std::uint64_t item = type_size(xml_attribute(tag, "type").value_or(""));
+    const std::uint64_t comps = std::strtoull(xml_attribute(tag, "NumberOfComponents").value_or("1").c_str(), nullptr, 10);
     std::int64_t tuples = -1;
     if (section_name == "PointData" || section_name == "Points") tuples = points;
     if (section_name == "CellData" || (section_name == "Cells" && (name == "types" || name == "offsets")))
@@ -320,7 +311,7 @@ void check_binary_arrays(const std::string& path, const std::string& xml, std::u
     if (expected > 0 && bytes != expected)
       throw fail("it holds " + std::to_string(bytes) + " bytes where " + std::to_string(tuples) + " " +
                  (section_name == "CellData" || section_name == "Cells" ? "cells" : "points") + " of " +
-                 std::to_string(comps) + " " + attribute(tag, "type").value_or("") + " need " + std::to_string(expected));
+                 std::to_string(comps) + " " + xml_attribute(tag, "type").value_or("") + " need " + std::to_string(expected));
   }
 }
 

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <iterator>
 #include <thread>
+#include <regex>
 #include <tuple>
 
 #include <gtest/gtest.h>
@@ -441,6 +442,29 @@ TEST(Readers, ARectilinearAxisShorterThanItsExtentIsRefused) {
   EXPECT_NE(what.find("short_ascii.vtr: piece 0's x coordinates hold 2 values for the 3 points of its extent"),
             std::string::npos)
       << what;
+}
+
+TEST(Readers, XmlAttributesAreReadAsXmlWritesThem) {
+  // White space around '=' and single quotes are XML too: VTK's reader takes them, and so must the
+  // checks before it. A fuzzed offset   ="808" went past the appended-data check, and VTK sized
+  // that array's garbled block header, 7 GB (59 s and 7 GB before the child's limit stopped it).
+  test::TempDir dir;
+  write_vtu(make_box(2, 2, 2, {0, 0, 0}, {1, 1, 1}, true), dir.file("box.vtu"));
+  const std::string good = slurp(dir.file("box.vtu"));
+  const std::size_t data = good.find("<AppendedData");
+  ASSERT_NE(data, std::string::npos);
+  const std::string head = std::regex_replace(good.substr(0, data), std::regex("(\\w+)=\"([^\"]*)\""), "$1 = '$2'");
+  ASSERT_NE(head.find("NumberOfCells = '48'"), std::string::npos);
+  spit(dir.file("spaced.vtu"), head + good.substr(data));
+  EXPECT_EQ(read_mesh(dir.file("spaced.vtu")).n_cells(), 48);
+  EXPECT_EQ(header_counts(dir.file("spaced.vtu")).cells, 48);
+  // The Piece's counts as written that way are what the checks hold the arrays to.
+  std::string wrong = head;
+  wrong.replace(wrong.find("NumberOfCells = '48'"), 20, "NumberOfCells = '47'");
+  spit(dir.file("wrong.vtu"), wrong + good.substr(data));
+  const std::string what = test::input_error([&] { read_mesh(dir.file("wrong.vtu")); });
+  EXPECT_NE(what.find("wrong.vtu: DataArray 'offsets' (appended at offset "), std::string::npos) << what;
+  EXPECT_NE(what.find("it holds 384 bytes where 47 cells of 1 Int64 need 376"), std::string::npos) << what;
 }
 
 TEST(Readers, AnInlineBinaryArrayCutShortIsRefused) {
