@@ -8,6 +8,7 @@
 #include <fstream>
 #include <limits>
 #include <optional>
+#include <set>
 #include <string>
 #include <system_error>
 #include <vector>
@@ -148,6 +149,14 @@ std::optional<ClassicHeader> walk_classic_header(const std::vector<unsigned char
     var.begin = c.read(offset);
     vars.push_back(var);
   }
+  // Names are unique within a file (the netCDF data model), and netCDF's lookup by name finds one
+  // of two alike: a fuzzed Exodus file with two 'eb_prop1' (its connect1 renamed) corrupted the
+  // heap of VTK's reader.
+  std::set<std::string> seen_dims, seen_vars;
+  for (const auto& d : out.dims)
+    if (c.ok && !seen_dims.insert(d.first).second) c.refuse("two dimensions are named '" + d.first + "'");
+  for (const Var& v : vars)
+    if (c.ok && !seen_vars.insert(v.name).second) c.refuse("two variables are named '" + v.name + "'");
   if (!c.ok) return std::nullopt;
   std::uint64_t record_size = 0;  // one record of every record variable, padded (one alone: unpadded)
   int records = 0;

@@ -253,6 +253,17 @@ TEST(LibraryCounts, ExodusRepeatedBlockIdsAndNameLengthsOutOfRangeAreRefused) {
             std::string::npos);
   EXPECT_NE(write("negative.exo", {1}, -2147483616).find("is -2147483616, outside [1, 256]"), std::string::npos);
   EXPECT_NE(write("long.exo", {1}, 257).find("is 257, outside [1, 256]"), std::string::npos);
+  // Two variables of one name (a fuzzed file's connect1 renamed 'eb_prop1', the name of another:
+  // netCDF opened it, and VTK's reader corrupted its heap). The netCDF API cannot write that: the
+  // good file's header is edited, as the fuzzer did.
+  std::ifstream in(dir.file("good.exo"), std::ios::binary);
+  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::size_t connect1 = bytes.find("connect1");
+  ASSERT_NE(connect1, std::string::npos);
+  bytes.replace(connect1, 8, "eb_prop1");
+  std::ofstream(dir.file("twice.exo"), std::ios::binary) << bytes;
+  EXPECT_EQ(test::input_error([&] { check_netcdf_readable(dir.file("twice.exo")); }),
+            dir.file("twice.exo") + ": corrupt: two variables are named 'eb_prop1'");
 }
 
 TEST(LibraryCounts, ExodusNodeCountsOfTheElementTypeIntegerStatusesAndRecordCountsAreChecked) {
