@@ -17,6 +17,11 @@ std::string lower(std::string word) {
   for (char& ch : word) ch = static_cast<char>(std::tolower(static_cast<unsigned char>(ch)));
   return word;
 }
+
+std::string upper(std::string word) {
+  for (char& ch : word) ch = static_cast<char>(std::toupper(static_cast<unsigned char>(ch)));
+  return word;
+}
 bool starts(const std::string& word, const char* prefix) { return word.rfind(prefix, 0) == 0; }
 
 // How VTK's legacy reader takes an array type (vtkDataReader::ReadArray, which matches most names
@@ -346,33 +351,34 @@ class DatasetWalk {
         if (starts(word, "point_data") || starts(word, "cell_data")) break;
         bool go_on = false;
         if (starts(word, "scalars")) {  // SCALARS name type [components] LOOKUP_TABLE table
-          int components = 1;
+          std::int64_t components = 1;
           if (!(in_ >> name >> type >> key)) return;
           if (lower(key) != "lookup_table") {
-            components = std::atoi(key.c_str());
+            components = std::strtoll(key.c_str(), nullptr, 10);
             if (components < 1 || !(in_ >> key) || lower(key) != "lookup_table") return;  // VTK's message
           }
-          go_on = (in_ >> key) && values(n, components, type);
+          go_on = (in_ >> key) && values(n, components, type, "SCALARS '" + name.substr(0, 40) + "'");
         } else if (starts(word, "vectors") || starts(word, "normals") || starts(word, "tensors")) {
           const int components = starts(word, "tensors6") ? 6 : starts(word, "tensors") ? 9 : 3;
-          go_on = (in_ >> name >> type) && values(n, components, type);
+          go_on = (in_ >> name >> type) && values(n, components, type, upper(word) + " '" + name.substr(0, 40) + "'");
         } else if (starts(word, "texture_coordinates")) {
           int dim = 0;
-          go_on = (in_ >> name >> dim >> type) && dim >= 1 && dim <= 3 && values(n, dim, type);
+          go_on = (in_ >> name >> dim >> type) && dim >= 1 && dim <= 3 &&
+                  values(n, dim, type, "TEXTURE_COORDINATES '" + name.substr(0, 40) + "'");
         } else if (starts(word, "global_ids") || starts(word, "pedigree_ids")) {
-          go_on = (in_ >> name >> type) && values(n, 1, type);
+          go_on = (in_ >> name >> type) && values(n, 1, type, upper(word) + " '" + name.substr(0, 40) + "'");
         } else if (starts(word, "color_scalars")) {
           int components = 0;
           if (!(in_ >> name >> components)) return;
           if (components < 1)
             throw InputError(where(path_, block + "'s COLOR_SCALARS '" + name.substr(0, 40) + "' declares " +
                                               std::to_string(components) + " components"));
-          go_on = values(n, components, binary_ ? "unsigned_char" : "float");
+          go_on = values(n, components, binary_ ? "unsigned_char" : "float", "COLOR_SCALARS '" + name.substr(0, 40) + "'");
         } else if (starts(word, "lookup_table")) {
           std::int64_t entries = 0;
           if (!(in_ >> name >> entries)) return;
           if (entries < 0) refuse_count(block + "'s LOOKUP_TABLE '" + name.substr(0, 40) + "'", entries);
-          go_on = values(entries, 4, binary_ ? "unsigned_char" : "float");
+          go_on = values(entries, 4, binary_ ? "unsigned_char" : "float", "LOOKUP_TABLE '" + name.substr(0, 40) + "'");
         } else if (starts(word, "field")) {
           go_on = field();
         }
@@ -383,10 +389,16 @@ class DatasetWalk {
 
   // An attribute array's values: `tuples` x `components` of `type`, and its METADATA. False where
   // the walk stops (a type VTK refuses, strings, more values than the file holds).
-  bool values(std::int64_t tuples, int components, const std::string& type) {
+  // `what` names the array ("SCALARS 'pressure'"). More values than the rest of the file holds are
+  // refused here: VTK's reader sizes the array first (SCALARS of 44444444441 components, a fuzzed
+  // file, asked for 12 GB).
+  bool values(std::int64_t tuples, std::int64_t components, const std::string& type, const std::string& what) {
     const int bytes = value_bytes(lower(type));
     if (bytes == kUnknown || bytes == kVariable || (bytes == kBit && binary_)) return false;
-    if (double(tuples) * components > double(left())) return false;  // VTK's own message: values missing
+    if (double(tuples) * double(components) > double(left()))
+      throw InputError(where(path_, section_ + " " + what + " declares " + std::to_string(tuples) + " tuples of " +
+                                        std::to_string(components) + " components, more values than the " +
+                                        std::to_string(left()) + " bytes left in the file hold: truncated or corrupt"));
     if (!skip(tuples * components, bytes)) return false;
     skip_metadata();
     return true;

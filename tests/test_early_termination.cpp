@@ -35,6 +35,9 @@ TEST(EarlyTermination, TheMaskTellsWhetherEveryPixelOfABoxIsOpaque) {
   EXPECT_FALSE(m.all(60, 71, 1, 1));
   EXPECT_FALSE(m.all(60, 70, 0, 1));
   EXPECT_TRUE(m.all(5, 4, 0, 2));  // an empty box
+  for (int i = 0; i < 40; ++i) m.set(i, 0);  // row 0: enough opaque pixels, none in the box
+  EXPECT_FALSE(m.all(60, 70, 0, 0));
+  EXPECT_TRUE(m.all(0, 39, 0, 0));
   m.set(129, 2);
   EXPECT_TRUE(m.opaque(129, 2));
   EXPECT_FALSE(m.opaque(128, 2));

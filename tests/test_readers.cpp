@@ -327,6 +327,11 @@ TEST(Readers, ALegacyArrayOfANegativeCountInPointOrCellDataIsRefusedByName) {
   EXPECT_EQ(with("COLOR_SCALARS c 0\n"), where(dir.file("data.vtk"), "POINT_DATA's COLOR_SCALARS 'c' declares 0 components"));
   EXPECT_EQ(with("LOOKUP_TABLE t -2\n"),
             where(dir.file("data.vtk"), "POINT_DATA's LOOKUP_TABLE 't' declares a negative count (-2)"));
+  // A count beyond the file: VTK sizes the array first (44444444441 components asked for 12 GB).
+  const std::string huge = with("SCALARS s float 44444444441\nLOOKUP_TABLE default\n0 1 2 3 4\n");
+  EXPECT_NE(huge.find("POINT_DATA's SCALARS 's' declares 5 tuples of 44444444441 components, more values than the "),
+            std::string::npos)
+      << huge;
   std::string negative = legacy;
   negative.replace(negative.find("CELL_DATA 3"), 11, "CELL_DATA -3");
   spit(dir.file("neg.vtk"), negative);
