@@ -19,7 +19,7 @@ Action add_compare(CLI::App& app) {
   cmd->add_option("a", args->a, "First image (.npy)")->required();
   cmd->add_option("b", args->b, "Second image (.npy), e.g. the exact reference")->required();
   cmd->add_option("--diff", args->diff, "Also write |a - b| as a PNG, multiplied by --scale");
-  cmd->add_option("--scale", args->scale, "Gain of the --diff image (default 10)")->check(finite_number("a gain", false));
+  cmd->add_option("--scale", args->scale, "Gain of the --diff image (default 10)")->check(positive_number("a gain"));
   cmd->add_option("--downsample", args->downsample,
                   "Box-filter B down by K first (B rendered at K times A's size: the anti-aliased reference)")
       ->check(CLI::Range(1, 64));

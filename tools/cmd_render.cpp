@@ -324,7 +324,7 @@ Action add_render(CLI::App& app) {
   setting("early-termination", args->options.early_termination,
           "software projection with --compositing tiles: on composites each tile front to back, closing a pixel "
           "once within 1e-6 of opaque and leaving out the cells behind closed pixels (faster on opaque "
-          "scenes; the picture within 1e-6, not the same bits), or off (default)");
+          "scenes; the picture within 2e-6 of off, not the same bits), or off (default)");
   setting("tile-rows", args->options.tile_rows,
           "software projection with --compositing tiles: rows per image tile (default 0: about 4 tiles per thread, "
           "16 to 64 rows)");

@@ -36,17 +36,16 @@ auto usage(F&& f) {
 
 using Action = std::function<int()>;
 
-// A number option's check with a one-line message (CLI11's PositiveNumber and NonNegativeNumber
-// accept nan and print their range up to DBL_MAX in full): `what` names the value, e.g. "GiB".
-inline CLI::Validator finite_number(const std::string& what, bool zero_allowed) {
-  const std::string rule = std::string(zero_allowed ? "a finite number >= 0" : "a finite number > 0");
+// A positive number option's check with a one-line message (CLI11's PositiveNumber accepts nan and
+// prints its range up to DBL_MAX in full): `what` names the value, e.g. "GiB".
+inline CLI::Validator positive_number(const std::string& what) {
   return CLI::Validator(
-      [what, rule, zero_allowed](std::string& text) -> std::string {
+      [what](std::string& text) -> std::string {
         double v = 0.0;
-        const bool ok = CLI::detail::lexical_cast(text, v) && std::isfinite(v) && (zero_allowed ? v >= 0.0 : v > 0.0);
-        return ok ? std::string() : "expected " + rule + " (" + what + "), got '" + text + "'";
+        const bool ok = CLI::detail::lexical_cast(text, v) && std::isfinite(v) && v > 0.0;
+        return ok ? std::string() : "expected a finite number > 0 (" + what + "), got '" + text + "'";
       },
-      zero_allowed ? "NUMBER >= 0" : "NUMBER > 0");
+      "NUMBER > 0");
 }
 
 // --max-memory GiB: `what` ("Refuse renders") estimated to need more, and the limit of a mesh
@@ -56,7 +55,7 @@ inline void add_max_memory_option(CLI::App& cmd, double& gib, const std::string&
                  what +
                      " estimated to need more than this many GiB, and stop a mesh reader at it (default: the "
                      "memory available now)")
-      ->check(finite_number("GiB", false));
+      ->check(positive_number("GiB"));
 }
 
 Action add_render(CLI::App& app);
