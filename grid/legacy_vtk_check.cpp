@@ -46,6 +46,13 @@ LegacyEncoding legacy_encoding(const std::string& third_line) {
   return LegacyEncoding::unknown;
 }
 
+LegacyEncoding legacy_file_encoding(const std::string& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::string line, word;
+  for (int k = 0; k < 2; ++k) std::getline(in, line);  // the version, the title
+  return in >> word ? legacy_encoding(word) : LegacyEncoding::unknown;
+}
+
 std::string read_legacy_dataset_type(std::istream& in) {
   std::string line, word, type;
   for (int k = 0; k < 2; ++k) std::getline(in, line);  // the version, the title
@@ -67,9 +74,7 @@ void check_legacy_cells(const std::string& path) {
   const int major = major_version(line);
   if (major < 0)
     throw InputError(where(path, "line 1: the version is garbled (a VTK legacy file says N.M): " + line.substr(0, 60)));
-  std::getline(in, line);  // the title
-  std::getline(in, line);
-  const LegacyEncoding encoding = legacy_encoding(line);
+  const LegacyEncoding encoding = legacy_file_encoding(path);
   if (encoding == LegacyEncoding::unknown) return;  // VTK says what is wrong
   const bool binary = encoding == LegacyEncoding::binary;
   check_legacy_fields(path, binary, major);

@@ -30,6 +30,10 @@ void check_legacy_fields(const std::string& path, bool binary, int major);
 // its start, in any case ("bINARY" is binary to VTK).
 enum class LegacyEncoding { ascii, binary, unknown };
 LegacyEncoding legacy_encoding(const std::string& third_line);
+// The encoding of the legacy file at `path` as VTK's reader finds it: the first word after the title
+// line, past any blank lines (a fuzzed file with a blank third line was BINARY to VTK, and the
+// checks that read the third line took it for unknown and let VTK's reader crash on its CELLS).
+LegacyEncoding legacy_file_encoding(const std::string& path);
 
 // The offsets of n cells, at(0) .. at(n): cell c's point ids are connectivity entries at(c) up to
 // at(c + 1), so the offsets start at 0 and climb, never past the `ids` connectivity entries. VTK's

@@ -306,7 +306,7 @@ void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
   std::string line;
   for (int i = 0; i < 3 && std::getline(in, line); ++i) {
   }
-  if (legacy_encoding(line) != LegacyEncoding::ascii) return;
+  if (legacy_file_encoding(path) != LegacyEncoding::ascii) return;
   std::uintmax_t numbers = 0;
   while (std::getline(in, line)) {
     const auto first = line.find_first_not_of(" \t\r");
@@ -344,7 +344,7 @@ void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
     needed += line.size() + 1;
     if (i == 0 && line.find("Version") != std::string::npos)
       version = std::atof(line.substr(line.find("Version") + 7).c_str());
-    if (i == 2 && legacy_encoding(line) != LegacyEncoding::binary) return;
+    if (i == 2 && legacy_file_encoding(path) != LegacyEncoding::binary) return;
   }
   auto bytes = [](vtkAbstractArray* a) {
     return a ? static_cast<std::uintmax_t>(a->GetNumberOfValues()) * static_cast<std::uintmax_t>(a->GetDataTypeSize())
