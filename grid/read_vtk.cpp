@@ -301,12 +301,11 @@ bool has_polyhedra(vtkDataSet* ds) {
 // returned dataset holds must all be in the file: count the numbers on its data lines.
 void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
   auto* ds = vtkDataSet::SafeDownCast(obj);
-  if (!ds) return;
+  if (!ds || legacy_file_encoding(path) != LegacyEncoding::ascii) return;
   std::ifstream in(path);
   std::string line;
   for (int i = 0; i < 3 && std::getline(in, line); ++i) {
   }
-  if (legacy_file_encoding(path) != LegacyEncoding::ascii) return;
   std::uintmax_t numbers = 0;
   while (std::getline(in, line)) {
     const auto first = line.find_first_not_of(" \t\r");
@@ -335,7 +334,7 @@ void check_legacy_ascii_complete(const std::string& path, vtkDataObject* obj) {
 // arrays of their declared type from 5 on.
 void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
   auto* ds = vtkDataSet::SafeDownCast(obj);
-  if (!ds) return;
+  if (!ds || legacy_file_encoding(path) != LegacyEncoding::binary) return;
   std::ifstream in(path, std::ios::binary);
   std::string line;
   std::uintmax_t needed = 0;  // a lower bound of the file's size
@@ -344,7 +343,6 @@ void check_legacy_binary_complete(const std::string& path, vtkDataObject* obj) {
     needed += line.size() + 1;
     if (i == 0 && line.find("Version") != std::string::npos)
       version = std::atof(line.substr(line.find("Version") + 7).c_str());
-    if (i == 2 && legacy_file_encoding(path) != LegacyEncoding::binary) return;
   }
   auto bytes = [](vtkAbstractArray* a) {
     return a ? static_cast<std::uintmax_t>(a->GetNumberOfValues()) * static_cast<std::uintmax_t>(a->GetDataTypeSize())

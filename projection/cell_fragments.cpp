@@ -401,8 +401,8 @@ void CellFragments::project_under(const std::int64_t* ids, CellType type, Image&
 }
 
 bool CellFragments::hidden_by(const std::int64_t* ids, CellType type, RowRange rows, const OpaqueMask& opaque) const {
-  const ScreenVertex& v0 = screen_.v[static_cast<std::size_t>(ids[0])];
-  double xmin = v0.x, xmax = v0.x, ymin = v0.y, ymax = v0.y;
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  double xmin = inf, xmax = -inf, ymin = inf, ymax = -inf;
   for (int k = 0, n = cell_def(type).vertices; k < n; ++k) {
     const ScreenVertex& v = screen_.v[static_cast<std::size_t>(ids[k])];
     if (behind_eye(v.z)) return false;
