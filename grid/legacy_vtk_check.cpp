@@ -40,17 +40,14 @@ int legacy_id_bytes(const std::string& type) {
   return is_legacy_keyword(type, "VTKTYPEINT64") ? 8 : is_legacy_keyword(type, "VTKTYPEINT32") ? 4 : 0;
 }
 
-LegacyEncoding legacy_encoding(const std::string& third_line) {
-  if (is_legacy_keyword(third_line.substr(0, 5), "ascii")) return LegacyEncoding::ascii;
-  if (is_legacy_keyword(third_line.substr(0, 6), "binary")) return LegacyEncoding::binary;
-  return LegacyEncoding::unknown;
-}
-
 LegacyEncoding legacy_file_encoding(const std::string& path) {
   std::ifstream in(path, std::ios::binary);
   std::string line, word;
   for (int k = 0; k < 2; ++k) std::getline(in, line);  // the version, the title
-  return in >> word ? legacy_encoding(word) : LegacyEncoding::unknown;
+  if (!(in >> word)) return LegacyEncoding::unknown;
+  if (is_legacy_keyword(word.substr(0, 5), "ascii")) return LegacyEncoding::ascii;
+  if (is_legacy_keyword(word.substr(0, 6), "binary")) return LegacyEncoding::binary;
+  return LegacyEncoding::unknown;
 }
 
 std::string read_legacy_dataset_type(std::istream& in) {

@@ -26,13 +26,11 @@ void check_legacy_cells(const std::string& path);
 // check_legacy_cells calls it; `binary` and `major` are the header's.
 void check_legacy_fields(const std::string& path, bool binary, int major);
 
-// The encoding the header's third line declares, read as VTK reads it: "ascii" or "binary" at
-// its start, in any case ("bINARY" is binary to VTK).
-enum class LegacyEncoding { ascii, binary, unknown };
-LegacyEncoding legacy_encoding(const std::string& third_line);
 // The encoding of the legacy file at `path` as VTK's reader finds it: the first word after the title
-// line, past any blank lines (a fuzzed file with a blank third line was BINARY to VTK, and the
-// checks that read the third line took it for unknown and let VTK's reader crash on its CELLS).
+// line, past any blank lines, starting with "ascii" or "binary" in any case ("bINARY" is binary to
+// VTK). A fuzzed file with a blank third line was BINARY to VTK, and the checks that read the third
+// line took it for unknown and let VTK's reader crash on its CELLS.
+enum class LegacyEncoding { ascii, binary, unknown };
 LegacyEncoding legacy_file_encoding(const std::string& path);
 
 // The offsets of n cells, at(0) .. at(n): cell c's point ids are connectivity entries at(c) up to

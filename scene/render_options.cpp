@@ -11,6 +11,12 @@
 namespace cellproj {
 namespace {
 
+// A switch option's text, "on" or "off", as a bool.
+bool on_off(const std::string& name, const std::string& text) {
+  if (text != "on" && text != "off") throw InputError("--" + name + ": expected on or off, got '" + text + "'");
+  return text == "on";
+}
+
 // The text of one option as a value of its type, the whole text used.
 template <class T>
 T number_of(const std::string& name, const std::string& text) {
@@ -93,8 +99,7 @@ LayerOptions layer_options(const RenderOptions& o, bool layers_mode) {
 IsoOptions iso_options(const RenderOptions& o) {
   IsoOptions i;
   for (const std::string& text : o.iso) i.surfaces.push_back(iso_surface(text));
-  if (o.volume != "on" && o.volume != "off") throw InputError("--volume: expected on or off, got '" + o.volume + "'");
-  i.volume = o.volume == "on";
+  i.volume = on_off("volume", o.volume);
   i.mode = named("iso-mode", [&] { return parse_iso_mode(o.iso_mode); });
   i.opacity = named("iso-opacity", [&] { return parse_iso_opacity(o.iso_opacity); });
   return i;
@@ -132,18 +137,14 @@ RenderSettings settings_from(const RenderOptions& o) {
   s.slicing.splat = s.projection.splat;
   s.layers = layer_options(o, s.mode == RenderMode::layers);
   s.iso = iso_options(o);
-  if (o.cull_transparent != "on" && o.cull_transparent != "off")
-    throw InputError("--cull-transparent: expected on or off, got '" + o.cull_transparent + "'");
-  s.projection.cull_transparent = o.cull_transparent == "on";
+  s.projection.cull_transparent = on_off("cull-transparent", o.cull_transparent);
   if (o.compositing != "tiles" && o.compositing != "stream")
     throw InputError("--compositing: expected tiles or stream, got '" + o.compositing + "'");
   s.projection.compositing = o.compositing == "tiles" ? Compositing::tiles : Compositing::stream;
   if (o.tile_rows < 0 || o.tile_rows > 65536)
     throw InputError("--tile-rows: expected an integer in [0, 65536] (0: automatic), got " + std::to_string(o.tile_rows));
   s.projection.tile_rows = o.tile_rows;
-  if (o.early_termination != "on" && o.early_termination != "off")
-    throw InputError("--early-termination: expected on or off, got '" + o.early_termination + "'");
-  s.projection.early_termination = o.early_termination == "on";
+  s.projection.early_termination = on_off("early-termination", o.early_termination);
   return s;
 }
 
