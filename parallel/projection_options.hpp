@@ -28,6 +28,7 @@ struct ProjectionOptions {
   // and cells wholly behind closed pixels not projected (composite/opaque_mask.hpp). Not the same
   // bits as back to front: the sums round in another order.
   bool early_termination = false;
+  WholeCells whole_cells = WholeCells::automatic;  // pt-linear and pt-table on whole cells, software
 };
 // Throws InputError for options that do not go together (a method the back end cannot draw) or a
 // table size outside [2, 8192]: before a frame starts, never in the middle of one.

@@ -293,7 +293,8 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   if (method.opacity_table) table.emplace(opacity_table(tf, options.table_size, max_diameter_));
   PointOptics optics;
   if (method.point_optics) optics = point_optics(scalar, mesh_.n_points, tf);
-  const CellFragments project(screen, rays, points, tf, options.method, table ? &*table : nullptr, &optics);
+  const CellFragments project(screen, rays, points, tf, options.method, table ? &*table : nullptr, &optics,
+                              options.whole_cells);
 
   t = std::chrono::steady_clock::now();
   Image image;

@@ -73,6 +73,36 @@ struct ExactFragments {
   }
 };
 
+// A thick vertex's corner (MWSC section 2): opacity 1 - exp(-kappa_avg l) (pt-linear) or kappa_avg
+// (pt-table), thickness l, and the mean of the segment's end colours.
+GouraudCorner thick_corner(double kf, double kb, const glm::dvec3& cf, const glm::dvec3& cb, double l, bool table) {
+  const double kavg = 0.5 * (kf + kb);
+  return {table ? kavg : -std::expm1(-kavg * l), l, 0.5 * (cf + cb)};
+}
+
+// pt-linear's and pt-table's fragments of a whole cell drawn by its layers: every pixel is a thick
+// vertex, its segment's ends from the front and back layers (no polygon to interpolate across).
+template <class Emit>
+struct ThickPixelFragments {
+  const ExactShade& shade;
+  const OpacityTable* table;  // pt-table's
+  Emit& emit;
+  std::int64_t emitted = 0;
+  void operator()(int i, int j, double zf, double zb, double sf, double sb) {
+    if (emit.hidden(i, j)) return;
+    const double l = shade.ends(i, j, zf, zb, sf, sb);
+    const LinearPiece& piece = shade.piece;
+    const TransferFunction& tf = shade.tf;
+    const GouraudCorner g =
+        shade.has_breakpoint
+            ? thick_corner(tf.extinction(sf), tf.extinction(sb), tf.color(sf), tf.color(sb), l, table)
+            : thick_corner(piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb), l, table);
+    const double alpha = table ? (*table)(g.a, g.l) : g.a;
+    emitted += emit(i, j, g.c * alpha, alpha);
+  }
+  std::int64_t finish() const { return emitted; }
+};
+
 // The shade of a cell with scalar range [smin, smax]: its transfer-function piece, or whether a
 // breakpoint lies inside the range (then cut there by pt-breakpoints, `cuts`).
 bool holds_breakpoint(const TransferFunction& tf, double smin, double smax) {
@@ -181,8 +211,15 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
 
 CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                              const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
-                             const PointOptics* optics)
-    : screen_(screen), rays_(rays), points_(points), tf_(tf), method_(traits(method)), table_(table), optics_(optics) {
+                             const PointOptics* optics, WholeCells whole_cells)
+    : screen_(screen),
+      rays_(rays),
+      points_(points),
+      tf_(tf),
+      method_(traits(method)),
+      table_(table),
+      optics_(optics),
+      whole_cells_(whole_cells) {
   // Which way a triangle facing the eye turns in this image: (c, c + r, c + u) with r x u towards
   // the eye, ahead of it on the view axis.
   const Camera& cam = rays.camera();
@@ -277,9 +314,8 @@ CellFragments::Seen CellFragments::classify(const Tet& tet, ScreenVertex v[4], P
 
 GouraudCorner CellFragments::shade(const ThickVertex& t) const {
   // Corner values from the transfer function, Gouraud-interpolated across each triangle (MWSC sec. 2).
-  const double kavg = 0.5 * (tf_.extinction(t.sf) + tf_.extinction(t.sb));
-  const double l = (t.zb - t.zf) * rays_.length_per_depth(t.x, t.y);
-  return {method_.opacity_table ? kavg : -std::expm1(-kavg * l), l, 0.5 * (tf_.color(t.sf) + tf_.color(t.sb))};
+  return thick_corner(tf_.extinction(t.sf), tf_.extinction(t.sb), tf_.color(t.sf), tf_.color(t.sb),
+                      (t.zb - t.zf) * rays_.length_per_depth(t.x, t.y), method_.opacity_table);
 }
 
 CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters) const {
@@ -414,10 +450,22 @@ bool CellFragments::hidden_by(const std::int64_t* ids, CellType type, RowRange r
   return !box.empty() && j0 <= j1 && opaque.all(box.i0, box.i1, j0, j1);
 }
 
+bool CellFragments::by_layers(const std::int64_t* ids, CellType type) const {
+  if (!method_.gouraud || whole_cells_ == WholeCells::layers) return true;
+  if (whole_cells_ == WholeCells::polygons) return false;
+  double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
+  for (int k = 0, n = cell_def(type).vertices; k < n; ++k) {
+    const ScreenVertex& v = screen_.v[static_cast<std::size_t>(ids[k])];
+    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x), ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
+  }
+  // The pixel centres of its box (the whole image's: not the tile's share), NaN or not.
+  return (xmax - xmin + 1) * (ymax - ymin + 1) <= kLayersUpToPixels;
+}
+
 template <class Emit>
 void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                                  ProjectionCounters& counters) const {
-  if (type != CellType::Tetra && !method_.gouraud) return project_layers(ids, type, rows, emit, p, counters);
+  if (type != CellType::Tetra && by_layers(ids, type)) return project_layers(ids, type, rows, emit, p, counters);
   const Seen seen = triangles_of(ids, type, p, counters, false);
   if (seen == Seen::behind_eye && type == CellType::Tetra)
     ray_cast({ids[0], ids[1], ids[2], ids[3]}, rows, emit, counters);
@@ -556,17 +604,24 @@ void CellFragments::project_layers(const std::int64_t* ids, CellType type, RowRa
   // silhouette edge is one front and one back triangle's, traversed alike once each is turned
   // positive), so each centre a front triangle covers has its back; one that has none (a sliver's
   // rounding) adds nothing.
+  const auto draw_front = [&](auto& fragments) {
+    for (int t = 0; t < faces.n_front; ++t)
+      rasterize(faces.front[t], [&](int i, int j, double depth, double scalar) {
+        const double* b = back_at(i, j);
+        if (std::isnan(b[0])) {
+          ++counters.unmatched;
+          return;
+        }
+        fragments(i, j, depth, b[0], scalar, b[1]);
+      });
+    counters.fragments += fragments.finish();
+  };
+  if (method_.gouraud) {
+    ThickPixelFragments<Emit> fragments{exact, table_, emit};
+    return draw_front(fragments);
+  }
   ExactFragments<Emit> fragments(exact, emit, p.segments);
-  for (int t = 0; t < faces.n_front; ++t)
-    rasterize(faces.front[t], [&](int i, int j, double depth, double scalar) {
-      const double* b = back_at(i, j);
-      if (std::isnan(b[0])) {
-        ++counters.unmatched;
-        return;
-      }
-      fragments(i, j, depth, b[0], scalar, b[1]);
-    });
-  counters.fragments += fragments.finish();
+  draw_front(fragments);
 }
 
 }  // namespace cellproj

@@ -82,7 +82,7 @@ class CellFragments {
   // `rays` is the frame's PixelRays on the recentred camera, the one `screen` was made with.
   CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                 const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
-                const PointOptics* optics);
+                const PointOptics* optics, WholeCells whole_cells = WholeCells::automatic);
   // Appends the fragments of the cell (point ids `ids`, of `type`) to out.
   void project(const std::int64_t* ids, CellType type, FragmentBands& out, CellScratch& scratch,
                ProjectionCounters& counters) const;
@@ -121,8 +121,12 @@ class CellFragments {
   template <class Emit>
   void project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                     ProjectionCounters& counters) const;
-  // pt-analytic and pt-breakpoints on a cell other than a tetrahedron: its back face triangles
-  // rasterized into a buffer over its pixels, then its front ones, each pixel meeting its back.
+  // Whether a cell other than a tetrahedron is drawn by its layers (else by its subdivision's
+  // polygons): the same answer in every tile of the image.
+  bool by_layers(const std::int64_t* ids, CellType type) const;
+  // A cell other than a tetrahedron by its layers (every method but the Gouraud ones' polygons):
+  // its back face triangles rasterized into a buffer over its pixels, then its front ones, each
+  // pixel meeting its back.
   template <class Emit>
   void project_layers(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                       ProjectionCounters& counters) const;
@@ -153,6 +157,7 @@ class CellFragments {
   const OpacityTable* table_;
   const PointOptics* optics_;
   int front_sign_;  // exact_sign of a face turned towards the eye
+  WholeCells whole_cells_;
 };
 
 }  // namespace cellproj

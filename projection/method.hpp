@@ -39,4 +39,13 @@ inline constexpr MethodTraits kProjectionMethods[] = {
 constexpr const MethodTraits& traits(ProjectionMethod method) { return kProjectionMethods[static_cast<int>(method)]; }
 constexpr const char* name_of(ProjectionMethod method) { return traits(method).name; }
 
+// How pt-linear and pt-table draw a whole cell (hexahedron, wedge, pyramid) in software: by its
+// front and back layers, the thick-vertex formula at every pixel's own segment, or by the polygons
+// of its image-plane subdivision, Gouraud-shaded (MWSC section 4; what the OpenGL back ends draw);
+// automatic: layers for a cell whose image spans few pixels (kLayersUpToPixels), where its
+// subdivision would cost more than its pixels, polygons otherwise. pt-analytic and pt-breakpoints
+// always use the layers.
+enum class WholeCells { automatic, layers, polygons };
+inline constexpr double kLayersUpToPixels = 256;  // the area of the cell's image box, in pixels
+
 }  // namespace cellproj

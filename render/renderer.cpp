@@ -59,7 +59,7 @@ class ProjectionMode final : public Renderer {
   std::vector<std::string> settings_used() const override {
     return {"method",      "backend",         "sort",           "gaps", "table-size", "tetrahedralize",
             "small-cells", "splat-threshold", "splat-prefilter", "cull-transparent", "compositing", "tile-rows",
-            "early-termination"};
+            "early-termination", "whole-cells"};
   }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 

@@ -145,6 +145,15 @@ RenderSettings settings_from(const RenderOptions& o) {
     throw InputError("--tile-rows: expected an integer in [0, 65536] (0: automatic), got " + std::to_string(o.tile_rows));
   s.projection.tile_rows = o.tile_rows;
   s.projection.early_termination = on_off("early-termination", o.early_termination);
+  if (o.whole_cells != "auto" && o.whole_cells != "layers" && o.whole_cells != "polygons")
+    throw InputError("--whole-cells: expected auto, layers or polygons, got '" + o.whole_cells + "'");
+  s.projection.whole_cells = o.whole_cells == "auto"     ? WholeCells::automatic
+                             : o.whole_cells == "layers" ? WholeCells::layers
+                                                         : WholeCells::polygons;
+  const bool given_layers = s.projection.whole_cells == WholeCells::layers &&
+                            std::find(o.given.begin(), o.given.end(), "whole-cells") != o.given.end();
+  if (given_layers && s.projection.backend != Backend::software)
+    throw InputError("--whole-cells layers needs --backend software (the OpenGL back ends draw polygons)");
   return s;
 }
 
@@ -152,7 +161,8 @@ std::vector<std::string> render_option_names() {
   return {"method",         "sort",        "gaps",       "backend", "tetrahedralize",  "interpolation",  "slice-axis",
           "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter",
           "iso",            "layer",       "layer-weights", "silhouettes", "silhouette-epsilon", "volume", "iso-mode",
-          "iso-opacity",    "cull-transparent", "compositing", "tile-rows", "early-termination"};
+          "iso-opacity",    "cull-transparent", "compositing", "tile-rows", "early-termination",
+          "whole-cells"};
 }
 
 void set_option(RenderOptions& o, const std::string& given_name, const std::string& value) {
@@ -176,6 +186,7 @@ void set_option(RenderOptions& o, const std::string& given_name, const std::stri
                       : name == "cull-transparent" ? &o.cull_transparent
                       : name == "compositing"    ? &o.compositing
                       : name == "early-termination" ? &o.early_termination
+                      : name == "whole-cells"    ? &o.whole_cells
                                                  : nullptr;
   if (text)
     *text = value;

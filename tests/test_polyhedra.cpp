@@ -66,11 +66,73 @@ TEST(Polyhedra, ACubeIsOneHexagonOfPolygonsAndExact) {
     EXPECT_EQ(st.tets, 0);
     const Image ref = test::exact(m, "s", tf(), c, 64, 64, CellInterpolation::isoparametric);
     EXPECT_LT(compare(img, ref).max_abs, 2e-5);
-    ProjectionStats linear;
-    test::project(m, "s", tf(), c, 64, test::with_method(ProjectionMethod::pt_linear), Tetrahedralize::problem, &linear);
-    EXPECT_GE(linear.counters.polygons, 3);
-    EXPECT_EQ(linear.counters.layered, 0);
+    // At 64² the cube's image box is over kLayersUpToPixels: `automatic` subdivides it too.
+    for (WholeCells whole : {WholeCells::automatic, WholeCells::polygons}) {
+      ProjectionStats linear;
+      ProjectionOptions o = test::with_method(ProjectionMethod::pt_linear);
+      o.whole_cells = whole;
+      test::project(m, "s", tf(), c, 64, o, Tetrahedralize::problem, &linear);
+      EXPECT_GE(linear.counters.polygons, 3);
+      EXPECT_EQ(linear.counters.layered, 0);
+    }
   }
+}
+
+// pt-linear and pt-table on a whole cell by its layers: each pixel is a thick vertex (MWSC section
+// 2), its segment's length and end scalars from the cell's front and back faces. On a cube with an
+// affine field that is exactly opacity 1 - exp(-l (kappa(s_front) + kappa(s_back)) / 2) and the mean
+// of the ends' colours at every pixel, here against each pixel's ray clipped to the cube. The
+// polygons of the image-plane subdivision interpolate those values instead, and differ.
+TEST(Polyhedra, LayersGiveEachPixelItsOwnThickVertex) {
+  Mesh m = make_box(1, 1, 1, glm::dvec3(-1), glm::dvec3(1), false);
+  affine_field(m);
+  const auto s = [](const glm::dvec3& x) { return 0.35 * x.x - 0.25 * x.y + 0.3 * x.z + 0.4; };
+  const TransferFunction linear_tf({{-1, {0.1, 0.3, 0.9}}, {2, {1, 0.6, 0.2}}}, {{-1, 0.2}, {2, 2.5}});
+  const int size = 48;
+  for (const TransferFunction& f : {tf(), linear_tf})  // breakpoints inside the cell, and none
+    for (const Camera& c : {test::view_from({2.2, 1.3, 3.1}, Projection::Orthographic),
+                            test::perspective({2.6, -1.9, 2.3}, {0, 0, 0}, 70)}) {
+      const PixelRays rays(c, size, size);
+      double worst[2] = {0, 0}, subdivision = 0;
+      for (ProjectionMethod method : {ProjectionMethod::pt_linear, ProjectionMethod::pt_table}) {
+        ProjectionOptions o = test::with_method(method);
+        o.whole_cells = WholeCells::layers;
+        ProjectionStats st;
+        const Image img = test::project(m, "s", f, c, size, o, Tetrahedralize::problem, &st);
+        EXPECT_EQ(st.counters.layered, 1);
+        EXPECT_EQ(st.counters.polygons, 0);
+        o.whole_cells = WholeCells::polygons;
+        const Image polygons = test::project(m, "s", f, c, size, o);
+        for (int j = 0; j < size; ++j)
+          for (int i = 0; i < size; ++i) {
+            const Ray r = rays.ray(i + 0.5, j + 0.5);
+            double t0 = 0, t1 = std::numeric_limits<double>::infinity();  // the ray in the cube (slabs)
+            for (int a = 0; a < 3; ++a) {
+              const double u = (-1 - r.origin[a]) / r.dir[a], v = (1 - r.origin[a]) / r.dir[a];
+              t0 = std::max(t0, std::min(u, v)), t1 = std::min(t1, std::max(u, v));
+            }
+            float want[4] = {0, 0, 0, 0};
+            if (t1 > t0) {
+              const double sf = s(r.origin + t0 * r.dir), sb = s(r.origin + t1 * r.dir);
+              const double alpha = -std::expm1(-(t1 - t0) * 0.5 * (f.extinction(sf) + f.extinction(sb)));
+              const glm::dvec3 rgb = 0.5 * (f.color(sf) + f.color(sb)) * alpha;
+              want[0] = float(rgb.r), want[1] = float(rgb.g), want[2] = float(rgb.b), want[3] = float(alpha);
+            }
+            const std::size_t at = 4 * (static_cast<std::size_t>(j) * size + i);
+            for (int k = 0; k < 4; ++k) {
+              const int m_index = method == ProjectionMethod::pt_table;
+              worst[m_index] = std::max(worst[m_index], double(std::abs(img.rgba[at + k] - want[k])));
+              if (method == ProjectionMethod::pt_linear)
+                subdivision = std::max(subdivision, double(std::abs(polygons.rgba[at + k] - want[k])));
+            }
+          }
+      }
+      EXPECT_LT(worst[0], 1e-6) << "pt-linear";
+      // pt-table's table, bilinear on 256² nodes over kappa in [0, 4] and l in [0, 2√3]: up to
+      // (Δκ² l² + Δl² κ²) / 8 ≈ 4e-4 for 1 - exp(-κ l).
+      EXPECT_LT(worst[1], 5e-4) << "pt-table";
+      EXPECT_GT(subdivision, 1e-3) << "the subdivision's polygons interpolate, and this view must show it";
+    }
 }
 
 TEST(Polyhedra, WarpedGridsMatchExactAndSplitOnlyProblemCells) {

@@ -325,6 +325,10 @@ Action add_render(CLI::App& app) {
           "software projection with --compositing tiles: on composites each tile front to back, closing a pixel "
           "once within 1e-6 of opaque and leaving out the cells behind closed pixels (faster on opaque "
           "scenes; the picture within 2e-6 of off, not the same bits), or off (default)");
+  setting("whole-cells", args->options.whole_cells,
+          "software pt-linear and pt-table on hexahedra, wedges and pyramids: layers (default: the thick-vertex "
+          "formula at every pixel from the cell's front and back faces) or polygons (the image-plane "
+          "subdivision Gouraud-shaded, as the OpenGL back ends draw them)");
   setting("tile-rows", args->options.tile_rows,
           "software projection with --compositing tiles: rows per image tile (default 0: about 4 tiles per thread, "
           "16 to 64 rows)");
