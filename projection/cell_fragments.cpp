@@ -1,6 +1,7 @@
 #include "projection/cell_fragments.hpp"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -72,6 +73,18 @@ struct ExactFragments {
     return emitted;
   }
 };
+
+// The box of a cell's n vertices in the image, vertex(k) giving the k-th: its lower and upper corner.
+template <class Vertex>
+std::array<glm::dvec2, 2> vertex_box(int n, Vertex&& vertex) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  glm::dvec2 lo(inf), hi(-inf);
+  for (int k = 0; k < n; ++k) {
+    const ScreenVertex& v = vertex(k);
+    lo.x = std::min(lo.x, v.x), hi.x = std::max(hi.x, v.x), lo.y = std::min(lo.y, v.y), hi.y = std::max(hi.y, v.y);
+  }
+  return {lo, hi};
+}
 
 // A thick vertex's corner (MWSC section 2): opacity 1 - exp(-kappa_avg l) (pt-linear) or kappa_avg
 // (pt-table), thickness l, and the mean of the segment's end colours.
@@ -437,15 +450,13 @@ void CellFragments::project_under(const std::int64_t* ids, CellType type, Image&
 }
 
 bool CellFragments::hidden_by(const std::int64_t* ids, CellType type, RowRange rows, const OpaqueMask& opaque) const {
-  constexpr double inf = std::numeric_limits<double>::infinity();
-  double xmin = inf, xmax = -inf, ymin = inf, ymax = -inf;
-  for (int k = 0, n = cell_def(type).vertices; k < n; ++k) {
-    const ScreenVertex& v = screen_.v[static_cast<std::size_t>(ids[k])];
-    if (behind_eye(v.z)) return false;
-    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x), ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
-  }
+  const int n = cell_def(type).vertices;
+  const auto vertex = [&](int k) -> const ScreenVertex& { return screen_.v[static_cast<std::size_t>(ids[k])]; };
+  for (int k = 0; k < n; ++k)
+    if (behind_eye(vertex(k).z)) return false;
   // Every triangle of the cell has its pixels in this box (the same rounding as PixelBox's).
-  const PixelBox box({xmin, ymin}, {xmax, ymax}, {xmin, ymin}, rays_.width(), rays_.height());
+  const auto [lo, hi] = vertex_box(n, vertex);
+  const PixelBox box(lo, hi, lo, rays_.width(), rays_.height());
   const int j0 = std::max(box.j0, rows.begin), j1 = std::min(box.j1, rows.end - 1);
   return !box.empty() && j0 <= j1 && opaque.all(box.i0, box.i1, j0, j1);
 }
@@ -453,13 +464,11 @@ bool CellFragments::hidden_by(const std::int64_t* ids, CellType type, RowRange r
 bool CellFragments::by_layers(const std::int64_t* ids, CellType type) const {
   if (!method_.gouraud || whole_cells_ == WholeCells::layers) return true;
   if (whole_cells_ == WholeCells::polygons) return false;
-  double xmin = std::numeric_limits<double>::infinity(), xmax = -xmin, ymin = xmin, ymax = -xmin;
-  for (int k = 0, n = cell_def(type).vertices; k < n; ++k) {
-    const ScreenVertex& v = screen_.v[static_cast<std::size_t>(ids[k])];
-    xmin = std::min(xmin, v.x), xmax = std::max(xmax, v.x), ymin = std::min(ymin, v.y), ymax = std::max(ymax, v.y);
-  }
-  // The pixel centres of its box (the whole image's: not the tile's share), NaN or not.
-  return (xmax - xmin + 1) * (ymax - ymin + 1) <= kLayersUpToPixels;
+  const auto [lo, hi] = vertex_box(cell_def(type).vertices, [&](int k) -> const ScreenVertex& {
+    return screen_.v[static_cast<std::size_t>(ids[k])];
+  });
+  // The pixels of its box (the whole image's, not the tile's share: every tile decides alike); NaN: no.
+  return (hi.x - lo.x + 1) * (hi.y - lo.y + 1) <= kLayersUpToPixels;
 }
 
 template <class Emit>
@@ -556,13 +565,10 @@ void CellFragments::project_layers(const std::int64_t* ids, CellType type, RowRa
   if (!load_cell(ids, type, v, p, counters)) return;  // split into tetrahedra for the view, or not drawn
   const FaceLayers faces = face_layers(v, ids, type, front_sign_);
   const int n = cell_def(type).vertices;
-  double xmin = v[0].x, xmax = v[0].x, ymin = v[0].y, ymax = v[0].y;
-  for (int k = 1; k < n; ++k)
-    xmin = std::min(xmin, v[k].x), xmax = std::max(xmax, v[k].x), ymin = std::min(ymin, v[k].y),
-    ymax = std::max(ymax, v[k].y);
   const int width = rays_.width(), height = rays_.height();
   // Every face triangle's pixels lie in the box of the cell's vertices (the same rounding).
-  PixelBox box({xmin, ymin}, {xmax, ymax}, {xmin, ymin}, width, height);
+  const auto [lo, hi] = vertex_box(n, [&](int k) -> const ScreenVertex& { return v[k]; });
+  PixelBox box(lo, hi, lo, width, height);
   if (faces.n_front == 0 || box.empty()) {
     ++counters.empty;
     return;

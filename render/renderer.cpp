@@ -57,9 +57,12 @@ class ProjectionMode final : public Renderer {
   }
   std::string name() const override { return name_of(options_.method); }
   std::vector<std::string> settings_used() const override {
-    return {"method",      "backend",         "sort",           "gaps", "table-size", "tetrahedralize",
-            "small-cells", "splat-threshold", "splat-prefilter", "cull-transparent", "compositing", "tile-rows",
-            "early-termination", "whole-cells"};
+    std::vector<std::string> used = {"method",          "backend",          "sort",        "gaps",
+                                     "table-size",      "tetrahedralize",   "small-cells", "splat-threshold",
+                                     "splat-prefilter", "cull-transparent", "compositing", "tile-rows",
+                                     "early-termination"};
+    if (traits(options_.method).gouraud) used.push_back("whole-cells");  // the exact rungs always draw layers
+    return used;
   }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 

@@ -101,6 +101,7 @@ expect 0 '"hidden_cells":[0-9]+,"hidden_fragments":[0-9]+' -- render "$tmp/ok.js
 expect 2 "--whole-cells: expected auto, layers or polygons, got 'quads'" -- render "$tmp/ok.json" --whole-cells quads
 expect 2 "--whole-cells layers needs --backend software" -- render "$tmp/ok.json" --whole-cells layers --backend opengl --method pt-linear
 expect 2 "--whole-cells does not apply to --method exact" -- render "$tmp/ok.json" --whole-cells polygons --method exact
+expect 2 "--whole-cells does not apply to --method pt-breakpoints" -- render "$tmp/ok.json" --whole-cells polygons
 expect 2 "--compositing does not apply to --method exact" -- render "$tmp/ok.json" --method exact --compositing stream
 expect 0 '"max_abs": 0, "rmse": 0' -- compare "$tmp/ok.npy" "$tmp/ok.npy"
 expect 1 "no such file|cannot open" -- compare "$tmp/ok.npy" "$tmp/none.npy"

@@ -326,9 +326,10 @@ Action add_render(CLI::App& app) {
           "once within 1e-6 of opaque and leaving out the cells behind closed pixels (faster on opaque "
           "scenes; the picture within 2e-6 of off, not the same bits), or off (default)");
   setting("whole-cells", args->options.whole_cells,
-          "software pt-linear and pt-table on hexahedra, wedges and pyramids: layers (default: the thick-vertex "
-          "formula at every pixel from the cell's front and back faces) or polygons (the image-plane "
-          "subdivision Gouraud-shaded, as the OpenGL back ends draw them)");
+          "software pt-linear and pt-table on hexahedra, wedges and pyramids: layers (the thick-vertex "
+          "formula at every pixel from the cell's front and back faces), polygons (the image-plane "
+          "subdivision Gouraud-shaded, as the OpenGL back ends draw them) or auto (default: layers for cells "
+          "whose image box spans at most 256 pixels, polygons for larger ones)");
   setting("tile-rows", args->options.tile_rows,
           "software projection with --compositing tiles: rows per image tile (default 0: about 4 tiles per thread, "
           "16 to 64 rows)");
