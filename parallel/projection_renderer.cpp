@@ -227,6 +227,8 @@ void check_options(const ProjectionOptions& o) {
   if (o.early_termination && (is_opengl(o.backend) || o.compositing != Compositing::tiles || small == SmallCells::splat))
     throw InputError("--early-termination on composites image tiles front to back: it needs the software back end, "
                      "--compositing tiles and no splats (--small-cells draw or skip)");
+  if (is_opengl(o.backend) && o.whole_cells == WholeCells::layers)  // never the default: the user asked
+    throw InputError("--whole-cells layers needs --backend software (the OpenGL back ends draw polygons)");
   if (is_opengl(o.backend) && !traits(o.method).opengl) {
     std::string drawable;
     for (const MethodTraits& t : kProjectionMethods)

@@ -150,10 +150,6 @@ RenderSettings settings_from(const RenderOptions& o) {
   s.projection.whole_cells = o.whole_cells == "auto"     ? WholeCells::automatic
                              : o.whole_cells == "layers" ? WholeCells::layers
                                                          : WholeCells::polygons;
-  const bool given_layers = s.projection.whole_cells == WholeCells::layers &&
-                            std::find(o.given.begin(), o.given.end(), "whole-cells") != o.given.end();
-  if (given_layers && s.projection.backend != Backend::software)
-    throw InputError("--whole-cells layers needs --backend software (the OpenGL back ends draw polygons)");
   return s;
 }
 

@@ -135,6 +135,21 @@ TEST(Polyhedra, LayersGiveEachPixelItsOwnThickVertex) {
     }
 }
 
+// The OpenGL back ends draw whole cells as polygons only: asking them for layers is refused before a
+// frame, from the library as from the command line.
+TEST(Polyhedra, OpenGLRefusesWholeCellsByLayers) {
+  ProjectionOptions o = test::with_method(ProjectionMethod::pt_linear);
+  o.backend = Backend::opengl;
+  for (WholeCells whole : {WholeCells::automatic, WholeCells::polygons}) {
+    o.whole_cells = whole;
+    EXPECT_NO_THROW(check_options(o));
+  }
+  o.whole_cells = WholeCells::layers;
+  EXPECT_THROW(check_options(o), InputError);
+  o.backend = Backend::software;
+  EXPECT_NO_THROW(check_options(o));
+}
+
 TEST(Polyhedra, WarpedGridsMatchExactAndSplitOnlyProblemCells) {
   for (int kind = 0; kind < 2; ++kind) {
     Mesh m = kind == 0 ? warped_hexahedra(6) : twisted_mixed(4);
