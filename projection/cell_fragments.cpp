@@ -80,7 +80,7 @@ std::array<glm::dvec2, 2> vertex_box(int n, Vertex&& vertex) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   glm::dvec2 lo(inf), hi(-inf);
   for (int k = 0; k < n; ++k) {
-    const ScreenVertex& v = vertex(k);
+    const auto& v = vertex(k);
     lo.x = std::min(lo.x, v.x), hi.x = std::max(hi.x, v.x), lo.y = std::min(lo.y, v.y), hi.y = std::max(hi.y, v.y);
   }
   return {lo, hi};
@@ -337,6 +337,7 @@ CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p,
   const Seen seen = classify(tet, v, pt, counters);
   if (seen != Seen::projected) return seen;
   p.smin = std::min({v[0].s, v[1].s, v[2].s, v[3].s}), p.smax = std::max({v[0].s, v[1].s, v[2].s, v[3].s});
+  p.tet = pt;
   p.tri.resize(static_cast<std::size_t>(pt.hull_size));
   for (int a = 0; a < pt.hull_size; ++a) p.tri[a] = {{pt.thick, pt.hull[a], pt.hull[(a + 1) % pt.hull_size]}};
   if (!method_.gouraud) return seen;
@@ -484,6 +485,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
   const bool persp = rays_.perspective();
   if (method_.gouraud) {
     counters.breakpoint_cells += holds_breakpoint(tf_, p.smin, p.smax);
+    if (type == CellType::Tetra && project_fan(rows, emit, p, counters)) return;
     // Colour, opacity (pt-table: kappa and thickness) are affine along a row of a triangle (Gouraud
     // shading, MWSC section 2): a run of pixels starts from its first pixel's values and steps.
     const bool table = method_.opacity_table;
@@ -529,8 +531,9 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
   // pt-analytic and pt-breakpoints on a tetrahedron: the segment's ends per pixel, then the
   // closed-form integral. Depths and scalars (1/z and s/z in perspective) are affine along a run of
   // a triangle's pixels: a run starts from its first pixel's values and steps, as the Gouraud path.
+  counters.breakpoint_cells += holds_breakpoint(tf_, p.smin, p.smax);
+  if (type == CellType::Tetra && project_fan(rows, emit, p, counters)) return;
   const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
-  counters.breakpoint_cells += exact.has_breakpoint;
   ExactFragments<Emit> fragments(exact, emit, p.segments);
   for (std::size_t t = 0; t < p.tri.size(); ++t) {
     const ThickVertex* V = p.tri[t].v;
@@ -556,6 +559,72 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
         });
   }
   counters.fragments += fragments.finish();
+}
+
+template <class Emit>
+bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, ProjectionCounters& counters) const {
+  // The fan is tri[a] = (thick, hull[a], hull[a + 1]) with corners p.corner[3a ...] (tet_triangles).
+  const ProjectedTet& pt = p.tet;
+  const int n = pt.hull_size;
+  if (pt.edge_on) return false;
+  const auto [lo, hi] = vertex_box(n, [&](int k) -> const ThickVertex& { return pt.hull[k]; });
+  const PixelBox box(lo, hi, lo, rays_.width(), rays_.height());
+  const int bw = box.i1 - box.i0 + 1;
+  if (box.empty() || std::int64_t{bw} * (box.j1 - box.j0 + 1) > kFanUpToPixels) return box.empty();
+  const int j0 = std::max(box.j0, rows.begin), j1 = std::min(box.j1, rows.end - 1);
+  if (j0 > j1) return true;
+  // The quantities interpolated: pt-linear opacity and colour, pt-table kappa_avg, thickness and
+  // colour (the corners'), the exact rungs the ends' depth and scalar (the thick vertices').
+  const bool gouraud = method_.gouraud, table = method_.opacity_table, persp = rays_.perspective();
+  const int nq = table ? 5 : 4;
+  double thick[kFanQuantities], hull[4][kFanQuantities];
+  const auto values = [&](int corner, const ThickVertex& v, double* q) {
+    if (!gouraud) {
+      affine_depth_scalar({v.x, v.y, v.zf, v.sf}, persp, q[0], q[2]);
+      affine_depth_scalar({v.x, v.y, v.zb, v.sb}, persp, q[1], q[3]);
+      return;
+    }
+    const GouraudCorner& g = p.corner[corner];
+    int m = 0;
+    q[m++] = g.a;
+    if (table) q[m++] = g.l;
+    q[m++] = g.c.r, q[m++] = g.c.g, q[m] = g.c.b;
+  };
+  values(0, pt.thick, thick);
+  for (int a = 0; a < n; ++a) values(3 * a + 1, pt.hull[a], hull[a]);
+  FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, nq, thick, hull);
+  if (planes.sectors == 0) return true;
+  planes.linear_opacity = gouraud && !table;
+  FanPixels& f = p.fan;
+  fan_pixels(planes, j0 - box.j0, j1 - j0 + 1, bw, f);
+  const double *q0 = f.quantity(0), *q1 = f.quantity(1), *q2 = f.quantity(2), *q3 = f.quantity(3);
+  const double* q4 = f.quantity(4);
+  // visit(i, j, k) for every pixel (i, j) of the fan's rows, k its quantities' index.
+  const auto for_each_pixel = [&](auto&& visit) {
+    for (int j = j0; j <= j1; ++j) {
+      const int r = j - j0;
+      const std::size_t row = static_cast<std::size_t>(r) * f.stride;
+      for (int i = f.first[r]; i <= f.last[r]; ++i) visit(box.i0 + i, j, row + i);
+    }
+  };
+  if (!gouraud) {
+    const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
+    ExactFragments<Emit> fragments(exact, emit, p.segments);
+    for_each_pixel([&](int i, int j, std::size_t k) { fragments(i, j, q0[k], q1[k], q2[k], q3[k]); });
+    counters.fragments += fragments.finish();
+    return true;
+  }
+  std::int64_t emitted = 0;
+  if (!table)  // opacity and premultiplied colour already
+    for_each_pixel([&](int i, int j, std::size_t k) { emitted += emit(i, j, glm::dvec3(q1[k], q2[k], q3[k]), q0[k]); });
+  else
+    for_each_pixel([&](int i, int j, std::size_t k) {
+      // Clamped as project_with's runs: rounding may leave a value a hair below 0 at an edge.
+      const double alpha = (*table_)(std::max(q0[k], 0.0), std::max(q1[k], 0.0));
+      emitted += emit(i, j, glm::max(glm::dvec3(q2[k], q3[k], q4[k]), 0.0) * alpha, alpha);
+    });
+  counters.fragments += emitted;
+  return true;
 }
 
 template <class Emit>

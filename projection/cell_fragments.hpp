@@ -15,6 +15,7 @@
 #include "projection/projected_cell.hpp"
 #include "projection/projected_tet.hpp"
 #include "projection/segment_batch.hpp"
+#include "projection/tet_fan.hpp"
 #include "view/image.hpp"
 #include "view/screen.hpp"
 
@@ -70,6 +71,8 @@ struct CellScratch {
   SubdivisionCache subdivisions;      // projection topologies met by this worker
   std::vector<double> back;           // a whole cell's back layer: 2 per pixel of its box (project_layers)
   SegmentBatch segments;              // pt-analytic's and pt-breakpoints' fragments of the cell
+  ProjectedTet tet;                   // the tetrahedron's projection (tet_triangles)
+  FanPixels fan;                      // its fan over its pixel box (project_fan)
 };
 
 // The frame's fixed inputs; project() is const and may run on many threads at once.
@@ -121,6 +124,12 @@ class CellFragments {
   template <class Emit>
   void project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                     ProjectionCounters& counters) const;
+  // A tetrahedron (p.tet, and p.corner for the Gouraud methods) drawn as one fan over its pixel
+  // box, its quantities in SIMD lanes (tet_fan.hpp); false (nothing drawn) for a box of more than
+  // kFanUpToPixels, or a face seen edge-on (there the outline is thick, and a centre on it must go
+  // to one tetrahedron by view/raster.hpp's rule, which the triangles keep).
+  template <class Emit>
+  bool project_fan(RowRange rows, Emit& emit, CellScratch& p, ProjectionCounters& counters) const;
   // Whether a cell other than a tetrahedron is drawn by its layers (else by its subdivision's
   // polygons): the same answer in every tile of the image.
   bool by_layers(const std::int64_t* ids, CellType type) const;

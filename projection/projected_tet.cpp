@@ -55,6 +55,7 @@ ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
     pos += sign[i] > 0, neg += sign[i] < 0;
   }
   ProjectedTet out;
+  out.edge_on = pos + neg < 4;
   if (pos == 1 || neg == 1) {  // class 1: the lone-signed vertex projects inside the others' triangle
     const int lone_sign = pos == 1 ? 1 : -1;
     int t = 0;

@@ -23,6 +23,7 @@ struct ProjectedTet {
   ThickVertex thick;        // the triangles are (thick, hull[k], hull[k+1]), k cyclic
   ThickVertex hull[4];      // tetrahedron vertices (zero thickness) around the projected outline
   int hull_vertex[4] = {};  // which of the four input vertices each hull corner is
+  bool edge_on = false;     // a face seen edge-on (its three vertices on one line in the image, exactly)
 };
 
 // A screen vertex as a corner of zero thickness.

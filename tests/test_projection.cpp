@@ -60,6 +60,8 @@ TEST(ProjectedTet, ClassesFromProjectedFaceSigns) {
   // Degenerate: a vertex exactly on an edge's image, and all four on a line.
   const ScreenVertex on_edge[4] = {{0, 0, 5, 0}, {6, 0, 5, 0}, {0, 6, 5, 0}, {3, 0, 3, 1}};
   EXPECT_EQ(project_tet(on_edge, false).hull_size, 3);
+  EXPECT_TRUE(project_tet(on_edge, false).edge_on);  // face 0-1-3 edge-on: drawn triangle by triangle
+  EXPECT_FALSE(project_tet(up, false).edge_on || project_tet(cross, false).edge_on);
   const ScreenVertex line[4] = {{0, 0, 5, 0}, {1, 1, 4, 0}, {2, 2, 3, 0}, {3, 3, 2, 1}};
   EXPECT_EQ(project_tet(line, false).hull_size, 0);
 }

@@ -1,0 +1,146 @@
+#include "projection/tet_fan.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+#include "base/simd.hpp"
+
+namespace cellproj {
+namespace {
+
+// The edge function of a -> b, (b - a) x (p - a), as a plane over p = (x0 + x, y0 + y), times sign.
+Plane edge_plane(const ThickVertex& a, const ThickVertex& b, double x0, double y0, double sign) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  return {sign * (dx * (y0 - a.y) - dy * (x0 - a.x)), -sign * dy, sign * dx};
+}
+
+// Four doubles, one pixel each (GCC's and clang's vector extensions: AVX2 in the AVX2 clone, two
+// SSE2 halves in the default one).
+typedef double Lanes __attribute__((vector_size(32)));
+typedef double UnalignedLanes __attribute__((vector_size(32), aligned(8)));
+
+// Row by row over the box: the outline's pixels on the row (from its edges' crossings), then four
+// pixels at a time every fan triangle's smallest weight, the largest taken with its quantities.
+// S triangles, Q quantities (compile-time, so the loops unroll).
+template <int S, int Q, bool Linear = false>
+[[gnu::always_inline]] inline void pixels(const FanPlanes& f, int row0, int rows, int width, int stride,
+                                          std::size_t size, int* __restrict first, int* __restrict last,
+                                          double* __restrict q) {
+  for (int r = 0; r < rows; ++r) {
+    const double y = row0 + r;
+    double g0[S], gx[S], p0[S], px[S], q0[S][Q], qx[S][Q];
+    // The row's pixels inside every outline edge: x >= its crossing where the edge's function
+    // rises along the row, x <= where it falls, all or none where it is flat.
+    double lo = 0, hi = width - 1;
+    for (int a = 0; a < S; ++a) {
+      const double e = f.outline[a].c + f.outline[a].gy * y, inv = f.inv_gx[a], cross = -e * inv;
+      lo = inv > 0 && cross > lo ? cross : lo;
+      hi = inv < 0 && cross < hi ? cross : hi;
+      hi = inv == 0 && e < 0 ? -1.0 : hi;
+    }
+    first[r] = 0, last[r] = -1;
+    if (!(lo <= hi)) continue;  // (NaN: none)
+    const int b = static_cast<int>(std::ceil(lo)), e = static_cast<int>(std::floor(hi));
+    first[r] = b, last[r] = e;
+    for (int a = 0; a < S; ++a) {
+      g0[a] = f.hull[a].c + f.hull[a].gy * y, gx[a] = f.hull[a].gx;
+      p0[a] = f.spoke[a].c + f.spoke[a].gy * y, px[a] = f.spoke[a].gx;
+      for (int m = 0; m < Q; ++m) q0[a][m] = f.q[a][m].c + f.q[a][m].gy * y, qx[a][m] = f.q[a][m].gx;
+    }
+    double* out = q + static_cast<std::size_t>(r) * stride;
+    for (int i = b; i <= e; i += 4) {
+      const Lanes x = Lanes{0.0, 1.0, 2.0, 3.0} + static_cast<double>(i);
+      Lanes spoke[S];
+      for (int k = 0; k < S; ++k) spoke[k] = p0[k] + px[k] * x;
+      Lanes best = Lanes{} - std::numeric_limits<double>::infinity(), v[Q] = {};
+      for (int a = 0; a < S; ++a) {
+        const Lanes g = g0[a] + gx[a] * x, s1 = -spoke[(a + 1) % S];
+        const Lanes lo4 = g < spoke[a] ? g : spoke[a];
+        const Lanes w = (lo4 < s1 ? lo4 : s1) * f.inv_area[a];  // the triangle's smallest weight
+        const auto take = w > best;
+        best = take ? w : best;
+        for (int m = 0; m < Q; ++m) v[m] = take ? q0[a][m] + qx[a][m] * x : v[m];
+      }
+      if constexpr (Linear) {  // pt-linear's opacity and premultiplied colour, clamped as its runs
+        const Lanes zero{};
+        Lanes alpha = v[0] > zero ? v[0] : zero;
+        alpha = alpha < 1.0 ? alpha : zero + 1.0;
+        v[0] = alpha;
+        for (int m = 1; m < Q; ++m) v[m] = (v[m] > zero ? v[m] : zero) * alpha;
+      }
+      for (int m = 0; m < Q; ++m) *reinterpret_cast<UnalignedLanes*>(out + m * size + i) = v[m];
+    }
+  }
+}
+
+using PixelsFn = void (*)(const FanPlanes&, int, int, int, int, std::size_t, int*, int*, double*);
+// One function per triangle count, quantity count and pt-linear finish, each compiled for the
+// build's target and for AVX2.
+#define CELLPROJ_FAN_KERNEL(name, S, Q, linear)                                                                 \
+  CELLPROJ_AVX2_CLONES void name(const FanPlanes& f, int r0, int n, int w, int st, std::size_t sz, int* b, int* e, \
+                                 double* q) {                                                                    \
+    pixels<S, Q, linear>(f, r0, n, w, st, sz, b, e, q);                                                          \
+  }
+CELLPROJ_FAN_KERNEL(pixels_3_4, 3, 4, false)
+CELLPROJ_FAN_KERNEL(pixels_4_4, 4, 4, false)
+CELLPROJ_FAN_KERNEL(pixels_3_5, 3, 5, false)
+CELLPROJ_FAN_KERNEL(pixels_4_5, 4, 5, false)
+CELLPROJ_FAN_KERNEL(linear_3, 3, 4, true)
+CELLPROJ_FAN_KERNEL(linear_4, 4, 4, true)
+#undef CELLPROJ_FAN_KERNEL
+
+}  // namespace
+
+FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantities, const double* thick,
+                     const double (*hull)[kFanQuantities]) {
+  FanPlanes f;
+  const int n = pt.hull_size;
+  if (n < 3) return f;
+  double turn = 0;  // twice the outline's signed area
+  for (int k = 0; k < n; ++k) {
+    const ThickVertex &a = pt.hull[k], &b = pt.hull[(k + 1) % n];
+    turn += a.x * b.y - a.y * b.x;
+  }
+  if (!(turn != 0.0)) return f;
+  const double sign = turn > 0 ? 1.0 : -1.0;
+  f.sectors = n, f.quantities = quantities;
+  for (int k = 0; k < n; ++k) f.spoke[k] = edge_plane(pt.thick, pt.hull[k], x0, y0, sign);
+  for (int a = 0; a < n; ++a) {
+    const int b = (a + 1) % n;
+    f.outline[a] = f.hull[a] = edge_plane(pt.hull[a], pt.hull[b], x0, y0, sign);
+    const double inv_gx = 1.0 / f.hull[a].gx;  // 0 for a flat edge (or one too near it for 1 / gx)
+    f.inv_gx[a] = std::abs(inv_gx) < std::numeric_limits<double>::infinity() ? inv_gx : 0.0;
+    // Twice the triangle's area: its hull edge's function at the thick vertex.
+    const double area = sign * ((pt.hull[b].x - pt.hull[a].x) * (pt.thick.y - pt.hull[a].y) -
+                                (pt.hull[b].y - pt.hull[a].y) * (pt.thick.x - pt.hull[a].x));
+    // A triangle of no area to rounding (the thick vertex on the outline, or as good as) is left
+    // out: its weights' planes would be huge, and its neighbours reach across it.
+    if (!(area > 1e-9 * std::abs(turn)) || !(area < std::numeric_limits<double>::infinity())) {
+      f.hull[a] = {-1e300, 0.0, 0.0}, f.inv_area[a] = 1.0;  // never the largest smallest weight
+      continue;
+    }
+    f.inv_area[a] = 1.0 / area;
+    // Weights: thick vertex G_a / A, hull[a] -spoke[b] / A, hull[b] spoke[a] / A.
+    const Plane &g = f.hull[a], &sa = f.spoke[a], &sb = f.spoke[b];
+    for (int m = 0; m < quantities; ++m) {
+      const double qt = thick[m] * f.inv_area[a], qa = hull[a][m] * f.inv_area[a], qb = hull[b][m] * f.inv_area[a];
+      f.q[a][m] = {g.c * qt - sb.c * qa + sa.c * qb, g.gx * qt - sb.gx * qa + sa.gx * qb,
+                   g.gy * qt - sb.gy * qa + sa.gy * qb};
+    }
+  }
+  return f;
+}
+
+void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& out) {
+  out.stride = (width + 3) / 4 * 4 + 4;  // a row's last four pixels may start at its last pixel
+  out.size = static_cast<std::size_t>(rows) * static_cast<std::size_t>(out.stride);
+  if (out.first.size() < static_cast<std::size_t>(rows)) out.first.resize(rows), out.last.resize(rows);
+  if (out.q.size() < kFanQuantities * out.size) out.q.resize(kFanQuantities * out.size);
+  const bool four = f.sectors == 4, five = f.quantities == 5;
+  const PixelsFn fn = f.linear_opacity ? (four ? linear_4 : linear_3)
+                                       : four ? (five ? pixels_4_5 : pixels_4_4) : (five ? pixels_3_5 : pixels_3_4);
+  fn(f, row0, rows, width, out.stride, out.size, out.first.data(), out.last.data(), out.q.data());
+}
+
+}  // namespace cellproj

@@ -1,0 +1,58 @@
+#pragma once
+// A projected tetrahedron's fan (MWSC section 2: three or four triangles around the thick vertex)
+// evaluated over its whole pixel box at once, in SIMD lanes: no per-row edge search. Each pixel
+// takes the fan triangle whose smallest barycentric weight is largest (the one holding it; the
+// choice near a shared edge does not matter, the quantities are continuous across it), and is
+// covered when that weight is not negative. Along the outline every quantity of a thickness is 0,
+// so where two tetrahedra's outlines meet a centre on the edge adds nothing to either.
+#include <cstddef>
+#include <vector>
+
+#include "projection/projected_tet.hpp"
+
+namespace cellproj {
+
+constexpr int kFanQuantities = 5;  // the most per-pixel quantities interpolated (pt-table's)
+
+// An affine function of the pixel centre, relative to the box's first centre: c + gx x + gy y.
+struct Plane {
+  double c = 0, gx = 0, gy = 0;
+};
+
+// The fan's edge functions and its quantities' planes per triangle ("sector" a: thick vertex,
+// hull[a], hull[a + 1]).
+struct FanPlanes {
+  int sectors = 0, quantities = 0;
+  // pt-linear: the four quantities opacity and colour become the pixel's opacity clamped to
+  // [0, 1] and its colour clamped to >= 0 times it (premultiplied).
+  bool linear_opacity = false;
+  double inv_area[4] = {};  // 0 for a triangle of zero area (never chosen)
+  Plane outline[4];         // edge hull[a] -> hull[a + 1], positive inside
+  double inv_gx[4] = {};    // 1 / outline[a].gx (0 for a flat edge: the row is all in or all out)
+  Plane hull[4];            // outline[a], or -1e300 for a triangle of no area (never chosen)
+  Plane spoke[4];           // edge thick -> hull[k], positive on triangle k's side
+  Plane q[4][kFanQuantities];
+};
+
+// The planes of the fan of pt whose box's first pixel centre is (x0, y0); quantity m has value
+// thick[m] at the thick vertex and hull[k][m] at hull corner k. Empty (sectors = 0) if pt is.
+FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantities, const double* thick,
+                     const double (*hull)[kFanQuantities]);
+
+// Per row r of rows [row0, row0 + rows) of a box `width` pixels wide (rows from the box's first):
+// the pixels first[r] <= i <= last[r] whose centres lie between the row's crossings of the
+// outline's edges (within the box), and their quantities. Row r's pixel i is at r * stride + i.
+// A centre on the outline to rounding may be drawn by both tetrahedra sharing the edge, or by
+// neither: for a fan with no face edge-on (ProjectedTet::edge_on) the tetrahedron is zero thick
+// there, so that adds or loses nothing (view/raster.hpp's rule, which gives such a centre to one
+// triangle, costs more than the fan saves).
+struct FanPixels {
+  int stride = 0;
+  std::vector<int> first, last;
+  std::vector<double> q;  // quantity m of pixel p at m * size + p
+  std::size_t size = 0;
+  const double* quantity(int m) const { return q.data() + static_cast<std::size_t>(m) * size; }
+};
+void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& out);
+
+}  // namespace cellproj

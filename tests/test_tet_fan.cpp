@@ -1,0 +1,206 @@
+// A projected tetrahedron's fan over its pixel box (tet_fan.hpp) against the triangle rasterizer
+// it replaces for small tetrahedra: the same pixels, the same interpolated quantities.
+#include <cmath>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "projection/projected_tet.hpp"
+#include "projection/tet_fan.hpp"
+#include "view/raster.hpp"
+
+using namespace cellproj;
+
+namespace {
+
+constexpr int kW = 64, kH = 48;
+
+// Quantity 0 is 1 at the thick vertex and 0 on the outline (the thick vertex's weight); the others
+// are arbitrary corner values.
+struct Corners {
+  double thick[kFanQuantities];
+  double hull[4][kFanQuantities];
+};
+
+Corners corner_values(std::mt19937& rng) {
+  std::uniform_real_distribution<double> u(-2.0, 3.0);
+  Corners c{};
+  c.thick[0] = 1.0;
+  for (int m = 1; m < kFanQuantities; ++m) c.thick[m] = u(rng);
+  for (auto& h : c.hull) {
+    h[0] = 0.0;
+    for (int m = 1; m < kFanQuantities; ++m) h[m] = u(rng);
+  }
+  return c;
+}
+
+// The fan of pt over its pixel box (as project_fan draws it), from row row0 of the box on.
+struct DrawnFan {
+  PixelBox box;
+  FanPixels f;
+  int width() const { return box.i1 - box.i0 + 1; }
+  int height() const { return box.j1 - box.j0 + 1; }
+  double at(int m, int r, int i) const { return f.quantity(m)[static_cast<std::size_t>(r) * f.stride + i]; }
+};
+DrawnFan draw_fan(const ProjectedTet& pt, const Corners& c, int row0 = 0) {
+  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+  for (int k = 0; k < pt.hull_size; ++k)
+    x0 = std::min(x0, pt.hull[k].x), x1 = std::max(x1, pt.hull[k].x), y0 = std::min(y0, pt.hull[k].y),
+    y1 = std::max(y1, pt.hull[k].y);
+  DrawnFan d{PixelBox({x0, y0}, {x1, y1}, {x0, y0}, kW, kH), {}};
+  if (d.box.empty()) return d;
+  const FanPlanes planes = fan_planes(pt, d.box.i0 + 0.5, d.box.j0 + 0.5, kFanQuantities, c.thick, c.hull);
+  EXPECT_EQ(planes.sectors, pt.hull_size);
+  fan_pixels(planes, row0, d.height() - row0, d.width(), d.f);
+  return d;
+}
+
+// Compares the fan with the triangles (thick, hull[a], hull[a + 1]) rasterized one by one.
+void expect_fan_matches_triangles(const ProjectedTet& pt, const Corners& c) {
+  ASSERT_GT(pt.hull_size, 0);
+  const DrawnFan d = draw_fan(pt, c);
+  const PixelBox& box = d.box;
+  if (box.empty()) return;
+  const int bw = d.width(), bh = d.height();
+  const FanPixels& f = d.f;
+  // Which triangle covers each pixel of the box (-1: none), and its interpolated quantities.
+  std::vector<int> owner(static_cast<std::size_t>(bw * bh), -1);
+  std::vector<double> want(static_cast<std::size_t>(bw * bh) * kFanQuantities);
+  const int n = pt.hull_size;
+  for (int a = 0; a < n; ++a) {
+    const ThickVertex &t = pt.thick, &p = pt.hull[a], &q = pt.hull[(a + 1) % n];
+    rasterize_triangle_weights({t.x, t.y}, {p.x, p.y}, {q.x, q.y}, kW, kH, [&](int i, int j, double wt, double wp, double wq) {
+      const std::size_t k = static_cast<std::size_t>((j - box.j0) * bw + (i - box.i0));
+      EXPECT_EQ(owner[k], -1) << "pixel " << i << "," << j << " covered twice";
+      owner[k] = a;
+      for (int m = 0; m < kFanQuantities; ++m)
+        want[k * kFanQuantities + m] = wt * c.thick[m] + wp * c.hull[a][m] + wq * c.hull[(a + 1) % n][m];
+    });
+  }
+  for (int r = 0; r < bh; ++r) {
+    for (int i = 0; i < bw; ++i) {
+      const std::size_t k = static_cast<std::size_t>(r * bw + i);
+      const bool in_fan = f.first[r] <= i && i <= f.last[r];
+      if (owner[k] >= 0 && !in_fan) {
+        // Only a centre on the outline, to rounding, may be left to the tetrahedron across it:
+        // there the thick vertex's weight is 0 (nothing of a thickness to draw).
+        EXPECT_NEAR(want[k * kFanQuantities], 0.0, 1e-9)
+            << "pixel " << box.i0 + i << "," << box.j0 + r << " left out of the fan";
+      } else if (owner[k] >= 0) {
+        for (int m = 0; m < kFanQuantities; ++m)
+          EXPECT_NEAR(d.at(m, r, i), want[k * kFanQuantities + m], 1e-9)
+              << "quantity " << m << " at " << box.i0 + i << "," << box.j0 + r;
+      } else if (in_fan) {
+        // And only such a centre may be in the fan and in no triangle.
+        EXPECT_NEAR(d.at(0, r, i), 0.0, 1e-9) << "pixel " << box.i0 + i << "," << box.j0 + r;
+      }
+    }
+  }
+}
+
+ProjectedTet projected(const ScreenVertex v[4]) { return project_tet(v, false); }
+
+// Projects v (orthographic), expects an outline of hull_size corners and the fan to match.
+ProjectedTet expect_projected_fan_matches(const ScreenVertex v[4], int hull_size, const Corners& c) {
+  const ProjectedTet pt = projected(v);
+  EXPECT_EQ(pt.hull_size, hull_size);
+  if (pt.hull_size == hull_size) expect_fan_matches_triangles(pt, c);
+  return pt;
+}
+
+}  // namespace
+
+TEST(TetFan, RandomTetrahedraMatchTheirTriangles) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> x(1.0, kW - 1.0), y(1.0, kH - 1.0), z(1.0, 5.0);
+  int classes[5] = {};
+  for (int t = 0; t < 400; ++t) {
+    // Mostly small tetrahedra (a few pixels across), some spanning the image, some slivers.
+    const double cx = x(rng), cy = y(rng), span = t % 4 == 0 ? 30.0 : t % 4 == 1 ? 0.8 : 6.0;
+    std::uniform_real_distribution<double> d(-span, span);
+    ScreenVertex v[4];
+    for (auto& p : v) p = {cx + d(rng), cy + (t % 8 == 3 ? 0.01 : 1.0) * d(rng), z(rng), 0.0};
+    const ProjectedTet pt = projected(v);
+    ++classes[pt.hull_size];
+    if (pt.hull_size == 0) continue;
+    SCOPED_TRACE("tetrahedron " + std::to_string(t));
+    expect_fan_matches_triangles(pt, corner_values(rng));
+    if (HasFatalFailure()) return;
+  }
+  EXPECT_GT(classes[3], 50);
+  EXPECT_GT(classes[4], 50);
+}
+
+TEST(TetFan, ThickVertexOnAPixelCentreIsDrawnOnce) {
+  std::mt19937 rng(3);
+  // Class 1, the inner vertex exactly on the centre of pixel (10, 10), corners on centres too.
+  const ScreenVertex up[4] = {{4.5, 4.5, 5, 0}, {18.5, 6.5, 5, 0}, {8.5, 20.5, 5, 0}, {10.5, 10.5, 3, 0}};
+  expect_projected_fan_matches(up, 3, corner_values(rng));
+  // Class 2, the two crossing edges meeting on the centre of pixel (20, 20).
+  const ScreenVertex cross[4] = {{10.5, 10.5, 1, 0}, {30.5, 30.5, 1, 0}, {30.5, 10.5, 4, 0}, {10.5, 30.5, 4, 0}};
+  const Corners c = corner_values(rng);
+  const ProjectedTet p2 = expect_projected_fan_matches(cross, 4, c);
+  ASSERT_EQ(p2.hull_size, 4);
+  // The crossing's pixel has the thick vertex's values.
+  const DrawnFan d = draw_fan(p2, c);
+  const int r = 20 - d.box.j0, i = 20 - d.box.i0;
+  ASSERT_TRUE(d.f.first[r] <= i && i <= d.f.last[r]);
+  for (int m = 0; m < kFanQuantities; ++m) EXPECT_NEAR(d.at(m, r, i), c.thick[m], 1e-12) << "quantity " << m;
+}
+
+TEST(TetFan, RowsFromTheBoxMiddleGiveTheSameValues) {
+  // A tile's share of the box (rows from its middle) has the same bits as the whole box's rows:
+  // 1 and N threads draw the same picture.
+  std::mt19937 rng(11);
+  const ScreenVertex v[4] = {{3.2, 2.7, 5, 0}, {21.9, 8.1, 5, 0}, {9.4, 25.3, 2, 0}, {12.6, 11.8, 3, 0}};
+  const ProjectedTet pt = projected(v);
+  const Corners c = corner_values(rng);
+  const DrawnFan whole = draw_fan(pt, c), part = draw_fan(pt, c, 7);
+  for (int r = 7; r < whole.height(); ++r) {
+    ASSERT_EQ(whole.f.first[r], part.f.first[r - 7]);
+    ASSERT_EQ(whole.f.last[r], part.f.last[r - 7]);
+    for (int i = whole.f.first[r]; i <= whole.f.last[r]; ++i)
+      for (int m = 0; m < kFanQuantities; ++m) ASSERT_EQ(whole.at(m, r, i), part.at(m, r - 7, i));
+  }
+}
+
+TEST(TetFan, EdgeOnFacesAndEdgesAlongTheViewKeepTheirPixels) {
+  // Seen straight down a grid: an edge along the view (two vertices on one image point, the thick
+  // vertex on a corner of the outline) and a face edge-on (the thick vertex on an outline edge).
+  // Their fans have triangles of zero area, which must not take the outline's pixels with them.
+  std::mt19937 rng(5);
+  const ScreenVertex along[4] = {{9, 27, 1, 0}, {9, 27, 3, 0}, {9, 31.5, 2, 0}, {4.5, 31.5, 2, 0}};
+  const ProjectedTet p1 = expect_projected_fan_matches(along, 3, corner_values(rng));
+  const ScreenVertex edge_on[4] = {{2.5, 2.5, 1, 0}, {20.5, 2.5, 1, 0}, {8.5, 2.5, 4, 0}, {10.5, 14.5, 2, 0}};
+  const ProjectedTet p2 = expect_projected_fan_matches(edge_on, 3, corner_values(rng));
+  // The renderer leaves such fans to the triangle rasterizer (their outline is thick).
+  EXPECT_TRUE(p1.edge_on && p2.edge_on);
+  // Both draw pixels: the whole outline's.
+  for (const ProjectedTet* pt : {&p1, &p2}) {
+    const DrawnFan d = draw_fan(*pt, corner_values(rng));
+    int drawn = 0;
+    for (int r = 0; r < d.height(); ++r) drawn += std::max(0, d.f.last[r] - d.f.first[r] + 1);
+    EXPECT_GT(drawn, 5);
+  }
+}
+
+TEST(TetFan, ThickVertexOnOrBesideTheOutlineKeepsThePixels) {
+  // Crossing edges whose crossing rounds onto a corner (project_tet's weights are inexact where a
+  // vertex nearly meets the other edge): two fan triangles of no area beside that corner. And a
+  // thick vertex a hair inside an outline edge: a sliver triangle next to two whole ones.
+  std::mt19937 rng(9);
+  ProjectedTet corner;
+  corner.hull_size = 4;
+  const double h[4][2] = {{61.25141787494848, 51.369359171238656}, {60.794477048002115, 42.267171302912018},
+                          {42.28075787622533, 47.148219547302176}, {61.989767381904493, 66.077162738961604}};
+  for (int k = 0; k < 4; ++k) corner.hull[k] = {h[k][0], h[k][1], 2, 2, 0, 0};
+  corner.thick = corner.hull[0];
+  corner.thick.zb = 3;
+  expect_fan_matches_triangles(corner, corner_values(rng));
+  ProjectedTet beside;
+  beside.hull_size = 3;
+  beside.hull[0] = {5.2, 3.1, 2, 2, 0, 0}, beside.hull[1] = {40.7, 9.3, 2, 2, 0, 0}, beside.hull[2] = {12.9, 30.4, 2, 2, 0, 0};
+  const double t = 0.37;  // on edge 0-1, then 1e-12 pixels inwards
+  beside.thick = {5.2 + t * 35.5 - 1e-12 * 6.2, 3.1 + t * 6.2 + 1e-12 * 35.5, 1, 4, 0, 0};
+  expect_fan_matches_triangles(beside, corner_values(rng));
+}
