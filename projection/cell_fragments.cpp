@@ -316,7 +316,7 @@ CellFragments::Seen CellFragments::classify(const Tet& tet, ScreenVertex v[4], P
       return Seen::behind_eye;  // project() ray casts it; the OpenGL back ends leave it out
     }
   }
-  pt = project_tet(v, rays_.perspective());
+  project_tet(v, rays_.perspective(), pt);
   if (pt.hull_size == 0) {
     ++counters.empty;
     return Seen::empty;
@@ -331,28 +331,36 @@ GouraudCorner CellFragments::shade(const ThickVertex& t) const {
                       (t.zb - t.zf) * rays_.length_per_depth(t.x, t.y), method_.opacity_table);
 }
 
-CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters) const {
+CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters,
+                                                  bool triangles) const {
   ScreenVertex v[4];
-  ProjectedTet pt;
+  ProjectedTet& pt = p.tet;
   const Seen seen = classify(tet, v, pt, counters);
   if (seen != Seen::projected) return seen;
   p.smin = std::min({v[0].s, v[1].s, v[2].s, v[3].s}), p.smax = std::max({v[0].s, v[1].s, v[2].s, v[3].s});
-  p.tet = pt;
-  p.tri.resize(static_cast<std::size_t>(pt.hull_size));
-  for (int a = 0; a < pt.hull_size; ++a) p.tri[a] = {{pt.thick, pt.hull[a], pt.hull[(a + 1) % pt.hull_size]}};
-  if (!method_.gouraud) return seen;
-  // The outline's corners are zero thick: their values per point, computed once per frame.
-  const bool table = method_.opacity_table;
-  const GouraudCorner thick = shade(pt.thick);
-  GouraudCorner hull[4];
-  for (int k = 0; k < pt.hull_size; ++k) {
-    const std::int64_t q = tet[pt.hull_vertex[k]];
-    hull[k] = {table ? optics_->kappa[q] : 0.0, 0.0, optics_->color[q]};
+  if (method_.gouraud) {
+    // The outline's corners are zero thick: their values per point, computed once per frame.
+    const bool table = method_.opacity_table;
+    p.tet_corner[0] = shade(pt.thick);
+    for (int k = 0; k < pt.hull_size; ++k) {
+      const std::int64_t q = tet[pt.hull_vertex[k]];
+      p.tet_corner[1 + k] = {table ? optics_->kappa[q] : 0.0, 0.0, optics_->color[q]};
+    }
   }
-  p.corner.resize(3 * p.tri.size());
-  for (int a = 0; a < pt.hull_size; ++a)
-    p.corner[3 * a] = thick, p.corner[3 * a + 1] = hull[a], p.corner[3 * a + 2] = hull[(a + 1) % pt.hull_size];
+  if (triangles) fan_triangles(p);
   return seen;
+}
+
+void CellFragments::fan_triangles(CellScratch& p) const {
+  const ProjectedTet& pt = p.tet;
+  const int n = pt.hull_size;
+  p.tri.resize(static_cast<std::size_t>(n));
+  for (int a = 0; a < n; ++a) p.tri[a] = {{pt.thick, pt.hull[a], pt.hull[(a + 1) % n]}};
+  if (!method_.gouraud) return;
+  p.corner.resize(3 * p.tri.size());
+  for (int a = 0; a < n; ++a)
+    p.corner[3 * a] = p.tet_corner[0], p.corner[3 * a + 1] = p.tet_corner[1 + a],
+                 p.corner[3 * a + 2] = p.tet_corner[1 + (a + 1) % n];
 }
 
 bool CellFragments::load_cell(const std::int64_t* ids, CellType type, ScreenVertex* v, CellScratch& p,
@@ -476,16 +484,20 @@ template <class Emit>
 void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                                  ProjectionCounters& counters) const {
   if (type != CellType::Tetra && by_layers(ids, type)) return project_layers(ids, type, rows, emit, p, counters);
-  const Seen seen = triangles_of(ids, type, p, counters, false);
-  if (seen == Seen::behind_eye && type == CellType::Tetra)
-    ray_cast({ids[0], ids[1], ids[2], ids[3]}, rows, emit, counters);
+  const bool tet = type == CellType::Tetra;
+  const Seen seen = tet ? tet_triangles({ids[0], ids[1], ids[2], ids[3]}, p, counters, false)
+                        : cell_triangles(ids, type, p, counters, false);
+  if (seen == Seen::behind_eye && tet) ray_cast({ids[0], ids[1], ids[2], ids[3]}, rows, emit, counters);
   if (seen != Seen::projected) return;
+  counters.breakpoint_cells += holds_breakpoint(tf_, p.smin, p.smax);
+  if (tet) {  // small ones as one fan, the others triangle by triangle
+    if (project_fan(rows, emit, p, counters)) return;
+    fan_triangles(p);
+  }
   std::int64_t emitted = 0;
   const int width = rays_.width(), height = rays_.height();
   const bool persp = rays_.perspective();
   if (method_.gouraud) {
-    counters.breakpoint_cells += holds_breakpoint(tf_, p.smin, p.smax);
-    if (type == CellType::Tetra && project_fan(rows, emit, p, counters)) return;
     // Colour, opacity (pt-table: kappa and thickness) are affine along a row of a triangle (Gouraud
     // shading, MWSC section 2): a run of pixels starts from its first pixel's values and steps.
     const bool table = method_.opacity_table;
@@ -531,8 +543,6 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
   // pt-analytic and pt-breakpoints on a tetrahedron: the segment's ends per pixel, then the
   // closed-form integral. Depths and scalars (1/z and s/z in perspective) are affine along a run of
   // a triangle's pixels: a run starts from its first pixel's values and steps, as the Gouraud path.
-  counters.breakpoint_cells += holds_breakpoint(tf_, p.smin, p.smax);
-  if (type == CellType::Tetra && project_fan(rows, emit, p, counters)) return;
   const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
   ExactFragments<Emit> fragments(exact, emit, p.segments);
   for (std::size_t t = 0; t < p.tri.size(); ++t) {
@@ -563,7 +573,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
 
 template <class Emit>
 bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, ProjectionCounters& counters) const {
-  // The fan is tri[a] = (thick, hull[a], hull[a + 1]) with corners p.corner[3a ...] (tet_triangles).
+  // The fan is (thick, hull[a], hull[a + 1]), its corners p.tet_corner[0], [1 + a] (tet_triangles).
   const ProjectedTet& pt = p.tet;
   const int n = pt.hull_size;
   if (pt.edge_on) return false;
@@ -584,14 +594,14 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
       affine_depth_scalar({v.x, v.y, v.zb, v.sb}, persp, q[1], q[3]);
       return;
     }
-    const GouraudCorner& g = p.corner[corner];
+    const GouraudCorner& g = p.tet_corner[corner];
     int m = 0;
     q[m++] = g.a;
     if (table) q[m++] = g.l;
     q[m++] = g.c.r, q[m++] = g.c.g, q[m] = g.c.b;
   };
   values(0, pt.thick, thick);
-  for (int a = 0; a < n; ++a) values(3 * a + 1, pt.hull[a], hull[a]);
+  for (int a = 0; a < n; ++a) values(1 + a, pt.hull[a], hull[a]);
   FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, nq, thick, hull);
   if (planes.sectors == 0) return true;
   planes.linear_opacity = gouraud && !table;

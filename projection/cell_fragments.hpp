@@ -71,7 +71,8 @@ struct CellScratch {
   SubdivisionCache subdivisions;      // projection topologies met by this worker
   std::vector<double> back;           // a whole cell's back layer: 2 per pixel of its box (project_layers)
   SegmentBatch segments;              // pt-analytic's and pt-breakpoints' fragments of the cell
-  ProjectedTet tet;                   // the tetrahedron's projection (tet_triangles)
+  ProjectedTet tet;                   // a tetrahedron's projection (tet_triangles)
+  GouraudCorner tet_corner[5];        // and its corners (Gouraud methods): thick vertex, then the outline's
   FanPixels fan;                      // its fan over its pixel box (project_fan)
 };
 
@@ -124,7 +125,7 @@ class CellFragments {
   template <class Emit>
   void project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                     ProjectionCounters& counters) const;
-  // A tetrahedron (p.tet, and p.corner for the Gouraud methods) drawn as one fan over its pixel
+  // A tetrahedron (p.tet, and p.tet_corner for the Gouraud methods) drawn as one fan over its pixel
   // box, its quantities in SIMD lanes (tet_fan.hpp); false (nothing drawn) for a box of more than
   // kFanUpToPixels, or a face seen edge-on (there the outline is thick, and a centre on it must go
   // to one tetrahedron by view/raster.hpp's rule, which the triangles keep).
@@ -149,7 +150,10 @@ class CellFragments {
   // to shade_corners() as each triangle is drawn (a tetrahedron's always are).
   Seen triangles_of(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters,
                     bool shade_cells) const;
-  Seen tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters) const;
+  // A tetrahedron's projection and corners into p.tet and p.tet_corner, and with `triangles` its
+  // fan as p.tri and p.corner (fan_triangles).
+  Seen tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters, bool triangles = true) const;
+  void fan_triangles(CellScratch& p) const;
   Seen cell_triangles(const std::int64_t* ids, CellType type, CellScratch& p, ProjectionCounters& counters,
                       bool shade) const;
   // The corner of a Gouraud-shaded method from a thick vertex's segment (MWSC section 2).

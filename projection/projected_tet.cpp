@@ -41,6 +41,12 @@ void set_ends(ThickVertex& t, double za, double sa, double zb, double sb) {
 }  // namespace
 
 ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
+  ProjectedTet out;
+  project_tet(v, perspective, out);
+  return out;
+}
+
+void project_tet(const ScreenVertex v[4], bool perspective, ProjectedTet& out) {
   // sigma_i = (-1)^i * orient(the other three, in order): sum_i sigma_i (p_i, 1) = 0, so the
   // signs tell which vertex lies inside the others' triangle, or which two edges cross.
   static constexpr int kOthers[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
@@ -54,8 +60,7 @@ ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
     sigma[i] = parity * area2(v[o[0]], v[o[1]], v[o[2]]);
     pos += sign[i] > 0, neg += sign[i] < 0;
   }
-  ProjectedTet out;
-  out.edge_on = pos + neg < 4;
+  out.hull_size = 0, out.edge_on = pos + neg < 4;
   if (pos == 1 || neg == 1) {  // class 1: the lone-signed vertex projects inside the others' triangle
     const int lone_sign = pos == 1 ? 1 : -1;
     int t = 0;
@@ -66,7 +71,7 @@ ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
       w[k] = sign[o[k]] == -lone_sign ? std::max(0.0, -sigma[o[k]] / sigma[t]) : 0.0;
       sum += w[k];
     }
-    if (!(sum > 0)) return out;
+    if (!(sum > 0)) return;
     for (double& x : w) x /= sum;
     double z, s;
     interpolate(v, o, w, 3, perspective, z, s);
@@ -74,9 +79,9 @@ ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
     set_ends(out.thick, v[t].z, v[t].s, z, s);
     out.hull_size = 3;
     for (int k = 0; k < 3; ++k) out.hull[k] = corner(v[o[k]]), out.hull_vertex[k] = o[k];
-    return out;
+    return;
   }
-  if (pos != 2 || neg != 2) return out;  // every face edge-on: zero area
+  if (pos != 2 || neg != 2) return;  // every face edge-on: zero area
   // class 2: the edge joining the two positive vertices crosses the edge joining the negative ones
   int a = -1, c = -1, b = -1, d = -1;
   for (int i = 0; i < 4; ++i) {
@@ -103,7 +108,6 @@ ProjectedTet project_tet(const ScreenVertex v[4], bool perspective) {
   out.hull_size = 4;
   const int around[4] = {a, b, c, d};
   for (int k = 0; k < 4; ++k) out.hull[k] = corner(v[around[k]]), out.hull_vertex[k] = around[k];
-  return out;
 }
 
 }  // namespace cellproj
