@@ -603,7 +603,7 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
   values(0, pt.thick, thick);
   for (int a = 0; a < n; ++a) values(1 + a, pt.hull[a], hull[a]);
   FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, nq, thick, hull);
-  if (planes.sectors == 0) return true;
+  if (planes.sectors == 0) return false;  // no area to rounding: the triangles' rule decides
   planes.linear_opacity = gouraud && !table;
   FanPixels& f = p.fan;
   fan_pixels(planes, j0 - box.j0, j1 - j0 + 1, bw, f);

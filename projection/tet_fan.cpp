@@ -97,10 +97,10 @@ FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantitie
   FanPlanes f;
   const int n = pt.hull_size;
   if (n < 3) return f;
-  double turn = 0;  // twice the outline's signed area
-  for (int k = 0; k < n; ++k) {
-    const ThickVertex &a = pt.hull[k], &b = pt.hull[(k + 1) % n];
-    turn += a.x * b.y - a.y * b.x;
+  double turn = 0;  // twice the outline's signed area (from its first corner: no large products)
+  for (int k = 1; k + 1 < n; ++k) {
+    const ThickVertex &o = pt.hull[0], &a = pt.hull[k], &b = pt.hull[k + 1];
+    turn += (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
   }
   if (!(turn != 0.0)) return f;
   const double sign = turn > 0 ? 1.0 : -1.0;

@@ -1,10 +1,9 @@
 #pragma once
 // A projected tetrahedron's fan (MWSC section 2: three or four triangles around the thick vertex)
-// evaluated over its whole pixel box at once, in SIMD lanes: no per-row edge search. Each pixel
-// takes the fan triangle whose smallest barycentric weight is largest (the one holding it; the
-// choice near a shared edge does not matter, the quantities are continuous across it), and is
-// covered when that weight is not negative. Along the outline every quantity of a thickness is 0,
-// so where two tetrahedra's outlines meet a centre on the edge adds nothing to either.
+// evaluated over its whole pixel box at once, in SIMD lanes: no per-row edge search. A row's
+// pixels are those between its crossings of the outline; each takes the fan triangle whose
+// smallest barycentric weight is largest (the one holding it; the choice near a shared spoke does
+// not matter, the quantities are continuous across it) and that triangle's planes.
 #include <cstddef>
 #include <vector>
 
@@ -26,7 +25,7 @@ struct FanPlanes {
   // pt-linear: the four quantities opacity and colour become the pixel's opacity clamped to
   // [0, 1] and its colour clamped to >= 0 times it (premultiplied).
   bool linear_opacity = false;
-  double inv_area[4] = {};  // 0 for a triangle of zero area (never chosen)
+  double inv_area[4] = {};  // 1 / the triangle's doubled area (1 for one left out, below)
   Plane outline[4];         // edge hull[a] -> hull[a + 1], positive inside
   double inv_gx[4] = {};    // 1 / outline[a].gx (0 for a flat edge: the row is all in or all out)
   Plane hull[4];            // outline[a], or -1e300 for a triangle of no area (never chosen)
@@ -35,7 +34,8 @@ struct FanPlanes {
 };
 
 // The planes of the fan of pt whose box's first pixel centre is (x0, y0); quantity m has value
-// thick[m] at the thick vertex and hull[k][m] at hull corner k. Empty (sectors = 0) if pt is.
+// thick[m] at the thick vertex and hull[k][m] at hull corner k. Empty (sectors = 0) if pt is, or
+// its outline has no area to rounding.
 FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantities, const double* thick,
                      const double (*hull)[kFanQuantities]);
 
