@@ -143,6 +143,12 @@ inline void affine_depth_scalar(const ScreenVertex& v, bool persp, double& q_dep
   q_depth = persp ? f : v.z, q_scalar = v.s * f;
 }
 
+// The same for both ends of a thick vertex's segment: front and back depth, front and back scalar.
+inline void affine_ends(const ThickVertex& v, bool persp, double q[4]) {
+  affine_depth_scalar({v.x, v.y, v.zf, v.sf}, persp, q[0], q[2]);
+  affine_depth_scalar({v.x, v.y, v.zb, v.sb}, persp, q[1], q[3]);
+}
+
 // A fragment that neither adds light nor hides anything (a ray grazing the cell) is not emitted.
 inline bool adds_nothing(const glm::dvec3& rgb, double alpha) {
   return alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0;
@@ -549,8 +555,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
     const ThickVertex* V = p.tri[t].v;
     double q[3][4];  // per corner: front and back depth, front and back scalar (over depth in perspective)
     for (int k = 0; k < 3; ++k) {
-      affine_depth_scalar({V[k].x, V[k].y, V[k].zf, V[k].sf}, persp, q[k][0], q[k][2]);
-      affine_depth_scalar({V[k].x, V[k].y, V[k].zb, V[k].sb}, persp, q[k][1], q[k][3]);
+      affine_ends(V[k], persp, q[k]);
     }
     const auto mix = [&q](const double* w, int m) { return w[0] * q[0][m] + w[1] * q[1][m] + w[2] * q[2][m]; };
     double dq[4];
@@ -589,11 +594,7 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
   const int nq = table ? 5 : 4;
   double thick[kFanQuantities], hull[4][kFanQuantities];
   const auto values = [&](int corner, const ThickVertex& v, double* q) {
-    if (!gouraud) {
-      affine_depth_scalar({v.x, v.y, v.zf, v.sf}, persp, q[0], q[2]);
-      affine_depth_scalar({v.x, v.y, v.zb, v.sb}, persp, q[1], q[3]);
-      return;
-    }
+    if (!gouraud) return affine_ends(v, persp, q);
     const GouraudCorner& g = p.tet_corner[corner];
     int m = 0;
     q[m++] = g.a;

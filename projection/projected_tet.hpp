@@ -41,7 +41,7 @@ void interpolate(const ScreenVertex* v, const int* ids, const double* w, int n, 
 // tetrahedra sharing a face always agree and near-degenerate projections never flip). Vertices that
 // project onto an edge or onto each other give zero-area triangles, which cover no pixel.
 ProjectedTet project_tet(const ScreenVertex v[4], bool perspective);
-// The same into out (the hot loop's scratch: no 300-byte copy per tetrahedron). Fields beyond
+// The same into out (the hot loop's scratch: no 272-byte copy per tetrahedron). Fields beyond
 // out.hull_size are left as they were.
 void project_tet(const ScreenVertex v[4], bool perspective, ProjectedTet& out);
 
