@@ -7,7 +7,10 @@
 // is repeated only on the tiles it straddles. Items are binned to tiles in parallel first, in order.
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <numeric>
+#include <type_traits>
+#include <utility>
 #include <vector>
 
 #include <tbb/blocked_range.h>
@@ -30,13 +33,22 @@ inline int tile_rows(int height, int threads) {
 }
 
 // The tile holding an item's first row (clamped to the image): where it is counted.
-inline int first_tile(const RowRange& reach, int height, int rows) { return std::clamp(reach.begin, 0, height - 1) / rows; }
+inline int first_tile(const RowRange& reach, int height, int rows) {
+  return std::clamp(reach.begin, 0, height - 1) / rows;
+}
 
 // The position of each item in its tiles' lists: tile t holds items order[first[t] .. first[t+1]).
 struct TileBins {
-  std::vector<std::size_t> first;  // tiles + 1 offsets
-  std::vector<std::size_t> items;  // each tile's items, in order
+  std::vector<std::size_t> first;     // tiles + 1 offsets
+  std::vector<std::size_t> items;     // each tile's items, in order
+  std::vector<std::uint8_t> counted;  // per entry of items: 1 in the item's first tile
 };
+
+// Whether a Source has prefetch(k, stage): composite_in_tiles' look-ahead.
+template <class S, class = void>
+struct HasPrefetch : std::false_type {};
+template <class S>
+struct HasPrefetch<S, std::void_t<decltype(std::declval<const S&>().prefetch(std::size_t{}, 0))>> : std::true_type {};
 
 // Bins items [0, n) to tiles of `rows` rows; rows_of(k) is the RowRange item k may draw on (an
 // empty one is binned to the tile of its first row, clamped, so that each item is met at least
@@ -73,13 +85,13 @@ TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of
     }
   }
   bins.first.back() = at;
-  bins.items.resize(at);
+  bins.items.resize(at), bins.counted.resize(at);
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
     std::size_t* next = &count[c * static_cast<std::size_t>(tiles)];
     for (std::size_t k = c * kChunk, e = std::min(n, k + kChunk); k < e; ++k) {
       int t0, t1;
       span(k, t0, t1);
-      for (int t = t0; t <= t1; ++t) bins.items[next[t]++] = k;
+      for (int t = t0; t <= t1; ++t) bins.counted[next[t]] = t == t0, bins.items[next[t]++] = k;
     }
   });
   return bins;
@@ -89,7 +101,12 @@ TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of
 //   Scratch, Counters (as composite_in_order's, composite/ordered_pipeline.hpp), and
 //   void composite(std::size_t k, Image& image, RowRange rows, bool first, Scratch&, Counters&) const
 //             draws item k "over" the image in `rows` only; `first`: the first of its tiles (count
-//             the item there, its pixels everywhere); called from many threads, one per tile.
+//             the item there, its pixels everywhere); called from many threads, one per tile;
+// and may provide
+//   void prefetch(std::size_t k, int stage) const
+//             a hint that item k comes soon: stages 0 to kStages - 1 are called
+//             kAhead items apart, the last kAhead items before k is drawn, so that each stage may
+//             read what the one before loaded.
 // Returns the sum of the tiles' counters.
 // `visits`, when given, receives the number of (item, tile) pairs drawn: n plus the repeats of the
 // items that straddle tiles. `front_to_back`: each tile takes its items from the last to the first
@@ -117,10 +134,18 @@ typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const 
           const std::size_t t = by_load[q];
           const RowRange tile{static_cast<int>(t) * rows, std::min(image.height, static_cast<int>(t + 1) * rows)};
           const std::size_t b = bins.first[t], e = bins.first[t + 1];
+          const auto at = [&](std::size_t m) { return front_to_back ? e - 1 - (m - b) : m; };
           for (std::size_t m = b; m < e; ++m) {
-            const std::size_t k = bins.items[front_to_back ? e - 1 - (m - b) : m];
-            const bool first = first_tile(rows_of(k), image.height, rows) == static_cast<int>(t);
-            source.composite(k, image, tile, first, s, counters[t]);
+            if constexpr (HasPrefetch<Source>::value) {
+              // Items far apart in the order touch far apart memory: their loads start early.
+              constexpr std::size_t kAhead = 4;
+              constexpr int kStages = 3;
+              for (int stage = 0; stage < kStages; ++stage)
+                if (const std::size_t ahead = m + (kStages - stage) * kAhead; ahead < e)
+                  source.prefetch(bins.items[at(ahead)], stage);
+            }
+            const std::size_t k = bins.items[at(m)];
+            source.composite(k, image, tile, bins.counted[at(m)] != 0, s, counters[t]);
           }
         }
       },

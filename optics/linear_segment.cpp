@@ -263,11 +263,23 @@ SegmentLight integrate_segment_closed_form(const TransferFunction& tf, double le
   return integrate_pieces(tf, length, s0, s1, integrate_linear_closed_form);
 }
 
-void linear_segment_weights(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w) {
-  const std::size_t lanes = n - n % 4;
+namespace {
+// The first `lanes` segments (a multiple of 4) in SIMD lanes, then those of 0 .. n - 1 that were
+// not small cells or not in a lane, one by one.
+void weights_in_lanes(std::size_t lanes, std::size_t n, const double* L, const double* k0, const double* k1,
+                      EndWeights* w) {
   small_cells(lanes, L, k0, k1, w);
-  for (std::size_t k = 0; k < n; ++k)  // the others, and the last n % 4, one by one
+  for (std::size_t k = 0; k < n; ++k)
     if (k >= lanes || std::isnan(w[k].depth)) w[k] = linear_segment_weights(L[k], k0[k], k1[k]);
+}
+}  // namespace
+
+void linear_segment_weights(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w) {
+  weights_in_lanes(n - n % 4, n, L, k0, k1, w);
+}
+
+void linear_segment_weights_padded(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w) {
+  weights_in_lanes((n + 3) / 4 * 4, n, L, k0, k1, w);
 }
 
 }  // namespace cellproj

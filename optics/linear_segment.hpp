@@ -20,7 +20,7 @@ double dawson(double x);
 // The weights of the two end colours: light = c0 * front + c1 * back (premultiplied).
 struct EndWeights {
   double front = 0.0, back = 0.0;
-  double depth = 0.0;  // optical depth of the whole segment
+  double depth = 0.0;     // optical depth of the whole segment
   double opacity = -1.0;  // 1 - e^-depth where it came with the weights (small cells), else -1
 };
 // kappa from k0 (front) to k1 (back), both >= 0, over length L. Stable from optical depth 1e-300
@@ -30,6 +30,9 @@ EndWeights linear_segment_weights(double L, double k0, double k1);
 // The same for n segments (w[k] from L[k], k0[k], k1[k]), to the bit: the small cells, most
 // fragments of a fine mesh, four at a time in SIMD registers.
 void linear_segment_weights(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w);
+// The same where the arrays hold n rounded up to a multiple of 4 values: the last n % 4 small cells
+// also go in lanes (the padding's values are read, its weights written and meaningless).
+void linear_segment_weights_padded(std::size_t n, const double* L, const double* k0, const double* k1, EndWeights* w);
 
 // The whole segment: kappa and colour linear from (k0, c0) at the front to (k1, c1) at the back.
 inline SegmentLight integrate_linear_closed_form(double L, double k0, double k1, const glm::dvec3& c0,

@@ -173,6 +173,15 @@ struct OrderedCells {
     project.project(cells.cell(order[k]), cells.type(order[k]), image, s, c.projection);
     ++c.projection.direct_cells;
   }
+  // composite_in_tiles' look-ahead, in the order a cell's data is reached: its offset and type,
+  // then its point ids, then its points. (The image's pixels under them were tried as a fourth
+  // stage: slower, bench/results/prefetch.txt.)
+  void prefetch(std::size_t k, int stage) const {
+    const std::int64_t cell = order[k];
+    if (stage == 0) return __builtin_prefetch(&cells.offsets[cell]), __builtin_prefetch(&cells.types[cell]);
+    if (stage == 1) return __builtin_prefetch(cells.cell(cell));
+    project.prefetch_points(cells.cell(cell), cells.cell_size(cell));
+  }
   // A tile's rows of the k-th cell (composite_in_tiles; never with splats): the cell counted by its
   // first tile, its pixels by each.
   void composite(std::size_t k, Image& image, RowRange rows, bool first, Scratch& s, Counters& c) const {

@@ -64,7 +64,7 @@ struct ExactFragments {
   std::int64_t finish() {
     SegmentBatch& b = batch;
     segment_ends(b, shade.rays, shade.smin, shade.smax, shade.piece);
-    linear_segment_weights(b.n, b.length.data(), b.k0.data(), b.k1.data(), b.weights.data());
+    linear_segment_weights_padded(b.n, b.length.data(), b.k0.data(), b.k1.data(), b.weights.data());
     segment_light(b, shade.piece);
     for (std::size_t k = 0; k < b.n; ++k) {
       const SegmentLight light{{b.red[k], b.green[k], b.blue[k]}, b.weights[k].depth, b.opacity[k]};
@@ -251,6 +251,14 @@ CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, 
   for (int k = 0; k < 3; ++k) rays.project(q[k], s[k].x, s[k].y, s[k].z);
   front_sign_ = exact_sign(s[0], s[1], s[2]);
   if (front_sign_ == 0) front_sign_ = 1;
+}
+
+void CellFragments::prefetch_points(const std::int64_t* ids, int n) const {
+  for (int k = 0; k < n; ++k) {
+    const auto q = static_cast<std::size_t>(ids[k]);
+    __builtin_prefetch(&screen_.v[q]);
+    if (method_.gouraud && optics_) __builtin_prefetch(&optics_->color[q]), __builtin_prefetch(&optics_->kappa[q]);
+  }
 }
 
 template <class Emit>

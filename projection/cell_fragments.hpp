@@ -98,6 +98,9 @@ class CellFragments {
   // owns the tile, in visibility order (the pixels outside are left alone).
   void project(const std::int64_t* ids, CellType type, Image& image, RowRange rows, CellScratch& scratch,
                ProjectionCounters& counters) const;
+  // A hint for a compositor's look-ahead: starts loading what drawing the cell will read of its n
+  // points (their screen positions, and point optics where the method uses them).
+  void prefetch_points(const std::int64_t* ids, int n) const;
   // The same front to back ("under"), for early ray termination: fragments at pixels `opaque`
   // holds are dropped, and the pixels they make opaque are added to it.
   void project_under(const std::int64_t* ids, CellType type, Image& image, RowRange rows, OpaqueMask& opaque,

@@ -54,7 +54,7 @@ struct SegmentBatch {
     i[n] = pi, j[n] = pj, zf[n] = qzf, zb[n] = qzb, sf[n] = qsf, sb[n] = qsb;
     ++n;
   }
-  void grow();  // room for twice as many
+  void grow();  // room for twice as many (64 at first: the arrays' size stays a multiple of 4, for SIMD lanes)
 };
 
 // The lengths, end scalars (clamped to [smin, smax]) and end extinctions of the batch's segments,

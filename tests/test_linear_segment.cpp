@@ -170,18 +170,24 @@ TEST(LinearSegment, ManySegmentsAtOnceGiveEachSegmentsBits) {
   for (double l : lengths)
     for (double a : kappas)
       for (double b : kappas) L.push_back(l), k0.push_back(a), k1.push_back(b);
-  for (std::size_t n : {L.size(), L.size() - 1, L.size() - 2, L.size() - 3, std::size_t(3), std::size_t(0)}) {
-    std::vector<EndWeights> w(n);
-    linear_segment_weights(n, L.data(), k0.data(), k1.data(), w.data());
-    int small = 0;
-    for (std::size_t k = 0; k < n; ++k) {
-      const EndWeights one = linear_segment_weights(L[k], k0[k], k1[k]);
-      small += one.opacity >= 0.0;
-      EXPECT_EQ(w[k].front, one.front) << k;
-      EXPECT_EQ(w[k].back, one.back) << k;
-      EXPECT_EQ(w[k].depth, one.depth) << k;
-      EXPECT_EQ(w[k].opacity, one.opacity) << k;
+  // The padded form reads and writes up to n rounded up to 4: the tail goes in lanes too, whatever
+  // the padding holds (here the next segments' values, or a NaN).
+  L.resize(L.size() + 3, std::nan("")), k0.resize(L.size(), 1.0), k1.resize(L.size(), 1.0);
+  const std::size_t all = L.size() - 3;
+  using Batch = void (*)(std::size_t, const double*, const double*, const double*, EndWeights*);
+  for (const Batch batch : {Batch(linear_segment_weights), Batch(linear_segment_weights_padded)})
+    for (std::size_t n : {all, all - 1, all - 2, all - 3, std::size_t(3), std::size_t(1), std::size_t(0)}) {
+      std::vector<EndWeights> w((n + 3) / 4 * 4);
+      batch(n, L.data(), k0.data(), k1.data(), w.data());
+      int small = 0;
+      for (std::size_t k = 0; k < n; ++k) {
+        const EndWeights one = linear_segment_weights(L[k], k0[k], k1[k]);
+        small += one.opacity >= 0.0;
+        EXPECT_EQ(w[k].front, one.front) << k;
+        EXPECT_EQ(w[k].back, one.back) << k;
+        EXPECT_EQ(w[k].depth, one.depth) << k;
+        EXPECT_EQ(w[k].opacity, one.opacity) << k;
+      }
+      if (n > 100) EXPECT_GT(small, 50);  // the vector path ran
     }
-    if (n > 100) EXPECT_GT(small, 50);  // the vector path ran
-  }
 }
