@@ -34,19 +34,12 @@ struct ExactShade {
     return persp ? segment_between<true>(zf, zb, sf, sb, per_depth, smin, smax)
                  : segment_between<false>(zf, zb, sf, sb, per_depth, smin, smax);
   }
-  SegmentLight operator()(int i, int j, double zf, double zb, double sf, double sb) const {
-    const double l = ends(i, j, zf, zb, sf, sb);
-    if (cut) return integrate_segment_closed_form(tf, l, sf, sb);
-    if (has_breakpoint)  // pt-analytic across a breakpoint: kappa and C linear between the ends' values
-      return integrate_linear_closed_form(l, tf.extinction(sf), tf.extinction(sb), tf.color(sf), tf.color(sb));
-    return integrate_linear_closed_form(l, piece.kappa(sf), piece.kappa(sb), piece.color(sf), piece.color(sb));
-  }
 };
 
-// The exact methods' fragments of one cell, emitted in the order they were given. A cell across a
-// breakpoint is shaded pixel by pixel; any other is one linear piece, its fragments gathered and
-// their light computed together (segment_ends, then linear_segment_weights over the batch: the
-// same bits as one by one, small cells in SIMD lanes), then emitted.
+// The exact methods' fragments of one cell, gathered, their light computed together, then emitted
+// in the order they were given: segment_ends, then the weights over the batch (the same bits as
+// one by one, small cells in SIMD lanes), of the cell's one linear piece, or of each segment's
+// pieces where the cell's scalar range holds a breakpoint.
 template <class Emit>
 struct ExactFragments {
   const ExactShade& shade;
@@ -56,16 +49,18 @@ struct ExactFragments {
   ExactFragments(const ExactShade& s, Emit& e, SegmentBatch& b) : shade(s), emit(e), batch(b) { batch.n = 0; }
   void operator()(int i, int j, double zf, double zb, double sf, double sb) {
     if (emit.hidden(i, j)) return;  // an opaque pixel (front to back): no integral
-    if (!shade.has_breakpoint) return batch.push(i, j, zf, zb, sf, sb);
-    const SegmentLight light = shade(i, j, zf, zb, sf, sb);
-    emitted += emit(i, j, light.rgb, light.opacity());
+    batch.push(i, j, zf, zb, sf, sb);
   }
   // Emits the gathered fragments; returns how many were emitted in all.
   std::int64_t finish() {
     SegmentBatch& b = batch;
     segment_ends(b, shade.rays, shade.smin, shade.smax, shade.piece);
-    linear_segment_weights_padded(b.n, b.length.data(), b.k0.data(), b.k1.data(), b.weights.data());
-    segment_light(b, shade.piece);
+    if (shade.has_breakpoint) {
+      segment_light_across(b, shade.tf, shade.cut);
+    } else {
+      linear_segment_weights_padded(b.n, b.length.data(), b.k0.data(), b.k1.data(), b.weights.data());
+      segment_light(b, shade.piece);
+    }
     for (std::size_t k = 0; k < b.n; ++k) {
       const SegmentLight light{{b.red[k], b.green[k], b.blue[k]}, b.weights[k].depth, b.opacity[k]};
       emitted += emit(b.i[k], b.j[k], light.rgb, light.opacity());

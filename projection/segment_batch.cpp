@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "base/simd.hpp"
+#include "optics/segment_integral.hpp"
 
 namespace cellproj {
 namespace {
@@ -63,6 +64,41 @@ CELLPROJ_AVX2_CLONES void light(SegmentBatch& b, const LinearPiece& piece) {
 }  // namespace
 
 void segment_light(SegmentBatch& b, const LinearPiece& piece) { light(b, piece); }
+
+void segment_light_across(SegmentBatch& b, const TransferFunction& tf, bool cut) {
+  SegmentBatch::Pieces& p = b.pieces;
+  p.n = 0;
+  p.end.resize(b.n);
+  const auto push = [&p](double length, double ka, double kb, const glm::dvec3& ca, const glm::dvec3& cb) {
+    if (p.n == p.length.size()) {  // a multiple of 4, for linear_segment_weights_padded
+      const std::size_t m = std::max<std::size_t>(64, 2 * p.n);
+      p.length.resize(m), p.k0.resize(m), p.k1.resize(m), p.c0.resize(m), p.c1.resize(m), p.weights.resize(m);
+    }
+    p.length[p.n] = length, p.k0[p.n] = ka, p.k1[p.n] = kb, p.c0[p.n] = ca, p.c1[p.n] = cb;
+    ++p.n;
+  };
+  for (std::size_t k = 0; k < b.n; ++k) {
+    const double l = b.length[k], s0 = b.sf[k], s1 = b.sb[k];
+    if (!cut)
+      push(l, tf.extinction(s0), tf.extinction(s1), tf.color(s0), tf.color(s1));
+    else if (l > 0.0)  // as integrate_pieces: no light from an empty segment
+      for_each_linear_piece(tf, s0, s1, [&](const TransferFunction::Ends& e, double fraction) {
+        push(l * fraction, e.ka, e.kb, e.ca, e.cb);
+      });
+    p.end[k] = p.n;
+  }
+  linear_segment_weights_padded(p.n, p.length.data(), p.k0.data(), p.k1.data(), p.weights.data());
+  std::size_t m = 0;
+  for (std::size_t k = 0; k < b.n; ++k) {
+    SegmentLight acc;
+    for (const std::size_t first = m; m < p.end[k]; ++m) {  // as integrate_linear_closed_form, then under()
+      const EndWeights& w = p.weights[m];
+      const SegmentLight piece{p.c0[m] * w.front + p.c1[m] * w.back, w.depth, w.opacity};
+      acc = m == first ? piece : under(acc, piece);
+    }
+    b.red[k] = acc.rgb.r, b.green[k] = acc.rgb.g, b.blue[k] = acc.rgb.b, b.opacity[k] = acc.opacity();
+  }
+}
 
 void SegmentBatch::grow() {
   const std::size_t m = std::max<std::size_t>(64, 2 * i.size());

@@ -8,6 +8,7 @@
 #include <glm/vec3.hpp>
 
 #include "optics/linear_segment.hpp"
+#include "optics/transfer_function.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {
@@ -55,6 +56,14 @@ struct SegmentBatch {
     ++n;
   }
   void grow();  // room for twice as many (64 at first: the arrays' size stays a multiple of 4, for SIMD lanes)
+  // Across a breakpoint: the segments' pieces, each linear in kappa and colour (segment_light_cut).
+  struct Pieces {
+    std::size_t n = 0;
+    std::vector<double> length, k0, k1;
+    std::vector<glm::dvec3> c0, c1;
+    std::vector<EndWeights> weights;
+    std::vector<std::size_t> end;  // per segment: one past its last piece
+  } pieces;
 };
 
 // The lengths, end scalars (clamped to [smin, smax]) and end extinctions of the batch's segments,
@@ -63,5 +72,11 @@ void segment_ends(SegmentBatch& b, const PixelRays& rays, double smin, double sm
 // The light of the batch's segments from their weights, as integrate_linear_closed_form: the ends'
 // colours weighted, premultiplied, and the opacity where the weights brought it.
 void segment_light(SegmentBatch& b, const LinearPiece& piece);
+// The same for a cell whose scalar range holds a breakpoint, after segment_ends (whatever its piece):
+// each segment cut at the breakpoints (`cut`, pt-breakpoints: integrate_segment_closed_form) or
+// taken whole with the transfer function's values at its ends (pt-analytic), the pieces' weights
+// computed together, composited front to back. The same bits as one segment at a time; opacity is
+// always set.
+void segment_light_across(SegmentBatch& b, const TransferFunction& tf, bool cut);
 
 }  // namespace cellproj
