@@ -52,9 +52,10 @@ struct ExactFragments {
     batch.push(i, j, zf, zb, sf, sb);
   }
   // Emits the gathered fragments; returns how many were emitted in all.
-  std::int64_t finish() {
+  // ends: compute the segments' ends first (false: the batch holds them, fan_segments).
+  std::int64_t finish(bool ends = true) {
     SegmentBatch& b = batch;
-    segment_ends(b, shade.rays, shade.smin, shade.smax, shade.piece);
+    if (ends) segment_ends(b, shade.rays, shade.smin, shade.smax, shade.piece);
     if (shade.has_breakpoint) {
       segment_light_across(b, shade.tf, shade.cut);
     } else {
@@ -158,6 +159,7 @@ struct AppendFragments {
     return true;
   }
   static bool hidden(int, int) { return false; }
+  static constexpr bool may_hide = false;
 };
 
 // Composites fragments onto the image at once (a cell drawn in order by the compositor itself).
@@ -171,6 +173,7 @@ struct CompositeFragments {
     return true;
   }
   static bool hidden(int, int) { return false; }
+  static constexpr bool may_hide = false;
 };
 
 // Composites fragments front to back ("under") onto the image: early ray termination drops those
@@ -179,6 +182,7 @@ struct UnderFragments {
   Image& image;
   OpaqueMask& opaque;
   ProjectionCounters& counters;
+  static constexpr bool may_hide = true;  // hidden() may drop a fragment before its integral
   bool hidden(int i, int j) {
     if (!opaque.opaque(i, j)) return false;
     ++counters.hidden_fragments;
@@ -609,6 +613,14 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
   FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, nq, thick, hull);
   if (planes.sectors == 0) return false;  // no area to rounding: the triangles' rule decides
   planes.linear_opacity = gouraud && !table;
+  if (!gouraud && !Emit::may_hide) {  // the segments straight into the batch (no pixel is hidden)
+    const ExactShade exact = exact_shade(tf_, rays_, method_.cuts_at_breakpoints, p.smin, p.smax);
+    ExactFragments<Emit> fragments(exact, emit, p.segments);
+    fan_segments(planes, {rays_, box.i0, box.j0, j0 - box.j0, j1 - j0 + 1, bw, p.smin, p.smax, exact.piece},
+                 p.segments);
+    counters.fragments += fragments.finish(/*ends=*/false);
+    return true;
+  }
   FanPixels& f = p.fan;
   fan_pixels(planes, j0 - box.j0, j1 - j0 + 1, bw, f);
   const double *q0 = f.quantity(0), *q1 = f.quantity(1), *q2 = f.quantity(2), *q3 = f.quantity(3);

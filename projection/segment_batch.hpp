@@ -55,6 +55,9 @@ struct SegmentBatch {
     i[n] = pi, j[n] = pj, zf[n] = qzf, zb[n] = qzb, sf[n] = qsf, sb[n] = qsb;
     ++n;
   }
+  void reserve(std::size_t m) {  // room for at least m
+    while (i.size() < m) grow();
+  }
   void grow();  // room for twice as many (64 at first: the arrays' size stays a multiple of 4, for SIMD lanes)
   // Across a breakpoint: the segments' pieces, each linear in kappa and colour (segment_light_cut).
   struct Pieces {

@@ -22,11 +22,11 @@ typedef double UnalignedLanes __attribute__((vector_size(32), aligned(8)));
 
 // Row by row over the box: the outline's pixels on the row (from its edges' crossings), then four
 // pixels at a time every fan triangle's smallest weight, the largest taken with its quantities.
-// S triangles, Q quantities (compile-time, so the loops unroll).
-template <int S, int Q, bool Linear = false>
-[[gnu::always_inline]] inline void pixels(const FanPlanes& f, int row0, int rows, int width, int stride,
-                                          std::size_t size, int* __restrict first, int* __restrict last,
-                                          double* __restrict q) {
+// S triangles, Q quantities (compile-time, so the loops unroll). For each row r, out.row(r, b, e)
+// with its pixels b .. e (none: e < b), then out.lanes(i, x, v) for i = b, b + 4, ... <= e with
+// pixels i .. i + 3 at x and their quantities v.
+template <int S, int Q, class Out>
+[[gnu::always_inline]] inline void fan_rows(const FanPlanes& f, int row0, int rows, int width, Out& out) {
   for (int r = 0; r < rows; ++r) {
     const double y = row0 + r;
     double g0[S], gx[S], p0[S], px[S], q0[S][Q], qx[S][Q];
@@ -39,16 +39,17 @@ template <int S, int Q, bool Linear = false>
       hi = inv < 0 && cross < hi ? cross : hi;
       hi = inv == 0 && e < 0 ? -1.0 : hi;
     }
-    first[r] = 0, last[r] = -1;
-    if (!(lo <= hi)) continue;  // (NaN: none)
+    if (!(lo <= hi)) {  // (NaN: none)
+      out.row(r, 0, -1);
+      continue;
+    }
     const int b = static_cast<int>(std::ceil(lo)), e = static_cast<int>(std::floor(hi));
-    first[r] = b, last[r] = e;
+    out.row(r, b, e);
     for (int a = 0; a < S; ++a) {
       g0[a] = f.hull[a].c + f.hull[a].gy * y, gx[a] = f.hull[a].gx;
       p0[a] = f.spoke[a].c + f.spoke[a].gy * y, px[a] = f.spoke[a].gx;
       for (int m = 0; m < Q; ++m) q0[a][m] = f.q[a][m].c + f.q[a][m].gy * y, qx[a][m] = f.q[a][m].gx;
     }
-    double* out = q + static_cast<std::size_t>(r) * stride;
     for (int i = b; i <= e; i += 4) {
       const Lanes x = Lanes{0.0, 1.0, 2.0, 3.0} + static_cast<double>(i);
       Lanes spoke[S];
@@ -62,25 +63,88 @@ template <int S, int Q, bool Linear = false>
         best = take ? w : best;
         for (int m = 0; m < Q; ++m) v[m] = take ? q0[a][m] + qx[a][m] * x : v[m];
       }
-      if constexpr (Linear) {  // pt-linear's opacity and premultiplied colour, clamped as its runs
-        const Lanes zero{};
-        Lanes alpha = v[0] > zero ? v[0] : zero;
-        alpha = alpha < 1.0 ? alpha : zero + 1.0;
-        v[0] = alpha;
-        for (int m = 1; m < Q; ++m) v[m] = (v[m] > zero ? v[m] : zero) * alpha;
-      }
-      for (int m = 0; m < Q; ++m) *reinterpret_cast<UnalignedLanes*>(out + m * size + i) = v[m];
+      out.lanes(i, v);
     }
   }
 }
 
+// fan_pixels' rows: the quantities stored at r * stride + i (pt-linear's finished: its opacity
+// and colour clamped as its runs, the colour premultiplied).
+template <int Q, bool Linear>
+struct StoreQuantities {
+  int stride;
+  std::size_t size;
+  int *first, *last;
+  double* q;
+  double* out = nullptr;
+  [[gnu::always_inline]] void row(int r, int b, int e) {
+    first[r] = b, last[r] = e, out = q + static_cast<std::size_t>(r) * stride;
+  }
+  [[gnu::always_inline]] void lanes(int i, Lanes* v) {
+    if constexpr (Linear) {
+      const Lanes zero{};
+      Lanes alpha = v[0] > zero ? v[0] : zero;
+      alpha = alpha < 1.0 ? alpha : zero + 1.0;
+      v[0] = alpha;
+      for (int m = 1; m < Q; ++m) v[m] = (v[m] > zero ? v[m] : zero) * alpha;
+    }
+    for (int m = 0; m < Q; ++m) *reinterpret_cast<UnalignedLanes*>(out + m * size + i) = v[m];
+  }
+};
+
+template <int S, int Q, bool Linear = false>
+[[gnu::always_inline]] inline void pixels(const FanPlanes& f, int row0, int rows, int width, int stride,
+                                          std::size_t size, int* __restrict first, int* __restrict last,
+                                          double* __restrict q) {
+  StoreQuantities<Q, Linear> out{stride, size, first, last, q};
+  fan_rows<S, Q>(f, row0, rows, width, out);
+}
+
+// fan_segments' rows: each pixel appended to the batch with its segment's length, clamped end
+// scalars and end extinctions, as segment_ends computes them from the four ends' quantities (the
+// same operations in the same order, lane by lane: segment_between, LinearPiece::kappa).
+template <bool Perspective>
+struct AppendSegments {
+  const FanSegments& at;
+  SegmentBatch& b;
+  double v2 = 0;
+  std::size_t base = 0;  // the batch position of the row's pixel 0
+  [[gnu::always_inline]] void row(int r, int first, int last) {
+    const int j = at.j0 + at.row0 + r;
+    if (Perspective) v2 = at.rays.v_squared()[j];
+    base = b.n - static_cast<std::size_t>(first);
+    for (int i = first; i <= last; ++i) b.i[base + i] = at.i0 + i, b.j[base + i] = j;
+    if (last >= first) b.n += static_cast<std::size_t>(last - first + 1);
+  }
+  [[gnu::always_inline]] void lanes(int i, const Lanes* v) {
+    Lanes zf = v[0], zb = v[1], sf = v[2], sb = v[3], per_depth = Lanes{} + 1.0;
+    if constexpr (Perspective) {
+      zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
+      UnalignedLanes u2 = *reinterpret_cast<const UnalignedLanes*>(at.rays.u_squared() + at.i0 + i);
+      const Lanes d = 1.0 + u2 + v2;
+      for (int m = 0; m < 4; ++m) per_depth[m] = std::sqrt(d[m]);
+    }
+    const Lanes smin = Lanes{} + at.smin, smax = Lanes{} + at.smax;
+    sf = sf < smin ? smin : smax < sf ? smax : sf, sb = sb < smin ? smin : smax < sb ? smax : sb;
+    const Lanes thick = zb - zf, zero{};
+    const Lanes length = (zero < thick ? thick : zero) * per_depth;
+    const LinearPiece& p = at.piece;
+    const Lanes k0 = p.k0 + p.dk * (sf - p.s0) * p.ds, k1 = p.k0 + p.dk * (sb - p.s0) * p.ds;
+    const std::size_t k = base + static_cast<std::size_t>(i);
+    *reinterpret_cast<UnalignedLanes*>(&b.length[k]) = length;
+    *reinterpret_cast<UnalignedLanes*>(&b.sf[k]) = sf, *reinterpret_cast<UnalignedLanes*>(&b.sb[k]) = sb;
+    *reinterpret_cast<UnalignedLanes*>(&b.k0[k]) = zero < k0 ? k0 : zero;
+    *reinterpret_cast<UnalignedLanes*>(&b.k1[k]) = zero < k1 ? k1 : zero;
+  }
+};
+
 using PixelsFn = void (*)(const FanPlanes&, int, int, int, int, std::size_t, int*, int*, double*);
 // One function per triangle count, quantity count and pt-linear finish, each compiled for the
 // build's target and for AVX2.
-#define CELLPROJ_FAN_KERNEL(name, S, Q, linear)                                                                 \
+#define CELLPROJ_FAN_KERNEL(name, S, Q, linear)                                                                    \
   CELLPROJ_AVX2_CLONES void name(const FanPlanes& f, int r0, int n, int w, int st, std::size_t sz, int* b, int* e, \
-                                 double* q) {                                                                    \
-    pixels<S, Q, linear>(f, r0, n, w, st, sz, b, e, q);                                                          \
+                                 double* q) {                                                                      \
+    pixels<S, Q, linear>(f, r0, n, w, st, sz, b, e, q);                                                            \
   }
 CELLPROJ_FAN_KERNEL(pixels_3_4, 3, 4, false)
 CELLPROJ_FAN_KERNEL(pixels_4_4, 4, 4, false)
@@ -89,6 +153,18 @@ CELLPROJ_FAN_KERNEL(pixels_4_5, 4, 5, false)
 CELLPROJ_FAN_KERNEL(linear_3, 3, 4, true)
 CELLPROJ_FAN_KERNEL(linear_4, 4, 4, true)
 #undef CELLPROJ_FAN_KERNEL
+
+using SegmentsFn = void (*)(const FanPlanes&, const FanSegments&, SegmentBatch&);
+#define CELLPROJ_FAN_SEGMENTS(name, S, perspective)                                            \
+  CELLPROJ_AVX2_CLONES void name(const FanPlanes& f, const FanSegments& at, SegmentBatch& b) { \
+    AppendSegments<perspective> out{at, b};                                                    \
+    fan_rows<S, 4>(f, at.row0, at.rows, at.width, out);                                        \
+  }
+CELLPROJ_FAN_SEGMENTS(segments_3_perspective, 3, true)
+CELLPROJ_FAN_SEGMENTS(segments_4_perspective, 4, true)
+CELLPROJ_FAN_SEGMENTS(segments_3_orthographic, 3, false)
+CELLPROJ_FAN_SEGMENTS(segments_4_orthographic, 4, false)
+#undef CELLPROJ_FAN_SEGMENTS
 
 }  // namespace
 
@@ -139,8 +215,18 @@ void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& ou
   if (out.q.size() < kFanQuantities * out.size) out.q.resize(kFanQuantities * out.size);
   const bool four = f.sectors == 4, five = f.quantities == 5;
   const PixelsFn fn = f.linear_opacity ? (four ? linear_4 : linear_3)
-                                       : four ? (five ? pixels_4_5 : pixels_4_4) : (five ? pixels_3_5 : pixels_3_4);
+                      : four           ? (five ? pixels_4_5 : pixels_4_4)
+                                       : (five ? pixels_3_5 : pixels_3_4);
   fn(f, row0, rows, width, out.stride, out.size, out.first.data(), out.last.data(), out.q.data());
+}
+
+void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out) {
+  // Room for every pixel of the rows, and three more for the last lanes' stores.
+  out.reserve(out.n + static_cast<std::size_t>(at.rows) * static_cast<std::size_t>(at.width) + 3);
+  const bool four = f.sectors == 4;
+  const SegmentsFn fn = at.rays.perspective() ? (four ? segments_4_perspective : segments_3_perspective)
+                                              : (four ? segments_4_orthographic : segments_3_orthographic);
+  fn(f, at, out);
 }
 
 }  // namespace cellproj

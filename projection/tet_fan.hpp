@@ -8,6 +8,8 @@
 #include <vector>
 
 #include "projection/projected_tet.hpp"
+#include "projection/segment_batch.hpp"
+#include "view/camera.hpp"
 
 namespace cellproj {
 
@@ -54,5 +56,18 @@ struct FanPixels {
   const double* quantity(int m) const { return q.data() + static_cast<std::size_t>(m) * size; }
 };
 void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& out);
+
+// The exact rungs' fan (its planes the ends' quantities, affine_ends: front and back 1/z and s/z in
+// perspective, depth and scalar in orthographic): the pixels of rows [row0, row0 + rows) of its box
+// appended to a batch with their segments' lengths, end scalars clamped to [smin, smax] and end
+// extinctions from `piece`, as segment_ends gives them (the same bits): no pass over stored
+// quantities. The box's first pixel is (i0, j0) in the image, `rays` the frame's.
+struct FanSegments {
+  const PixelRays& rays;
+  int i0, j0, row0, rows, width;
+  double smin, smax;
+  LinearPiece piece;
+};
+void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out);
 
 }  // namespace cellproj

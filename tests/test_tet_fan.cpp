@@ -69,13 +69,14 @@ void expect_fan_matches_triangles(const ProjectedTet& pt, const Corners& c) {
   const int n = pt.hull_size;
   for (int a = 0; a < n; ++a) {
     const ThickVertex &t = pt.thick, &p = pt.hull[a], &q = pt.hull[(a + 1) % n];
-    rasterize_triangle_weights({t.x, t.y}, {p.x, p.y}, {q.x, q.y}, kW, kH, [&](int i, int j, double wt, double wp, double wq) {
-      const std::size_t k = static_cast<std::size_t>((j - box.j0) * bw + (i - box.i0));
-      EXPECT_EQ(owner[k], -1) << "pixel " << i << "," << j << " covered twice";
-      owner[k] = a;
-      for (int m = 0; m < kFanQuantities; ++m)
-        want[k * kFanQuantities + m] = wt * c.thick[m] + wp * c.hull[a][m] + wq * c.hull[(a + 1) % n][m];
-    });
+    rasterize_triangle_weights(
+        {t.x, t.y}, {p.x, p.y}, {q.x, q.y}, kW, kH, [&](int i, int j, double wt, double wp, double wq) {
+          const std::size_t k = static_cast<std::size_t>((j - box.j0) * bw + (i - box.i0));
+          EXPECT_EQ(owner[k], -1) << "pixel " << i << "," << j << " covered twice";
+          owner[k] = a;
+          for (int m = 0; m < kFanQuantities; ++m)
+            want[k * kFanQuantities + m] = wt * c.thick[m] + wp * c.hull[a][m] + wq * c.hull[(a + 1) % n][m];
+        });
   }
   for (int r = 0; r < bh; ++r) {
     for (int i = 0; i < bw; ++i) {
@@ -191,16 +192,85 @@ TEST(TetFan, ThickVertexOnOrBesideTheOutlineKeepsThePixels) {
   std::mt19937 rng(9);
   ProjectedTet corner;
   corner.hull_size = 4;
-  const double h[4][2] = {{61.25141787494848, 51.369359171238656}, {60.794477048002115, 42.267171302912018},
-                          {42.28075787622533, 47.148219547302176}, {61.989767381904493, 66.077162738961604}};
+  const double h[4][2] = {{61.25141787494848, 51.369359171238656},
+                          {60.794477048002115, 42.267171302912018},
+                          {42.28075787622533, 47.148219547302176},
+                          {61.989767381904493, 66.077162738961604}};
   for (int k = 0; k < 4; ++k) corner.hull[k] = {h[k][0], h[k][1], 2, 2, 0, 0};
   corner.thick = corner.hull[0];
   corner.thick.zb = 3;
   expect_fan_matches_triangles(corner, corner_values(rng));
   ProjectedTet beside;
   beside.hull_size = 3;
-  beside.hull[0] = {5.2, 3.1, 2, 2, 0, 0}, beside.hull[1] = {40.7, 9.3, 2, 2, 0, 0}, beside.hull[2] = {12.9, 30.4, 2, 2, 0, 0};
+  beside.hull[0] = {5.2, 3.1, 2, 2, 0, 0}, beside.hull[1] = {40.7, 9.3, 2, 2, 0, 0},
+  beside.hull[2] = {12.9, 30.4, 2, 2, 0, 0};
   const double t = 0.37;  // on edge 0-1, then 1e-12 pixels inwards
   beside.thick = {5.2 + t * 35.5 - 1e-12 * 6.2, 3.1 + t * 6.2 + 1e-12 * 35.5, 1, 4, 0, 0};
   expect_fan_matches_triangles(beside, corner_values(rng));
+}
+
+TEST(TetFan, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
+  // The exact rungs' fan appends its pixels' segments to the batch with the lengths, clamped end
+  // scalars and extinctions segment_ends would compute from the stored quantities: the same bits,
+  // in perspective and orthographic projection, from the box's first row or a tile's middle one.
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> x(1.0, kW - 1.0), y(1.0, kH - 1.0), z(2.0, 6.0), u(0.0, 1.0);
+  Camera persp;
+  persp.projection = Projection::Perspective, persp.fov_y = 40.0;
+  LinearPiece piece;
+  piece.s0 = 0.2, piece.ds = 1.0 / 0.5, piece.k0 = 0.5, piece.dk = 3.0;
+  int segments = 0;
+  for (const Camera& cam : {Camera{}, persp}) {
+    const PixelRays rays(cam, kW, kH);
+    for (int t = 0; t < 200; ++t) {
+      const double cx = x(rng), cy = y(rng);
+      std::uniform_real_distribution<double> d(-8.0, 8.0);
+      ScreenVertex v[4];
+      for (auto& p : v) p = {cx + d(rng), cy + d(rng), z(rng), u(rng)};
+      const ProjectedTet pt = project_tet(v, rays.perspective());
+      if (pt.hull_size == 0 || pt.edge_on) continue;
+      // The ends' quantities as project_fan gives them: 1/z and s/z in perspective.
+      const auto ends = [&](const ThickVertex& w, double* q) {
+        const double f = rays.perspective() ? 1.0 / w.zf : 1.0, b = rays.perspective() ? 1.0 / w.zb : 1.0;
+        q[0] = rays.perspective() ? f : w.zf, q[1] = rays.perspective() ? b : w.zb, q[2] = w.sf * f, q[3] = w.sb * b;
+      };
+      double thick[kFanQuantities] = {}, hull[4][kFanQuantities] = {};
+      ends(pt.thick, thick);
+      for (int k = 0; k < pt.hull_size; ++k) ends(pt.hull[k], hull[k]);
+      double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+      for (int k = 0; k < pt.hull_size; ++k)
+        x0 = std::min(x0, pt.hull[k].x), x1 = std::max(x1, pt.hull[k].x), y0 = std::min(y0, pt.hull[k].y),
+        y1 = std::max(y1, pt.hull[k].y);
+      const PixelBox box({x0, y0}, {x1, y1}, {x0, y0}, kW, kH);
+      if (box.empty()) continue;
+      const FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, 4, thick, hull);
+      ASSERT_GT(planes.sectors, 0);
+      const int bw = box.i1 - box.i0 + 1, row0 = t % 3 == 0 ? (box.j1 - box.j0) / 2 : 0,
+                rows = box.j1 - box.j0 + 1 - row0;
+      FanPixels f;
+      fan_pixels(planes, row0, rows, bw, f);
+      SegmentBatch want, got;
+      for (int r = 0; r < rows; ++r)
+        for (int i = f.first[r]; i <= f.last[r]; ++i) {
+          const std::size_t k = static_cast<std::size_t>(r) * f.stride + i;
+          want.push(box.i0 + i, box.j0 + row0 + r, f.quantity(0)[k], f.quantity(1)[k], f.quantity(2)[k],
+                    f.quantity(3)[k]);
+        }
+      segment_ends(want, rays, 0.25, 0.6, piece);
+      got.push(-1, -1, 0, 0, 0, 0);  // appended after what the batch holds
+      fan_segments(planes, {rays, box.i0, box.j0, row0, rows, bw, 0.25, 0.6, piece}, got);
+      ASSERT_EQ(got.n, want.n + 1) << "tetrahedron " << t;
+      for (std::size_t k = 0; k < want.n; ++k) {
+        ASSERT_EQ(got.i[k + 1], want.i[k]);
+        ASSERT_EQ(got.j[k + 1], want.j[k]);
+        ASSERT_EQ(got.length[k + 1], want.length[k]) << "tetrahedron " << t << " fragment " << k;
+        ASSERT_EQ(got.sf[k + 1], want.sf[k]);
+        ASSERT_EQ(got.sb[k + 1], want.sb[k]);
+        ASSERT_EQ(got.k0[k + 1], want.k0[k]);
+        ASSERT_EQ(got.k1[k + 1], want.k1[k]);
+      }
+      segments += static_cast<int>(want.n);
+    }
+  }
+  EXPECT_GT(segments, 5000);
 }

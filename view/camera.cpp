@@ -74,7 +74,7 @@ PixelRays::PixelRays(const Camera& c, int width, int height) : camera_(c), width
   }
   half_w_ = half_h_ * aspect;
   if (!perspective()) return;
-  u2_.resize(static_cast<std::size_t>(width)), v2_.resize(static_cast<std::size_t>(height));
+  u2_.assign(static_cast<std::size_t>(width) + 3, 0.0), v2_.resize(static_cast<std::size_t>(height));
   for (int i = 0; i < width; ++i) {  // as length_per_depth(i + 0.5, j + 0.5) computes them
     const double u = (2.0 * (i + 0.5) / width_ - 1.0) * half_w_;
     u2_[static_cast<std::size_t>(i)] = u * u;

@@ -82,7 +82,8 @@ class PixelRays {
   }
   // The same from a column's u^2 and a row's v^2 (u_squared(), v_squared()).
   static double length_per_depth_from(double u2, double v2) { return std::sqrt(1.0 + u2 + v2); }
-  // Its terms for loops over many pixels: u^2 per column and v^2 per row (empty in orthographic).
+  // Its terms for loops over many pixels: u^2 per column and v^2 per row (empty in orthographic);
+  // u^2 has three more columns of 0, so that four SIMD lanes may start at the last column.
   const double* u_squared() const { return u2_.data(); }
   const double* v_squared() const { return v2_.data(); }
   bool perspective() const { return camera_.projection == Projection::Perspective; }
