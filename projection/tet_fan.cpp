@@ -21,7 +21,8 @@ typedef double Lanes __attribute__((vector_size(32)));
 typedef double UnalignedLanes __attribute__((vector_size(32), aligned(8)));
 
 // Row by row over the box: the outline's pixels on the row (from its edges' crossings), then four
-// pixels at a time every fan triangle's smallest weight, the largest taken with its quantities.
+// pixels at a time the fan triangle whose wedge around the thick vertex holds them (the largest of
+// the smaller of its two spokes' functions) and its quantities.
 // S triangles, Q quantities (compile-time, so the loops unroll). For each row r, out.row(r, b, e)
 // with its pixels b .. e (none: e < b), then out.lanes(i, x, v) for i = b, b + 4, ... <= e with
 // pixels i .. i + 3 at x and their quantities v.
@@ -29,7 +30,7 @@ template <int S, int Q, class Out>
 [[gnu::always_inline]] inline void fan_rows(const FanPlanes& f, int row0, int rows, int width, Out& out) {
   for (int r = 0; r < rows; ++r) {
     const double y = row0 + r;
-    double g0[S], gx[S], p0[S], px[S], q0[S][Q], qx[S][Q];
+    double p0[S], px[S], q0[S][Q], qx[S][Q];
     // The row's pixels inside every outline edge: x >= its crossing where the edge's function
     // rises along the row, x <= where it falls, all or none where it is flat.
     double lo = 0, hi = width - 1;
@@ -46,7 +47,6 @@ template <int S, int Q, class Out>
     const int b = static_cast<int>(std::ceil(lo)), e = static_cast<int>(std::floor(hi));
     out.row(r, b, e);
     for (int a = 0; a < S; ++a) {
-      g0[a] = f.hull[a].c + f.hull[a].gy * y, gx[a] = f.hull[a].gx;
       p0[a] = f.spoke[a].c + f.spoke[a].gy * y, px[a] = f.spoke[a].gx;
       for (int m = 0; m < Q; ++m) q0[a][m] = f.q[a][m].c + f.q[a][m].gy * y, qx[a][m] = f.q[a][m].gx;
     }
@@ -56,9 +56,8 @@ template <int S, int Q, class Out>
       for (int k = 0; k < S; ++k) spoke[k] = p0[k] + px[k] * x;
       Lanes best = Lanes{} - std::numeric_limits<double>::infinity(), v[Q] = {};
       for (int a = 0; a < S; ++a) {
-        const Lanes g = g0[a] + gx[a] * x, s1 = -spoke[(a + 1) % S];
-        const Lanes lo4 = g < spoke[a] ? g : spoke[a];
-        const Lanes w = (lo4 < s1 ? lo4 : s1) * f.inv_area[a];  // the triangle's smallest weight
+        // >= 0 in the triangle's wedge between spoke[a] and spoke[a + 1], < 0 outside it
+        const Lanes s1 = -spoke[(a + 1) % S], w = (spoke[a] < s1 ? spoke[a] : s1) + f.left_out[a];
         const auto take = w > best;
         best = take ? w : best;
         for (int m = 0; m < Q; ++m) v[m] = take ? q0[a][m] + qx[a][m] * x : v[m];
@@ -184,8 +183,8 @@ FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantitie
   for (int k = 0; k < n; ++k) f.spoke[k] = edge_plane(pt.thick, pt.hull[k], x0, y0, sign);
   for (int a = 0; a < n; ++a) {
     const int b = (a + 1) % n;
-    f.outline[a] = f.hull[a] = edge_plane(pt.hull[a], pt.hull[b], x0, y0, sign);
-    const double inv_gx = 1.0 / f.hull[a].gx;  // 0 for a flat edge (or one too near it for 1 / gx)
+    const Plane g = f.outline[a] = edge_plane(pt.hull[a], pt.hull[b], x0, y0, sign);
+    const double inv_gx = 1.0 / g.gx;  // 0 for a flat edge (or one too near it for 1 / gx)
     f.inv_gx[a] = std::abs(inv_gx) < std::numeric_limits<double>::infinity() ? inv_gx : 0.0;
     // Twice the triangle's area: its hull edge's function at the thick vertex.
     const double area = sign * ((pt.hull[b].x - pt.hull[a].x) * (pt.thick.y - pt.hull[a].y) -
@@ -193,14 +192,14 @@ FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantitie
     // A triangle of no area to rounding (the thick vertex on the outline, or as good as) is left
     // out: its weights' planes would be huge, and its neighbours reach across it.
     if (!(area > 1e-9 * std::abs(turn)) || !(area < std::numeric_limits<double>::infinity())) {
-      f.hull[a] = {-1e300, 0.0, 0.0}, f.inv_area[a] = 1.0;  // never the largest smallest weight
+      f.left_out[a] = -1e300;  // never the largest
       continue;
     }
-    f.inv_area[a] = 1.0 / area;
+    const double inv_area = 1.0 / area;
     // Weights: thick vertex G_a / A, hull[a] -spoke[b] / A, hull[b] spoke[a] / A.
-    const Plane &g = f.hull[a], &sa = f.spoke[a], &sb = f.spoke[b];
+    const Plane &sa = f.spoke[a], &sb = f.spoke[b];
     for (int m = 0; m < quantities; ++m) {
-      const double qt = thick[m] * f.inv_area[a], qa = hull[a][m] * f.inv_area[a], qb = hull[b][m] * f.inv_area[a];
+      const double qt = thick[m] * inv_area, qa = hull[a][m] * inv_area, qb = hull[b][m] * inv_area;
       f.q[a][m] = {g.c * qt - sb.c * qa + sa.c * qb, g.gx * qt - sb.gx * qa + sa.gx * qb,
                    g.gy * qt - sb.gy * qa + sa.gy * qb};
     }

@@ -1,9 +1,10 @@
 #pragma once
 // A projected tetrahedron's fan (MWSC section 2: three or four triangles around the thick vertex)
 // evaluated over its whole pixel box at once, in SIMD lanes: no per-row edge search. A row's
-// pixels are those between its crossings of the outline; each takes the fan triangle whose
-// smallest barycentric weight is largest (the one holding it; the choice near a shared spoke does
-// not matter, the quantities are continuous across it) and that triangle's planes.
+// pixels are those between its crossings of the outline; each takes the fan triangle whose wedge
+// around the thick vertex holds it (each wedge is under 180 degrees, the thick vertex inside the
+// outline; the choice near a shared spoke does not matter, the quantities are continuous across
+// it) and that triangle's planes.
 #include <cstddef>
 #include <vector>
 
@@ -27,11 +28,10 @@ struct FanPlanes {
   // pt-linear: the four quantities opacity and colour become the pixel's opacity clamped to
   // [0, 1] and its colour clamped to >= 0 times it (premultiplied).
   bool linear_opacity = false;
-  double inv_area[4] = {};  // 1 / the triangle's doubled area (1 for one left out, below)
   Plane outline[4];         // edge hull[a] -> hull[a + 1], positive inside
   double inv_gx[4] = {};    // 1 / outline[a].gx (0 for a flat edge: the row is all in or all out)
-  Plane hull[4];            // outline[a], or -1e300 for a triangle of no area (never chosen)
   Plane spoke[4];           // edge thick -> hull[k], positive on triangle k's side
+  double left_out[4] = {};  // -1e300 for a triangle of no area to rounding (never chosen), else 0
   Plane q[4][kFanQuantities];
 };
 
