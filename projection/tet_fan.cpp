@@ -24,8 +24,8 @@ typedef double UnalignedLanes __attribute__((vector_size(32), aligned(8)));
 // pixels at a time the fan triangle whose wedge around the thick vertex holds them (the largest of
 // the smaller of its two spokes' functions) and its quantities.
 // S triangles, Q quantities (compile-time, so the loops unroll). For each row r, out.row(r, b, e)
-// with its pixels b .. e (none: e < b), then out.lanes(i, x, v) for i = b, b + 4, ... <= e with
-// pixels i .. i + 3 at x and their quantities v.
+// with its pixels b .. e (none: e < b), then out.lanes(i, v) for i = b, b + 4, ... <= e with the
+// quantities v of pixels i .. i + 3 (those past e are the planes' values beyond the outline).
 template <int S, int Q, class Out>
 [[gnu::always_inline]] inline void fan_rows(const FanPlanes& f, int row0, int rows, int width, Out& out) {
   for (int r = 0; r < rows; ++r) {
