@@ -20,9 +20,10 @@ struct LinearPiece {
   double s0 = 0, ds = 0;  // s0 and 1 / (s1 - s0) (0 for a constant cell)
   double k0 = 0, dk = 0;
   glm::dvec3 c0{0.0}, dc{0.0};
-  double kappa(double s) const {
-    const double k = k0 + dk * (s - s0) * ds;
-    return 0.0 < k ? k : 0.0;
+  template <class T>  // double, or a vector of doubles (GCC's extension): the same bits per lane
+  T kappa(T s) const {
+    const T k = k0 + dk * (s - s0) * ds, zero{};
+    return zero < k ? k : zero;
   }
   glm::dvec3 color(double s) const { return c0 + dc * ((s - s0) * ds); }
 };
@@ -30,14 +31,14 @@ struct LinearPiece {
 // The segment a pixel's ray crosses, from the interpolated ends (depth and scalar, or in
 // perspective 1/z and s/z: perspective-correct interpolation, z = 1 / (1/z), s = (s/z) z): its
 // length, with per_depth the ray's length per unit of depth there, and the ends' scalars clamped
-// to [smin, smax] (as std::clamp).
-template <bool perspective>
-inline double segment_between(double zf, double zb, double& sf, double& sb, double per_depth, double smin,
-                              double smax) {
+// to [smin, smax] (as std::clamp). T: double, or a vector of doubles (the fan's lanes), with the
+// same operations in the same order, so the same bits per lane.
+template <bool perspective, class T>
+inline T segment_between(T zf, T zb, T& sf, T& sb, T per_depth, T smin, T smax) {
   if constexpr (perspective) zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
   sf = sf < smin ? smin : smax < sf ? smax : sf, sb = sb < smin ? smin : smax < sb ? smax : sb;
-  const double thick = zb - zf;
-  return (0.0 < thick ? thick : 0.0) * per_depth;
+  const T thick = zb - zf, zero{};
+  return (zero < thick ? thick : zero) * per_depth;
 }
 
 // pt-analytic's and pt-breakpoints' fragments of one cell before their light, so the closed forms

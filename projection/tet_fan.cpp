@@ -116,24 +116,18 @@ struct AppendSegments {
     if (last >= first) b.n += static_cast<std::size_t>(last - first + 1);
   }
   [[gnu::always_inline]] void lanes(int i, const Lanes* v) {
-    Lanes zf = v[0], zb = v[1], sf = v[2], sb = v[3], per_depth = Lanes{} + 1.0;
-    if constexpr (Perspective) {
-      zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
-      UnalignedLanes u2 = *reinterpret_cast<const UnalignedLanes*>(at.rays.u_squared() + at.i0 + i);
-      const Lanes d = 1.0 + u2 + v2;
+    Lanes sf = v[2], sb = v[3], per_depth = Lanes{} + 1.0;
+    if constexpr (Perspective) {  // PixelRays::length_per_depth_from, four columns at a time
+      const Lanes d = 1.0 + *reinterpret_cast<const UnalignedLanes*>(at.rays.u_squared() + at.i0 + i) + v2;
       for (int m = 0; m < 4; ++m) per_depth[m] = std::sqrt(d[m]);
     }
-    const Lanes smin = Lanes{} + at.smin, smax = Lanes{} + at.smax;
-    sf = sf < smin ? smin : smax < sf ? smax : sf, sb = sb < smin ? smin : smax < sb ? smax : sb;
-    const Lanes thick = zb - zf, zero{};
-    const Lanes length = (zero < thick ? thick : zero) * per_depth;
-    const LinearPiece& p = at.piece;
-    const Lanes k0 = p.k0 + p.dk * (sf - p.s0) * p.ds, k1 = p.k0 + p.dk * (sb - p.s0) * p.ds;
+    const Lanes length =
+        segment_between<Perspective>(v[0], v[1], sf, sb, per_depth, Lanes{} + at.smin, Lanes{} + at.smax);
     const std::size_t k = base + static_cast<std::size_t>(i);
     *reinterpret_cast<UnalignedLanes*>(&b.length[k]) = length;
     *reinterpret_cast<UnalignedLanes*>(&b.sf[k]) = sf, *reinterpret_cast<UnalignedLanes*>(&b.sb[k]) = sb;
-    *reinterpret_cast<UnalignedLanes*>(&b.k0[k]) = zero < k0 ? k0 : zero;
-    *reinterpret_cast<UnalignedLanes*>(&b.k1[k]) = zero < k1 ? k1 : zero;
+    *reinterpret_cast<UnalignedLanes*>(&b.k0[k]) = at.piece.kappa(sf);
+    *reinterpret_cast<UnalignedLanes*>(&b.k1[k]) = at.piece.kappa(sb);
   }
 };
 
