@@ -21,7 +21,7 @@ struct LinearPiece {
   double k0 = 0, dk = 0;
   glm::dvec3 c0{0.0}, dc{0.0};
   template <class T>  // double, or a vector of doubles (GCC's extension): the same bits per lane
-  T kappa(T s) const {
+  T kappa(const T& s) const {
     const T k = k0 + dk * (s - s0) * ds, zero{};
     return zero < k ? k : zero;
   }
@@ -34,7 +34,9 @@ struct LinearPiece {
 // to [smin, smax] (as std::clamp). T: double, or a vector of doubles (the fan's lanes), with the
 // same operations in the same order, so the same bits per lane.
 template <bool perspective, class T>
-inline T segment_between(T zf, T zb, T& sf, T& sb, T per_depth, T smin, T smax) {
+inline T segment_between(const T& front, const T& back, T& sf, T& sb, const T& per_depth, const T& smin,
+                         const T& smax) {
+  T zf = front, zb = back;
   if constexpr (perspective) zf = 1.0 / zf, zb = 1.0 / zb, sf *= zf, sb *= zb;
   sf = sf < smin ? smin : smax < sf ? smax : sf, sb = sb < smin ? smin : smax < sb ? smax : sb;
   const T thick = zb - zf, zero{};
