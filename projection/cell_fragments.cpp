@@ -19,8 +19,9 @@
 namespace cellproj {
 namespace {
 
-// pt-analytic's and pt-breakpoints' light at pixel (i, j) from the ray's entry and exit: depth and
-// scalar, or in perspective 1/z and s/z (segment_between).
+// What pt-analytic's and pt-breakpoints' light of a cell's segments needs: the cell's scalar range
+// and transfer-function piece (or whether a breakpoint cuts it), and the segment's ends per pixel
+// from the ray's entry and exit, depth and scalar, or in perspective 1/z and s/z (segment_between).
 struct ExactShade {
   const TransferFunction& tf;
   const PixelRays& rays;
@@ -62,7 +63,7 @@ struct ExactFragments {
       linear_segment_weights_padded(b.n, b.length.data(), b.k0.data(), b.k1.data(), b.weights.data());
       segment_light(b, shade.piece);
     }
-    for (std::size_t k = 0; k < b.n; ++k) {
+    for (std::size_t k = 0; k < b.n; ++k) {  // (across a breakpoint opacity is set: depth is not read)
       const SegmentLight light{{b.red[k], b.green[k], b.blue[k]}, b.weights[k].depth, b.opacity[k]};
       emitted += emit(b.i[k], b.j[k], light.rgb, light.opacity());
     }
