@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <type_traits>
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
@@ -622,6 +623,11 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
     counters.fragments += fragments.finish(/*ends=*/false);
     return true;
   }
+  if constexpr (std::is_same_v<Emit, CompositeFragments>)  // a tile's compositing, pt-linear: in the fan's lanes
+    if (gouraud && !table) {
+      counters.fragments += fan_composite_over(planes, emit.image, box.i0, box.j0, j0 - box.j0, j1 - j0 + 1, bw);
+      return true;
+    }
   FanPixels& f = p.fan;
   fan_pixels(planes, j0 - box.j0, j1 - j0 + 1, bw, f);
   const double *q0 = f.quantity(0), *q1 = f.quantity(1), *q2 = f.quantity(2), *q3 = f.quantity(3);

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 
 #include "base/simd.hpp"
@@ -19,6 +20,7 @@ Plane edge_plane(const ThickVertex& a, const ThickVertex& b, double x0, double y
 // SSE2 halves in the default one).
 typedef double Lanes __attribute__((vector_size(32)));
 typedef double UnalignedLanes __attribute__((vector_size(32), aligned(8)));
+typedef float Floats __attribute__((vector_size(16)));
 
 // Row by row over the box: the outline's pixels on the row (from its edges' crossings), then four
 // pixels at a time the fan triangle whose wedge around the thick vertex holds them (the largest of
@@ -67,6 +69,17 @@ template <int S, int Q, class Out>
   }
 }
 
+// pt-linear's pixels from their opacity and colour: the opacity clamped to [0, 1], the colour
+// clamped to >= 0 and premultiplied by it.
+template <int Q>
+[[gnu::always_inline]] inline void finish_linear(Lanes* v) {
+  const Lanes zero{};
+  Lanes alpha = v[0] > zero ? v[0] : zero;
+  alpha = alpha < 1.0 ? alpha : zero + 1.0;
+  v[0] = alpha;
+  for (int m = 1; m < Q; ++m) v[m] = (v[m] > zero ? v[m] : zero) * alpha;
+}
+
 // fan_pixels' rows: the quantities stored at r * stride + i (pt-linear's finished: its opacity
 // and colour clamped as its runs, the colour premultiplied).
 template <int Q, bool Linear>
@@ -80,14 +93,36 @@ struct StoreQuantities {
     first[r] = b, last[r] = e, out = q + static_cast<std::size_t>(r) * stride;
   }
   [[gnu::always_inline]] void lanes(int i, Lanes* v) {
-    if constexpr (Linear) {
-      const Lanes zero{};
-      Lanes alpha = v[0] > zero ? v[0] : zero;
-      alpha = alpha < 1.0 ? alpha : zero + 1.0;
-      v[0] = alpha;
-      for (int m = 1; m < Q; ++m) v[m] = (v[m] > zero ? v[m] : zero) * alpha;
-    }
+    if constexpr (Linear) finish_linear<Q>(v);
     for (int m = 0; m < Q; ++m) *reinterpret_cast<UnalignedLanes*>(out + m * size + i) = v[m];
+  }
+};
+
+// pt-linear's fan composited straight onto the image: each pixel's opacity and colour finished as
+// fan_pixels stores them, then "over" in float (composite/fragment.hpp's over: the
+// same operations, so the same bits), skipping a pixel that adds nothing (as CompositeFragments).
+struct CompositeOver {
+  Image& image;
+  int i0, j0, row0;
+  std::int64_t fragments = 0;
+  float* line = nullptr;  // the image at the row's box pixel 0
+  int last = -1;
+  [[gnu::always_inline]] void row(int r, int /*first*/, int e) { line = image.pixel(i0, j0 + row0 + r), last = e; }
+  [[gnu::always_inline]] void lanes(int i, Lanes* v) {
+    finish_linear<4>(v);
+    const Floats fa = __builtin_convertvector(v[0], Floats), fr = __builtin_convertvector(v[1], Floats),
+                 fg = __builtin_convertvector(v[2], Floats), fb = __builtin_convertvector(v[3], Floats);
+    const int n = std::min(4, last - i + 1);
+    for (int k = 0; k < n; ++k) {
+      if (v[0][k] == 0.0 && v[1][k] == 0.0 && v[2][k] == 0.0 && v[3][k] == 0.0) continue;
+      float* dst = line + 4 * (i + k);
+      const Floats src{fr[k], fg[k], fb[k], fa[k]}, t = Floats{} + (1.0f - fa[k]);
+      Floats d;
+      std::memcpy(&d, dst, sizeof d);
+      d = src + t * d;
+      std::memcpy(dst, &d, sizeof d);
+      ++fragments;
+    }
   }
 };
 
@@ -146,6 +181,17 @@ CELLPROJ_FAN_KERNEL(pixels_4_5, 4, 5, false)
 CELLPROJ_FAN_KERNEL(linear_3, 3, 4, true)
 CELLPROJ_FAN_KERNEL(linear_4, 4, 4, true)
 #undef CELLPROJ_FAN_KERNEL
+
+// pt-linear's fan over the image, per triangle count, for the build's target and AVX2.
+#define CELLPROJ_FAN_OVER(name, S)                                                                                 \
+  CELLPROJ_AVX2_CLONES std::int64_t name(const FanPlanes& f, Image& image, int i0, int j0, int r0, int n, int w) { \
+    CompositeOver out{image, i0, j0, r0};                                                                          \
+    fan_rows<S, 4>(f, r0, n, w, out);                                                                              \
+    return out.fragments;                                                                                          \
+  }
+CELLPROJ_FAN_OVER(over_3, 3)
+CELLPROJ_FAN_OVER(over_4, 4)
+#undef CELLPROJ_FAN_OVER
 
 using SegmentsFn = void (*)(const FanPlanes&, const FanSegments&, SegmentBatch&);
 #define CELLPROJ_FAN_SEGMENTS(name, S, perspective)                                            \
@@ -220,6 +266,10 @@ void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out) 
   const SegmentsFn fn = at.rays.perspective() ? (four ? segments_4_perspective : segments_3_perspective)
                                               : (four ? segments_4_orthographic : segments_3_orthographic);
   fn(f, at, out);
+}
+
+std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width) {
+  return (f.sectors == 4 ? over_4 : over_3)(f, image, i0, j0, row0, rows, width);
 }
 
 }  // namespace cellproj

@@ -6,11 +6,13 @@
 // outline; the choice near a shared spoke does not matter, the quantities are continuous across
 // it) and that triangle's planes.
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include "projection/projected_tet.hpp"
 #include "projection/segment_batch.hpp"
 #include "view/camera.hpp"
+#include "view/image.hpp"
 
 namespace cellproj {
 
@@ -56,6 +58,13 @@ struct FanPixels {
   const double* quantity(int m) const { return q.data() + static_cast<std::size_t>(m) * size; }
 };
 void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& out);
+
+// pt-linear's fan (linear_opacity) composited "over" onto the image, whose pixel (i0, j0) is the
+// box's first: rows [row0, row0 + rows) of the box, `width` pixels wide, each pixel's opacity and
+// premultiplied colour as fan_pixels gives them. The same bits as composite/fragment.hpp's over()
+// of those values; pixels adding nothing (opacity and colour 0) are skipped. Returns the number of
+// fragments composited.
+std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width);
 
 // The exact rungs' fan (its planes the ends' quantities, affine_ends: front and back 1/z and s/z in
 // perspective, depth and scalar in orthographic): the pixels of rows [row0, row0 + rows) of its box

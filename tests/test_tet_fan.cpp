@@ -1,10 +1,12 @@
 // A projected tetrahedron's fan over its pixel box (tet_fan.hpp) against the triangle rasterizer
 // it replaces for small tetrahedra: the same pixels, the same interpolated quantities.
 #include <cmath>
+#include <cstring>
 #include <random>
 
 #include <gtest/gtest.h>
 
+#include "composite/fragment.hpp"
 #include "projection/projected_tet.hpp"
 #include "projection/tet_fan.hpp"
 #include "view/raster.hpp"
@@ -42,12 +44,17 @@ struct DrawnFan {
   int height() const { return box.j1 - box.j0 + 1; }
   double at(int m, int r, int i) const { return f.quantity(m)[static_cast<std::size_t>(r) * f.stride + i]; }
 };
-DrawnFan draw_fan(const ProjectedTet& pt, const Corners& c, int row0 = 0) {
+// The pixel box of pt's outline, as project_fan takes it.
+PixelBox fan_box(const ProjectedTet& pt) {
   double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
   for (int k = 0; k < pt.hull_size; ++k)
     x0 = std::min(x0, pt.hull[k].x), x1 = std::max(x1, pt.hull[k].x), y0 = std::min(y0, pt.hull[k].y),
     y1 = std::max(y1, pt.hull[k].y);
-  DrawnFan d{PixelBox({x0, y0}, {x1, y1}, {x0, y0}, kW, kH), {}};
+  return PixelBox({x0, y0}, {x1, y1}, {x0, y0}, kW, kH);
+}
+
+DrawnFan draw_fan(const ProjectedTet& pt, const Corners& c, int row0 = 0) {
+  DrawnFan d{fan_box(pt), {}};
   if (d.box.empty()) return d;
   const FanPlanes planes = fan_planes(pt, d.box.i0 + 0.5, d.box.j0 + 0.5, kFanQuantities, c.thick, c.hull);
   EXPECT_EQ(planes.sectors, pt.hull_size);
@@ -237,11 +244,7 @@ TEST(TetFan, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
       double thick[kFanQuantities] = {}, hull[4][kFanQuantities] = {};
       ends(pt.thick, thick);
       for (int k = 0; k < pt.hull_size; ++k) ends(pt.hull[k], hull[k]);
-      double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-      for (int k = 0; k < pt.hull_size; ++k)
-        x0 = std::min(x0, pt.hull[k].x), x1 = std::max(x1, pt.hull[k].x), y0 = std::min(y0, pt.hull[k].y),
-        y1 = std::max(y1, pt.hull[k].y);
-      const PixelBox box({x0, y0}, {x1, y1}, {x0, y0}, kW, kH);
+      const PixelBox box = fan_box(pt);
       if (box.empty()) continue;
       const FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, 4, thick, hull);
       ASSERT_GT(planes.sectors, 0);
@@ -273,4 +276,57 @@ TEST(TetFan, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
     }
   }
   EXPECT_GT(segments, 5000);
+}
+
+TEST(TetFan, CompositedOverTheImageAsItsStoredPixelsAre) {
+  // pt-linear's fan composited in its lanes (fan_composite_over) against fan_pixels' stored opacity
+  // and premultiplied colour composited one by one with over(): the same image bits, the same
+  // count, nothing outside the outline touched; opacities past [0, 1], negative colours and
+  // tetrahedra adding nothing (opacity <= 0 everywhere) included, from a tile's middle row too.
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> x(1.0, kW - 1.0), y(1.0, kH - 1.0), z(1.0, 5.0), u(-0.3, 1.4);
+  Image want(kW, kH);
+  for (float& v : want.rgba) v = static_cast<float>(std::uniform_real_distribution<double>(0.0, 1.0)(rng));
+  Image got = want;
+  std::int64_t composited = 0;
+  for (int t = 0; t < 300; ++t) {
+    const double cx = x(rng), cy = y(rng);
+    std::uniform_real_distribution<double> d(-9.0, 9.0);
+    ScreenVertex v[4];
+    for (auto& p : v) p = {cx + d(rng), cy + d(rng), z(rng), 0.0};
+    const ProjectedTet pt = projected(v);
+    if (pt.hull_size == 0 || pt.edge_on) continue;
+    double thick[kFanQuantities] = {}, hull[4][kFanQuantities] = {};
+    const auto corner = [&](double* q) {
+      q[0] = t % 5 == 0 ? -u(rng) - 0.31 : u(rng);  // opacity (never above 0 for every fifth)
+      for (int m = 1; m < 4; ++m) q[m] = u(rng);
+    };
+    corner(thick);
+    for (int k = 0; k < pt.hull_size; ++k) corner(hull[k]);
+    const PixelBox box = fan_box(pt);
+    if (box.empty()) continue;
+    FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, 4, thick, hull);
+    ASSERT_GT(planes.sectors, 0);
+    planes.linear_opacity = true;
+    const int bw = box.i1 - box.i0 + 1, row0 = t % 3 == 0 ? (box.j1 - box.j0) / 2 : 0,
+              rows = box.j1 - box.j0 + 1 - row0;
+    FanPixels f;
+    fan_pixels(planes, row0, rows, bw, f);
+    std::int64_t n = 0;
+    for (int r = 0; r < rows; ++r)
+      for (int i = f.first[r]; i <= f.last[r]; ++i) {
+        const std::size_t k = static_cast<std::size_t>(r) * f.stride + i;
+        const double a = f.quantity(0)[k], c[3] = {f.quantity(1)[k], f.quantity(2)[k], f.quantity(3)[k]};
+        if (a == 0.0 && c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0) continue;
+        const float src[4] = {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]),
+                              static_cast<float>(a)};
+        over(want.pixel(box.i0 + i, box.j0 + row0 + r), src);
+        ++n;
+      }
+    EXPECT_EQ(fan_composite_over(planes, got, box.i0, box.j0, row0, rows, bw), n) << "tetrahedron " << t;
+    composited += n;
+    ASSERT_EQ(std::memcmp(got.rgba.data(), want.rgba.data(), want.rgba.size() * sizeof(float)), 0)
+        << "tetrahedron " << t;
+  }
+  EXPECT_GT(composited, 3000);
 }
