@@ -21,6 +21,7 @@ Plane edge_plane(const ThickVertex& a, const ThickVertex& b, double x0, double y
 typedef double Lanes __attribute__((vector_size(32)));
 typedef double UnalignedLanes __attribute__((vector_size(32), aligned(8)));
 typedef float Floats __attribute__((vector_size(16)));
+typedef long long Counts __attribute__((vector_size(32)));  // a comparison of Lanes: -1 where true
 
 // Row by row over the box: the outline's pixels on the row (from its edges' crossings), then four
 // pixels at a time the fan triangle whose wedge around the thick vertex holds them (the largest of
@@ -104,26 +105,37 @@ struct StoreQuantities {
 struct CompositeOver {
   Image& image;
   int i0, j0, row0;
-  std::int64_t fragments = 0;
+  Counts added{};         // per lane, minus the pixels composited that add something
   float* line = nullptr;  // the image at the row's box pixel 0
   int last = -1;
   [[gnu::always_inline]] void row(int r, int /*first*/, int e) { line = image.pixel(i0, j0 + row0 + r), last = e; }
   [[gnu::always_inline]] void lanes(int i, Lanes* v) {
     finish_linear<4>(v);
-    const Floats fa = __builtin_convertvector(v[0], Floats), fr = __builtin_convertvector(v[1], Floats),
-                 fg = __builtin_convertvector(v[2], Floats), fb = __builtin_convertvector(v[3], Floats);
+    const Floats a = __builtin_convertvector(v[0], Floats), r = __builtin_convertvector(v[1], Floats),
+                 g = __builtin_convertvector(v[2], Floats), b = __builtin_convertvector(v[3], Floats);
+    // The four pixels' (r, g, b, a), a 4 x 4 transpose.
+    const Floats rg01 = __builtin_shufflevector(r, g, 0, 4, 1, 5), ba01 = __builtin_shufflevector(b, a, 0, 4, 1, 5),
+                 rg23 = __builtin_shufflevector(r, g, 2, 6, 3, 7), ba23 = __builtin_shufflevector(b, a, 2, 6, 3, 7);
+    const Floats src[4] = {__builtin_shufflevector(rg01, ba01, 0, 1, 4, 5),
+                           __builtin_shufflevector(rg01, ba01, 2, 3, 6, 7),
+                           __builtin_shufflevector(rg23, ba23, 0, 1, 4, 5),
+                           __builtin_shufflevector(rg23, ba23, 2, 3, 6, 7)};
+    const Floats t = 1.0f - a;
+    const Floats t_of[4] = {__builtin_shufflevector(t, t, 0, 0, 0, 0), __builtin_shufflevector(t, t, 1, 1, 1, 1),
+                            __builtin_shufflevector(t, t, 2, 2, 2, 2), __builtin_shufflevector(t, t, 3, 3, 3, 3)};
+    // A pixel adding nothing (opacity and colour +0 after finish_linear) is composited too: 0 + 1 d
+    // is d, bit for bit (the image holds no -0), but not counted, as CompositeFragments skips it.
     const int n = std::min(4, last - i + 1);
+    added += (v[0] != 0.0 | v[1] != 0.0 | v[2] != 0.0 | v[3] != 0.0) & (Counts{0, 1, 2, 3} < n);
+    float* dst = line + 4 * i;
     for (int k = 0; k < n; ++k) {
-      if (v[0][k] == 0.0 && v[1][k] == 0.0 && v[2][k] == 0.0 && v[3][k] == 0.0) continue;
-      float* dst = line + 4 * (i + k);
-      const Floats src{fr[k], fg[k], fb[k], fa[k]}, t = Floats{} + (1.0f - fa[k]);
       Floats d;
-      std::memcpy(&d, dst, sizeof d);
-      d = src + t * d;
-      std::memcpy(dst, &d, sizeof d);
-      ++fragments;
+      std::memcpy(&d, dst + 4 * k, sizeof d);
+      d = src[k] + t_of[k] * d;
+      std::memcpy(dst + 4 * k, &d, sizeof d);
     }
   }
+  std::int64_t fragments() const { return -(added[0] + added[1] + added[2] + added[3]); }
 };
 
 template <int S, int Q, bool Linear = false>
@@ -187,7 +199,7 @@ CELLPROJ_FAN_KERNEL(linear_4, 4, 4, true)
   CELLPROJ_AVX2_CLONES std::int64_t name(const FanPlanes& f, Image& image, int i0, int j0, int r0, int n, int w) { \
     CompositeOver out{image, i0, j0, r0};                                                                          \
     fan_rows<S, 4>(f, r0, n, w, out);                                                                              \
-    return out.fragments;                                                                                          \
+    return out.fragments();                                                                                        \
   }
 CELLPROJ_FAN_OVER(over_3, 3)
 CELLPROJ_FAN_OVER(over_4, 4)
