@@ -100,8 +100,9 @@ struct StoreQuantities {
 };
 
 // pt-linear's fan composited straight onto the image: each pixel's opacity and colour finished as
-// fan_pixels stores them, then "over" in float (composite/fragment.hpp's over: the
-// same operations, so the same bits), skipping a pixel that adds nothing (as CompositeFragments).
+// fan_pixels stores them, then "over" in float (composite/fragment.hpp's over: the same
+// operations, so the same bits), counting only the pixels that add something (as
+// CompositeFragments, which skips the others).
 struct CompositeOver {
   Image& image;
   int i0, j0, row0;
@@ -123,8 +124,8 @@ struct CompositeOver {
     const Floats t = 1.0f - a;
     const Floats t_of[4] = {__builtin_shufflevector(t, t, 0, 0, 0, 0), __builtin_shufflevector(t, t, 1, 1, 1, 1),
                             __builtin_shufflevector(t, t, 2, 2, 2, 2), __builtin_shufflevector(t, t, 3, 3, 3, 3)};
-    // A pixel adding nothing (opacity and colour +0 after finish_linear) is composited too: 0 + 1 d
-    // is d, bit for bit (the image holds no -0), but not counted, as CompositeFragments skips it.
+    // A pixel adding nothing (opacity and colour +0 after finish_linear) is composited too, and
+    // changes nothing: 0 + 1 d is d (bit for bit but for a -0, which becomes +0); it is not counted.
     const int n = std::min(4, last - i + 1);
     added += (v[0] != 0.0 | v[1] != 0.0 | v[2] != 0.0 | v[3] != 0.0) & (Counts{0, 1, 2, 3} < n);
     float* dst = line + 4 * i;

@@ -62,8 +62,8 @@ void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& ou
 // pt-linear's fan (linear_opacity) composited "over" onto the image, whose pixel (i0, j0) is the
 // box's first: rows [row0, row0 + rows) of the box, `width` pixels wide, each pixel's opacity and
 // premultiplied colour as fan_pixels gives them. The same bits as composite/fragment.hpp's over()
-// of those values; pixels adding nothing (opacity and colour 0) are skipped. Returns the number of
-// fragments composited.
+// of those values. Returns the number of fragments composited, those adding nothing (opacity and
+// colour 0, which leave the image as it was) not counted.
 std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width);
 
 // The exact rungs' fan (its planes the ends' quantities, affine_ends: front and back 1/z and s/z in
