@@ -127,7 +127,7 @@ struct CompositeOver {
     // A pixel adding nothing (opacity and colour +0 after finish_linear) is composited too, and
     // changes nothing: 0 + 1 d is d (bit for bit but for a -0, which becomes +0); it is not counted.
     const int n = std::min(4, last - i + 1);
-    added += (v[0] != 0.0 | v[1] != 0.0 | v[2] != 0.0 | v[3] != 0.0) & (Counts{0, 1, 2, 3} < n);
+    added += ((v[0] != 0.0) | (v[1] != 0.0) | (v[2] != 0.0) | (v[3] != 0.0)) & (Counts{0, 1, 2, 3} < n);
     float* dst = line + 4 * i;
     for (int k = 0; k < n; ++k) {
       Floats d;
