@@ -13,6 +13,7 @@
 
 #include <tbb/task_arena.h>
 
+#include "base/chunks.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
 #include "grid/validate.hpp"
@@ -184,6 +185,25 @@ TEST(Visibility, GapRelationsAreTheSameFromOneAndManyThreads) {
       }
     EXPECT_GT(gaps, 0) << kind;
   }
+}
+
+// project_faces writes each chunk's faces in the image at the start of the chunk's range of one
+// buffer and joins them with join_chunk_heads: every chunk's kept head, in order, none else; a
+// chunk keeping all, none, or a short last chunk included.
+TEST(Visibility, ChunkHeadsJoinInOrder) {
+  constexpr std::size_t grain = 5;
+  const std::vector<std::size_t> kept = {2, 0, 5, 1, 3, 0, 2};  // the last chunk is 3 long
+  std::vector<int> v(6 * grain + 3, -1), want;
+  for (std::size_t c = 0; c < kept.size(); ++c)
+    for (std::size_t k = 0; k < kept[c]; ++k) {
+      v[c * grain + k] = static_cast<int>(100 * c + k);
+      want.push_back(static_cast<int>(100 * c + k));
+    }
+  join_chunk_heads(v, kept, grain);
+  EXPECT_EQ(v, want);
+  std::vector<int> none(7, -1);
+  join_chunk_heads(none, {0, 0}, 4);
+  EXPECT_TRUE(none.empty());
 }
 
 // Two tetrahedra far apart in depth whose shadows overlap by a sliver 4e-13 pixels wide, with a

@@ -7,6 +7,7 @@
 #include <cstddef>
 #include <cstdlib>
 #include <new>
+#include <vector>
 
 #if defined(__linux__)
 #include <sys/mman.h>
@@ -44,5 +45,14 @@ struct HugePageAllocator {
   friend bool operator==(const HugePageAllocator&, const HugePageAllocator&) { return true; }
   friend bool operator!=(const HugePageAllocator&, const HugePageAllocator&) { return false; }
 };
+
+// An array a frame writes afresh (per cell or per face of the view) that the C library does not
+// keep from one frame to the next: in huge pages once 2 MB or more. Where a frame also allocates
+// blocks beyond malloc's mapping threshold (32 MB at most), the C library maps those anew and
+// trims its heaps, and the frame's other large arrays fault in again in every frame: 12,500
+// faults a frame for bench/swirl_scene.sh's million hexahedra, 400 to 1,900 with the sort's arrays
+// and the screen points in huge pages (docs/methods.md, "Fresh pages").
+template <class T>
+using FrameBuffer = std::vector<T, HugePageAllocator<T>>;
 
 }  // namespace cellproj

@@ -7,6 +7,7 @@
 
 #include "grid/geometry.hpp"
 #include "view/camera.hpp"
+#include "view/huge_pages.hpp"
 
 namespace cellproj {
 
@@ -16,8 +17,10 @@ struct ScreenVertex {
 };
 
 // One 32-byte record per point, since a tetrahedron gathers all four values of each of its vertices.
+// Written afresh every frame (34 MB for a million points: beyond malloc's mapping threshold, so
+// mapped anew each time; huge_pages.hpp).
 struct ScreenPoints {
-  std::vector<ScreenVertex> v;
+  FrameBuffer<ScreenVertex> v;
   std::int64_t behind_eye = 0;  // points with z <= 0, at or behind the eye (or its plane)
 };
 // `rays` must be built on recentred(camera, points.centre). Parallel over points (oneTBB, in the

@@ -162,7 +162,7 @@ struct RowBands {
   int rows = 0, count = 0;
   std::vector<std::uint32_t> start, face;  // band b's faces: face[start[b] .. start[b + 1])
 
-  RowBands(const std::vector<ProjectedFace>& faces, int height) {
+  RowBands(const ProjectedFaces& faces, int height) {
     const int wanted = kBandsPerThread * tbb::this_task_arena::max_concurrency();
     rows = std::max(kMinBandRows, (height + wanted - 1) / wanted);
     count = (height + rows - 1) / rows;
@@ -184,8 +184,8 @@ struct BandGaps {
 };
 
 // Band b's rows on their own: the runs of its faces there, sorted by pixel, swept.
-BandGaps sweep_band(const RowBands& bands, int b, const std::vector<ProjectedFace>& projected,
-                    const std::vector<ImageFace>& faces, const SortView& view) {
+BandGaps sweep_band(const RowBands& bands, int b, const ProjectedFaces& projected, const std::vector<ImageFace>& faces,
+                    const SortView& view) {
   const int row0 = b * bands.rows, row1 = std::min(view.height, row0 + bands.rows);
   const auto width = static_cast<std::uint32_t>(view.width);
   std::vector<Run> runs;
@@ -213,8 +213,8 @@ BandGaps sweep_band(const RowBands& bands, int b, const std::vector<ProjectedFac
 
 }  // namespace
 
-Relations gap_relations(const VisibilitySorter::Prepared& p, const std::vector<ProjectedFace>& projected,
-                        const SortView& view, SortStats& stats) {
+Relations gap_relations(const VisibilitySorter::Prepared& p, const ProjectedFaces& projected, const SortView& view,
+                        SortStats& stats) {
   std::vector<ImageFace> faces(projected.size());
   for (std::size_t k = 0; k < projected.size(); ++k) faces[k] = projected[k].face;
   // The bands are swept apart, in parallel (oneTBB); the pairs do not depend on the bands.

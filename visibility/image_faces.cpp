@@ -7,6 +7,8 @@
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
+#include "base/chunks.hpp"
+
 namespace cellproj {
 namespace {
 
@@ -15,7 +17,7 @@ namespace {
 constexpr std::size_t kGrain = 8192;
 
 // Keeps the faces whose flag is set, in order.
-void keep_flagged(std::vector<ProjectedFace>& faces, const std::vector<char>& keep) {
+void keep_flagged(ProjectedFaces& faces, const std::vector<char>& keep) {
   std::size_t kept = 0;
   for (std::size_t k = 0; k < faces.size(); ++k)
     if (keep[k]) faces[kept++] = faces[k];
@@ -29,7 +31,7 @@ void keep_flagged(std::vector<ProjectedFace>& faces, const std::vector<char>& ke
 // entering face that reaches as deep there, an entering face where a tile has a leaving face as
 // near there. A face's keys in a tile lie between its plane's extremes over the part of its
 // bounding box in the tile (and within its keys over the whole face).
-void cull_faces_without_gaps(std::vector<ProjectedFace>& faces, int width, int height) {
+void cull_faces_without_gaps(ProjectedFaces& faces, int width, int height) {
   constexpr int kTile = 16;
   const int tw = (width + kTile - 1) / kTile, th = (height + kTile - 1) / kTile;
   const double inf = std::numeric_limits<double>::infinity();
@@ -130,23 +132,20 @@ bool project_face(const VisibilitySorter::Prepared& p, const ViewFrame& v, const
 
 }  // namespace
 
-std::vector<ProjectedFace> project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
-                                         bool cull) {
+ProjectedFaces project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, bool cull) {
   const std::vector<ImagePoint> points = project_points(p, v, PixelRays(v.camera, view.width, view.height));
   const std::size_t nb = p.boundary_tri.size();
-  // In chunks of kGrain faces, each kept in order: only the faces in the image are written.
-  std::vector<std::vector<ProjectedFace>> chunk((nb + kGrain - 1) / kGrain);
-  tbb::parallel_for(std::size_t(0), chunk.size(), [&](std::size_t c) {
-    std::vector<ProjectedFace>& out = chunk[c];
-    out.reserve(std::min(nb, (c + 1) * kGrain) - c * kGrain);
-    ProjectedFace f;
+  // In chunks of kGrain faces, each written at the start of its own range of one buffer, then
+  // moved down after the chunks before it: the faces in the image, in order, with one allocation.
+  ProjectedFaces projected(nb);
+  std::vector<std::size_t> kept((nb + kGrain - 1) / kGrain);
+  tbb::parallel_for(std::size_t(0), kept.size(), [&](std::size_t c) {
+    std::size_t n = c * kGrain;
     for (std::size_t b = c * kGrain; b < std::min(nb, (c + 1) * kGrain); ++b)
-      if (project_face(p, v, view, points, b, f)) out.push_back(f);
+      n += project_face(p, v, view, points, b, projected[n]);
+    kept[c] = n - c * kGrain;
   });
-  std::vector<ProjectedFace> projected;
-  if (chunk.size() == 1) projected = std::move(chunk[0]);
-  for (std::size_t c = chunk.size() == 1 ? 1 : 0; c < chunk.size(); ++c)
-    projected.insert(projected.end(), chunk[c].begin(), chunk[c].end());
+  join_chunk_heads(projected, kept, kGrain);
   if (cull) cull_faces_without_gaps(projected, view.width, view.height);
   return projected;
 }

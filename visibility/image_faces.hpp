@@ -9,6 +9,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "view/huge_pages.hpp"
 #include "view/raster.hpp"
 #include "visibility/prepared.hpp"
 
@@ -32,6 +33,9 @@ struct ProjectedFace {
   double rounding;    // of the key's plane at the image's pixel centres
 };
 
+// A view's projected faces, written afresh every frame (huge_pages.hpp's FrameBuffer).
+using ProjectedFaces = FrameBuffer<ProjectedFace>;
+
 // Slack for comparing keys a and b: twice the A-buffer's tolerance for level faces (in_front,
 // visibility/abuffer.cpp).
 inline double key_slack(double a, double b) { return 2e-9 * (std::abs(a) + std::abs(b)); }
@@ -39,8 +43,7 @@ inline double key_slack(double a, double b) { return 2e-9 * (std::abs(a) + std::
 // The boundary faces off the hull projected into the image (those that cover a pixel centre and
 // lie wholly in front of the eye); with `cull`, only those that can bound a gap at a pixel centre.
 // Parallel over points, then over faces (oneTBB).
-std::vector<ProjectedFace> project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,
-                                         bool cull);
+ProjectedFaces project_faces(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view, bool cull);
 
 // The (cell entered, cell left) pairs across gaps as they are found. The next stretches, rows and
 // faces mostly pair the same two cells again: a small table of the pairs met lately keeps the list
@@ -72,12 +75,12 @@ class GapPairs {
 
 // Relations across the gaps of a non-convex mesh between the faces of project_faces, from an
 // A-buffer at the view's pixel centres (visibility/abuffer.cpp).
-Relations gap_relations(const VisibilitySorter::Prepared& p, const std::vector<ProjectedFace>& faces,
-                        const SortView& view, SortStats& stats);
+Relations gap_relations(const VisibilitySorter::Prepared& p, const ProjectedFaces& faces, const SortView& view,
+                        SortStats& stats);
 // The same from the overlaps of those faces (culled) in the image: a superset, true wherever rays
 // go (visibility/overlap_gaps.cpp). Counts the pairs of faces that pass through each other; with
 // stop_at_crossing, stops at the first (the relations are then incomplete).
-Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const std::vector<ProjectedFace>& faces,
-                                const SortView& view, SortStats& stats, bool stop_at_crossing);
+Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ProjectedFaces& faces, const SortView& view,
+                                SortStats& stats, bool stop_at_crossing);
 
 }  // namespace cellproj

@@ -133,10 +133,10 @@ struct Binned {
 struct TileBins {
   int tile = 8, across = 0, down = 0;
   std::vector<std::uint32_t> start, entering_from;  // tile t: entry[start[t] .. entering_from[t] .. start[t + 1])
-  std::vector<Binned> entry;
+  FrameBuffer<Binned> entry;
   std::size_t scans = 0;  // pairs of a leaving and an entering face in one tile: the search's work
 
-  TileBins(const std::vector<ProjectedFace>& faces, int width, int height) {
+  TileBins(const ProjectedFaces& faces, int width, int height) {
     double sides = 0;
     for (const ProjectedFace& f : faces) sides += (f.box.i1 - f.box.i0 + f.box.j1 - f.box.j0 + 2) * 0.5;
     if (!faces.empty()) tile = std::max(8, static_cast<int>(2 * sides / static_cast<double>(faces.size())));
@@ -163,7 +163,7 @@ struct TileBins {
 
  private:
   template <class Visit>
-  void each_tile(const std::vector<ProjectedFace>& faces, Visit&& visit) const {
+  void each_tile(const ProjectedFaces& faces, Visit&& visit) const {
     for (std::uint32_t k = 0; k < faces.size(); ++k) {
       const PixelBox& b = faces[k].box;
       for (int ty = b.j0 / tile; ty <= b.j1 / tile; ++ty)
@@ -179,10 +179,10 @@ struct FoundGaps {
 
 }  // namespace
 
-Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const std::vector<ProjectedFace>& faces,
-                                const SortView& view, SortStats& stats, bool stop_at_crossing) {
+Relations overlap_gap_relations(const VisibilitySorter::Prepared& p, const ProjectedFaces& faces, const SortView& view,
+                                SortStats& stats, bool stop_at_crossing) {
   const TileBins bins(faces, view.width, view.height);
-  std::vector<EdgeLines> edges;
+  FrameBuffer<EdgeLines> edges;
   edges.reserve(faces.size());
   for (const ProjectedFace& f : faces) edges.emplace_back(f.s);
   // Tiles per task; a small search stays on the calling thread, since waking a worker costs more

@@ -10,6 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "grid/geometry.hpp"
+#include "view/huge_pages.hpp"
 #include "visibility/sort.hpp"
 
 namespace cellproj {
@@ -60,8 +61,8 @@ ViewFrame view_frame(const VisibilitySorter::Prepared& p, const SortView& view);
 
 // Relations "a is composited before b" (a behind b), as a successor list per cell.
 struct Relations {
-  std::vector<std::int64_t> start;  // n + 1
-  std::vector<std::int64_t> to;
+  FrameBuffer<std::int64_t> start;  // n + 1
+  FrameBuffer<std::int64_t> to;
   // Sorts and deduplicates (from, to) pairs into the lists; returns how many distinct pairs.
   std::int64_t build(std::int64_t n, std::vector<std::pair<std::int64_t, std::int64_t>>& pairs);
 };

@@ -72,7 +72,7 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
     faces = face_relations(p, v);
     stats.face_relations = faces.relations;
   };
-  std::vector<ProjectedFace> in_image;  // the off-hull faces as the view sees them
+  ProjectedFaces in_image;  // the off-hull faces as the view sees them
   if (gaps_by == GapMethod::abuffer) {
     find_face_relations();
     clock.lap("face_relations");
