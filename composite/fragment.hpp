@@ -17,7 +17,7 @@ struct Fragment {
 };
 
 // A batch's fragments: a buffer written once per batch, on huge pages once it is large.
-using Fragments = std::vector<Fragment, HugePageAllocator<Fragment>>;
+using Fragments = FrameBuffer<Fragment>;
 
 // Appends pixel (i, j)'s fragment of a `width`-wide image. Written field by field into the vector:
 // a fragment built on the stack and copied whole showed in perf as a store-forwarding stall.

@@ -46,12 +46,12 @@ struct HugePageAllocator {
   friend bool operator!=(const HugePageAllocator&, const HugePageAllocator&) { return false; }
 };
 
-// An array a frame writes afresh (per cell or per face of the view) that the C library does not
-// keep from one frame to the next: in huge pages once 2 MB or more. Where a frame also allocates
-// blocks beyond malloc's mapping threshold (32 MB at most), the C library maps those anew and
-// trims its heaps, and the frame's other large arrays fault in again in every frame: 12,500
-// faults a frame for bench/swirl_scene.sh's million hexahedra, 400 to 1,900 with the sort's arrays
-// and the screen points in huge pages (docs/methods.md, "Fresh pages").
+// An array a frame (or a batch) writes afresh: the framebuffer, the fragment batches, and the
+// per-point, per-cell and per-face arrays of a view. In huge pages once 2 MB or more. Where a
+// frame allocates blocks beyond malloc's mapping threshold (32 MB at most), the C library maps
+// those anew and trims its heaps, and the frame's other large arrays fault in again every frame:
+// 12,500 faults a frame for bench/swirl_scene.sh's million hexahedra, 400 to 1,900 with the sort's
+// arrays and the screen points in huge pages (docs/methods.md, "Fresh pages").
 template <class T>
 using FrameBuffer = std::vector<T, HugePageAllocator<T>>;
 

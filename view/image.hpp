@@ -12,7 +12,7 @@ namespace cellproj {
 
 struct Image {
   int width = 0, height = 0;
-  std::vector<float, HugePageAllocator<float>> rgba;  // 4 floats per pixel, row-major from the top
+  FrameBuffer<float> rgba;  // 4 floats per pixel, row-major from the top
 
   Image() = default;
   Image(int w, int h) : width(w), height(h), rgba(static_cast<std::size_t>(w) * h * 4, 0.0f) {}
