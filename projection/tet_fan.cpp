@@ -51,7 +51,7 @@ template <int S, int Q, class Out>
     out.row(r, b, e);
     for (int a = 0; a < S; ++a) {
       p0[a] = f.spoke[a].c + f.spoke[a].gy * y, px[a] = f.spoke[a].gx;
-      for (int m = 0; m < Q; ++m) q0[a][m] = f.q[a][m].c + f.q[a][m].gy * y, qx[a][m] = f.q[a][m].gx;
+      for (int m = 0; m < Q; ++m) q0[a][m] = f.q[a].c[m] + f.q[a].gy[m] * y, qx[a][m] = f.q[a].gx[m];
     }
     for (int i = b; i <= e; i += 4) {
       const Lanes x = Lanes{0.0, 1.0, 2.0, 3.0} + static_cast<double>(i);
@@ -218,6 +218,69 @@ CELLPROJ_FAN_SEGMENTS(segments_3_orthographic, 3, false)
 CELLPROJ_FAN_SEGMENTS(segments_4_orthographic, 4, false)
 #undef CELLPROJ_FAN_SEGMENTS
 
+// fan_planes for an outline of S corners (compile-time: the four-at-a-time steps unroll and
+// stay in registers).
+template <int S>
+[[gnu::always_inline]] inline void planes_of(const ProjectedTet& pt, double x0, double y0, double turn,
+                                             int quantities, const double* thick,
+                                             const double (*hull)[kFanQuantities], FanPlanes& f) {
+  const double sign = turn > 0 ? 1.0 : -1.0;
+  f.sectors = S, f.quantities = quantities;
+  for (int k = 0; k < S; ++k) f.spoke[k] = edge_plane(pt.thick, pt.hull[k], x0, y0, sign);
+  // The outline's slopes and the triangles' areas (twice: the hull edge's function at the thick
+  // vertex), inverted four at a time (a division is the same bits in a lane as alone).
+  double gx[4] = {1, 1, 1, 1}, area[4] = {1, 1, 1, 1};
+  for (int a = 0; a < S; ++a) {
+    const ThickVertex &ha = pt.hull[a], &hb = pt.hull[(a + 1) % S];
+    f.outline[a] = edge_plane(ha, hb, x0, y0, sign);
+    gx[a] = f.outline[a].gx;
+    area[a] = sign * ((hb.x - ha.x) * (pt.thick.y - ha.y) - (hb.y - ha.y) * (pt.thick.x - ha.x));
+  }
+  const Lanes inv_gx = 1.0 / Lanes{gx[0], gx[1], gx[2], gx[3]},
+              inv_area = 1.0 / Lanes{area[0], area[1], area[2], area[3]};
+  const auto load = [](const double* v) {
+    Lanes l;
+    std::memcpy(&l, v, sizeof l);
+    return l;
+  };
+  const Lanes thick4 = load(thick);
+  for (int a = 0; a < S; ++a) {
+    // 0 for a flat edge (or one too near it for 1 / gx)
+    f.inv_gx[a] = std::abs(inv_gx[a]) < std::numeric_limits<double>::infinity() ? inv_gx[a] : 0.0;
+    QuantityPlanes& q = f.q[a];
+    // A triangle of no area to rounding (the thick vertex on the outline, or as good as) is left
+    // out: its weights' planes would be huge, and its neighbours reach across it.
+    if (!(area[a] > 1e-9 * std::abs(turn)) || !(area[a] < std::numeric_limits<double>::infinity())) {
+      f.left_out[a] = -1e300;  // never the largest
+      std::fill_n(q.c, quantities, 0.0), std::fill_n(q.gx, quantities, 0.0), std::fill_n(q.gy, quantities, 0.0);
+      continue;
+    }
+    f.left_out[a] = 0;
+    // Weights: thick vertex G_a / A, hull[a] -spoke[b] / A, hull[b] spoke[a] / A; the quantities'
+    // planes four at a time, then the fifth (as Lanes or as double: the same operations).
+    const Plane &g = f.outline[a], &sa = f.spoke[a], &sb = f.spoke[(a + 1) % S];
+    const double *qa_of = hull[a], *qb_of = hull[(a + 1) % S], ia = inv_area[a];
+    const auto planes = [&](auto qt, auto qa, auto qb, auto& c, auto& px, auto& py) {
+      c = g.c * qt - sb.c * qa + sa.c * qb, px = g.gx * qt - sb.gx * qa + sa.gx * qb;
+      py = g.gy * qt - sb.gy * qa + sa.gy * qb;
+    };
+    Lanes c, px, py;
+    planes(thick4 * ia, load(qa_of) * ia, load(qb_of) * ia, c, px, py);
+    std::memcpy(q.c, &c, sizeof c), std::memcpy(q.gx, &px, sizeof px), std::memcpy(q.gy, &py, sizeof py);
+    for (int m = 4; m < quantities; ++m)
+      planes(thick[m] * ia, qa_of[m] * ia, qb_of[m] * ia, q.c[m], q.gx[m], q.gy[m]);
+  }
+}
+
+#define CELLPROJ_FAN_PLANES(name, S)                                                                            \
+  CELLPROJ_AVX2_CLONES void name(const ProjectedTet& pt, double x0, double y0, double turn, int quantities,     \
+                                 const double* thick, const double (*hull)[kFanQuantities], FanPlanes& f) {     \
+    planes_of<S>(pt, x0, y0, turn, quantities, thick, hull, f);                                                 \
+  }
+CELLPROJ_FAN_PLANES(planes_3, 3)
+CELLPROJ_FAN_PLANES(planes_4, 4)
+#undef CELLPROJ_FAN_PLANES
+
 }  // namespace
 
 FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantities, const double* thick,
@@ -231,32 +294,7 @@ FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantitie
     turn += (a.x - o.x) * (b.y - o.y) - (a.y - o.y) * (b.x - o.x);
   }
   if (!(turn != 0.0)) return f;
-  const double sign = turn > 0 ? 1.0 : -1.0;
-  f.sectors = n, f.quantities = quantities;
-  for (int k = 0; k < n; ++k) f.spoke[k] = edge_plane(pt.thick, pt.hull[k], x0, y0, sign);
-  for (int a = 0; a < n; ++a) {
-    const int b = (a + 1) % n;
-    const Plane g = f.outline[a] = edge_plane(pt.hull[a], pt.hull[b], x0, y0, sign);
-    const double inv_gx = 1.0 / g.gx;  // 0 for a flat edge (or one too near it for 1 / gx)
-    f.inv_gx[a] = std::abs(inv_gx) < std::numeric_limits<double>::infinity() ? inv_gx : 0.0;
-    // Twice the triangle's area: its hull edge's function at the thick vertex.
-    const double area = sign * ((pt.hull[b].x - pt.hull[a].x) * (pt.thick.y - pt.hull[a].y) -
-                                (pt.hull[b].y - pt.hull[a].y) * (pt.thick.x - pt.hull[a].x));
-    // A triangle of no area to rounding (the thick vertex on the outline, or as good as) is left
-    // out: its weights' planes would be huge, and its neighbours reach across it.
-    if (!(area > 1e-9 * std::abs(turn)) || !(area < std::numeric_limits<double>::infinity())) {
-      f.left_out[a] = -1e300;  // never the largest
-      continue;
-    }
-    const double inv_area = 1.0 / area;
-    // Weights: thick vertex G_a / A, hull[a] -spoke[b] / A, hull[b] spoke[a] / A.
-    const Plane &sa = f.spoke[a], &sb = f.spoke[b];
-    for (int m = 0; m < quantities; ++m) {
-      const double qt = thick[m] * inv_area, qa = hull[a][m] * inv_area, qb = hull[b][m] * inv_area;
-      f.q[a][m] = {g.c * qt - sb.c * qa + sa.c * qb, g.gx * qt - sb.gx * qa + sa.gx * qb,
-                   g.gy * qt - sb.gy * qa + sa.gy * qb};
-    }
-  }
+  (n == 4 ? planes_4 : planes_3)(pt, x0, y0, turn, quantities, thick, hull, f);
   return f;
 }
 

@@ -20,26 +20,33 @@ constexpr int kFanQuantities = 5;  // the most per-pixel quantities interpolated
 
 // An affine function of the pixel centre, relative to the box's first centre: c + gx x + gy y.
 struct Plane {
-  double c = 0, gx = 0, gy = 0;
+  double c, gx, gy;
+};
+
+// A triangle's planes of the quantities, one array per coefficient (quantity m's plane is c[m] +
+// gx[m] x + gy[m] y): computed four quantities at a time.
+struct QuantityPlanes {
+  double c[kFanQuantities], gx[kFanQuantities], gy[kFanQuantities];
 };
 
 // The fan's edge functions and its quantities' planes per triangle ("sector" a: thick vertex,
-// hull[a], hull[a + 1]).
+// hull[a], hull[a + 1]). Only the first `sectors` triangles and `quantities` quantities are set (a
+// fan is made per tetrahedron: not zero-filling the rest is a tenth of fan_planes).
 struct FanPlanes {
   int sectors = 0, quantities = 0;
   // pt-linear: the four quantities opacity and colour become the pixel's opacity clamped to
   // [0, 1] and its colour clamped to >= 0 times it (premultiplied).
   bool linear_opacity = false;
-  Plane outline[4];         // edge hull[a] -> hull[a + 1], positive inside
-  double inv_gx[4] = {};    // 1 / outline[a].gx (0 for a flat edge: the row is all in or all out)
-  Plane spoke[4];           // edge thick -> hull[k], positive on triangle k's side
-  double left_out[4] = {};  // -1e300 for a triangle of no area to rounding (never chosen), else 0
-  Plane q[4][kFanQuantities];
+  Plane outline[4];      // edge hull[a] -> hull[a + 1], positive inside
+  double inv_gx[4];      // 1 / outline[a].gx (0 for a flat edge: the row is all in or all out)
+  Plane spoke[4];        // edge thick -> hull[k], positive on triangle k's side
+  double left_out[4];    // -1e300 for a triangle of no area to rounding (never chosen), else 0
+  QuantityPlanes q[4];   // zero for a triangle left out
 };
 
 // The planes of the fan of pt whose box's first pixel centre is (x0, y0); quantity m has value
 // thick[m] at the thick vertex and hull[k][m] at hull corner k. Empty (sectors = 0) if pt is, or
-// its outline has no area to rounding.
+// its outline has no area to rounding. `quantities` is 4 or 5 (thick and each hull row hold at least 4).
 FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantities, const double* thick,
                      const double (*hull)[kFanQuantities]);
 
