@@ -71,7 +71,11 @@ void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& ou
 // premultiplied colour as fan_pixels gives them. The same bits as composite/fragment.hpp's over()
 // of those values. Returns the number of fragments composited, those adding nothing (opacity and
 // colour 0, which leave the image as it was) not counted.
-std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width);
+// `lanes`: `quantities`, one pixel at a time with its four quantities in a vector, where the
+// processor has AVX2 (else `pixels`); `pixels`, four pixels at a time (portable). The same bits.
+enum class FanLanes { quantities, pixels };
+std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width,
+                                FanLanes lanes = FanLanes::quantities);
 
 // The exact rungs' fan (its planes the ends' quantities, affine_ends: front and back 1/z and s/z in
 // perspective, depth and scalar in orthographic): the pixels of rows [row0, row0 + rows) of its box
