@@ -56,8 +56,9 @@ void project_tet(const ScreenVertex v[4], bool perspective, ProjectedTet& out) {
   for (int i = 0; i < 4; ++i) {
     const auto& o = kOthers[i];
     const int parity = i % 2 ? -1 : 1;
-    sign[i] = parity * exact_sign(v[o[0]], v[o[1]], v[o[2]]);
-    sigma[i] = parity * area2(v[o[0]], v[o[1]], v[o[2]]);
+    double area;
+    sign[i] = parity * turn_sign(v[o[0]], v[o[1]], v[o[2]], area);
+    sigma[i] = parity * area;
     pos += sign[i] > 0, neg += sign[i] < 0;
   }
   out.hull_size = 0, out.edge_on = pos + neg < 4;

@@ -5,6 +5,7 @@
 // ray through the cell is longest; along the hull's edges the cell is zero thick. Within each
 // triangle the ray enters through one face and leaves through one face, so its ends' depth and
 // scalar interpolate exactly (perspective-correctly in perspective).
+#include <cmath>
 #include <cstdint>
 
 #include "view/screen.hpp"
@@ -33,6 +34,15 @@ inline double area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVe
 }
 // Which way (a, b, c) turns in the image: CGAL's exact 2D orientation (+1, -1, or 0 when collinear).
 int exact_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c);
+// exact_sign, with area2's value in `area`: the sign of the area where its rounding cannot reach
+// zero (Shewchuk's orient2d filter: error below (3 + 16 eps) eps (|l| + |r|) for the products l
+// and r, eps = 2^-53, while they are far from underflow), else exact_sign's.
+inline int turn_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, double& area) {
+  const double l = (b.x - a.x) * (c.y - a.y), r = (b.y - a.y) * (c.x - a.x), size = std::abs(l) + std::abs(r);
+  area = l - r;
+  if (std::abs(area) > 3.3306690738754727e-16 * size && size > 1e-250) return area > 0 ? 1 : -1;
+  return exact_sign(a, b, c);
+}
 // Depth and scalar at the image point with weights w over vertices `ids` of v, on the plane (or
 // line) through them: linear in orthographic projection, through 1/z in perspective.
 void interpolate(const ScreenVertex* v, const int* ids, const double* w, int n, bool perspective, double& z, double& s);

@@ -3,6 +3,8 @@
 // the view (no pixel skipped or composited twice); 1 and N threads give the same bits.
 #include <algorithm>
 #include <cmath>
+#include <cstring>
+#include <random>
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
@@ -64,6 +66,38 @@ TEST(ProjectedTet, ClassesFromProjectedFaceSigns) {
   EXPECT_FALSE(project_tet(up, false).edge_on || project_tet(cross, false).edge_on);
   const ScreenVertex line[4] = {{0, 0, 5, 0}, {1, 1, 4, 0}, {2, 2, 3, 0}, {3, 3, 2, 1}};
   EXPECT_EQ(project_tet(line, false).hull_size, 0);
+}
+
+TEST(ProjectedTet, TurnSignIsTheExactOrientation) {
+  // turn_sign's filtered sign against CGAL's exact one, and its area against area2, bit for bit:
+  // random triples, then nearly collinear ones (a third point on the line through two, moved by an
+  // ulp or a few), at coordinates from 1e-300 to 1e300 (underflow and huge coordinates).
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  int filtered = 0, near_line = 0;
+  for (double scale : {1e-300, 1e-160, 1e-3, 1.0, 1e6, 1e150, 1e300})
+    for (int t = 0; t < 2000; ++t) {
+      const ScreenVertex a{scale * u(rng), scale * u(rng), 1, 0}, b{scale * u(rng), scale * u(rng), 1, 0};
+      ScreenVertex c{scale * u(rng), scale * u(rng), 1, 0};
+      if (t % 2) {  // on the line a-b to rounding, then nudged by up to 3 ulps
+        const double s = u(rng);
+        c.x = a.x + s * (b.x - a.x), c.y = a.y + s * (b.y - a.y);
+        for (int k = t % 7; k > 3; --k) c.y = std::nextafter(c.y, t % 4 ? 1e308 : -1e308);
+        ++near_line;
+      }
+      double area = 0;
+      const int sign = turn_sign(a, b, c, area);
+      ASSERT_EQ(sign, exact_sign(a, b, c)) << "scale " << scale << " triple " << t;
+      const double want = area2(a, b, c);
+      ASSERT_TRUE(std::memcmp(&area, &want, sizeof area) == 0 || (std::isnan(area) && std::isnan(want)));
+      filtered += std::abs(area) > 0;
+    }
+  EXPECT_GT(near_line, 5000);
+  EXPECT_GT(filtered, 7000);
+  const ScreenVertex p{0, 0, 1, 0}, q{1, 1, 1, 0}, r{2, 2, 1, 0};  // exactly collinear
+  double area = 1;
+  EXPECT_EQ(turn_sign(p, q, r, area), 0);
+  EXPECT_EQ(area, 0.0);
 }
 
 TEST(Projection, BreakpointsEqualExactOrthographicAndPerspective) {
