@@ -45,6 +45,34 @@ bool holds_centre(const glm::dvec2* h, int m, double px, double py) {
   return true;
 }
 
+// Whether the centre (px, py) lies inside one of the triangles of four points (a tetrahedron's
+// image is the union of its faces': any three of its corners) by a margin past any rounding: its
+// distance to each of that triangle's edges over 3e-12 times the points' box size D (|x| + |y|
+// extents). Then its distance to each edge of the hull, which holds the triangle, is too, and
+// holds_centre's test passes (an edge function there is distance times length, and its margin
+// 1e-12 S (S + |ex| + |ey|) is at most 2e-12 D S, S the edge's |dx| + |dy| <= sqrt 2 times its
+// length). Cheaper than the hull: the usual answer for a tetrahedron.
+bool quad_holds_centre(const glm::dvec2* p, double px, double py) {
+  const double lo_x = std::min({p[0].x, p[1].x, p[2].x, p[3].x}), hi_x = std::max({p[0].x, p[1].x, p[2].x, p[3].x}),
+               lo_y = std::min({p[0].y, p[1].y, p[2].y, p[3].y}), hi_y = std::max({p[0].y, p[1].y, p[2].y, p[3].y});
+  const double margin = 1e-11 * ((hi_x - lo_x) + (hi_y - lo_y));
+  static constexpr int kFaces[4][3] = {{0, 1, 2}, {0, 1, 3}, {0, 2, 3}, {1, 2, 3}};
+  for (const auto& f : kFaces) {
+    const glm::dvec2 &a = p[f[0]], &b = p[f[1]], &c = p[f[2]];
+    const double turn = cross(a, b, c);
+    if (!(turn != 0.0)) continue;
+    const double sign = turn > 0 ? 1.0 : -1.0;
+    // Edge u -> v: its function at the centre, signed to be positive inside, against the margin
+    // times the edge's |dx| + |dy| (>= its length).
+    const auto inside = [&](const glm::dvec2& u, const glm::dvec2& v) {
+      const double dx = v.x - u.x, dy = v.y - u.y;
+      return sign * (dx * (py - u.y) - dy * (px - u.x)) > margin * (std::abs(dx) + std::abs(dy));
+    };
+    if (inside(a, b) && inside(b, c) && inside(c, a)) return true;
+  }
+  return false;
+}
+
 }  // namespace
 
 int covered_pixels(const ScreenVertex* const* v, int n, int width, int height, int limit) {
@@ -57,12 +85,13 @@ int covered_pixels(const ScreenVertex* const* v, int n, int width, int height, i
   glm::dvec2 mean(0.0);
   for (int k = 0; k < n; ++k) mean += p[k];
   mean /= static_cast<double>(n);
-  const int m = convex_hull(p, n, h);
   // Most cells hold the centre nearest their vertices' mean: with a limit of 1 (the default rule,
   // "covers no centre") that answers without rasterizing. (NaN or far off the image: not tried.)
   const double i = std::floor(mean.x), j = std::floor(mean.y);
-  if (limit <= 1 && m >= 3 && i >= 0 && i < width && j >= 0 && j < height && holds_centre(h, m, i + 0.5, j + 0.5))
-    return 1;
+  const bool try_mean = limit <= 1 && i >= 0 && i < width && j >= 0 && j < height;
+  if (try_mean && n == 4 && quad_holds_centre(p, i + 0.5, j + 0.5)) return 1;
+  const int m = convex_hull(p, n, h);
+  if (try_mean && m >= 3 && holds_centre(h, m, i + 0.5, j + 0.5)) return 1;
   // A hull whose area, less its perimeter, is over the limit covers more centres than that: any
   // convex region holds more than area - perimeter / 2 lattice points (Nosarzewska). The bound has
   // a factor 2 to spare, so the edge lengths need no hypot (an overflow to inf only means counting).
