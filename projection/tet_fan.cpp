@@ -237,9 +237,12 @@ __attribute__((target("avx2"))) std::int64_t over_pixels(const FanPlanes& f, Ima
   const __m256d spoke_c = _mm256_load_pd(pc), spoke_gy = _mm256_load_pd(pgy), spoke_gx = _mm256_load_pd(pgx),
                 left_out = _mm256_load_pd(left), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0),
                 negate = _mm256_set1_pd(-0.0);
+  // The quantities' planes as (r, g, b, opacity), the image's order.
   __m256d qx[S], qc[S], qgy[S];
   for (int a = 0; a < S; ++a)
-    qx[a] = _mm256_loadu_pd(f.q[a].gx), qc[a] = _mm256_loadu_pd(f.q[a].c), qgy[a] = _mm256_loadu_pd(f.q[a].gy);
+    qx[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].gx), 0x39),
+    qc[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].c), 0x39),
+    qgy[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].gy), 0x39);
   std::int64_t added = 0;
   for (int r = 0; r < rows; ++r) {
     const double y = row0 + r;
@@ -249,8 +252,9 @@ __attribute__((target("avx2"))) std::int64_t over_pixels(const FanPlanes& f, Ima
     const __m256d yy = _mm256_set1_pd(y), spoke0 = _mm256_add_pd(spoke_c, _mm256_mul_pd(spoke_gy, yy));
     __m256d q0[S];
     for (int a = 0; a < S; ++a) q0[a] = _mm256_add_pd(qc[a], _mm256_mul_pd(qgy[a], yy));
-    for (int i = b; i <= e; ++i) {
-      const __m256d x = _mm256_set1_pd(static_cast<double>(i)), spoke = _mm256_add_pd(spoke0, _mm256_mul_pd(spoke_gx, x));
+    __m256d x = _mm256_set1_pd(static_cast<double>(b));
+    for (int i = b; i <= e; ++i, x = _mm256_add_pd(x, one)) {  // (integers: x is exactly i)
+      const __m256d spoke = _mm256_add_pd(spoke0, _mm256_mul_pd(spoke_gx, x));
       // wedge a: min(spoke[a], -spoke[a + 1]) + left_out[a]
       const __m256d next = S == 4 ? _mm256_permute4x64_pd(spoke, 0x39) : _mm256_permute4x64_pd(spoke, 0xC9);
       const __m256d w = _mm256_add_pd(_mm256_min_pd(spoke, _mm256_xor_pd(next, negate)), left_out);
@@ -265,9 +269,9 @@ __attribute__((target("avx2"))) std::int64_t over_pixels(const FanPlanes& f, Ima
         for (int k = 0; k < S; ++k)
           if (wa[k] > best) best = wa[k], a = k;
       }
-      const __m256d v = a < 0 ? zero : _mm256_add_pd(q0[a], _mm256_mul_pd(qx[a], x));  // (opacity, r, g, b)
-      // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it; as (r, g, b, a)
-      const __m256d u = _mm256_max_pd(_mm256_permute4x64_pd(v, 0x39), zero);
+      const __m256d v = a < 0 ? zero : _mm256_add_pd(q0[a], _mm256_mul_pd(qx[a], x));  // (r, g, b, opacity)
+      // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
+      const __m256d u = _mm256_max_pd(v, zero);
       const __m256d alpha = _mm256_min_pd(_mm256_permute4x64_pd(u, 0xFF), one);
       const __m256d src = _mm256_blend_pd(_mm256_mul_pd(u, alpha), alpha, 0x8);
       added += _mm256_movemask_pd(_mm256_cmp_pd(src, zero, _CMP_NEQ_UQ)) != 0;
