@@ -9,6 +9,7 @@
 #include <tbb/blocked_range.h>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
 
 #include "base/error.hpp"
 #include "base/timing.hpp"
@@ -279,13 +280,46 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   const ScreenPoints screen = project_points(points, scalar, rays);
   st.phase_seconds.emplace_back("project points", seconds_since(t));
 
+  st.small_cells = resolve(options.splat, options.backend);
+  st.splat_threshold = threshold_or(options.splat, kDefaultPixelThreshold);
+  const bool software = !is_opengl(options.backend);
+  const bool by_tiles = options.compositing == Compositing::tiles && st.small_cells != SmallCells::splat;
+  // The passes over the cells that need no order: which are small, which rows each reaches.
+  std::vector<std::uint8_t> small;
+  std::vector<RowRange> reach;
+  const MeshView* passed = nullptr;  // the cells they ran on
+  double small_seconds = 0;
+  const auto cell_passes = [&](const MeshView& of) {
+    const auto t_small = std::chrono::steady_clock::now();
+    SplatCounters counted;
+    small = small_cells(of, screen, rays, st.splat_threshold, counted);
+    st.splat.small_cells = counted.small_cells, st.splat.covering_no_pixel = counted.covering_no_pixel;
+    if (by_tiles) reach = cell_rows(of, screen, rays);
+    small_seconds = seconds_since(t_small), passed = &of;
+  };
+
   t = std::chrono::steady_clock::now();
   SortView sort_view{camera, width, height};
   sort_view.gaps = options.gaps;
-  ViewOrder view = sorter_.sort(options.sort, sort_view);
+  ViewOrder view;
+  std::vector<std::int64_t> visible;  // the order without the transparent cells (cull_transparent)
+  double sort_seconds = 0;
+  const auto sort = [&] {
+    view = sorter_.sort(options.sort, sort_view);
+    if (options.cull_transparent) visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
+    sort_seconds = seconds_since(t);
+  };
+  // Where the cells sorted are those of the base mesh whatever the view (every mode but problem,
+  // which splits cells per view), the passes run beside the sort, whose serial part (the
+  // topological order) would leave the other threads idle.
+  if (software && sorter_.mode() != Tetrahedralize::problem) {
+    const MeshView& base = sorter_.base().cells;
+    tbb::parallel_invoke(sort, [&] { cell_passes(base); });
+  } else {
+    sort();
+  }
   const MeshView& cells = view.mesh->cells;
-  const std::vector<std::int64_t> visible =
-      options.cull_transparent ? without_transparent(view.sorted.order, cells, scalar, tf) : std::vector<std::int64_t>{};
+  if (software && passed != &cells) cell_passes(cells);  // (after the sort; or the view split cells after all)
   const std::vector<std::int64_t>& order = options.cull_transparent ? visible : view.sorted.order;
   st.culled_transparent = static_cast<std::int64_t>(view.sorted.order.size() - order.size());
   st.tetrahedralize = sorter_.mode();
@@ -294,10 +328,8 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   st.problem_cells = view.problem_cells;
   st.cells_split = view.mesh->split.cells_split;
   st.cycle_splits = view.cycle_splits;
-  st.phase_seconds.emplace_back("sort", seconds_since(t));
-
-  st.small_cells = resolve(options.splat, options.backend);
-  st.splat_threshold = threshold_or(options.splat, kDefaultPixelThreshold);
+  st.phase_seconds.emplace_back("sort", sort_seconds);
+  if (software) st.phase_seconds.emplace_back("small cells", small_seconds);  // (beside the sort, or after it)
 
   const MethodTraits& method = traits(options.method);
   std::optional<OpacityTable> table;
@@ -313,9 +345,6 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     image = draw_with_opengl(project, cells, order, table ? &*table : nullptr, width, height, options, st);
   } else {
     image = Image(width, height);
-    const auto t_small = std::chrono::steady_clock::now();
-    const std::vector<std::uint8_t> small = small_cells(cells, screen, rays, st.splat_threshold, st.splat);
-    st.phase_seconds.emplace_back("small cells", seconds_since(t_small));
     ProjectionSplats splats;
     if (st.small_cells == SmallCells::splat && st.splat.small_cells > 0) {  // no stencil without splats
       const auto t_tracer = std::chrono::steady_clock::now();
@@ -332,8 +361,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     if (options.early_termination) opaque.emplace(width, height);
     const OrderedCells source{project, cells, order, small, st.small_cells, splats, opaque ? &*opaque : nullptr};
     FrameCounters counters;
-    if (options.compositing == Compositing::tiles && st.small_cells != SmallCells::splat) {
-      const std::vector<RowRange> reach = cell_rows(cells, screen, rays);
+    if (by_tiles) {
       const int rows = options.tile_rows > 0 ? options.tile_rows
                                              : tile_rows(height, tbb::this_task_arena::max_concurrency());
       std::size_t visits = 0;
