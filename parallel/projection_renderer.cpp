@@ -67,28 +67,25 @@ std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& sc
   return area;
 }
 
-// The image rows each cell may draw on: those whose centres its vertices' image box holds; one
+// The image rows a cell may draw on: those whose centres its vertices' image box holds; one
 // more each way for a cell reaching behind an orthographic eye plane (ray cast over that wider
 // box), every row for one reaching behind a perspective eye (ray cast over the whole image).
-std::vector<RowRange> cell_rows(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
-  std::vector<RowRange> rows(static_cast<std::size_t>(cells.n_cells));
+RowRange cell_rows(const ImageExtent& e, const PixelRays& rays) {
   const int h = rays.height();
-  for_each_extent(cells, screen, [&](std::int64_t c, const ImageExtent& e) {
-    const double lo = e.behind ? std::floor(e.y0 - 0.5) : std::ceil(e.y0 - 0.5),
-                 hi = e.behind ? std::ceil(e.y1 - 0.5) : std::floor(e.y1 - 0.5);
-    rows[static_cast<std::size_t>(c)] =
-        (e.behind && rays.perspective()) || e.nan
-            ? RowRange{0, h}
-            : RowRange{int(std::clamp(lo, 0.0, double(h))), int(std::clamp(hi + 1.0, 0.0, double(h)))};
-  });
-  return rows;
+  const double lo = e.behind ? std::floor(e.y0 - 0.5) : std::ceil(e.y0 - 0.5),
+               hi = e.behind ? std::ceil(e.y1 - 0.5) : std::floor(e.y1 - 0.5);
+  return (e.behind && rays.perspective()) || e.nan
+             ? RowRange{0, h}
+             : RowRange{int(std::clamp(lo, 0.0, double(h))), int(std::clamp(hi + 1.0, 0.0, double(h)))};
 }
 
 // Which cells of the frame are small: their projection covers fewer than `threshold` pixel
-// centres (MWSC section 6, Williams et al.'s software scan conversion), counted.
+// centres (MWSC section 6, Williams et al.'s software scan conversion), counted; with `rows`, also
+// the rows each cell reaches (cell_rows), in the same pass over the cells' vertices.
 std::vector<std::uint8_t> small_cells(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays,
-                                      double threshold, SplatCounters& counters) {
+                                      double threshold, SplatCounters& counters, std::vector<RowRange>* rows) {
   std::vector<std::uint8_t> small(static_cast<std::size_t>(cells.n_cells), 0);
+  if (rows) rows->resize(static_cast<std::size_t>(cells.n_cells));
   const int limit = static_cast<int>(std::min(std::ceil(threshold), 1e9));
   std::atomic<std::int64_t> n_small{0}, none{0};
   tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096),
@@ -99,6 +96,7 @@ std::vector<std::uint8_t> small_cells(const MeshView& cells, const ScreenPoints&
                         const ScreenVertex* v[8];
                         const int n = std::min(cells.cell_size(c), 8);
                         for (int k = 0; k < n; ++k) v[k] = &screen.v[static_cast<std::size_t>(id[k])];
+                        if (rows) (*rows)[static_cast<std::size_t>(c)] = cell_rows(image_extent(cells, c, screen), rays);
                         const int covered = covered_pixels(v, n, rays.width(), rays.height(), std::max(limit, 1));
                         if (covered < 0) continue;  // reaching behind the eye: projected (ray cast)
                         empty += covered == 0;
@@ -292,9 +290,8 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   const auto cell_passes = [&](const MeshView& of) {
     const auto t_small = std::chrono::steady_clock::now();
     SplatCounters counted;
-    small = small_cells(of, screen, rays, st.splat_threshold, counted);
+    small = small_cells(of, screen, rays, st.splat_threshold, counted, by_tiles ? &reach : nullptr);
     st.splat.small_cells = counted.small_cells, st.splat.covering_no_pixel = counted.covering_no_pixel;
-    if (by_tiles) reach = cell_rows(of, screen, rays);
     small_seconds = seconds_since(t_small), passed = &of;
   };
 
