@@ -295,16 +295,16 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     small_seconds = seconds_since(t_small), passed = &of;
   };
 
-  t = std::chrono::steady_clock::now();
   SortView sort_view{camera, width, height};
   sort_view.gaps = options.gaps;
   ViewOrder view;
   std::vector<std::int64_t> visible;  // the order without the transparent cells (cull_transparent)
   double sort_seconds = 0;
   const auto sort = [&] {
+    const auto t_sort = std::chrono::steady_clock::now();  // (on one thread the passes may run first)
     view = sorter_.sort(options.sort, sort_view);
     if (options.cull_transparent) visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
-    sort_seconds = seconds_since(t);
+    sort_seconds = seconds_since(t_sort);
   };
   // Where the cells sorted are those of the base mesh whatever the view (every mode but problem,
   // which splits cells per view), the passes run beside the sort, whose serial part (the
