@@ -6,10 +6,7 @@
 #include <limits>
 
 #include "base/simd.hpp"
-
-#if CELLPROJ_AVX2_DISPATCH
-#include <immintrin.h>
-#endif
+#include "projection/fan_row.hpp"
 
 namespace cellproj {
 namespace {
@@ -33,23 +30,6 @@ typedef long long Counts __attribute__((vector_size(32)));  // a comparison of L
 // S triangles, Q quantities (compile-time, so the loops unroll). For each row r, out.row(r, b, e)
 // with its pixels b .. e (none: e < b), then out.lanes(i, v) for i = b, b + 4, ... <= e with the
 // quantities v of pixels i .. i + 3 (those past e are the planes' values beyond the outline).
-// The pixels b .. e of row y (from the box's first) inside every outline edge: x >= its crossing
-// where the edge's function rises along the row, x <= where it falls, all or none where it is
-// flat. False if there are none.
-template <int S>
-[[gnu::always_inline]] inline bool row_span(const FanPlanes& f, double y, int width, int& b, int& e) {
-  double lo = 0, hi = width - 1;
-  for (int a = 0; a < S; ++a) {
-    const double g = f.outline[a].c + f.outline[a].gy * y, inv = f.inv_gx[a], cross = -g * inv;
-    lo = inv > 0 && cross > lo ? cross : lo;
-    hi = inv < 0 && cross < hi ? cross : hi;
-    hi = inv == 0 && g < 0 ? -1.0 : hi;
-  }
-  if (!(lo <= hi)) return false;  // (NaN: none)
-  b = static_cast<int>(std::ceil(lo)), e = static_cast<int>(std::floor(hi));
-  return true;
-}
-
 template <int S, int Q, class Out>
 [[gnu::always_inline]] inline void fan_rows(const FanPlanes& f, int row0, int rows, int width, Out& out) {
   for (int r = 0; r < rows; ++r) {
@@ -218,71 +198,6 @@ CELLPROJ_FAN_OVER(over_3, 3)
 CELLPROJ_FAN_OVER(over_4, 4)
 #undef CELLPROJ_FAN_OVER
 
-#if CELLPROJ_AVX2_DISPATCH
-// pt-linear's fan over the image one pixel at a time, its four quantities (opacity, colour) in
-// the lanes: a row's set-up is a vector per triangle, and no lane is spent past the row's end
-// (rows of a small tetrahedron are a few pixels). The same operations on each value as
-// CompositeOver, so the same bits: the triangle is the one whose wedge value is positive (inside
-// the outline only one is, but on a spoke or at the thick vertex to rounding), else fan_rows' rule
-// (the first largest).
-template <int S>
-__attribute__((target("avx2"))) std::int64_t over_pixels(const FanPlanes& f, Image& image, int i0, int j0,
-                                                         int row0, int rows, int width) {
-  alignas(32) double pc[4], pgy[4], pgx[4], left[4];
-  for (int k = 0; k < 4; ++k) {
-    const bool in = k < S;  // a fourth lane for three triangles: never chosen
-    pc[k] = in ? f.spoke[k].c : 0.0, pgy[k] = in ? f.spoke[k].gy : 0.0, pgx[k] = in ? f.spoke[k].gx : 0.0;
-    left[k] = in ? f.left_out[k] : -std::numeric_limits<double>::infinity();
-  }
-  const __m256d spoke_c = _mm256_load_pd(pc), spoke_gy = _mm256_load_pd(pgy), spoke_gx = _mm256_load_pd(pgx),
-                left_out = _mm256_load_pd(left), zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0),
-                negate = _mm256_set1_pd(-0.0);
-  // The quantities' planes as (r, g, b, opacity), the image's order.
-  __m256d qx[S], qc[S], qgy[S];
-  for (int a = 0; a < S; ++a)
-    qx[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].gx), 0x39),
-    qc[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].c), 0x39),
-    qgy[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].gy), 0x39);
-  std::int64_t added = 0;
-  for (int r = 0; r < rows; ++r) {
-    const double y = row0 + r;
-    int b, e;
-    if (!row_span<S>(f, y, width, b, e)) continue;
-    float* line = image.pixel(i0, j0 + row0 + r);
-    const __m256d yy = _mm256_set1_pd(y), spoke0 = _mm256_add_pd(spoke_c, _mm256_mul_pd(spoke_gy, yy));
-    __m256d q0[S];
-    for (int a = 0; a < S; ++a) q0[a] = _mm256_add_pd(qc[a], _mm256_mul_pd(qgy[a], yy));
-    __m256d x = _mm256_set1_pd(static_cast<double>(b));
-    for (int i = b; i <= e; ++i, x = _mm256_add_pd(x, one)) {  // (integers: x is exactly i)
-      const __m256d spoke = _mm256_add_pd(spoke0, _mm256_mul_pd(spoke_gx, x));
-      // wedge a: min(spoke[a], -spoke[a + 1]) + left_out[a]
-      const __m256d next = S == 4 ? _mm256_permute4x64_pd(spoke, 0x39) : _mm256_permute4x64_pd(spoke, 0xC9);
-      const __m256d w = _mm256_add_pd(_mm256_min_pd(spoke, _mm256_xor_pd(next, negate)), left_out);
-      const int inside = _mm256_movemask_pd(_mm256_cmp_pd(w, zero, _CMP_GT_OQ));
-      int a = -1;
-      if (inside != 0 && (inside & (inside - 1)) == 0) {
-        a = __builtin_ctz(static_cast<unsigned>(inside));
-      } else {
-        alignas(32) double wa[4];
-        _mm256_store_pd(wa, w);
-        double best = -std::numeric_limits<double>::infinity();
-        for (int k = 0; k < S; ++k)
-          if (wa[k] > best) best = wa[k], a = k;
-      }
-      const __m256d v = a < 0 ? zero : _mm256_add_pd(q0[a], _mm256_mul_pd(qx[a], x));  // (r, g, b, opacity)
-      // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
-      const __m256d u = _mm256_max_pd(v, zero);
-      const __m256d alpha = _mm256_min_pd(_mm256_permute4x64_pd(u, 0xFF), one);
-      const __m256d src = _mm256_blend_pd(_mm256_mul_pd(u, alpha), alpha, 0x8);
-      added += _mm256_movemask_pd(_mm256_cmp_pd(src, zero, _CMP_NEQ_UQ)) != 0;
-      const __m128 s = _mm256_cvtpd_ps(src), t = _mm_sub_ps(_mm_set1_ps(1.0f), _mm_shuffle_ps(s, s, 0xFF));
-      float* dst = line + 4 * i;
-      _mm_storeu_ps(dst, _mm_add_ps(s, _mm_mul_ps(t, _mm_loadu_ps(dst))));
-    }
-  }
-  return added;
-}
-#endif
 
 using SegmentsFn = void (*)(const FanPlanes&, const FanSegments&, SegmentBatch&);
 #define CELLPROJ_FAN_SEGMENTS(name, S, perspective)                                            \
@@ -388,9 +303,12 @@ void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& ou
   fn(f, row0, rows, width, out.stride, out.size, out.first.data(), out.last.data(), out.q.data());
 }
 
-void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out) {
+void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out, FanLanes lanes) {
   // Room for every pixel of the rows, and three more for the last lanes' stores.
   out.reserve(out.n + static_cast<std::size_t>(at.rows) * static_cast<std::size_t>(at.width) + 3);
+#if CELLPROJ_AVX2_DISPATCH
+  if (lanes == FanLanes::quantities && __builtin_cpu_supports("avx2")) return fan_segments_avx2(f, at, out);
+#endif
   const bool four = f.sectors == 4;
   const SegmentsFn fn = at.rays.perspective() ? (four ? segments_4_perspective : segments_3_perspective)
                                               : (four ? segments_4_orthographic : segments_3_orthographic);
@@ -401,7 +319,7 @@ std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0
                                 FanLanes lanes) {
 #if CELLPROJ_AVX2_DISPATCH
   if (lanes == FanLanes::quantities && __builtin_cpu_supports("avx2"))
-    return (f.sectors == 4 ? over_pixels<4> : over_pixels<3>)(f, image, i0, j0, row0, rows, width);
+    return fan_over_avx2(f, image, i0, j0, row0, rows, width);
 #endif
   return (f.sectors == 4 ? over_4 : over_3)(f, image, i0, j0, row0, rows, width);
 }

@@ -88,6 +88,8 @@ struct FanSegments {
   double smin, smax;
   LinearPiece piece;
 };
-void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out);
+// `lanes` as fan_composite_over's (the same bits either way).
+void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out,
+                  FanLanes lanes = FanLanes::quantities);
 
 }  // namespace cellproj

@@ -216,7 +216,11 @@ TEST(TetFan, ThickVertexOnOrBesideTheOutlineKeepsThePixels) {
   expect_fan_matches_triangles(beside, corner_values(rng));
 }
 
-TEST(TetFan, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
+// Both kernels of the fan (FanLanes): four pixels at a time, and one pixel with its quantities in
+// the lanes (AVX2 only; elsewhere the first again).
+class FanKernels : public testing::TestWithParam<FanLanes> {};
+
+TEST_P(FanKernels, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
   // The exact rungs' fan appends its pixels' segments to the batch with the lengths, clamped end
   // scalars and extinctions segment_ends would compute from the stored quantities: the same bits,
   // in perspective and orthographic projection, from the box's first row or a tile's middle one.
@@ -261,7 +265,7 @@ TEST(TetFan, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
         }
       segment_ends(want, rays, 0.25, 0.6, piece);
       got.push(-1, -1, 0, 0, 0, 0);  // appended after what the batch holds
-      fan_segments(planes, {rays, box.i0, box.j0, row0, rows, bw, 0.25, 0.6, piece}, got);
+      fan_segments(planes, {rays, box.i0, box.j0, row0, rows, bw, 0.25, 0.6, piece}, got, GetParam());
       ASSERT_EQ(got.n, want.n + 1) << "tetrahedron " << t;
       for (std::size_t k = 0; k < want.n; ++k) {
         ASSERT_EQ(got.i[k + 1], want.i[k]);
@@ -278,9 +282,7 @@ TEST(TetFan, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
   EXPECT_GT(segments, 5000);
 }
 
-class FanOver : public testing::TestWithParam<FanLanes> {};
-
-TEST_P(FanOver, CompositedOverTheImageAsItsStoredPixelsAre) {
+TEST_P(FanKernels, CompositedOverTheImageAsItsStoredPixelsAre) {
   // pt-linear's fan composited in its lanes (fan_composite_over, either kernel) against fan_pixels'
   // stored opacity and premultiplied colour composited one by one with over(): the same image
   // bits, the same count, nothing outside the outline touched; opacities past [0, 1], negative
@@ -338,7 +340,7 @@ TEST_P(FanOver, CompositedOverTheImageAsItsStoredPixelsAre) {
   EXPECT_GT(composited, 3000);
 }
 
-INSTANTIATE_TEST_SUITE_P(TetFan, FanOver, testing::Values(FanLanes::quantities, FanLanes::pixels),
+INSTANTIATE_TEST_SUITE_P(TetFan, FanKernels, testing::Values(FanLanes::quantities, FanLanes::pixels),
                          [](const testing::TestParamInfo<FanLanes>& p) {
                            return p.param == FanLanes::quantities ? "QuantitiesInLanes" : "PixelsInLanes";
                          });

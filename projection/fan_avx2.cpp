@@ -1,0 +1,158 @@
+// A small tetrahedron's fan one pixel at a time, the pixel's four quantities in one AVX2 vector
+// (projection/tet_fan.hpp's FanLanes::quantities): a row's set-up is one vector per triangle, and
+// no lane is spent past a row's end (a row of a small tetrahedron is a few pixels, where four
+// pixels at a time spend most lanes and set-up on nothing). Each value gets the same operations
+// as in tet_fan.cpp's four-pixel kernels, so the same bits.
+#include <limits>
+
+#include "projection/fan_row.hpp"
+
+#if CELLPROJ_AVX2_DISPATCH
+#include <immintrin.h>
+
+namespace cellproj {
+namespace {
+
+#define CELLPROJ_AVX2 __attribute__((target("avx2")))
+#define CELLPROJ_AVX2_INLINE __attribute__((target("avx2"), always_inline)) inline
+
+// A fan's per-tetrahedron vectors: its spokes' planes (lane k: spoke k) and triangles left out, and
+// each triangle's quantity planes with their lanes in `Order` (a _mm256_permute4x64_pd control).
+template <int S, int Order>
+struct FanVectors {
+  __m256d spoke_c, spoke_gy, spoke_gx, left_out;
+  __m256d qc[S], qgy[S], qx[S];
+  CELLPROJ_AVX2_INLINE explicit FanVectors(const FanPlanes& f) {
+    alignas(32) double pc[4], pgy[4], pgx[4], left[4];
+    for (int k = 0; k < 4; ++k) {
+      const bool in = k < S;  // a fourth lane for three triangles: never chosen
+      pc[k] = in ? f.spoke[k].c : 0.0, pgy[k] = in ? f.spoke[k].gy : 0.0, pgx[k] = in ? f.spoke[k].gx : 0.0;
+      left[k] = in ? f.left_out[k] : -std::numeric_limits<double>::infinity();
+    }
+    spoke_c = _mm256_load_pd(pc), spoke_gy = _mm256_load_pd(pgy), spoke_gx = _mm256_load_pd(pgx);
+    left_out = _mm256_load_pd(left);
+    for (int a = 0; a < S; ++a)
+      qc[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].c), Order),
+      qgy[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].gy), Order),
+      qx[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].gx), Order);
+  }
+};
+
+// A row's values at its pixel 0: the spokes' and each triangle's quantities'.
+template <int S, int Order>
+struct FanRow {
+  __m256d spoke0, q0[S];
+  CELLPROJ_AVX2_INLINE FanRow(const FanVectors<S, Order>& v, double y) {
+    const __m256d yy = _mm256_set1_pd(y);
+    spoke0 = _mm256_add_pd(v.spoke_c, _mm256_mul_pd(v.spoke_gy, yy));
+    for (int a = 0; a < S; ++a) q0[a] = _mm256_add_pd(v.qc[a], _mm256_mul_pd(v.qgy[a], yy));
+  }
+  // The quantities at x (all lanes x): those of the triangle whose wedge holds the pixel. Its
+  // wedge value min(spoke[a], -spoke[a + 1]) + left_out[a] is the one positive inside the outline;
+  // where none or two are (on a spoke, at the thick vertex, to rounding), fan_rows' rule: the first
+  // largest. Zero if none is taken (NaN), as fan_rows.
+  CELLPROJ_AVX2_INLINE __m256d at(const FanVectors<S, Order>& v, __m256d x) const {
+    const __m256d zero = _mm256_setzero_pd();
+    const __m256d spoke = _mm256_add_pd(spoke0, _mm256_mul_pd(v.spoke_gx, x));
+    const __m256d next = S == 4 ? _mm256_permute4x64_pd(spoke, 0x39) : _mm256_permute4x64_pd(spoke, 0xC9);
+    const __m256d w =
+        _mm256_add_pd(_mm256_min_pd(spoke, _mm256_xor_pd(next, _mm256_set1_pd(-0.0))), v.left_out);
+    const int inside = _mm256_movemask_pd(_mm256_cmp_pd(w, zero, _CMP_GT_OQ));
+    int a = -1;
+    if (inside != 0 && (inside & (inside - 1)) == 0) {
+      a = __builtin_ctz(static_cast<unsigned>(inside));
+    } else {
+      alignas(32) double wa[4];
+      _mm256_store_pd(wa, w);
+      double best = -std::numeric_limits<double>::infinity();
+      for (int k = 0; k < S; ++k)
+        if (wa[k] > best) best = wa[k], a = k;
+    }
+    return a < 0 ? zero : _mm256_add_pd(q0[a], _mm256_mul_pd(v.qx[a], x));
+  }
+};
+
+// pt-linear: opacity and colour, finished and composited "over" as CompositeOver does; the planes'
+// lanes as (r, g, b, opacity), the image's order.
+template <int S>
+CELLPROJ_AVX2 std::int64_t over_pixels(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows,
+                                       int width) {
+  const FanVectors<S, 0x39> fan(f);
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  std::int64_t added = 0;
+  for (int r = 0; r < rows; ++r) {
+    const double y = row0 + r;
+    int b, e;
+    if (!row_span<S>(f, y, width, b, e)) continue;
+    float* line = image.pixel(i0, j0 + row0 + r);
+    const FanRow<S, 0x39> row(fan, y);
+    __m256d x = _mm256_set1_pd(static_cast<double>(b));
+    for (int i = b; i <= e; ++i, x = _mm256_add_pd(x, one)) {  // (integers: x is exactly i)
+      // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
+      const __m256d u = _mm256_max_pd(row.at(fan, x), zero);
+      const __m256d alpha = _mm256_min_pd(_mm256_permute4x64_pd(u, 0xFF), one);
+      const __m256d src = _mm256_blend_pd(_mm256_mul_pd(u, alpha), alpha, 0x8);
+      added += _mm256_movemask_pd(_mm256_cmp_pd(src, zero, _CMP_NEQ_UQ)) != 0;
+      const __m128 s = _mm256_cvtpd_ps(src), t = _mm_sub_ps(_mm_set1_ps(1.0f), _mm_shuffle_ps(s, s, 0xFF));
+      float* dst = line + 4 * i;
+      _mm_storeu_ps(dst, _mm_add_ps(s, _mm_mul_ps(t, _mm_loadu_ps(dst))));
+    }
+  }
+  return added;
+}
+
+// The exact rungs: each pixel's segment appended to the batch as AppendSegments does
+// (segment_between and LinearPiece::kappa), its quantities (front, back end: depth and scalar, or
+// 1/z and s/z in perspective) in the planes' own lane order.
+template <int S, bool Perspective>
+CELLPROJ_AVX2 void segments_pixels(const FanPlanes& f, const FanSegments& at, SegmentBatch& b) {
+  const FanVectors<S, 0xE4> fan(f);
+  const __m128d zero = _mm_setzero_pd(), smin = _mm_set1_pd(at.smin), smax = _mm_set1_pd(at.smax),
+                s0 = _mm_set1_pd(at.piece.s0), ds = _mm_set1_pd(at.piece.ds), k0 = _mm_set1_pd(at.piece.k0),
+                dk = _mm_set1_pd(at.piece.dk), ones = _mm_set1_pd(1.0);
+  const double* u2 = at.rays.u_squared() + at.i0;
+  for (int r = 0; r < at.rows; ++r) {
+    const double y = at.row0 + r;
+    int first, last;
+    if (!row_span<S>(f, y, at.width, first, last)) continue;
+    const int j = at.j0 + at.row0 + r;
+    const double v2 = Perspective ? at.rays.v_squared()[j] : 0.0;
+    const std::size_t base = b.n - static_cast<std::size_t>(first);
+    const FanRow<S, 0xE4> row(fan, y);
+    __m256d x = _mm256_set1_pd(static_cast<double>(first));
+    for (int i = first; i <= last; ++i, x = _mm256_add_pd(x, _mm256_set1_pd(1.0))) {
+      const std::size_t k = base + static_cast<std::size_t>(i);
+      b.i[k] = at.i0 + i, b.j[k] = j;
+      const __m256d q = row.at(fan, x);
+      __m128d ends = _mm256_castpd256_pd128(q), s = _mm256_extractf128_pd(q, 1);  // (front, back)
+      if constexpr (Perspective) ends = _mm_div_pd(ones, ends), s = _mm_mul_pd(s, ends);
+      // std::clamp's order: below smin, smin; else above smax, smax
+      s = _mm_blendv_pd(_mm_blendv_pd(s, smax, _mm_cmplt_pd(smax, s)), smin, _mm_cmplt_pd(s, smin));
+      const double thick = _mm_cvtsd_f64(_mm_unpackhi_pd(ends, ends)) - _mm_cvtsd_f64(ends);
+      const double per_depth = Perspective ? std::sqrt(1.0 + u2[i] + v2) : 1.0;
+      b.length[k] = (0.0 < thick ? thick : 0.0) * per_depth;
+      const __m128d kappa = _mm_add_pd(k0, _mm_mul_pd(_mm_mul_pd(dk, _mm_sub_pd(s, s0)), ds));
+      const __m128d kept = _mm_blendv_pd(zero, kappa, _mm_cmplt_pd(zero, kappa));
+      _mm_storel_pd(&b.sf[k], s), _mm_storeh_pd(&b.sb[k], s);
+      _mm_storel_pd(&b.k0[k], kept), _mm_storeh_pd(&b.k1[k], kept);
+    }
+    b.n += static_cast<std::size_t>(last - first + 1);
+  }
+}
+
+}  // namespace
+
+std::int64_t fan_over_avx2(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width) {
+  return (f.sectors == 4 ? over_pixels<4> : over_pixels<3>)(f, image, i0, j0, row0, rows, width);
+}
+
+void fan_segments_avx2(const FanPlanes& f, const FanSegments& at, SegmentBatch& out) {
+  const bool four = f.sectors == 4;
+  if (at.rays.perspective())
+    (four ? segments_pixels<4, true> : segments_pixels<3, true>)(f, at, out);
+  else
+    (four ? segments_pixels<4, false> : segments_pixels<3, false>)(f, at, out);
+}
+
+}  // namespace cellproj
+#endif

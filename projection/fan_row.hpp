@@ -1,0 +1,36 @@
+#pragma once
+// Internal to the fan's kernels (tet_fan.cpp, fan_avx2.cpp): a row's pixels inside the outline,
+// and the AVX2 kernels that take a fan one pixel at a time.
+#include <cmath>
+#include <cstdint>
+
+#include "base/simd.hpp"
+#include "projection/tet_fan.hpp"
+
+namespace cellproj {
+
+// The pixels b .. e of row y (from the box's first) inside every outline edge: x >= its crossing
+// where the edge's function rises along the row, x <= where it falls, all or none where it is
+// flat. False if there are none.
+template <int S>
+[[gnu::always_inline]] inline bool row_span(const FanPlanes& f, double y, int width, int& b, int& e) {
+  double lo = 0, hi = width - 1;
+  for (int a = 0; a < S; ++a) {
+    const double g = f.outline[a].c + f.outline[a].gy * y, inv = f.inv_gx[a], cross = -g * inv;
+    lo = inv > 0 && cross > lo ? cross : lo;
+    hi = inv < 0 && cross < hi ? cross : hi;
+    hi = inv == 0 && g < 0 ? -1.0 : hi;
+  }
+  if (!(lo <= hi)) return false;  // (NaN: none)
+  b = static_cast<int>(std::ceil(lo)), e = static_cast<int>(std::floor(hi));
+  return true;
+}
+
+#if CELLPROJ_AVX2_DISPATCH
+// fan_composite_over and fan_segments one pixel at a time, the pixel's four quantities in an AVX2
+// vector (fan_avx2.cpp); call only where the processor has AVX2.
+std::int64_t fan_over_avx2(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width);
+void fan_segments_avx2(const FanPlanes& f, const FanSegments& at, SegmentBatch& out);
+#endif
+
+}  // namespace cellproj
