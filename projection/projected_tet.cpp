@@ -9,7 +9,7 @@ namespace cellproj {
 
 using Kernel = CGAL::Exact_predicates_inexact_constructions_kernel;
 
-int exact_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+int exact_orientation(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
   return static_cast<int>(
       CGAL::orientation(Kernel::Point_2(a.x, a.y), Kernel::Point_2(b.x, b.y), Kernel::Point_2(c.x, c.y)));
 }

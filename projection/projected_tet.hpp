@@ -32,16 +32,21 @@ inline ThickVertex corner(const ScreenVertex& v) { return {v.x, v.y, v.z, v.z, v
 inline double area2(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
   return (b.x - a.x) * (c.y - a.y) - (b.y - a.y) * (c.x - a.x);
 }
-// Which way (a, b, c) turns in the image: CGAL's exact 2D orientation (+1, -1, or 0 when collinear).
-int exact_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c);
-// exact_sign, with area2's value in `area`: the sign of the area where its rounding cannot reach
+// CGAL's exact 2D orientation of (a, b, c) in the image (+1, -1, or 0 when collinear).
+int exact_orientation(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c);
+// The same, with area2's value in `area`: the sign of the area where its rounding cannot reach
 // zero (Shewchuk's orient2d filter: error below (3 + 16 eps) eps (|l| + |r|) for the products l
-// and r, eps = 2^-53, while they are far from underflow), else exact_sign's.
+// and r, eps = 2^-53, while they are far from underflow), else exact_orientation's.
 inline int turn_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c, double& area) {
   const double l = (b.x - a.x) * (c.y - a.y), r = (b.y - a.y) * (c.x - a.x), size = std::abs(l) + std::abs(r);
   area = l - r;
   if (std::abs(area) > 3.3306690738754727e-16 * size && size > 1e-250) return area > 0 ? 1 : -1;
-  return exact_sign(a, b, c);
+  return exact_orientation(a, b, c);
+}
+// Which way (a, b, c) turns in the image, exactly (turn_sign without the area).
+inline int exact_sign(const ScreenVertex& a, const ScreenVertex& b, const ScreenVertex& c) {
+  double area;
+  return turn_sign(a, b, c, area);
 }
 // Depth and scalar at the image point with weights w over vertices `ids` of v, on the plane (or
 // line) through them: linear in orthographic projection, through 1/z in perspective.

@@ -69,7 +69,8 @@ TEST(ProjectedTet, ClassesFromProjectedFaceSigns) {
 }
 
 TEST(ProjectedTet, TurnSignIsTheExactOrientation) {
-  // turn_sign's filtered sign against CGAL's exact one, and its area against area2, bit for bit:
+  // turn_sign's filtered sign against CGAL's exact one (exact_orientation), and its area against
+  // area2, bit for bit:
   // random triples, then nearly collinear ones (a third point on the line through two, moved by an
   // ulp or a few), at coordinates from 1e-300 to 1e300 (underflow and huge coordinates).
   std::mt19937 rng(5);
@@ -87,7 +88,7 @@ TEST(ProjectedTet, TurnSignIsTheExactOrientation) {
       }
       double area = 0;
       const int sign = turn_sign(a, b, c, area);
-      ASSERT_EQ(sign, exact_sign(a, b, c)) << "scale " << scale << " triple " << t;
+      ASSERT_EQ(sign, exact_orientation(a, b, c)) << "scale " << scale << " triple " << t;
       const double want = area2(a, b, c);
       ASSERT_TRUE(std::memcmp(&area, &want, sizeof area) == 0 || (std::isnan(area) && std::isnan(want)));
       filtered += std::abs(area) > 0;
