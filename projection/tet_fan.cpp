@@ -198,7 +198,6 @@ CELLPROJ_FAN_OVER(over_3, 3)
 CELLPROJ_FAN_OVER(over_4, 4)
 #undef CELLPROJ_FAN_OVER
 
-
 using SegmentsFn = void (*)(const FanPlanes&, const FanSegments&, SegmentBatch&);
 #define CELLPROJ_FAN_SEGMENTS(name, S, perspective)                                            \
   CELLPROJ_AVX2_CLONES void name(const FanPlanes& f, const FanSegments& at, SegmentBatch& b) { \
