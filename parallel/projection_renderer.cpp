@@ -288,10 +288,8 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   const MeshView* passed = nullptr;  // the cells they ran on
   double small_seconds = 0;
   const auto cell_passes = [&](const MeshView& of) {
-    const auto t_small = std::chrono::steady_clock::now();
-    SplatCounters counted;
-    small = small_cells(of, screen, rays, st.splat_threshold, counted, by_tiles ? &reach : nullptr);
-    st.splat.small_cells = counted.small_cells, st.splat.covering_no_pixel = counted.covering_no_pixel;
+    const auto t_small = std::chrono::steady_clock::now();  // (the sort beside it does not touch st.splat)
+    small = small_cells(of, screen, rays, st.splat_threshold, st.splat, by_tiles ? &reach : nullptr);
     small_seconds = seconds_since(t_small), passed = &of;
   };
 
