@@ -5,7 +5,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "view/huge_pages.hpp"
+#include "base/huge_pages.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {

@@ -6,7 +6,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "view/huge_pages.hpp"
+#include "base/huge_pages.hpp"
 
 namespace cellproj {
 

@@ -7,7 +7,7 @@
 
 #include "grid/geometry.hpp"
 #include "view/camera.hpp"
-#include "view/huge_pages.hpp"
+#include "base/huge_pages.hpp"
 
 namespace cellproj {
 

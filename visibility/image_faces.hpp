@@ -9,7 +9,7 @@
 
 #include <glm/vec2.hpp>
 
-#include "view/huge_pages.hpp"
+#include "base/huge_pages.hpp"
 #include "view/raster.hpp"
 #include "visibility/prepared.hpp"
 

@@ -10,7 +10,7 @@
 #include <glm/vec3.hpp>
 
 #include "grid/geometry.hpp"
-#include "view/huge_pages.hpp"
+#include "base/huge_pages.hpp"
 #include "visibility/sort.hpp"
 
 namespace cellproj {

@@ -5,6 +5,7 @@
 // costs microseconds on a virtual machine: a fresh 1024² framebuffer (16 MB) was 4096 of them.
 // Where the kernel gives no huge pages (THP off, other systems) it is the plain allocator.
 #include <cstddef>
+#include <cstdint>
 #include <cstdlib>
 #include <new>
 #include <vector>
@@ -54,5 +55,20 @@ struct HugePageAllocator {
 // arrays and the screen points in huge pages (docs/methods.md, "Fresh pages").
 template <class T>
 using FrameBuffer = std::vector<T, HugePageAllocator<T>>;
+
+// Reserves room for n elements of a plain std::vector and asks for huge pages over it before a
+// pass first touches it: for the large arrays a mesh prepares once (its face topology, the
+// sorter's face planes), whose type stays std::vector. Filling a fresh 48 MB array took 0.17 s in
+// 4 KB pages on this project's virtual machine, 0.01 s in huge pages. Advice only: a block malloc
+// hands back already touched keeps the pages it has.
+template <class T>
+void reserve_in_huge_pages(std::vector<T>& v, std::size_t n) {
+  v.reserve(n);
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const auto begin = reinterpret_cast<std::uintptr_t>(v.data()), end = begin + n * sizeof(T);
+  const std::uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage, last = end / kHugePage * kHugePage;
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#endif
+}
 
 }  // namespace cellproj
