@@ -1,11 +1,16 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
+#include <map>
 #include <random>
 #include <string>
 
+#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
+#include "grid/geometry.hpp"
 #include "grid/split_topology.hpp"
 #include "grid/topology.hpp"
 #include "test_util.hpp"
@@ -169,4 +174,58 @@ TEST(Topology, CoincidentFacesOfOverlappingCellsAreNotGlued) {
   Mesh nan = mesh_with({1.0, -1.0});
   nan.points[0] = nan.points[12] = std::nan("");
   EXPECT_EQ(build_topology(nan.view()).seam_faces, 0);
+}
+
+// build_topology's bucketed matching against a plain map from face keys to cell faces, on meshes
+// of every cell type with some cells repeated (faces shared by three or four cells), run with 4
+// threads: the same neighbours, counts, first non-manifold cell and quad warps.
+TEST(Topology, MatchesAMapOfFaceKeys) {
+  for (const std::string kind : {"mixed", "swirl", "box", "swirl-tets"}) {
+    Mesh m = generate(kind, 5);
+    const std::int64_t n = m.n_cells();
+    for (std::int64_t c = n / 7; c < n; c += n / 5) {  // repeated cells: their faces are non-manifold
+      const std::vector<std::int64_t> ids(m.view().cell(c), m.view().cell(c) + m.view().cell_size(c));
+      m.add_cell(m.view().type(c), ids.data());
+    }
+    const MeshView v = m.view();
+    FaceTopology t;
+    tbb::task_arena(4).execute([&] { t = build_topology(v); });
+
+    std::map<FaceKey, std::vector<std::pair<std::int64_t, std::int64_t>>> faces;  // key -> (cell face, cell)
+    for (std::int64_t c = 0; c < v.n_cells; ++c)
+      for (int f = 0; f < cell_def(v.type(c)).faces; ++f) {
+        const FaceDef& d = cell_def(v.type(c)).face[f];
+        std::int64_t ids[4];
+        for (int k = 0; k < d.size; ++k) ids[k] = v.cell(c)[d.v[k]];
+        faces[face_key_of(ids, d.size)].push_back({t.face_offsets[c] + f, c});
+      }
+    std::int64_t shared = 0, nonmanifold = 0, first_nonmanifold = -1, nonplanar = 0;
+    double max_warp = 0, max_relative = 0;
+    for (const auto& [key, list] : faces) {
+      for (std::size_t i = 0; i < list.size(); ++i) {
+        const std::int64_t expected =
+            list.size() == 1 ? kBoundary : list.size() == 2 ? list[1 - i].second : kNonManifold;
+        if (t.neighbor[list[i].first] != kSplitFace) EXPECT_EQ(t.neighbor[list[i].first], expected) << kind;
+      }
+      shared += list.size() == 2;
+      if (list.size() > 2 && nonmanifold++ == 0) first_nonmanifold = list[0].second;
+      if (key[3] != std::numeric_limits<std::int64_t>::max()) {
+        const std::int64_t c = list[0].second;
+        const FaceDef& d = cell_def(v.type(c)).face[list[0].first - t.face_offsets[c]];
+        glm::dvec3 q[4];
+        for (int k = 0; k < 4; ++k) q[k] = v.point(v.cell(c)[d.v[k]]);
+        const double warp = quad_warp(q[0], q[1], q[2], q[3]);
+        const double diag = 0.5 * (glm::length(q[2] - q[0]) + glm::length(q[3] - q[1]));
+        max_warp = std::max(max_warp, warp), max_relative = std::max(max_relative, diag > 0 ? warp / diag : 0.0);
+        nonplanar += diag > 0 && warp / diag > kNonPlanarRelative;
+      }
+    }
+    EXPECT_GT(nonmanifold, 0) << kind;
+    EXPECT_EQ(t.shared_faces, shared + static_cast<std::int64_t>(t.split_faces.size())) << kind;
+    EXPECT_EQ(t.nonmanifold_faces, nonmanifold) << kind;
+    EXPECT_EQ(t.first_nonmanifold_cell, first_nonmanifold) << kind;
+    EXPECT_EQ(t.nonplanar_faces, nonplanar) << kind;
+    EXPECT_EQ(t.max_nonplanarity, max_warp) << kind;
+    EXPECT_EQ(t.max_relative_nonplanarity, max_relative) << kind;
+  }
 }
