@@ -17,6 +17,19 @@ namespace {
 
 using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
+// The viewpoint nearly in shared face f's plane (perspective): CGAL's exact orientation decides
+// for a triangle; a quad, which may be warped, keeps the sign of s. Out of line: it is rare.
+[[gnu::noinline]] int side_near_plane(const VisibilitySorter::Prepared& p, const ViewFrame& v, std::size_t f, double s) {
+  std::int64_t t[3];
+  if (!p.face_triangle(f, t)) return s > 0 ? 1 : s < 0 ? -1 : 0;
+  auto P = [&](std::int64_t i) {
+    const glm::dvec3 x = p.point(i);
+    return K::Point_3(x.x, x.y, x.z);
+  };
+  const auto o = CGAL::orientation(P(t[0]), P(t[1]), P(t[2]), K::Point_3(v.eye.x, v.eye.y, v.eye.z));
+  return o == CGAL::POSITIVE ? -1 : o == CGAL::NEGATIVE ? 1 : 0;  // POSITIVE: below the plane, inside a
+}
+
 // Which side of shared face f the viewpoint is on: > 0 outside face_a (so face_a is behind).
 int viewpoint_side(const VisibilitySorter::Prepared& p, const ViewFrame& v, std::size_t f) {
   const glm::dvec3& n = p.normal[f];  // unit length
@@ -25,15 +38,8 @@ int viewpoint_side(const VisibilitySorter::Prepared& p, const ViewFrame& v, std:
     return s > 1e-14 ? 1 : s < -1e-14 ? -1 : 0;
   }
   const double s = n.x * v.eye.x + n.y * v.eye.y + n.z * v.eye.z - p.offset[f];
-  if (std::abs(s) > 1e-9 * v.eye_scale || p.face_tri[f][0] < 0) return s > 0 ? 1 : s < 0 ? -1 : 0;
-  // Nearly in the face's plane: CGAL's exact orientation decides.
-  auto P = [&](std::int64_t i) {
-    const glm::dvec3 x = p.point(i);
-    return K::Point_3(x.x, x.y, x.z);
-  };
-  const auto& t = p.face_tri[f];
-  const auto o = CGAL::orientation(P(t[0]), P(t[1]), P(t[2]), K::Point_3(v.eye.x, v.eye.y, v.eye.z));
-  return o == CGAL::POSITIVE ? -1 : o == CGAL::NEGATIVE ? 1 : 0;  // POSITIVE: below the plane, inside a
+  if (std::abs(s) > 1e-9 * v.eye_scale) return s > 0 ? 1 : -1;
+  return side_near_plane(p, v, f, s);
 }
 
 }  // namespace
@@ -78,13 +84,13 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
     for (const Relations* rel : lists)
       for (std::int64_t k = rel->start[c]; k < rel->start[c + 1]; ++k) visit(rel->to[k]);
   };
-  std::vector<std::int32_t>& in = faces.in;
+  FrameBuffer<std::int32_t>& in = faces.in;
   in.resize(static_cast<std::size_t>(n), 0);
   for (const Relations* rel : lists)
     for (std::int64_t m : rel->to) ++in[m];
 
   std::vector<std::int64_t> order;  // doubles as Kahn's FIFO queue
-  order.reserve(static_cast<std::size_t>(n));
+  reserve_in_huge_pages(order, static_cast<std::size_t>(n));
   for (std::int64_t c = 0; c < n; ++c)
     if (in[c] == 0) order.push_back(c);
   std::size_t head = 0;

@@ -28,8 +28,6 @@ struct VisibilitySorter::Prepared {
   std::vector<std::int32_t> face_a, face_b;
   std::vector<glm::dvec3> normal;
   std::vector<double> offset;
-  std::vector<std::array<std::int64_t, 3>>
-      face_tri;                                // a triangle face's ids turning with the normal; [0] = -1 for quads
   std::vector<std::int64_t> face_start;        // per cell: the shared faces it makes start here (n + 1)
   std::vector<std::uint8_t> local_a, local_b;  // per shared face: its index among face_a's / face_b's faces
                                                // (local_b kNoLocalFace: face_b's side is a split quad)
@@ -43,6 +41,9 @@ struct VisibilitySorter::Prepared {
   std::vector<std::int64_t> boundary_point;
 
   glm::dvec3 point(std::int64_t p) const { return (*points)(p); }
+  // Shared face f's ids turning with its normal, when it is a triangle (false for a quad): made
+  // from face_a's cell when needed (the rare face nearly in line with the eye) instead of stored.
+  bool face_triangle(std::size_t f, std::int64_t tri[3]) const;
 };
 
 // The view in the recentred frame: the eye, the view direction, and how far each cell is.
@@ -71,8 +72,8 @@ struct Relations {
 // ahead[c] is set when the cell across c's k-th face comes after c; in[c] counts the cells that
 // must come before c. A face seen exactly edge-on makes no relation.
 struct FaceOrder {
-  std::vector<std::uint8_t> ahead;
-  std::vector<std::int32_t> in;
+  FrameBuffer<std::uint8_t> ahead;  // fresh every view: in huge pages (base/huge_pages.hpp)
+  FrameBuffer<std::int32_t> in;
   Relations split;  // from a cell with a split quad to the tetrahedra across it (no bit on that side)
   std::int64_t relations = 0;
 };

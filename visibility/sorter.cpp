@@ -24,10 +24,9 @@ namespace {
 // of a face get the same plane; quads take Newell's normal through their lowest-id vertex, since
 // they may be warped.
 void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, int n, glm::dvec3& normal,
-                glm::dvec3& point, std::array<std::int64_t, 3>& tri) {
+                glm::dvec3& point) {
   glm::dvec3 x[4];
   for (int k = 0; k < n; ++k) x[k] = p.point(ids[k]);
-  tri = {-1, -1, -1};
   if (n != 3) {
     // Newell's normal of a quad is the sum of its two triangles' (either split), and the lowest id
     // lies on both triangles of the canonical split: where both triangles put the viewpoint on one
@@ -41,8 +40,7 @@ void face_plane(const VisibilitySorter::Prepared& p, const std::int64_t* ids, in
   std::int64_t s[3] = {ids[0], ids[1], ids[2]};
   const bool flip = sort_triangle_ids(s);
   normal = glm::cross(p.point(s[1]) - p.point(s[0]), p.point(s[2]) - p.point(s[0]));
-  if (flip) normal = -normal, std::swap(s[1], s[2]);
-  tri = {s[0], s[1], s[2]};
+  if (flip) normal = -normal;
 }
 
 // mpvo: the face relations, then the topological sort.
@@ -126,6 +124,7 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
   p.convex = hull.convex;
   p.points = points ? std::move(points) : std::make_shared<const RecentredPoints>(recentre(mesh));
 
+  reserve_in_huge_pages(p.centroid, static_cast<std::size_t>(mesh.n_cells));
   p.centroid.resize(static_cast<std::size_t>(mesh.n_cells));
   const auto cells = tbb::blocked_range<std::int64_t>(0, mesh.n_cells, 4096);
   tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
@@ -138,6 +137,7 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
 
   if (mesh.n_cells > INT32_MAX) throw InputError(where(mesh.source, "more than 2^31 cells: too many for one sorter"));
   const auto& fo = topo.face_offsets;
+  reserve_in_huge_pages(p.across, topo.neighbor.size());
   p.across.assign(topo.neighbor.size(), -1);
   auto face_ids = [&](std::int64_t c, std::int64_t cf, std::int64_t ids[4]) {
     const FaceDef& f = cell_def(mesh.type(c)).face[cf - fo[c]];
@@ -155,7 +155,9 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
     return !(back >= 0 && m < c);
   };
   // Counted per cell, then filled in parallel at each cell's offset (the same order as serially).
-  std::vector<std::int64_t> first(static_cast<std::size_t>(mesh.n_cells) + 1, 0);
+  std::vector<std::int64_t> first;
+  reserve_in_huge_pages(first, static_cast<std::size_t>(mesh.n_cells) + 1);
+  first.assign(static_cast<std::size_t>(mesh.n_cells) + 1, 0);
   tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
     for (std::int64_t c = r.begin(); c < r.end(); ++c) {
       std::int64_t back;
@@ -173,13 +175,15 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
     if (w.mesh.types[pc] != mesh.types[c] || w.mesh.types[pm] != mesh.types[m]) return false;
     for (std::int64_t k = w.face_start[pc]; k < w.face_start[pc + 1]; ++k)
       if (w.face_b[k] == pm && w.local_a[k] == p.local_a[at]) {
-        p.normal[at] = w.normal[k], p.offset[at] = w.offset[k], p.face_tri[at] = w.face_tri[k];
+        p.normal[at] = w.normal[k], p.offset[at] = w.offset[k];
         return true;
       }
     return false;
   };
-  p.face_a.resize(n_shared), p.face_b.resize(n_shared), p.local_a.resize(n_shared), p.local_b.resize(n_shared);
-  p.normal.resize(n_shared), p.offset.resize(n_shared), p.face_tri.resize(n_shared);
+  for (auto* a : {&p.face_a, &p.face_b}) reserve_in_huge_pages(*a, n_shared), a->resize(n_shared);
+  p.local_a.resize(n_shared), p.local_b.resize(n_shared);
+  reserve_in_huge_pages(p.normal, n_shared), reserve_in_huge_pages(p.offset, n_shared);
+  p.normal.resize(n_shared), p.offset.resize(n_shared);
   tbb::parallel_for(cells, [&](const tbb::blocked_range<std::int64_t>& r) {
     for (std::int64_t c = r.begin(); c < r.end(); ++c) {
       std::int64_t at = first[c], back, ids[4];
@@ -195,7 +199,7 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
         p.local_b[at] = back >= 0 ? static_cast<std::uint8_t>(back - fo[m]) : kNoLocalFace;
         if (!plane_from_whole(c, m, at)) {
           glm::dvec3 normal, point;
-          face_plane(p, ids, face_ids(c, cf, ids), normal, point, p.face_tri[at]);
+          face_plane(p, ids, face_ids(c, cf, ids), normal, point);
           const double len = glm::length(normal);
           if (len > 0) normal /= len;
           p.normal[at] = normal;
@@ -232,6 +236,15 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
   p.face_start = std::move(first);
   p.all_tetrahedra = std::all_of(mesh.types, mesh.types + mesh.n_cells,
                                  [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); });
+}
+
+bool VisibilitySorter::Prepared::face_triangle(std::size_t f, std::int64_t tri[3]) const {
+  const std::int64_t c = face_a[f];
+  const FaceDef& face = cell_def(mesh.type(c)).face[local_a[f]];
+  if (face.size != 3) return false;
+  for (int k = 0; k < 3; ++k) tri[k] = mesh.cell(c)[face.v[k]];
+  if (sort_triangle_ids(tri)) std::swap(tri[1], tri[2]);  // as face_plane turns the normal
+  return true;
 }
 
 VisibilitySorter::~VisibilitySorter() = default;
