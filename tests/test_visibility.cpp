@@ -424,3 +424,30 @@ TEST(Visibility, CombTetsViolationsAllCrossItsInvertedCells) {
   EXPECT_GT(violating, 0);
   EXPECT_EQ(through_folded, violating);
 }
+
+// A perspective eye in the plane of a shared triangle, or off it by far less than the plane test's
+// tolerance: the exact orientation decides (the triangle's ids come from its cell when needed).
+// In the plane, the face is edge-on and makes no relation; off it, the cell on the eye's side
+// comes last.
+TEST(Visibility, AnEyeNearlyInAFacePlaneIsDecidedExactly) {
+  Mesh m;
+  for (const glm::dvec3 p : {glm::dvec3(0, 0, 0), {1, 0, 0}, {0, 1, 0}, {0.2, 0.2, 1}, {0.2, 0.2, -1}}) m.add_point(p);
+  m.add_cell(CellType::Tetra, {0, 1, 2, 3});  // above z = 0
+  m.add_cell(CellType::Tetra, {0, 2, 1, 4});  // below
+  const Scene s(tetrahedra_mesh(std::move(m)));
+  for (const double z : {0.0, 1e-13, -1e-13, 1e-3, -1e-3}) {
+    Camera c;
+    c.projection = Projection::Perspective;
+    c.eye = {-3, -2, z};
+    c.target = {0.3, 0.3, 0};
+    c.up = {0, 0, 1};
+    const SortResult r = s.sorter->sort(SortMethod::mpvo, SortView{c, 32, 32});
+    ASSERT_EQ(r.order.size(), 2u);
+    if (z == 0.0) {
+      EXPECT_EQ(r.stats.face_relations, 0);
+    } else {
+      EXPECT_EQ(r.stats.face_relations, 1) << z;
+      EXPECT_EQ(r.order.back(), z > 0 ? 0 : 1) << "the cell on the eye's side is composited last, z = " << z;
+    }
+  }
+}

@@ -27,7 +27,7 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
     return K::Point_3(x.x, x.y, x.z);
   };
   const auto o = CGAL::orientation(P(t[0]), P(t[1]), P(t[2]), K::Point_3(v.eye.x, v.eye.y, v.eye.z));
-  return o == CGAL::POSITIVE ? -1 : o == CGAL::NEGATIVE ? 1 : 0;  // POSITIVE: below the plane, inside a
+  return o == CGAL::POSITIVE ? 1 : o == CGAL::NEGATIVE ? -1 : 0;  // POSITIVE: on the normal side, outside a
 }
 
 // Which side of shared face f the viewpoint is on: > 0 outside face_a (so face_a is behind).
