@@ -15,6 +15,7 @@
 #include <fstream>
 #include <mutex>
 #include <new>
+#include <type_traits>
 
 #include <vtkSMPTools.h>
 
@@ -24,6 +25,7 @@
 
 #include "base/bytes.hpp"
 #include "base/error.hpp"
+#include "base/huge_pages.hpp"
 
 #if defined(__SANITIZE_ADDRESS__)
 #define CELLPROJ_ASAN 1
@@ -112,11 +114,16 @@ class PipeReader {
 
  private:
   // Grown a chunk at a time, so that a count garbled by a dying child ends at the pipe's end
-  // instead of in one huge allocation.
+  // instead of in one huge allocation; a count within half the memory available is reserved at
+  // once (address space, touched only as the bytes arrive), in huge pages, so that the array is
+  // not copied as it grows.
   template <class Container>
   void array_into(Container& v) {
     const auto n = value<std::uint64_t>();
-    constexpr std::uint64_t chunk = (64u << 20) / sizeof(typename Container::value_type);
+    using T = typename Container::value_type;
+    constexpr std::uint64_t chunk = (64u << 20) / sizeof(T);
+    if constexpr (std::is_same_v<Container, std::vector<T>>)
+      if (n > chunk / 16 && n <= available_memory_bytes() / 2 / sizeof(T)) reserve_in_huge_pages(v, n);
     for (std::uint64_t done = 0; ok && done < n;) {
       const std::uint64_t k = std::min(chunk, n - done);
       v.resize(static_cast<std::size_t>(done + k));
@@ -345,6 +352,9 @@ Mesh read_isolated(const std::string& path, const std::string& reader, const Iso
   if (fork_is_unsafe()) return read();
   int fds[2];
   if (pipe(fds) != 0) throw ResourceError(where(path, std::string("cannot make a pipe: ") + std::strerror(errno)));
+#ifdef F_SETPIPE_SZ
+  fcntl(fds[0], F_SETPIPE_SZ, 1 << 20);  // 1 MB a switch between the two processes instead of 64 KB
+#endif
   const int err_fd = memfd_create("cellproj-reader-stderr", 0);
   std::fflush(nullptr);  // nothing buffered may be written twice
   const pid_t pid = fork();
