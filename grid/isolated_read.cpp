@@ -78,7 +78,8 @@ class PipeWriter {
 // read are zeros, so the caller asks waitpid why.
 class PipeReader {
  public:
-  explicit PipeReader(int fd) : fd_(fd) {}
+  // Arrays up to `reserve_bytes` are reserved at once (below).
+  PipeReader(int fd, std::uint64_t reserve_bytes) : fd_(fd), reserve_bytes_(reserve_bytes) {}
   bool ok = true;
   void bytes(void* data, std::size_t n) {
     char* p = static_cast<char*>(data);
@@ -114,16 +115,17 @@ class PipeReader {
 
  private:
   // Grown a chunk at a time, so that a count garbled by a dying child ends at the pipe's end
-  // instead of in one huge allocation; a count within half the memory available is reserved at
-  // once (address space, touched only as the bytes arrive), in huge pages, so that the array is
-  // not copied as it grows.
+  // instead of in one huge allocation; a count within half the memory available and within the
+  // child's memory limit (no array of a child that kept to it is larger) is reserved at once
+  // (address space, touched only as the bytes arrive), in huge pages, so that the array is not
+  // copied as it grows.
   template <class Container>
   void array_into(Container& v) {
     const auto n = value<std::uint64_t>();
     using T = typename Container::value_type;
     constexpr std::uint64_t chunk = (64u << 20) / sizeof(T);
     if constexpr (std::is_same_v<Container, std::vector<T>>)
-      if (n > chunk / 16 && n <= available_memory_bytes() / 2 / sizeof(T)) reserve_in_huge_pages(v, n);
+      if (n > chunk / 16 && n <= reserve_bytes_ / sizeof(T)) reserve_in_huge_pages(v, n);
     for (std::uint64_t done = 0; ok && done < n;) {
       const std::uint64_t k = std::min(chunk, n - done);
       v.resize(static_cast<std::size_t>(done + k));
@@ -132,6 +134,7 @@ class PipeReader {
     }
   }
   int fd_;
+  std::uint64_t reserve_bytes_;
 };
 
 void write_mesh(PipeWriter& out, const Mesh& m) {
@@ -369,7 +372,8 @@ Mesh read_isolated(const std::string& path, const std::string& reader, const Iso
     child(fds[1], err_fd >= 0 ? err_fd : open("/dev/null", O_WRONLY), isolation, read);
   }
   close(fds[1]);
-  PipeReader in(fds[0]);
+  const std::uint64_t available = available_memory_bytes() / 2;
+  PipeReader in(fds[0], isolation.memory_limit > 0 ? std::min(isolation.memory_limit, available) : available);
   Outcome outcome = Outcome::other_error;
   std::string message;
   Mesh mesh;
