@@ -35,6 +35,7 @@
 
 #include "base/error.hpp"
 #include "base/file_status.hpp"
+#include "base/huge_pages.hpp"
 #include "grid/geometry.hpp"
 #include "grid/legacy_vtk_check.hpp"
 #include "grid/netcdf_check.hpp"
@@ -105,6 +106,20 @@ std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& me
   for (const auto& l : leaves) global_ids &= l.data->GetPointData()->GetArray("GlobalNodeId") != nullptr;
   std::unordered_map<std::int64_t, std::int64_t> by_global;
 
+  // The mesh's arrays reserved at once for what the leaves hold (in huge pages): not copied as
+  // they grow. A leaf that is not a vtkUnstructuredGrid counts its largest cell for each.
+  std::int64_t points = 0, cells = 0, ids_held = 0;
+  for (const auto& l : leaves) {
+    points += l.data->GetNumberOfPoints(), cells += l.data->GetNumberOfCells();
+    auto* ug = vtkUnstructuredGrid::SafeDownCast(l.data);
+    ids_held += ug && ug->GetCells() ? ug->GetCells()->GetNumberOfConnectivityIds()
+                                     : l.data->GetNumberOfCells() * l.data->GetMaxCellSize();
+  }
+  reserve_in_huge_pages(mesh.points, static_cast<std::size_t>(mesh.points.size() + 3 * points));
+  reserve_in_huge_pages(mesh.connectivity, static_cast<std::size_t>(mesh.connectivity.size() + ids_held));
+  reserve_in_huge_pages(mesh.offsets, static_cast<std::size_t>(mesh.offsets.size() + cells));
+  reserve_in_huge_pages(mesh.types, static_cast<std::size_t>(mesh.types.size() + cells));
+
   std::map<std::string, std::int64_t> skipped;
   std::vector<LeafMap> maps(leaves.size());
   auto ids = vtkSmartPointer<vtkIdList>::New();
@@ -127,6 +142,8 @@ std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& me
       }
     }
     check_cell_array(ds);
+    auto* ug = vtkUnstructuredGrid::SafeDownCast(ds);
+    vtkCellArray* cell_array = ug ? ug->GetCells() : nullptr;  // read in place, not copied cell by cell
     map.cell.assign(static_cast<std::size_t>(ds->GetNumberOfCells()), -1);
     for (vtkIdType c = 0; c < ds->GetNumberOfCells(); ++c) {
       const int type = ds->GetCellType(c);
@@ -134,10 +151,17 @@ std::vector<LeafMap> assemble_geometry(const std::vector<Leaf>& leaves, Mesh& me
         ++skipped[vtk_type_name(type)];
         continue;
       }
-      ds->GetCellPoints(c, ids);
-      v.resize(static_cast<std::size_t>(ids->GetNumberOfIds()));
+      vtkIdType size;
+      const vtkIdType* cell_ids;
+      if (cell_array) {
+        cell_array->GetCellAtId(c, size, cell_ids);
+      } else {
+        ds->GetCellPoints(c, ids);
+        size = ids->GetNumberOfIds(), cell_ids = ids->GetPointer(0);
+      }
+      v.resize(static_cast<std::size_t>(size));
       for (std::size_t k = 0; k < v.size(); ++k) {
-        const vtkIdType id = ids->GetId(static_cast<vtkIdType>(k));
+        const vtkIdType id = cell_ids[k];
         if (id < 0 || id >= ds->GetNumberOfPoints())  // VTK's legacy reader lets these through
           throw InputError("cell " + std::to_string(mesh.n_cells()) + " (" + vtk_type_name(type) +
                            ") refers to point " + std::to_string(id) + ", out of range [0, " +
