@@ -1,4 +1,7 @@
 #include <cmath>
+#include <map>
+#include <random>
+#include <tuple>
 
 #include <gtest/gtest.h>
 
@@ -155,4 +158,31 @@ TEST(Overlaps, OverlappingCellsAreFoundTouchingOnesAreNot) {
   EXPECT_EQ(pair_with(1e-12), 0);  // into each other by 1e-12 of their size: a contact
   EXPECT_EQ(pair_with(1e-3), 1);   // into each other
   EXPECT_EQ(pair_with(0.5), 1);
+}
+
+// Duplicate points found by hashing their coordinates equal those of a map keyed by coordinates:
+// groups of two and three, -0 with +0, and points that differ in one bit of one coordinate.
+TEST(Validation, DuplicatePointsMatchAMapOfCoordinates) {
+  Mesh m = generate("box", 12);
+  std::mt19937 rng(5);
+  std::uniform_int_distribution<std::int64_t> any(0, m.n_points() - 1);
+  for (int k = 0; k < 300; ++k) m.add_point(m.view().point(any(rng)));  // a copy of some point
+  m.add_point({0.0, -0.0, 1.0}), m.add_point({-0.0, 0.0, 1.0});
+  const glm::dvec3 x = m.view().point(3);
+  m.add_point({std::nextafter(x.x, 10.0), x.y, x.z});  // one bit apart: not a duplicate
+  m.fields[0].values.resize(static_cast<std::size_t>(m.n_points()), 0.0);
+  const ValidationReport r = validate(m.view());
+
+  std::map<std::tuple<double, double, double>, std::int64_t> first;  // coordinates -> lowest id
+  std::int64_t duplicates = 0, first_duplicate = -1;
+  for (std::int64_t p = 0; p < m.n_points(); ++p) {
+    const glm::dvec3 q = m.view().point(p);
+    if (!first.emplace(std::make_tuple(q.x, q.y, q.z), p).second) {
+      ++duplicates;
+      if (first_duplicate < 0) first_duplicate = p;
+    }
+  }
+  EXPECT_GE(duplicates, 250);
+  EXPECT_EQ(r.duplicate_points, duplicates);
+  EXPECT_EQ(r.first_duplicate, first_duplicate);
 }
