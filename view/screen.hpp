@@ -5,9 +5,9 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/huge_pages.hpp"
 #include "grid/geometry.hpp"
 #include "view/camera.hpp"
-#include "base/huge_pages.hpp"
 
 namespace cellproj {
 

@@ -9,8 +9,8 @@
 
 #include <glm/vec3.hpp>
 
-#include "grid/geometry.hpp"
 #include "base/huge_pages.hpp"
+#include "grid/geometry.hpp"
 #include "visibility/sort.hpp"
 
 namespace cellproj {
