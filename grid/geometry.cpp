@@ -3,7 +3,13 @@
 #include <algorithm>
 
 #include <cmath>
+#include <cstring>
+#include <tuple>
+
 #include <glm/common.hpp>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_sort.h>
 
 namespace cellproj {
 
@@ -66,6 +72,59 @@ double quad_warp(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, 
   const double len = glm::length(n);
   if (len == 0.0) return 0.0;  // parallel diagonals: a collapsed face, not a warped one
   return std::abs(glm::dot(b - a, n)) / len;
+}
+
+namespace {
+std::uint64_t mix(std::uint64_t h) {  // splitmix64's finalizer
+  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
+  h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
+  return h ^ (h >> 31);
+}
+}  // namespace
+
+PointGroups coincident_points(const MeshView& m, const std::vector<std::int64_t>& candidates) {
+  struct Keyed {
+    std::uint64_t hash;
+    std::int64_t point;
+  };
+  auto key = [&m](std::int64_t p) {
+    const glm::dvec3 x = m.point(p);
+    return std::make_tuple(x.x, x.y, x.z);
+  };
+  std::vector<Keyed> keyed(candidates.size());
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 8192), [&](const auto& range) {
+    for (std::size_t i = range.begin(); i < range.end(); ++i) {
+      const glm::dvec3 x = m.point(candidates[i]) + glm::dvec3(0.0);  // -0 + 0 is +0
+      std::uint64_t h = 0;
+      for (int k = 0; k < 3; ++k) {
+        std::uint64_t bits;
+        std::memcpy(&bits, &x[k], sizeof bits);
+        h = mix(h ^ bits);
+      }
+      keyed[i] = {h, candidates[i]};
+    }
+  });
+  tbb::parallel_sort(keyed.begin(), keyed.end(),
+                     [](const Keyed& a, const Keyed& b) { return a.hash < b.hash || (a.hash == b.hash && a.point < b.point); });
+  PointGroups groups;
+  for (std::size_t i = 0; i < keyed.size();) {
+    std::size_t j = i + 1;
+    while (j < keyed.size() && keyed[j].hash == keyed[i].hash) ++j;
+    if (j - i > 1) {  // the same place, or a collision: ordered by coordinates, then id
+      std::sort(keyed.begin() + i, keyed.begin() + j, [&](const Keyed& a, const Keyed& b) {
+        return key(a.point) < key(b.point) || (key(a.point) == key(b.point) && a.point < b.point);
+      });
+      for (std::size_t s = i, e; s < j; s = e) {
+        for (e = s + 1; e < j && key(keyed[e].point) == key(keyed[s].point);) ++e;
+        const glm::dvec3 x = m.point(keyed[s].point);
+        if (e - s < 2 || !(std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z))) continue;
+        for (std::size_t k = s; k < e; ++k) groups.ids.push_back(keyed[k].point);
+        groups.start.push_back(static_cast<std::int64_t>(groups.ids.size()));
+      }
+    }
+    i = j;
+  }
+  return groups;
 }
 
 }  // namespace cellproj

@@ -52,6 +52,17 @@ struct RecentredPoints {
 };
 RecentredPoints recentre(const MeshView& mesh);
 
+// The groups of points at the same place (coordinates equal as doubles: -0 is 0; a non-finite
+// point is never in one) among `candidates` (each listed once), as a flat list: group g's ids,
+// increasing, are ids[start[g]] to ids[start[g + 1]]. Found by a sort of a hash of the
+// coordinates (flat keys, no indirection in the sort), then each run of equal hashes by
+// coordinates. Validation's duplicate points and the seams' glued points are these groups.
+struct PointGroups {
+  std::vector<std::int64_t> ids;
+  std::vector<std::int64_t> start{0};
+};
+PointGroups coincident_points(const MeshView& mesh, const std::vector<std::int64_t>& candidates);
+
 // A cell is degenerate when |volume| is at round-off level for its size (a length).
 constexpr double kDegenerateRelativeVolume = 1e-14;
 inline bool degenerate_volume(double volume, double size) {

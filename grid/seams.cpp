@@ -6,7 +6,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <tuple>
 #include <unordered_map>
 
 #include <glm/geometric.hpp>
@@ -33,33 +32,19 @@ void glue_seams(const MeshView& m, FaceTopology& t) {
     for (int i = 0; i < face.size; ++i) ids[i] = m.cell(c)[face.v[i]];
     return static_cast<int>(face.size);
   };
-  // The boundary's points in order of their coordinates; a group at the same (bit-identical)
-  // coordinates is named by its lowest id.
+  // The boundary's points at the same place as another: each group is named by its lowest id.
   std::vector<std::int64_t> pts;
-  auto finite = [&](std::int64_t q) {  // a NaN would break the sort's order (validation rejects them)
-    const glm::dvec3 x = m.point(q);
-    return std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z);
-  };
   for (const std::int64_t cf : t.boundary) {
     std::int64_t ids[4];
     const int n = ids_of(cf, ids);
-    for (int i = 0; i < n; ++i)
-      if (finite(ids[i])) pts.push_back(ids[i]);
+    pts.insert(pts.end(), ids, ids + n);
   }
-  std::sort(pts.begin(), pts.end());  // each point once, then by coordinates
+  std::sort(pts.begin(), pts.end());  // each point once
   pts.erase(std::unique(pts.begin(), pts.end()), pts.end());
-  auto coords = [&](std::int64_t p) {
-    const glm::dvec3 x = m.point(p);
-    return std::make_tuple(x.x, x.y, x.z);
-  };
-  std::sort(pts.begin(), pts.end(),
-            [&](std::int64_t a, std::int64_t b) { return coords(a) < coords(b) || (coords(a) == coords(b) && a < b); });
+  const PointGroups groups = coincident_points(m, pts);
   std::unordered_map<std::int64_t, std::int64_t> first_id;  // only the points of groups of two or more
-  for (std::size_t s = 0, e; s < pts.size(); s = e) {
-    for (e = s + 1; e < pts.size() && coords(pts[e]) == coords(pts[s]);) ++e;
-    if (e - s > 1)
-      for (std::size_t k = s; k < e; ++k) first_id[pts[k]] = pts[s];
-  }
+  for (std::size_t g = 0; g + 1 < groups.start.size(); ++g)
+    for (std::int64_t k = groups.start[g]; k < groups.start[g + 1]; ++k) first_id[groups.ids[k]] = groups.ids[groups.start[g]];
   if (first_id.empty()) return;
 
   std::vector<Open> open;

@@ -2,11 +2,10 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstring>
 #include <map>
+#include <numeric>
 #include <tuple>
 
-#include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_sort.h>
 
@@ -49,53 +48,15 @@ void check_points(const MeshView& m) {
   }
 }
 
-std::uint64_t mix(std::uint64_t h) {  // splitmix64's finalizer
-  h = (h ^ (h >> 30)) * 0xbf58476d1ce4e5b9ull;
-  h = (h ^ (h >> 27)) * 0x94d049bb133111ebull;
-  return h ^ (h >> 31);
-}
-
-// Points at the same place (as doubles compare: -0 is 0; NaN was refused before): sorted by a hash
-// of their coordinates, 16 flat bytes a point with no indirection in the sort, then each run of
-// equal hashes by its coordinates. Every point of a group but the lowest id is a duplicate.
+// Every point of a group at the same place but its lowest id is a duplicate.
 void count_duplicates(const MeshView& m, ValidationReport& r) {
-  struct Keyed {
-    std::uint64_t hash;
-    std::int64_t point;
-  };
-  std::vector<Keyed> keyed(static_cast<std::size_t>(m.n_points));
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, m.n_points, 8192), [&](const auto& range) {
-    for (std::int64_t p = range.begin(); p < range.end(); ++p) {
-      const glm::dvec3 x = m.point(p) + glm::dvec3(0.0);  // -0 + 0 is +0
-      std::uint64_t h = 0;
-      for (int k = 0; k < 3; ++k) {
-        std::uint64_t bits;
-        std::memcpy(&bits, &x[k], sizeof bits);
-        h = mix(h ^ bits);
-      }
-      keyed[p] = {h, p};
-    }
-  });
-  tbb::parallel_sort(keyed.begin(), keyed.end(),
-                     [](const Keyed& a, const Keyed& b) { return a.hash < b.hash || (a.hash == b.hash && a.point < b.point); });
-  auto key = [&m](std::int64_t p) {
-    const glm::dvec3 x = m.point(p);
-    return std::make_tuple(x.x, x.y, x.z);
-  };
-  for (std::size_t i = 0; i < keyed.size();) {
-    std::size_t j = i + 1;
-    while (j < keyed.size() && keyed[j].hash == keyed[i].hash) ++j;
-    if (j - i > 1) {  // the same place, or a collision: ordered by coordinates, then id
-      std::sort(keyed.begin() + i, keyed.begin() + j, [&](const Keyed& a, const Keyed& b) {
-        return key(a.point) < key(b.point) || (key(a.point) == key(b.point) && a.point < b.point);
-      });
-      for (std::size_t k = i + 1; k < j; ++k)
-        if (key(keyed[k].point) == key(keyed[k - 1].point)) {
-          ++r.duplicate_points;
-          if (r.first_duplicate < 0 || keyed[k].point < r.first_duplicate) r.first_duplicate = keyed[k].point;
-        }
-    }
-    i = j;
+  std::vector<std::int64_t> all(static_cast<std::size_t>(m.n_points));
+  std::iota(all.begin(), all.end(), 0);
+  const PointGroups groups = coincident_points(m, all);
+  for (std::size_t g = 0; g + 1 < groups.start.size(); ++g) {
+    r.duplicate_points += groups.start[g + 1] - groups.start[g] - 1;
+    const std::int64_t second = groups.ids[groups.start[g] + 1];
+    if (r.first_duplicate < 0 || second < r.first_duplicate) r.first_duplicate = second;
   }
 }
 
