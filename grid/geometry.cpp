@@ -91,6 +91,7 @@ PointGroups coincident_points(const MeshView& m, const std::vector<std::int64_t>
     const glm::dvec3 x = m.point(p);
     return std::make_tuple(x.x, x.y, x.z);
   };
+  // A non-finite point is left out before any sort: a NaN breaks the coordinates' order.
   std::vector<Keyed> keyed(candidates.size());
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, candidates.size(), 8192), [&](const auto& range) {
     for (std::size_t i = range.begin(); i < range.end(); ++i) {
@@ -101,9 +102,10 @@ PointGroups coincident_points(const MeshView& m, const std::vector<std::int64_t>
         std::memcpy(&bits, &x[k], sizeof bits);
         h = mix(h ^ bits);
       }
-      keyed[i] = {h, candidates[i]};
+      keyed[i] = {h, std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z) ? candidates[i] : -1};
     }
   });
+  keyed.erase(std::remove_if(keyed.begin(), keyed.end(), [](const Keyed& k) { return k.point < 0; }), keyed.end());
   tbb::parallel_sort(keyed.begin(), keyed.end(),
                      [](const Keyed& a, const Keyed& b) { return a.hash < b.hash || (a.hash == b.hash && a.point < b.point); });
   PointGroups groups;
@@ -116,8 +118,7 @@ PointGroups coincident_points(const MeshView& m, const std::vector<std::int64_t>
       });
       for (std::size_t s = i, e; s < j; s = e) {
         for (e = s + 1; e < j && key(keyed[e].point) == key(keyed[s].point);) ++e;
-        const glm::dvec3 x = m.point(keyed[s].point);
-        if (e - s < 2 || !(std::isfinite(x.x) && std::isfinite(x.y) && std::isfinite(x.z))) continue;
+        if (e - s < 2) continue;
         for (std::size_t k = s; k < e; ++k) groups.ids.push_back(keyed[k].point);
         groups.start.push_back(static_cast<std::int64_t>(groups.ids.size()));
       }
