@@ -13,10 +13,24 @@
 #if defined(__linux__)
 #include <sys/mman.h>
 #endif
+#if defined(__GLIBC__)
+#include <malloc.h>
+#endif
 
 namespace cellproj {
 
 inline constexpr std::size_t kHugePage = std::size_t(2) << 20;
+
+// Marks [p, p + bytes) for transparent huge pages where it holds whole ones. Advice only.
+inline void advise_huge_pages(void* p, std::size_t bytes) {
+#if defined(__linux__) && defined(MADV_HUGEPAGE)
+  const auto begin = reinterpret_cast<std::uintptr_t>(p), end = begin + bytes;
+  const std::uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage, last = end / kHugePage * kHugePage;
+  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+#else
+  (void)p, (void)bytes;
+#endif
+}
 
 template <class T>
 struct HugePageAllocator {
@@ -25,23 +39,30 @@ struct HugePageAllocator {
   template <class U>
   HugePageAllocator(const HugePageAllocator<U>&) noexcept {}
 
+  // A large block is a plain malloc block 2 MB longer than asked, the 2 MB boundary inside it
+  // handed out and the block's start kept in the word before. Not aligned_alloc: the C library
+  // carves an aligned block out of a larger free one and frees the two ends apart, so the same
+  // request a frame later no longer fits the hole it left; from the heap (below the mapping
+  // threshold the command line sets) every frame took fresh memory, 16 MB a frame at 1024².
   T* allocate(std::size_t n) {
-    if (n > static_cast<std::size_t>(-1) / sizeof(T)) throw std::bad_array_new_length();
+    if (n > (static_cast<std::size_t>(-1) - 2 * kHugePage) / sizeof(T)) throw std::bad_array_new_length();
     const std::size_t bytes = n * sizeof(T);
     if (bytes < kHugePage) return static_cast<T*>(::operator new(bytes));
     const std::size_t rounded = (bytes + kHugePage - 1) / kHugePage * kHugePage;
-    void* p = std::aligned_alloc(kHugePage, rounded);
-    if (!p) throw std::bad_alloc();
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-    madvise(p, rounded, MADV_HUGEPAGE);  // advice only: without huge pages the block works as well
-#endif
+    void* block = std::malloc(rounded + kHugePage);
+    if (!block) throw std::bad_alloc();
+    // The first boundary past the stored word: at most kHugePage on (malloc aligns to 16 bytes).
+    const auto at = (reinterpret_cast<std::uintptr_t>(block) + sizeof(void*) + kHugePage - 1) / kHugePage * kHugePage;
+    void* p = reinterpret_cast<void*>(at);
+    static_cast<void**>(p)[-1] = block;
+    advise_huge_pages(p, rounded);  // (the rounded length lies inside the block)
     return static_cast<T*>(p);
   }
   void deallocate(T* p, std::size_t n) noexcept {
     if (n * sizeof(T) < kHugePage)
       ::operator delete(p);
     else
-      std::free(p);
+      std::free(reinterpret_cast<void**>(p)[-1]);
   }
   friend bool operator==(const HugePageAllocator&, const HugePageAllocator&) { return true; }
   friend bool operator!=(const HugePageAllocator&, const HugePageAllocator&) { return false; }
@@ -64,10 +85,20 @@ using FrameBuffer = std::vector<T, HugePageAllocator<T>>;
 template <class T>
 void reserve_in_huge_pages(std::vector<T>& v, std::size_t n) {
   v.reserve(n);
-#if defined(__linux__) && defined(MADV_HUGEPAGE)
-  const auto begin = reinterpret_cast<std::uintptr_t>(v.data()), end = begin + n * sizeof(T);
-  const std::uintptr_t first = (begin + kHugePage - 1) / kHugePage * kHugePage, last = end / kHugePage * kHugePage;
-  if (last > first) madvise(reinterpret_cast<void*>(first), last - first, MADV_HUGEPAGE);
+  advise_huge_pages(v.data(), n * sizeof(T));
+}
+
+// The C library's settings for a program that renders frame after frame (the command line sets
+// them at start). glibc maps each block above its threshold anew and unmaps it when freed, so a
+// frame's arrays of a few MB would fault in again every frame; its threshold rises to 32 MB only
+// once such a block has been freed, which depended on what the mesh's preparation happened to
+// allocate (1,375 faults a frame on the 1M box against 118). Fixed at 32 MB from the start, the
+// heap trimmed past 64 MB (docs/methods.md, "The C library's mapping threshold"). Process-wide:
+// the library itself leaves them to the program.
+inline void keep_frame_arrays_in_heap() {
+#if defined(__GLIBC__)
+  mallopt(M_MMAP_THRESHOLD, 32 << 20);
+  mallopt(M_TRIM_THRESHOLD, 64 << 20);
 #endif
 }
 

@@ -1,12 +1,18 @@
 // Compositing by image tiles (composite/tiled_compositor.hpp) against the ordered stream: the same
 // bits and the same counts for any tile height and thread count, on tetrahedra and whole cells, with
 // the eye outside, inside (cells ray cast from it) and an orthographic eye plane through the mesh.
+#include <algorithm>
 #include <cmath>
+#include <cstdint>
+#include <fstream>
 #include <string>
+
+#include <unistd.h>
 
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
+#include "base/huge_pages.hpp"
 #include "composite/tiled_compositor.hpp"
 #include "grid/generate.hpp"
 #include "parallel/projection_renderer.hpp"
@@ -37,7 +43,37 @@ void expect_same_counts(const ProjectionStats& a, const ProjectionStats& b, cons
   EXPECT_EQ(x.fragments, y.fragments) << what;
 }
 
+// This process's resident memory in bytes (Linux), or -1.
+std::int64_t resident_bytes() {
+  std::ifstream statm("/proc/self/statm");
+  long long size = 0, resident = 0;
+  if (!(statm >> size >> resident)) return -1;
+  return resident * sysconf(_SC_PAGESIZE);
+}
+
 }  // namespace
+
+TEST(FrameMemory, FramesAfterTheFirstTakeNoNewMemory) {
+  // The command line's allocator settings, under which the framebuffer's aligned_alloc left a
+  // 16 MB hole a frame at 1024² that the next frame's could not reuse (base/huge_pages.hpp).
+  keep_frame_arrays_in_heap();
+  const Mesh m = generate("box-tets", 12);  // bench/run's tets-10k
+  const ProjectionRenderer r(m.view());
+  const TransferFunction tf = tiles_tf();
+  const Camera cam = test::view_from({3.6, -4.6, 3.0}, Projection::Perspective);
+  const auto frame = [&] {
+    Image image =
+        r.render(test::field_values(m), tf, cam, 1024, 1024, test::with_method(ProjectionMethod::pt_linear));
+    EXPECT_GT(*std::max_element(image.rgba.begin(), image.rgba.end()), 0.0f);
+    return image;
+  };
+  const Image first = frame();  // kept, as the command line keeps the frame it writes after timing
+  for (int f = 0; f < 2; ++f) frame();
+  const std::int64_t before = resident_bytes();
+  if (before < 0) GTEST_SKIP() << "no /proc/self/statm";
+  for (int f = 0; f < 8; ++f) frame();
+  EXPECT_LT(resident_bytes() - before, std::int64_t{4} << 20) << "8 frames of a 16 MB framebuffer";
+}
 
 TEST(Tiles, TheSameBitsAndCountsAsTheStreamForAnyTileHeightAndThreads) {
   const TransferFunction tf = tiles_tf();

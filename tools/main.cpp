@@ -4,26 +4,15 @@
 #include <new>
 #include <string>
 
-#if defined(__GLIBC__)
-#include <malloc.h>
-#endif
-
 #include "base/error.hpp"
+#include "base/huge_pages.hpp"
 #include "distributed/communicator.hpp"
 #include "tools/commands.hpp"
 #include "tools/terminal_text.hpp"
 
 int main(int argc, char** argv) {
   using namespace cellproj;
-#if defined(__GLIBC__)
-  // The C library maps each block above its threshold anew and unmaps it when freed, so a frame's
-  // arrays of a few MB fault in again every frame. Its threshold rises to 32 MB only once such a
-  // block has been freed, which depended on what the mesh's preparation happened to allocate
-  // (1,375 faults a frame on the 1M box against 118): fixed at 32 MB from the start, the heap
-  // trimmed past 64 MB (docs/methods.md, "Fresh pages").
-  mallopt(M_MMAP_THRESHOLD, 32 << 20);
-  mallopt(M_TRIM_THRESHOLD, 64 << 20);
-#endif
+  keep_frame_arrays_in_heap();  // a frame's arrays of a few MB reused, not mapped anew (base/huge_pages.hpp)
   const MpiSession mpi(&argc, &argv);  // MPI only when launched by mpirun
   // Under mpirun every rank meets the same error (agree() makes them one): rank 0 reports it.
   const bool report_errors = Communicator::world().rank == 0;
