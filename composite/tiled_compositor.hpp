@@ -18,6 +18,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/partitioner.h>
 
+#include "base/huge_pages.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {
@@ -40,8 +41,8 @@ inline int first_tile(const RowRange& reach, int height, int rows) {
 // The position of each item in its tiles' lists: tile t holds items order[first[t] .. first[t+1]).
 struct TileBins {
   std::vector<std::size_t> first;     // tiles + 1 offsets
-  std::vector<std::size_t> items;     // each tile's items, in order
-  std::vector<std::uint8_t> counted;  // per entry of items: 1 in the item's first tile
+  FrameBuffer<std::size_t> items;     // each tile's items, in order (fresh every frame)
+  FrameBuffer<std::uint8_t> counted;  // per entry of items: 1 in the item's first tile
 };
 
 // Whether a Source has prefetch(k, stage): composite_in_tiles' look-ahead.

@@ -83,7 +83,7 @@ RowRange cell_rows(const ImageExtent& e, const PixelRays& rays) {
 // centres (MWSC section 6, Williams et al.'s software scan conversion), counted; with `rows`, also
 // the rows each cell reaches (cell_rows), in the same pass over the cells' vertices.
 std::vector<std::uint8_t> small_cells(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays,
-                                      double threshold, SplatCounters& counters, std::vector<RowRange>* rows) {
+                                      double threshold, SplatCounters& counters, FrameBuffer<RowRange>* rows) {
   std::vector<std::uint8_t> small(static_cast<std::size_t>(cells.n_cells), 0);
   if (rows) rows->resize(static_cast<std::size_t>(cells.n_cells));
   const int limit = static_cast<int>(std::min(std::ceil(threshold), 1e9));
@@ -284,7 +284,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   const bool by_tiles = options.compositing == Compositing::tiles && st.small_cells != SmallCells::splat;
   // The passes over the cells that need no order: which are small, which rows each reaches.
   std::vector<std::uint8_t> small;
-  std::vector<RowRange> reach;
+  FrameBuffer<RowRange> reach;
   const MeshView* passed = nullptr;  // the cells they ran on
   double small_seconds = 0;
   const auto cell_passes = [&](const MeshView& of) {

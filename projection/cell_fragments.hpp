@@ -6,6 +6,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/huge_pages.hpp"
 #include "composite/fragment.hpp"
 #include "composite/gl_corner.hpp"
 #include "composite/opaque_mask.hpp"
@@ -49,8 +50,8 @@ struct ProjectionCounters {
 
 // Extinction and colour at every point (the corners of the Gouraud-shaded methods), once per frame.
 struct PointOptics {
-  std::vector<double> kappa;
-  std::vector<glm::dvec3> color;
+  FrameBuffer<double> kappa;
+  FrameBuffer<glm::dvec3> color;
 };
 // Parallel over points (oneTBB, in the caller's task arena); a null scalar reads as 0 everywhere.
 PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf);

@@ -84,13 +84,13 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
     for (const Relations* rel : lists)
       for (std::int64_t k = rel->start[c]; k < rel->start[c + 1]; ++k) visit(rel->to[k]);
   };
-  std::vector<std::int32_t>& in = faces.in;
+  FrameBuffer<std::int32_t>& in = faces.in;
   in.resize(static_cast<std::size_t>(n), 0);
   for (const Relations* rel : lists)
     for (std::int64_t m : rel->to) ++in[m];
 
   std::vector<std::int64_t> order;  // doubles as Kahn's FIFO queue
-  order.reserve(static_cast<std::size_t>(n));
+  reserve_in_huge_pages(order, static_cast<std::size_t>(n));
   for (std::int64_t c = 0; c < n; ++c)
     if (in[c] == 0) order.push_back(c);
   std::size_t head = 0;

@@ -72,8 +72,8 @@ struct Relations {
 // ahead[c] is set when the cell across c's k-th face comes after c; in[c] counts the cells that
 // must come before c. A face seen exactly edge-on makes no relation.
 struct FaceOrder {
-  std::vector<std::uint8_t> ahead;
-  std::vector<std::int32_t> in;
+  FrameBuffer<std::uint8_t> ahead;  // fresh every view (base/huge_pages.hpp)
+  FrameBuffer<std::int32_t> in;
   Relations split;  // from a cell with a split quad to the tetrahedra across it (no bit on that side)
   std::int64_t relations = 0;
 };
