@@ -623,9 +623,11 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
     counters.fragments += fragments.finish(/*ends=*/false);
     return true;
   }
-  if constexpr (std::is_same_v<Emit, CompositeFragments>)  // a tile's compositing, pt-linear: in the fan's lanes
-    if (gouraud && !table) {
-      counters.fragments += fan_composite_over(planes, emit.image, box.i0, box.j0, j0 - box.j0, j1 - j0 + 1, bw);
+  if constexpr (std::is_same_v<Emit, CompositeFragments>)  // a tile's compositing, pt-linear and pt-table: in the fan's lanes
+    if (gouraud) {
+      const int r0 = j0 - box.j0, rows_drawn = j1 - j0 + 1;
+      counters.fragments += table ? fan_composite_table(planes, *table_, emit.image, box.i0, box.j0, r0, rows_drawn, bw)
+                                  : fan_composite_over(planes, emit.image, box.i0, box.j0, r0, rows_drawn, bw);
       return true;
     }
   FanPixels& f = p.fan;

@@ -5,7 +5,11 @@
 #include <cstring>
 #include <limits>
 
+#include <glm/common.hpp>
+#include <glm/vec3.hpp>
+
 #include "base/simd.hpp"
+#include "composite/fragment.hpp"
 #include "projection/fan_row.hpp"
 
 namespace cellproj {
@@ -131,6 +135,31 @@ struct CompositeOver {
   std::int64_t fragments() const { return -(added[0] + added[1] + added[2] + added[3]); }
 };
 
+// pt-table's fan composited straight onto the image: each pixel's opacity from the table at its
+// kappa_avg and thickness, its colour clamped to >= 0 times it, then "over" as project_fan did
+// with fan_pixels' values and CompositeFragments (the same operations, so the same bits): a pixel
+// adding nothing (opacity and colour 0) is skipped and not counted.
+struct CompositeTable {
+  Image& image;
+  const OpacityTable& table;
+  int i0, j0, row0;
+  std::int64_t added = 0;
+  float* line = nullptr;  // the image at the row's box pixel 0
+  int last = -1;
+  [[gnu::always_inline]] void row(int r, int /*first*/, int e) { line = image.pixel(i0, j0 + row0 + r), last = e; }
+  [[gnu::always_inline]] void lanes(int i, const Lanes* v) {
+    for (int k = 0, n = std::min(4, last - i + 1); k < n; ++k) {
+      const double alpha = table(std::max(v[0][k], 0.0), std::max(v[1][k], 0.0));
+      const glm::dvec3 rgb = glm::max(glm::dvec3(v[2][k], v[3][k], v[4][k]), 0.0) * alpha;
+      if (alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0) continue;
+      const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
+                            static_cast<float>(alpha)};
+      over(line + 4 * (i + k), src);
+      ++added;
+    }
+  }
+};
+
 template <int S, int Q, bool Linear = false>
 [[gnu::always_inline]] inline void pixels(const FanPlanes& f, int row0, int rows, int width, int stride,
                                           std::size_t size, int* __restrict first, int* __restrict last,
@@ -197,6 +226,18 @@ CELLPROJ_FAN_KERNEL(linear_4, 4, 4, true)
 CELLPROJ_FAN_OVER(over_3, 3)
 CELLPROJ_FAN_OVER(over_4, 4)
 #undef CELLPROJ_FAN_OVER
+
+// pt-table's fan over the image, per triangle count, for the build's target and AVX2.
+#define CELLPROJ_FAN_TABLE(name, S)                                                                       \
+  CELLPROJ_AVX2_CLONES std::int64_t name(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, \
+                                         int j0, int r0, int n, int w) {                                  \
+    CompositeTable out{image, table, i0, j0, r0};                                                         \
+    fan_rows<S, 5>(f, r0, n, w, out);                                                                     \
+    return out.added;                                                                                     \
+  }
+CELLPROJ_FAN_TABLE(table_3, 3)
+CELLPROJ_FAN_TABLE(table_4, 4)
+#undef CELLPROJ_FAN_TABLE
 
 using SegmentsFn = void (*)(const FanPlanes&, const FanSegments&, SegmentBatch&);
 #define CELLPROJ_FAN_SEGMENTS(name, S, perspective)                                            \
@@ -321,6 +362,11 @@ std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0
     return fan_over_avx2(f, image, i0, j0, row0, rows, width);
 #endif
   return (f.sectors == 4 ? over_4 : over_3)(f, image, i0, j0, row0, rows, width);
+}
+
+std::int64_t fan_composite_table(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0,
+                                 int row0, int rows, int width) {
+  return (f.sectors == 4 ? table_4 : table_3)(f, table, image, i0, j0, row0, rows, width);
 }
 
 }  // namespace cellproj

@@ -1,5 +1,6 @@
 // A projected tetrahedron's fan over its pixel box (tet_fan.hpp) against the triangle rasterizer
 // it replaces for small tetrahedra: the same pixels, the same interpolated quantities.
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <random>
@@ -282,20 +283,23 @@ TEST_P(FanKernels, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
   EXPECT_GT(segments, 5000);
 }
 
-TEST_P(FanKernels, CompositedOverTheImageAsItsStoredPixelsAre) {
-  // pt-linear's fan composited in its lanes (fan_composite_over, either kernel) against fan_pixels'
-  // stored opacity and premultiplied colour composited one by one with over(): the same image
-  // bits, the same count, nothing outside the outline touched; opacities past [0, 1], negative
-  // colours and tetrahedra adding nothing (opacity <= 0 everywhere) included, from a tile's middle
-  // row too; every third tetrahedron's corners on pixel centres, so that spokes pass through
-  // centres (a wedge value of 0: ties between triangles, which the AVX2 kernel breaks apart from
-  // the rest; either triangle gives the value to rounding, so this checks that one is chosen).
+// Fans composited in their lanes against fan_pixels' stored values composited one by one with
+// over(): pt-linear's (fan_composite_over in `lanes`; table null: the stored opacity and
+// premultiplied colour) or pt-table's (fan_composite_table; each pixel's opacity from the table at
+// its kappa_avg and thickness clamped to >= 0, its colour clamped to >= 0 times it, as project_fan
+// did). The same image bits, the same count, nothing outside the outline touched; opacities (or
+// kappa_avg) past their range, negative colours and tetrahedra adding nothing included, from a
+// tile's middle row too; every third tetrahedron's corners on pixel centres, so that spokes pass
+// through centres (a wedge value of 0: ties between triangles, which the AVX2 kernel breaks apart
+// from the rest; either triangle gives the value to rounding, so this checks that one is chosen).
+void expect_composited_as_stored(FanLanes lanes, const OpacityTable* table) {
   std::mt19937 rng(11);
   std::uniform_real_distribution<double> x(1.0, kW - 1.0), y(1.0, kH - 1.0), z(1.0, 5.0), u(-0.3, 1.4);
   Image want(kW, kH);
   for (float& v : want.rgba) v = static_cast<float>(std::uniform_real_distribution<double>(0.0, 1.0)(rng));
   Image got = want;
   std::int64_t composited = 0;
+  const int nq = table ? 5 : 4;
   for (int t = 0; t < 300; ++t) {
     const double cx = x(rng), cy = y(rng);
     std::uniform_real_distribution<double> d(-9.0, 9.0);
@@ -307,16 +311,16 @@ TEST_P(FanKernels, CompositedOverTheImageAsItsStoredPixelsAre) {
     if (pt.hull_size == 0 || pt.edge_on) continue;
     double thick[kFanQuantities] = {}, hull[4][kFanQuantities] = {};
     const auto corner = [&](double* q) {
-      q[0] = t % 5 == 0 ? -u(rng) - 0.31 : u(rng);  // opacity (never above 0 for every fifth)
-      for (int m = 1; m < 4; ++m) q[m] = u(rng);
+      q[0] = t % 5 == 0 ? -u(rng) - 0.31 : u(rng);  // opacity or kappa_avg (never above 0 for every fifth)
+      for (int m = 1; m < nq; ++m) q[m] = u(rng);   // (pt-table: thickness, then colour)
     };
     corner(thick);
     for (int k = 0; k < pt.hull_size; ++k) corner(hull[k]);
     const PixelBox box = fan_box(pt);
     if (box.empty()) continue;
-    FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, 4, thick, hull);
+    FanPlanes planes = fan_planes(pt, box.i0 + 0.5, box.j0 + 0.5, nq, thick, hull);
     ASSERT_GT(planes.sectors, 0);
-    planes.linear_opacity = true;
+    planes.linear_opacity = !table;
     const int bw = box.i1 - box.i0 + 1, row0 = t % 3 == 0 ? (box.j1 - box.j0) / 2 : 0,
               rows = box.j1 - box.j0 + 1 - row0;
     FanPixels f;
@@ -325,19 +329,32 @@ TEST_P(FanKernels, CompositedOverTheImageAsItsStoredPixelsAre) {
     for (int r = 0; r < rows; ++r)
       for (int i = f.first[r]; i <= f.last[r]; ++i) {
         const std::size_t k = static_cast<std::size_t>(r) * f.stride + i;
-        const double a = f.quantity(0)[k], c[3] = {f.quantity(1)[k], f.quantity(2)[k], f.quantity(3)[k]};
+        const auto q = [&](int m) { return f.quantity(m)[k]; };
+        const double a = table ? (*table)(std::max(q(0), 0.0), std::max(q(1), 0.0)) : q(0);
+        double c[3];
+        for (int m = 0; m < 3; ++m) c[m] = table ? std::max(q(2 + m), 0.0) * a : q(1 + m);
         if (a == 0.0 && c[0] == 0.0 && c[1] == 0.0 && c[2] == 0.0) continue;
         const float src[4] = {static_cast<float>(c[0]), static_cast<float>(c[1]), static_cast<float>(c[2]),
                               static_cast<float>(a)};
         over(want.pixel(box.i0 + i, box.j0 + row0 + r), src);
         ++n;
       }
-    EXPECT_EQ(fan_composite_over(planes, got, box.i0, box.j0, row0, rows, bw, GetParam()), n) << "tetrahedron " << t;
+    EXPECT_EQ(table ? fan_composite_table(planes, *table, got, box.i0, box.j0, row0, rows, bw)
+                    : fan_composite_over(planes, got, box.i0, box.j0, row0, rows, bw, lanes),
+              n)
+        << "tetrahedron " << t;
     composited += n;
     ASSERT_EQ(std::memcmp(got.rgba.data(), want.rgba.data(), want.rgba.size() * sizeof(float)), 0)
         << "tetrahedron " << t;
   }
   EXPECT_GT(composited, 3000);
+}
+
+TEST_P(FanKernels, CompositedOverTheImageAsItsStoredPixelsAre) { expect_composited_as_stored(GetParam(), nullptr); }
+
+TEST(TetFan, PtTableCompositedOverTheImageAsItsStoredPixelsThroughTheTableAre) {
+  const OpacityTable table(64, 1.2, 1.1);  // kappa_avg and thickness past its range too (clamped)
+  expect_composited_as_stored(FanLanes::pixels, &table);
 }
 
 INSTANTIATE_TEST_SUITE_P(TetFan, FanKernels, testing::Values(FanLanes::quantities, FanLanes::pixels),

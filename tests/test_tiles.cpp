@@ -84,7 +84,8 @@ TEST(Tiles, TheSameBitsAndCountsAsTheStreamForAnyTileHeightAndThreads) {
     const Camera cams[3] = {test::view_from({0.5, -3, 2}, Projection::Perspective), test::inside_wavy_grid(Projection::Perspective),
                             test::inside_wavy_grid(Projection::Orthographic)};
     for (int v = 0; v < 3; ++v)
-      for (ProjectionMethod method : {ProjectionMethod::pt_linear, ProjectionMethod::pt_breakpoints}) {
+      for (ProjectionMethod method :
+           {ProjectionMethod::pt_linear, ProjectionMethod::pt_table, ProjectionMethod::pt_breakpoints}) {
         if (!tetrahedra && v > 0) continue;  // whole cells reaching behind the eye are not drawn
         ProjectionOptions o;
         o.method = method;
