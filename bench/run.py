@@ -222,6 +222,7 @@ def report(path):
     print(HEADER)
     for r in list(bench.rows):
         bench.print_row(r)
+    summary(bench)
     peer_ratios(bench)
 
 
@@ -244,6 +245,28 @@ def model_check(bench):
     for method, mapper in PEERS.items():
         _, npy = bench.peer(scene, f"slab_{method}", mapper, 64)
         print(f"| {method} | {np.load(npy)[32, 32, 0]:.4f} |", flush=True)
+
+
+def summary(bench):
+    """docs/accuracy.md's summary: per mesh and size, each projection method's median time and RMSE
+    with the `auto` sort (the first row of each method), exact's time and VTK's projected tetrahedra."""
+    ours = ["pt-linear", "pt-table", "pt-analytic", "pt-breakpoints"]
+    print("\n| mesh | cells | size | " + " | ".join(f"{m} s / RMSE" for m in ours) + " | exact s | vtk-pt s / RMSE |")
+    print("|---|---|---|" + "---|" * (len(ours) + 2))
+    seen = []
+    for r in bench.rows:
+        if (r["mesh"], r["width"]) not in seen:
+            seen.append((r["mesh"], r["width"]))
+    for mesh, width in seen:
+        first = {}
+        for x in bench.rows:
+            if x["mesh"] == mesh and x["width"] == width:
+                first.setdefault(x["method"], x)
+        cell = lambda m: (f"{first[m]['median_seconds']:.3f} / {first[m]['rmse']:.1e}"
+                          if m in first and first[m]["rmse"] != "" else "—")
+        exact = f"{first['exact']['median_seconds']:.3f}" if "exact" in first else "—"
+        cells = next(iter(first.values()))["cells"]
+        print(f"| {mesh} | {cells} | {width}² | " + " | ".join(cell(m) for m in ours) + f" | {exact} | {cell('vtk-pt')} |")
 
 
 def peer_ratios(bench):
@@ -394,6 +417,7 @@ def main():
         w = csv.DictWriter(f, fieldnames=COLUMNS)
         w.writeheader()
         w.writerows(bench.rows)
+    summary(bench)
     peer_ratios(bench)
     if not a.no_peers:
         model_check(bench)
