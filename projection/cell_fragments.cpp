@@ -623,7 +623,8 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
     counters.fragments += fragments.finish(/*ends=*/false);
     return true;
   }
-  if constexpr (std::is_same_v<Emit, CompositeFragments>)  // a tile's compositing, pt-linear and pt-table: in the fan's lanes
+  // A tile's compositing, pt-linear and pt-table: composited in the fan's lanes.
+  if constexpr (std::is_same_v<Emit, CompositeFragments>)
     if (gouraud) {
       const int r0 = j0 - box.j0, rows_drawn = j1 - j0 + 1;
       counters.fragments += table ? fan_composite_table(planes, *table_, emit.image, box.i0, box.j0, r0, rows_drawn, bw)

@@ -228,12 +228,12 @@ CELLPROJ_FAN_OVER(over_4, 4)
 #undef CELLPROJ_FAN_OVER
 
 // pt-table's fan over the image, per triangle count, for the build's target and AVX2.
-#define CELLPROJ_FAN_TABLE(name, S)                                                                       \
-  CELLPROJ_AVX2_CLONES std::int64_t name(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, \
-                                         int j0, int r0, int n, int w) {                                  \
-    CompositeTable out{image, table, i0, j0, r0};                                                         \
-    fan_rows<S, 5>(f, r0, n, w, out);                                                                     \
-    return out.added;                                                                                     \
+#define CELLPROJ_FAN_TABLE(name, S)                                                                                   \
+  CELLPROJ_AVX2_CLONES std::int64_t name(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0, \
+                                         int r0, int n, int w) {                                                      \
+    CompositeTable out{image, table, i0, j0, r0};                                                                     \
+    fan_rows<S, 5>(f, r0, n, w, out);                                                                                 \
+    return out.added;                                                                                                 \
   }
 CELLPROJ_FAN_TABLE(table_3, 3)
 CELLPROJ_FAN_TABLE(table_4, 4)

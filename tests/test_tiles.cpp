@@ -1,6 +1,7 @@
 // Compositing by image tiles (composite/tiled_compositor.hpp) against the ordered stream: the same
 // bits and the same counts for any tile height and thread count, on tetrahedra and whole cells, with
-// the eye outside, inside (cells ray cast from it) and an orthographic eye plane through the mesh.
+// the eye outside, inside (cells ray cast from it) and an orthographic eye plane through the mesh;
+// and frame after frame at 1024², no new memory (the framebuffer's block reused).
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
