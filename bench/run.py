@@ -226,6 +226,36 @@ def report(path):
     peer_ratios(bench)
 
 
+def compare(old_path, new_path):
+    """Whether two runs' errors agree: each row's RMSE, largest error and violation count (the first
+    row of each mesh, method, sort and size), with the count of values compared and those that differ."""
+    def rows(path):
+        out = {}
+        for r in csv.DictReader(open(path)):
+            out.setdefault((r["mesh"], r["method"], r["sort"], r["width"]), r)
+        return out
+    old, new = rows(old_path), rows(new_path)
+    same = differ = 0
+    largest = 0.0  # the largest relative difference of a value that differs
+    for key, r in new.items():
+        if key not in old:
+            print("only in the new run:", key)
+            continue
+        for c in ("rmse", "max_abs", "violations"):
+            if old[key][c] == r[c]:
+                same += 1
+                continue
+            differ += 1
+            try:
+                a, b = float(old[key][c]), float(r[c])
+                largest = max(largest, abs(a - b) / max(abs(a), abs(b)))
+            except ValueError:
+                largest = float("inf")
+            print(f"{key} {c}: {old[key][c]} -> {r[c]}")
+    print(f"{same} values the same, {differ} different (largest relative difference {largest:.1e}), "
+          f"over {len(new)} rows ({len(old)} before)")
+
+
 def model_check(bench):
     """The optical model handed to VTK, checked where the answer is known: a slab of constant
     extinction 1 and thickness 2 seen straight down, 1 - e^-2 = 0.8647 at its centre."""
@@ -374,12 +404,17 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, "build"))
     ap.add_argument("--no-peers", action="store_true", help="skip VTK's mappers")
     ap.add_argument("--report", metavar="CSV", help="print the tables of an earlier run's results.csv and stop")
+    ap.add_argument("--compare", nargs=2, metavar=("OLD_CSV", "NEW_CSV"),
+                    help="whether two runs' errors (RMSE, largest error, violations) are the same, row by row")
     ap.add_argument("--speed-only", action="store_true",
                     help="each projection method against VTK's projected tetrahedra, time only, every mesh (~15 min)")
     ap.add_argument("--sweeps-only", action="store_true", help="only the table-size and thread sweeps (~3 min)")
     a = ap.parse_args()
     if a.report:
         report(a.report)
+        return
+    if a.compare:
+        compare(*a.compare)
         return
     for sub in ("meshes", "images"):
         os.makedirs(os.path.join(a.out, sub), exist_ok=True)
