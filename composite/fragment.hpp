@@ -5,6 +5,8 @@
 #include <cstdint>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "base/huge_pages.hpp"
 #include "view/image.hpp"
 
@@ -52,6 +54,12 @@ class FragmentBands {
   int width_ = 0, shift_ = 0;
   std::vector<Fragments> bands_;
 };
+
+// A fragment that neither adds light nor hides anything (a ray grazing a cell): not composited,
+// not counted.
+inline bool adds_nothing(const glm::dvec3& rgb, double alpha) {
+  return alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0;
+}
 
 // Back to front: src in front of what dst holds.
 inline void over(float* dst, const float src[4]) {

@@ -147,11 +147,6 @@ inline void affine_ends(const ThickVertex& v, bool persp, double q[4]) {
   affine_depth_scalar({v.x, v.y, v.zb, v.sb}, persp, q[1], q[3]);
 }
 
-// A fragment that neither adds light nor hides anything (a ray grazing the cell) is not emitted.
-inline bool adds_nothing(const glm::dvec3& rgb, double alpha) {
-  return alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0;
-}
-
 // Appends fragments to a batch's bands.
 struct AppendFragments {
   FragmentBands& out;

@@ -151,7 +151,7 @@ struct CompositeTable {
     for (int k = 0, n = std::min(4, last - i + 1); k < n; ++k) {
       const double alpha = table(std::max(v[0][k], 0.0), std::max(v[1][k], 0.0));
       const glm::dvec3 rgb = glm::max(glm::dvec3(v[2][k], v[3][k], v[4][k]), 0.0) * alpha;
-      if (alpha == 0.0 && rgb.r == 0.0 && rgb.g == 0.0 && rgb.b == 0.0) continue;
+      if (adds_nothing(rgb, alpha)) continue;
       const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
                             static_cast<float>(alpha)};
       over(line + 4 * (i + k), src);
