@@ -44,6 +44,18 @@ void expect_same_counts(const ProjectionStats& a, const ProjectionStats& b, cons
   EXPECT_EQ(x.fragments, y.fragments) << what;
 }
 
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 // This process's resident memory in bytes (Linux), or -1.
 std::int64_t resident_bytes() {
   std::ifstream statm("/proc/self/statm");
@@ -55,9 +67,8 @@ std::int64_t resident_bytes() {
 }  // namespace
 
 TEST(FrameMemory, FramesAfterTheFirstTakeNoNewMemory) {
-#if defined(__SANITIZE_ADDRESS__)
-  GTEST_SKIP() << "AddressSanitizer's allocator holds freed blocks in quarantine: no reuse to measure";
-#endif
+  if (kAddressSanitizer)
+    GTEST_SKIP() << "AddressSanitizer's allocator holds freed blocks in quarantine: no reuse to measure";
   // The command line's allocator settings, under which the framebuffer's aligned_alloc left a
   // 16 MB hole a frame at 1024² that the next frame's could not reuse (base/huge_pages.hpp).
   keep_frame_arrays_in_heap();
