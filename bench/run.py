@@ -277,10 +277,19 @@ def model_check(bench):
         print(f"| {method} | {np.load(npy)[32, 32, 0]:.4f} |", flush=True)
 
 
+def first_rows(bench, mesh, width):
+    """Each method's first row on a mesh at a size: for the projection methods, their `auto` sort."""
+    first = {}
+    for x in bench.rows:
+        if x["mesh"] == mesh and x["width"] == width:
+            first.setdefault(x["method"], x)
+    return first
+
+
 def summary(bench):
     """docs/accuracy.md's summary: per mesh and size, each projection method's median time and RMSE
     with the `auto` sort (the first row of each method), exact's time and VTK's projected tetrahedra."""
-    ours = ["pt-linear", "pt-table", "pt-analytic", "pt-breakpoints"]
+    ours = METHODS
     print("\n| mesh | cells | size | " + " | ".join(f"{m} s / RMSE" for m in ours) + " | exact s | vtk-pt s / RMSE |")
     print("|---|---|---|" + "---|" * (len(ours) + 2))
     seen = []
@@ -288,10 +297,7 @@ def summary(bench):
         if (r["mesh"], r["width"]) not in seen:
             seen.append((r["mesh"], r["width"]))
     for mesh, width in seen:
-        first = {}
-        for x in bench.rows:
-            if x["mesh"] == mesh and x["width"] == width:
-                first.setdefault(x["method"], x)
+        first = first_rows(bench, mesh, width)
         cell = lambda m: (f"{first[m]['median_seconds']:.3f} / {first[m]['rmse']:.1e}"
                           if m in first and first[m]["rmse"] != "" else "—")
         exact = f"{first['exact']['median_seconds']:.3f}" if "exact" in first else "—"
@@ -301,17 +307,14 @@ def summary(bench):
 
 def peer_ratios(bench):
     """Each VTK mapper's time over ours (above 1: ours is faster), per mesh and size."""
-    ours = ["pt-linear", "pt-table", "pt-analytic", "pt-breakpoints"]
+    ours = METHODS
     print("\n| mesh | size | peer | peer s | peer RMSE | " + " | ".join(f"peer / {m}" for m in ours) + " |")
     print("|---|---|---|---|---|" + "---|" * len(ours))
     for r in bench.rows:
         if not r["method"].startswith("vtk-"):
             continue
-        mine = {}  # the first row of each method is its `auto` sort
-        for x in bench.rows:
-            if x["mesh"] == r["mesh"] and x["width"] == r["width"]:
-                mine.setdefault(x["method"], x["median_seconds"])
-        ratios = " | ".join(f"{r['median_seconds'] / mine[m]:.2f}" if m in mine else "" for m in ours)
+        mine = first_rows(bench, r["mesh"], r["width"])
+        ratios = " | ".join(f"{r['median_seconds'] / mine[m]['median_seconds']:.2f}" if m in mine else "" for m in ours)
         rmse = f"{r['rmse']:.1e}" if r["rmse"] != "" else "—"
         print(f"| {r['mesh']} | {r['width']}² | {r['method']} | {r['median_seconds']:.3f} | {rmse} | {ratios} |")
 
