@@ -3,6 +3,7 @@
 // no lane is spent past a row's end (a row of a small tetrahedron is a few pixels, where four
 // pixels at a time spend most lanes and set-up on nothing). Each value gets the same operations
 // as in tet_fan.cpp's four-pixel kernels, so the same bits.
+#include <algorithm>
 #include <limits>
 
 #include "projection/fan_row.hpp"
@@ -14,7 +15,8 @@ namespace cellproj {
 namespace {
 
 #define CELLPROJ_AVX2 __attribute__((target("avx2")))
-#define CELLPROJ_AVX2_INLINE __attribute__((target("avx2"), always_inline)) inline
+#define CELLPROJ_AVX2_LAMBDA __attribute__((target("avx2"), always_inline))  // (after a lambda's parameters)
+#define CELLPROJ_AVX2_INLINE CELLPROJ_AVX2_LAMBDA inline
 
 // A fan's per-tetrahedron vectors: its spokes' planes (lane k: spoke k) and triangles left out, and
 // each triangle's quantity planes with their lanes in `Order` (a _mm256_permute4x64_pd control).
@@ -47,58 +49,100 @@ struct FanRow {
     spoke0 = _mm256_add_pd(v.spoke_c, _mm256_mul_pd(v.spoke_gy, yy));
     for (int a = 0; a < S; ++a) q0[a] = _mm256_add_pd(v.qc[a], _mm256_mul_pd(v.qgy[a], yy));
   }
-  // The quantities at x (all lanes x): those of the triangle whose wedge holds the pixel. Its
-  // wedge value min(spoke[a], -spoke[a + 1]) + left_out[a] is the one positive inside the outline;
-  // where none or two are (on a spoke, at the thick vertex, to rounding), fan_rows' rule: the first
-  // largest. Zero if none is taken (NaN), as fan_rows.
-  CELLPROJ_AVX2_INLINE __m256d at(const FanVectors<S, Order>& v, __m256d x) const {
-    const __m256d zero = _mm256_setzero_pd();
+  // The triangle whose wedge holds the pixels at x (all lanes x): its wedge value
+  // min(spoke[a], -spoke[a + 1]) + left_out[a] is the one positive inside the outline; where none
+  // or two are (on a spoke, at the thick vertex, to rounding), fan_rows' rule: the first largest.
+  // -1 if none is taken (NaN).
+  CELLPROJ_AVX2_INLINE int triangle(const FanVectors<S, Order>& v, __m256d x) const {
     const __m256d spoke = _mm256_add_pd(spoke0, _mm256_mul_pd(v.spoke_gx, x));
     const __m256d next = S == 4 ? _mm256_permute4x64_pd(spoke, 0x39) : _mm256_permute4x64_pd(spoke, 0xC9);
-    const __m256d w =
-        _mm256_add_pd(_mm256_min_pd(spoke, _mm256_xor_pd(next, _mm256_set1_pd(-0.0))), v.left_out);
-    const int inside = _mm256_movemask_pd(_mm256_cmp_pd(w, zero, _CMP_GT_OQ));
+    const __m256d w = _mm256_add_pd(_mm256_min_pd(spoke, _mm256_xor_pd(next, _mm256_set1_pd(-0.0))), v.left_out);
+    const int inside = _mm256_movemask_pd(_mm256_cmp_pd(w, _mm256_setzero_pd(), _CMP_GT_OQ));
+    if (inside != 0 && (inside & (inside - 1)) == 0) return __builtin_ctz(static_cast<unsigned>(inside));
+    alignas(32) double wa[4];
+    _mm256_store_pd(wa, w);
+    double best = -std::numeric_limits<double>::infinity();
     int a = -1;
-    if (inside != 0 && (inside & (inside - 1)) == 0) {
-      a = __builtin_ctz(static_cast<unsigned>(inside));
-    } else {
-      alignas(32) double wa[4];
-      _mm256_store_pd(wa, w);
-      double best = -std::numeric_limits<double>::infinity();
-      for (int k = 0; k < S; ++k)
-        if (wa[k] > best) best = wa[k], a = k;
-    }
-    return a < 0 ? zero : _mm256_add_pd(q0[a], _mm256_mul_pd(v.qx[a], x));
+    for (int k = 0; k < S; ++k)
+      if (wa[k] > best) best = wa[k], a = k;
+    return a;
+  }
+  // The quantities at x: those of triangle(v, x), zero if none is taken, as fan_rows.
+  CELLPROJ_AVX2_INLINE __m256d at(const FanVectors<S, Order>& v, __m256d x) const {
+    const int a = triangle(v, x);
+    return a < 0 ? _mm256_setzero_pd() : _mm256_add_pd(q0[a], _mm256_mul_pd(v.qx[a], x));
   }
 };
 
-// pt-linear: opacity and colour, finished and composited "over" as CompositeOver does; the planes'
-// lanes as (r, g, b, opacity), the image's order.
-template <int S>
-CELLPROJ_AVX2 std::int64_t over_pixels(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows,
-                                       int width) {
-  const FanVectors<S, 0x39> fan(f);
-  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+// A float pixel's "over" of src (r, g, b, opacity, premultiplied; composite/fragment.hpp's over:
+// the same operations, so the same bits); true if src adds something (not all +-0).
+CELLPROJ_AVX2_INLINE bool over_pixel(float* dst, __m256d src) {
+  const __m128 s = _mm256_cvtpd_ps(src), t = _mm_sub_ps(_mm_set1_ps(1.0f), _mm_shuffle_ps(s, s, 0xFF));
+  _mm_storeu_ps(dst, _mm_add_ps(s, _mm_mul_ps(t, _mm_loadu_ps(dst))));
+  return _mm256_movemask_pd(_mm256_cmp_pd(src, _mm256_setzero_pd(), _CMP_NEQ_UQ)) != 0;
+}
+
+// Each pixel of the fan inside the outline, rows [row0, row0 + rows) of the box, composited "over"
+// the image (whose pixel (i0, j0) is the box's first) with the source pixel(fan, row, y, i, x)
+// gives: (r, g, b, opacity) premultiplied, from the planes' lanes in `Order` at row y, column i
+// (x: all lanes i). Returns the pixels composited that add something.
+template <int S, int Order, class Pixel>
+CELLPROJ_AVX2_INLINE std::int64_t over_each_pixel(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows,
+                                                  int width, Pixel pixel) {
+  const FanVectors<S, Order> fan(f);
+  const __m256d one = _mm256_set1_pd(1.0);
   std::int64_t added = 0;
   for (int r = 0; r < rows; ++r) {
     const double y = row0 + r;
     int b, e;
     if (!row_span<S>(f, y, width, b, e)) continue;
     float* line = image.pixel(i0, j0 + row0 + r);
-    const FanRow<S, 0x39> row(fan, y);
+    const FanRow<S, Order> row(fan, y);
     __m256d x = _mm256_set1_pd(static_cast<double>(b));
-    for (int i = b; i <= e; ++i, x = _mm256_add_pd(x, one)) {  // (integers: x is exactly i)
-      // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
-      const __m256d u = _mm256_max_pd(row.at(fan, x), zero);
-      const __m256d alpha = _mm256_min_pd(_mm256_permute4x64_pd(u, 0xFF), one);
-      const __m256d src = _mm256_blend_pd(_mm256_mul_pd(u, alpha), alpha, 0x8);
-      added += _mm256_movemask_pd(_mm256_cmp_pd(src, zero, _CMP_NEQ_UQ)) != 0;
-      const __m128 s = _mm256_cvtpd_ps(src), t = _mm_sub_ps(_mm_set1_ps(1.0f), _mm_shuffle_ps(s, s, 0xFF));
-      float* dst = line + 4 * i;
-      _mm_storeu_ps(dst, _mm_add_ps(s, _mm_mul_ps(t, _mm_loadu_ps(dst))));
-    }
+    for (int i = b; i <= e; ++i, x = _mm256_add_pd(x, one))  // (integers: x is exactly i)
+      added += over_pixel(line + 4 * i, pixel(fan, row, y, i, x));
   }
   return added;
+}
+
+// pt-linear: opacity and colour, finished and composited "over" as CompositeOver does; the planes'
+// lanes as (r, g, b, opacity), the image's order.
+template <int S>
+CELLPROJ_AVX2 std::int64_t over_pixels(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows,
+                                       int width) {
+  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
+  using Fan = FanVectors<S, 0x39>;
+  using Row = FanRow<S, 0x39>;
+  const auto pixel = [&](const Fan& fan, const Row& row, double, int, __m256d x) CELLPROJ_AVX2_LAMBDA {
+    // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
+    const __m256d u = _mm256_max_pd(row.at(fan, x), zero);
+    const __m256d alpha = _mm256_min_pd(_mm256_permute4x64_pd(u, 0xFF), one);
+    return _mm256_blend_pd(_mm256_mul_pd(u, alpha), alpha, 0x8);
+  };
+  return over_each_pixel<S, 0x39>(f, image, i0, j0, row0, rows, width, pixel);
+}
+
+// pt-table: kappa_avg, thickness and the colour's red and green in the planes' lanes, its blue
+// beside them; each pixel's opacity from the table and its colour clamped to >= 0 times it, then
+// "over", as tet_fan.cpp's CompositeTable (the same operations, so the same bits).
+template <int S>
+CELLPROJ_AVX2 std::int64_t table_pixels(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0,
+                                        int row0, int rows, int width) {
+  const __m256d zero = _mm256_setzero_pd();
+  using Fan = FanVectors<S, 0xE4>;
+  using Row = FanRow<S, 0xE4>;
+  const auto pixel = [&](const Fan& fan, const Row& row, double y, int i, __m256d x) CELLPROJ_AVX2_LAMBDA {
+    const int a = row.triangle(fan, x);
+    // std::max(q, 0.0) lane by lane: _mm256_max_pd keeps its second operand's NaN and -0 as it does
+    const __m256d q = _mm256_max_pd(zero, a < 0 ? zero : _mm256_add_pd(row.q0[a], _mm256_mul_pd(fan.qx[a], x)));
+    // the fifth quantity as fan_rows evaluates it
+    const double blue = a < 0 ? 0.0 : std::max(f.q[a].c[4] + f.q[a].gy[4] * y + f.q[a].gx[4] * i, 0.0);
+    const __m128d kl = _mm256_castpd256_pd128(q);
+    const double alpha = table(_mm_cvtsd_f64(kl), _mm_cvtsd_f64(_mm_unpackhi_pd(kl, kl)));
+    const __m128d rg = _mm_mul_pd(_mm256_extractf128_pd(q, 1), _mm_set1_pd(alpha));
+    return _mm256_insertf128_pd(_mm256_castpd128_pd256(rg), _mm_set_pd(alpha, blue * alpha), 1);
+  };
+  return over_each_pixel<S, 0xE4>(f, image, i0, j0, row0, rows, width, pixel);
 }
 
 // The exact rungs: each pixel's segment appended to the batch as AppendSegments does
@@ -144,6 +188,11 @@ CELLPROJ_AVX2 void segments_pixels(const FanPlanes& f, const FanSegments& at, Se
 
 std::int64_t fan_over_avx2(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width) {
   return (f.sectors == 4 ? over_pixels<4> : over_pixels<3>)(f, image, i0, j0, row0, rows, width);
+}
+
+std::int64_t fan_table_avx2(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0, int row0,
+                            int rows, int width) {
+  return (f.sectors == 4 ? table_pixels<4> : table_pixels<3>)(f, table, image, i0, j0, row0, rows, width);
 }
 
 void fan_segments_avx2(const FanPlanes& f, const FanSegments& at, SegmentBatch& out) {

@@ -5,11 +5,7 @@
 #include <cstring>
 #include <limits>
 
-#include <glm/common.hpp>
-#include <glm/vec3.hpp>
-
 #include "base/simd.hpp"
-#include "composite/fragment.hpp"
 #include "projection/fan_row.hpp"
 
 namespace cellproj {
@@ -95,10 +91,36 @@ struct StoreQuantities {
   }
 };
 
+// Four pixels' premultiplied (r, g, b, opacity) composited "over" the image at dst, the first n
+// of them (composite/fragment.hpp's over, in float: the same operations, so the same bits).
+[[gnu::always_inline]] inline void over_four(float* dst, int n, Lanes red, Lanes green, Lanes blue, Lanes alpha) {
+  const Floats a = __builtin_convertvector(alpha, Floats), r = __builtin_convertvector(red, Floats),
+               g = __builtin_convertvector(green, Floats), b = __builtin_convertvector(blue, Floats);
+  // The four pixels' (r, g, b, a), a 4 x 4 transpose.
+  const Floats rg01 = __builtin_shufflevector(r, g, 0, 4, 1, 5), ba01 = __builtin_shufflevector(b, a, 0, 4, 1, 5),
+               rg23 = __builtin_shufflevector(r, g, 2, 6, 3, 7), ba23 = __builtin_shufflevector(b, a, 2, 6, 3, 7);
+  const Floats src[4] = {
+      __builtin_shufflevector(rg01, ba01, 0, 1, 4, 5), __builtin_shufflevector(rg01, ba01, 2, 3, 6, 7),
+      __builtin_shufflevector(rg23, ba23, 0, 1, 4, 5), __builtin_shufflevector(rg23, ba23, 2, 3, 6, 7)};
+  const Floats t = 1.0f - a;
+  const Floats t_of[4] = {__builtin_shufflevector(t, t, 0, 0, 0, 0), __builtin_shufflevector(t, t, 1, 1, 1, 1),
+                          __builtin_shufflevector(t, t, 2, 2, 2, 2), __builtin_shufflevector(t, t, 3, 3, 3, 3)};
+  for (int k = 0; k < n; ++k) {
+    Floats d;
+    std::memcpy(&d, dst + 4 * k, sizeof d);
+    d = src[k] + t_of[k] * d;
+    std::memcpy(dst + 4 * k, &d, sizeof d);
+  }
+}
+
+// -1 in the first n lanes whose pixel adds something (composite/fragment.hpp's adds_nothing, false).
+[[gnu::always_inline]] inline Counts adds_something(int n, Lanes r, Lanes g, Lanes b, Lanes alpha) {
+  return ((alpha != 0.0) | (r != 0.0) | (g != 0.0) | (b != 0.0)) & (Counts{0, 1, 2, 3} < n);
+}
+
 // pt-linear's fan composited straight onto the image: each pixel's opacity and colour finished as
-// fan_pixels stores them, then "over" in float (composite/fragment.hpp's over: the same
-// operations, so the same bits), counting only the pixels that add something (as
-// CompositeFragments, which skips the others).
+// fan_pixels stores them, then "over" (over_four), counting only the pixels that add something
+// (as CompositeFragments, which skips the others).
 struct CompositeOver {
   Image& image;
   int i0, j0, row0;
@@ -108,56 +130,38 @@ struct CompositeOver {
   [[gnu::always_inline]] void row(int r, int /*first*/, int e) { line = image.pixel(i0, j0 + row0 + r), last = e; }
   [[gnu::always_inline]] void lanes(int i, Lanes* v) {
     finish_linear<4>(v);
-    const Floats a = __builtin_convertvector(v[0], Floats), r = __builtin_convertvector(v[1], Floats),
-                 g = __builtin_convertvector(v[2], Floats), b = __builtin_convertvector(v[3], Floats);
-    // The four pixels' (r, g, b, a), a 4 x 4 transpose.
-    const Floats rg01 = __builtin_shufflevector(r, g, 0, 4, 1, 5), ba01 = __builtin_shufflevector(b, a, 0, 4, 1, 5),
-                 rg23 = __builtin_shufflevector(r, g, 2, 6, 3, 7), ba23 = __builtin_shufflevector(b, a, 2, 6, 3, 7);
-    const Floats src[4] = {__builtin_shufflevector(rg01, ba01, 0, 1, 4, 5),
-                           __builtin_shufflevector(rg01, ba01, 2, 3, 6, 7),
-                           __builtin_shufflevector(rg23, ba23, 0, 1, 4, 5),
-                           __builtin_shufflevector(rg23, ba23, 2, 3, 6, 7)};
-    const Floats t = 1.0f - a;
-    const Floats t_of[4] = {__builtin_shufflevector(t, t, 0, 0, 0, 0), __builtin_shufflevector(t, t, 1, 1, 1, 1),
-                            __builtin_shufflevector(t, t, 2, 2, 2, 2), __builtin_shufflevector(t, t, 3, 3, 3, 3)};
     // A pixel adding nothing (opacity and colour +0 after finish_linear) is composited too, and
     // changes nothing: 0 + 1 d is d (bit for bit but for a -0, which becomes +0); it is not counted.
     const int n = std::min(4, last - i + 1);
-    added += ((v[0] != 0.0) | (v[1] != 0.0) | (v[2] != 0.0) | (v[3] != 0.0)) & (Counts{0, 1, 2, 3} < n);
-    float* dst = line + 4 * i;
-    for (int k = 0; k < n; ++k) {
-      Floats d;
-      std::memcpy(&d, dst + 4 * k, sizeof d);
-      d = src[k] + t_of[k] * d;
-      std::memcpy(dst + 4 * k, &d, sizeof d);
-    }
+    added += adds_something(n, v[1], v[2], v[3], v[0]);
+    over_four(line + 4 * i, n, v[1], v[2], v[3], v[0]);
   }
   std::int64_t fragments() const { return -(added[0] + added[1] + added[2] + added[3]); }
 };
 
 // pt-table's fan composited straight onto the image: each pixel's opacity from the table at its
-// kappa_avg and thickness, its colour clamped to >= 0 times it, then "over" as project_fan did
-// with fan_pixels' values and CompositeFragments (the same operations, so the same bits): a pixel
-// adding nothing (opacity and colour 0) is skipped and not counted.
+// kappa_avg and thickness, its colour clamped to >= 0 times it, then "over" (over_four), as
+// project_fan did with fan_pixels' values and CompositeFragments (the same operations, so the same
+// bits). A pixel adding nothing (opacity and colour 0) is composited too but not counted: 0 + 1 d
+// is d, as the image never holds a -0 (its +0 start plus sources >= 0).
 struct CompositeTable {
   Image& image;
   const OpacityTable& table;
   int i0, j0, row0;
-  std::int64_t added = 0;
+  Counts added{};         // per lane, minus the pixels composited that add something
   float* line = nullptr;  // the image at the row's box pixel 0
   int last = -1;
   [[gnu::always_inline]] void row(int r, int /*first*/, int e) { line = image.pixel(i0, j0 + row0 + r), last = e; }
   [[gnu::always_inline]] void lanes(int i, const Lanes* v) {
-    for (int k = 0, n = std::min(4, last - i + 1); k < n; ++k) {
-      const double alpha = table(std::max(v[0][k], 0.0), std::max(v[1][k], 0.0));
-      const glm::dvec3 rgb = glm::max(glm::dvec3(v[2][k], v[3][k], v[4][k]), 0.0) * alpha;
-      if (adds_nothing(rgb, alpha)) continue;
-      const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
-                            static_cast<float>(alpha)};
-      over(line + 4 * (i + k), src);
-      ++added;
-    }
+    const Lanes zero{};
+    const auto clamped = [&](Lanes x) { return x < zero ? zero : x; };  // std::max(x, 0.0) and glm::max's rule
+    const Lanes alpha = table(clamped(v[0]), clamped(v[1]));
+    const Lanes r = clamped(v[2]) * alpha, g = clamped(v[3]) * alpha, b = clamped(v[4]) * alpha;
+    const int n = std::min(4, last - i + 1);
+    added += adds_something(n, r, g, b, alpha);
+    over_four(line + 4 * i, n, r, g, b, alpha);
   }
+  std::int64_t fragments() const { return -(added[0] + added[1] + added[2] + added[3]); }
 };
 
 template <int S, int Q, bool Linear = false>
@@ -233,7 +237,7 @@ CELLPROJ_FAN_OVER(over_4, 4)
                                          int r0, int n, int w) {                                                      \
     CompositeTable out{image, table, i0, j0, r0};                                                                     \
     fan_rows<S, 5>(f, r0, n, w, out);                                                                                 \
-    return out.added;                                                                                                 \
+    return out.fragments();                                                                                           \
   }
 CELLPROJ_FAN_TABLE(table_3, 3)
 CELLPROJ_FAN_TABLE(table_4, 4)
@@ -364,8 +368,12 @@ std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0
   return (f.sectors == 4 ? over_4 : over_3)(f, image, i0, j0, row0, rows, width);
 }
 
-std::int64_t fan_composite_table(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0,
-                                 int row0, int rows, int width) {
+std::int64_t fan_composite_table(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0, int row0,
+                                 int rows, int width, FanLanes lanes) {
+#if CELLPROJ_AVX2_DISPATCH
+  if (lanes == FanLanes::quantities && __builtin_cpu_supports("avx2"))
+    return fan_table_avx2(f, table, image, i0, j0, row0, rows, width);
+#endif
   return (f.sectors == 4 ? table_4 : table_3)(f, table, image, i0, j0, row0, rows, width);
 }
 

@@ -96,9 +96,9 @@ void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out,
 // pt-table's fan (its five quantities kappa_avg, thickness and colour) composited "over" onto the
 // image as fan_composite_over's: each pixel's opacity from `table`, its colour clamped to >= 0
 // times it; the same bits as fan_pixels' values through the table and composite/fragment.hpp's
-// over(). Returns the fragments composited, those adding nothing not counted. Four pixels at a
-// time (AVX2 where the processor has it).
+// over(). Returns the fragments composited, those adding nothing not counted. `lanes` as
+// fan_composite_over's (the same bits either way).
 std::int64_t fan_composite_table(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0,
-                                 int row0, int rows, int width);
+                                 int row0, int rows, int width, FanLanes lanes = FanLanes::quantities);
 
 }  // namespace cellproj
