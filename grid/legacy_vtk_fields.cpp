@@ -79,7 +79,7 @@ class DatasetWalk {
         std::int64_t n = 0;
         if (!(in_ >> n >> type)) return;
         if (n < 0) refuse_count("POINTS", n);  // VTK reads it as a huge size and writes past its array
-        if (!skip(3 * n, coordinate_bytes("POINTS", type))) return;
+        if (!skip("POINTS", 3 * n, coordinate_bytes("POINTS", type))) return;
       } else if (unstructured && starts(word, "cells")) {
         std::int64_t n = 0, size = 0;
         if (!(in_ >> n >> size)) return;
@@ -113,7 +113,7 @@ class DatasetWalk {
         if (dims[axis] >= 0 && n != dims[axis])
           throw InputError(where(path_, block + " holds " + std::to_string(n) + " values for the " +
                                             std::to_string(dims[axis]) + " points along its axis that DIMENSIONS gives"));
-        if (!skip(n, coordinate_bytes(block, type))) return;
+        if (!skip(block, n, coordinate_bytes(block, type))) return;
       } else if (starts(word, "metadata")) {
         metadata();
       } else if (starts(word, "point_data") || starts(word, "cell_data")) {
@@ -133,18 +133,29 @@ class DatasetWalk {
 
   std::int64_t left() { return size_ - static_cast<std::int64_t>(in_.tellg()); }
 
-  // Past `count` values of `bytes` each (binary) or numbers (ASCII); false where the walk must stop.
-  bool skip(std::int64_t count, int bytes) {
+  // Past `block`'s `count` values of `bytes` each (binary) or numbers (ASCII); false where the walk
+  // must stop.
+  bool skip(const std::string& block, std::int64_t count, int bytes) {
     if (binary_) {
       if (bytes <= 0) return false;  // strings and bits: not followed further
       std::string rest;
       std::getline(in_, rest);  // VTK's binary values start on the next line
-      if (count > left() / bytes) return false;
+      fits(block, count, bytes);
       in_.seekg(count * bytes, std::ios::cur);
       return true;
     }
+    fits(block, count, 1);
     numbers(count);  // VTK's look for METADATA clears the stream's error: the walk goes on from there
     return true;
+  }
+
+  // `block`'s `count` values of `bytes` each (binary; ASCII: numbers, a byte each at the least)
+  // refused where the rest of the file cannot hold them: VTK's reader sizes its array by the count
+  // before it reads a value (a fuzzed CELL_TYPES of 552020666 in a 1 KB file asked for 2.2 GB).
+  void fits(const std::string& block, std::int64_t count, int bytes) {
+    if (double(count) * (binary_ ? bytes : 1) > double(left()))  // (in double: no overflow)
+      throw InputError(where(path_, block + " declares " + std::to_string(count) + " values, more than the " +
+                                        std::to_string(left()) + " bytes left in the file hold: truncated or corrupt"));
   }
 
   // Before format 5, the CELLS block of `cells` cells in `size` numbers: each cell a count and that
@@ -158,6 +169,7 @@ class DatasetWalk {
       std::string rest;
       std::getline(in_, rest);  // VTK's binary values start on the next line
     }
+    fits("CELLS", size, 4);
     std::int64_t used = 0;
     auto next = [&](std::int64_t c) {  // one number of the block
       std::int64_t v = 0;
@@ -265,12 +277,13 @@ class DatasetWalk {
     if (binary_) {
       std::string rest;
       std::getline(in_, rest);  // the values start on the next line: big-endian 32-bit integers
-      if (n > left() / 4) return false;
+      fits("CELL_TYPES", n, 4);
       std::vector<unsigned char> b(4 * static_cast<std::size_t>(n));
       in_.read(reinterpret_cast<char*>(b.data()), static_cast<std::streamsize>(b.size()));
       for (std::int64_t c = 0; c < n; ++c)
         if (b[4 * c + 3] == kPolyhedron) polyhedra.add(kPolyhedron, c);  // the low byte (see above)
     } else {
+      fits("CELL_TYPES", n, 1);
       long long v;
       for (std::int64_t c = 0; c < n; ++c) {
         if (!(in_ >> v)) {
@@ -307,7 +320,7 @@ class DatasetWalk {
   // Format 5: "OFFSETS type" (or "CONNECTIVITY type") and its values.
   bool array(const char* keyword, std::int64_t count) {
     std::string word, type;
-    return (in_ >> word >> type) && is_legacy_keyword(word, keyword) && skip(count, legacy_id_bytes(type));
+    return (in_ >> word >> type) && is_legacy_keyword(word, keyword) && skip(keyword, count, legacy_id_bytes(type));
   }
 
   // The bytes of one value of a coordinate block (POINTS, X_COORDINATES, ...) of `type`; a string
@@ -399,7 +412,7 @@ class DatasetWalk {
       throw InputError(where(path_, section_ + " " + what + " declares " + std::to_string(tuples) + " tuples of " +
                                         std::to_string(components) + " components, more values than the " +
                                         std::to_string(left()) + " bytes left in the file hold: truncated or corrupt"));
-    if (!skip(tuples * components, bytes)) return false;
+    if (!skip(section_ + " " + what, tuples * components, bytes)) return false;
     skip_metadata();
     return true;
   }
@@ -435,7 +448,7 @@ class DatasetWalk {
       const std::int64_t values = static_cast<std::int64_t>(components) * tuples;
       if (bytes == kVariable || (bytes == kBit && binary_)) return false;  // VTK reads strings line by line
       if (binary_) {
-        skip(values, bytes);
+        skip(which, values, bytes);
       } else if (const std::int64_t read = numbers(values); read < values) {
         refuse(which + ": its values end, or stop being numbers, after " + std::to_string(read) + " of " +
                std::to_string(values));

@@ -1,5 +1,6 @@
 #include "grid/vtk_messages.hpp"
 
+#include <algorithm>
 #include <mutex>
 #include <vector>
 
@@ -45,6 +46,18 @@ std::mutex& vtk_output_lock() {
 
 }  // namespace
 
+bool failed_request(const std::string& error) {
+  return error.rfind("Algorithm ", 0) == 0 && error.find(" returned failure for request") != std::string::npos;
+}
+
+std::string vtk_error_text(const std::string& error) {
+  if (!failed_request(error)) return error;
+  // "Algorithm vtkUnstructuredGridReader(0x55..) returned failure for request: vtkInformation
+  // (0x55..)" and the request's dump, nine lines: the class is all it says.
+  const std::size_t from = 10, to = error.find_first_of("( ", from);
+  return "VTK's " + error.substr(from, to - from) + " failed without saying why";
+}
+
 struct VtkMessages::State {
   std::lock_guard<std::mutex> lock{vtk_output_lock()};
   vtkSmartPointer<vtkOutputWindow> previous{vtkOutputWindow::GetInstance()};
@@ -67,7 +80,9 @@ VtkMessages::~VtkMessages() {
 void VtkMessages::throw_if_failed(const std::string& path) const {
   const auto& errors = state_->window->errors;
   if (errors.empty()) return;
-  std::string what = errors.front();
+  // The reader's own words first: the pipeline's "returned failure" comes after them, if at all.
+  const auto own = std::find_if(errors.begin(), errors.end(), [](const std::string& e) { return !failed_request(e); });
+  std::string what = own != errors.end() ? *own : vtk_error_text(errors.front());
   if (errors.size() > 1) what += " (and " + std::to_string(errors.size() - 1) + " more VTK errors)";
   throw InputError(where(path, "cannot be read: " + what));
 }

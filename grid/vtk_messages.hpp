@@ -23,4 +23,11 @@ class VtkMessages {
   std::unique_ptr<State> state_;
 };
 
+// Whether a VTK error is the pipeline's "Algorithm X(0x..) returned failure for request:
+// vtkInformation ..." (with the request's nine-line dump), which follows a reader's own error or
+// stands for one it did not give; vtk_error_text gives it as "VTK's X failed without saying why",
+// and any other error as it is.
+bool failed_request(const std::string& error);
+std::string vtk_error_text(const std::string& error);
+
 }  // namespace cellproj

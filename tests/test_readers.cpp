@@ -25,6 +25,7 @@
 #include "grid/isolated_read.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/topology.hpp"
+#include "grid/vtk_messages.hpp"
 #include "grid/write_mesh.hpp"
 #include "legacy_samples.hpp"
 #include "test_util.hpp"
@@ -303,6 +304,54 @@ TEST(Readers, ALegacyDatasetFieldVtkCannotReadIsRefusedBeforeItsReaderCrashes) {
   };
   EXPECT_EQ(binary_with("FIELD FieldData 1\nTIME 1 1 double\n" + std::string(8, '\0') + "\n"), "");
   EXPECT_NE(binary_with("FIELD FieldData 1\nTIME 1 1 nonsense\n").find("unknown type 'nonsense'"), std::string::npos);
+}
+
+// A block whose count the rest of the file cannot hold (CELL_TYPES, POINTS, CELLS; ASCII or
+// binary): VTK's legacy reader sizes its array by the count before reading a value (fuzzed files:
+// a CELL_TYPES of 552020666 in 1 KB asked for 2.2 GB, and under --max-memory printed the
+// pipeline's nine-line request dump). Refused by count, naming the block; the good file reads.
+TEST(Readers, ALegacyBlockCountingMoreValuesThanTheFileHoldsIsRefusedByCount) {
+  test::TempDir dir;
+  const std::string f = dir.file("count.vtk");
+  const auto with = [&](const std::string& from, const std::string& to) {
+    std::string text = kLegacy;
+    text.replace(text.find(from), from.size(), to);
+    spit(f, text);
+    return read_error(f);
+  };
+  EXPECT_EQ(with("CELL_TYPES 3", "CELL_TYPES 3"), "");
+  const auto refused = [&](const std::string& block, const std::string& error) {
+    return error.rfind(where(f, block + " declares "), 0) == 0 &&
+           error.find(" values, more than the ") != std::string::npos &&
+           error.find(" bytes left in the file hold: truncated or corrupt") != std::string::npos;
+  };
+  EXPECT_TRUE(refused("CELL_TYPES", with("CELL_TYPES 3", "CELL_TYPES 552020666"))) << read_error(f);
+  EXPECT_TRUE(refused("POINTS", with("POINTS 5 double", "POINTS 50000000 double"))) << read_error(f);
+  EXPECT_TRUE(refused("CELLS", with("CELLS 3 13", "CELLS 3 1300000000"))) << read_error(f);
+  // The fuzzed shape: POINTS cut short by a CELL_TYPES line, which VTK's reader then reads.
+  EXPECT_TRUE(refused("CELL_TYPES", with("1 0 0  0 1 0", "\nCELL_TYPES 552020666 -1\n"))) << read_error(f);
+
+  Mesh m = make_box(2, 2, 2, glm::dvec3(0), glm::dvec3(1), true);
+  write_vtk_legacy(m, dir.file("bin.vtk"), true);
+  std::string bin = slurp(dir.file("bin.vtk"));
+  const std::size_t at = bin.find("CELL_TYPES ");
+  ASSERT_NE(at, std::string::npos);
+  const std::size_t end = bin.find('\n', at);
+  bin.replace(at, end - at, "CELL_TYPES 552020666");
+  spit(f, bin);
+  EXPECT_NE(read_error(f).find("CELLS declares "), std::string::npos) << read_error(f);  // format 5: the arrays' count
+}
+
+// The pipeline's "returned failure" error, which follows a reader's own or stands for one it did
+// not give, is shortened to the class that failed (it carried the request's nine-line dump).
+TEST(Readers, VtksFailedRequestDumpIsShortenedToTheReadersName) {
+  const std::string dump =
+      "Algorithm vtkUnstructuredGridReader(0x55c3e7322d60) returned failure for request: vtkInformation "
+      "(0x55c3e73254c0)\n  Debug: Off\n  Modified Time: 279\n  Reference Count: 1\n  Request: REQUEST_DATA";
+  EXPECT_TRUE(failed_request(dump));
+  EXPECT_EQ(vtk_error_text(dump), "VTK's vtkUnstructuredGridReader failed without saying why");
+  EXPECT_FALSE(failed_request("Error reading cell types!"));
+  EXPECT_EQ(vtk_error_text("Error reading cell types!"), "Error reading cell types!");
 }
 
 // Inside POINT_DATA and CELL_DATA, VTK's legacy reader sizes each array with the counts it reads
