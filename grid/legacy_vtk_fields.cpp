@@ -154,8 +154,10 @@ class DatasetWalk {
   // before it reads a value (a fuzzed CELL_TYPES of 552020666 in a 1 KB file asked for 2.2 GB).
   void fits(const std::string& block, std::int64_t count, int bytes) {
     if (double(count) * (binary_ ? bytes : 1) > double(left()))  // (in double: no overflow)
-      throw InputError(where(path_, block + " declares " + std::to_string(count) + " values, more than the " +
-                                        std::to_string(left()) + " bytes left in the file hold: truncated or corrupt"));
+      throw InputError(where(path_, block + " declares " + std::to_string(count) +
+                                        (binary_ ? " values of " + std::to_string(bytes) + " bytes" : " numbers") +
+                                        ", more than the " + std::to_string(left()) +
+                                        " bytes left in the file hold: truncated or corrupt"));
   }
 
   // Before format 5, the CELLS block of `cells` cells in `size` numbers: each cell a count and that
@@ -246,7 +248,8 @@ class DatasetWalk {
                                           word.substr(0, 40) + "')"));
       const int bytes = legacy_id_bytes(type);
       if (bytes == 0) throw InputError(where(path_, keyword + ": unknown id type '" + type.substr(0, 40) + "'"));
-      if (keyword != "OFFSETS" || count > left() / bytes) {  // the ids are checked once read (check_cell_array)
+      fits(keyword, count, bytes);
+      if (keyword != "OFFSETS") {  // the ids are checked once read (check_cell_array)
         in_.seekg(count * bytes, std::ios::cur);
         return;
       }

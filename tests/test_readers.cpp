@@ -322,7 +322,7 @@ TEST(Readers, ALegacyBlockCountingMoreValuesThanTheFileHoldsIsRefusedByCount) {
   EXPECT_EQ(with("CELL_TYPES 3", "CELL_TYPES 3"), "");
   const auto refused = [&](const std::string& block, const std::string& error) {
     return error.rfind(where(f, block + " declares "), 0) == 0 &&
-           error.find(" values, more than the ") != std::string::npos &&
+           error.find(" numbers, more than the ") != std::string::npos &&
            error.find(" bytes left in the file hold: truncated or corrupt") != std::string::npos;
   };
   EXPECT_TRUE(refused("CELL_TYPES", with("CELL_TYPES 3", "CELL_TYPES 552020666"))) << read_error(f);
@@ -340,6 +340,11 @@ TEST(Readers, ALegacyBlockCountingMoreValuesThanTheFileHoldsIsRefusedByCount) {
   bin.replace(at, end - at, "CELL_TYPES 552020666");
   spit(f, bin);
   EXPECT_NE(read_error(f).find("CELLS declares "), std::string::npos) << read_error(f);  // format 5: the arrays' count
+  // Binary, cut inside its connectivity: named, with its values' size.
+  bin = slurp(dir.file("bin.vtk"));
+  spit(f, bin.substr(0, bin.find("CONNECTIVITY") + 40));
+  EXPECT_NE(read_error(f).find("CONNECTIVITY declares "), std::string::npos) << read_error(f);
+  EXPECT_NE(read_error(f).find(" values of 8 bytes, more than the "), std::string::npos) << read_error(f);
 }
 
 // The pipeline's "returned failure" error, which follows a reader's own or stands for one it did
