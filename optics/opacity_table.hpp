@@ -34,7 +34,7 @@ class OpacityTable {
     u = max_index_ < u ? max_index_ : u, v = max_index_ < v ? max_index_ : v;  // std::min's rule
     Ints i = __builtin_convertvector(u, Ints), j = __builtin_convertvector(v, Ints);
     i = i > size_ - 2 ? size_ - 2 : i, j = j > size_ - 2 ? size_ - 2 : j;
-    i = i < 0 ? 0 : i, j = j < 0 ? 0 : j;  // (only a NaN converts below 0: its read stays NaN)
+    i = i < 0 ? 0 : i, j = j < 0 ? 0 : j;  // node(): a NaN (its read stays NaN) or a negative index
     typedef float Floats __attribute__((vector_size(16)));
     const Ints at = j * size_ + i;
     Floats a00, a10, a01, a11;
@@ -50,7 +50,7 @@ class OpacityTable {
   const float* data() const { return alpha_.data(); }  // size x size, kappa fastest
 
  private:
-  // The node at or below fractional index u, at most the last but one (0 for a NaN).
+  // The node at or below fractional index u, at most the last but one (0 for a NaN or below 0).
   int node(double u) const { return u >= 0 ? std::min(static_cast<int>(u), size_ - 2) : 0; }
   template <class T, class A>
   [[gnu::always_inline]] static T bilinear(T fu, T fv, A a00, A a10, A a01, A a11) {

@@ -27,8 +27,9 @@ template <int S>
 }
 
 #if CELLPROJ_AVX2_DISPATCH
-// fan_composite_over, fan_composite_table and fan_segments one pixel at a time, the pixel's four quantities in an AVX2
-// vector (fan_avx2.cpp); call only where the processor has AVX2.
+// fan_composite_over, fan_composite_table and fan_segments one pixel at a time, the pixel's
+// quantities in an AVX2 vector (pt-table's fifth beside it; fan_avx2.cpp); call only where the
+// processor has AVX2.
 std::int64_t fan_over_avx2(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width);
 std::int64_t fan_table_avx2(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0, int row0,
                             int rows, int width);
