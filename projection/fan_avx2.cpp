@@ -1,5 +1,5 @@
 // A small tetrahedron's fan one pixel at a time, the pixel's four quantities in one AVX2 vector
-// (projection/tet_fan.hpp's FanLanes::quantities): a row's set-up is one vector per triangle, and
+// (pt-table's fifth beside it; projection/tet_fan.hpp's FanLanes::quantities): a row's set-up is one vector per triangle, and
 // no lane is spent past a row's end (a row of a small tetrahedron is a few pixels, where four
 // pixels at a time spend most lanes and set-up on nothing). Each value gets the same operations
 // as in tet_fan.cpp's four-pixel kernels, so the same bits.
