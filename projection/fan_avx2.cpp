@@ -1,8 +1,8 @@
 // A small tetrahedron's fan one pixel at a time, the pixel's four quantities in one AVX2 vector
-// (pt-table's fifth beside it; projection/tet_fan.hpp's FanLanes::quantities): a row's set-up is one vector per triangle, and
-// no lane is spent past a row's end (a row of a small tetrahedron is a few pixels, where four
-// pixels at a time spend most lanes and set-up on nothing). Each value gets the same operations
-// as in tet_fan.cpp's four-pixel kernels, so the same bits.
+// (pt-table's fifth beside it; projection/tet_fan.hpp's FanLanes::quantities): a row's set-up is
+// one vector per triangle, and no lane is spent past a row's end (a row of a small tetrahedron is
+// a few pixels, where four pixels at a time spend most lanes and set-up on nothing). Each value
+// gets the same operations as in tet_fan.cpp's four-pixel kernels, so the same bits.
 #include <algorithm>
 #include <limits>
 
@@ -15,8 +15,7 @@ namespace cellproj {
 namespace {
 
 #define CELLPROJ_AVX2 __attribute__((target("avx2")))
-#define CELLPROJ_AVX2_LAMBDA __attribute__((target("avx2"), always_inline))  // (after a lambda's parameters)
-#define CELLPROJ_AVX2_INLINE CELLPROJ_AVX2_LAMBDA inline
+#define CELLPROJ_AVX2_INLINE __attribute__((target("avx2"), always_inline)) inline
 
 // A fan's per-tetrahedron vectors: its spokes' planes (lane k: spoke k) and triangles left out, and
 // each triangle's quantity planes with their lanes in `Order` (a _mm256_permute4x64_pd control).
@@ -83,12 +82,13 @@ CELLPROJ_AVX2_INLINE bool over_pixel(float* dst, __m256d src) {
 }
 
 // Each pixel of the fan inside the outline, rows [row0, row0 + rows) of the box, composited "over"
-// the image (whose pixel (i0, j0) is the box's first) with the source pixel(fan, row, y, i, x)
-// gives: (r, g, b, opacity) premultiplied, from the planes' lanes in `Order` at row y, column i
-// (x: all lanes i). Returns the pixels composited that add something.
-template <int S, int Order, class Pixel>
+// the image (whose pixel (i0, j0) is the box's first) with what `source` gives: source.row(y) at
+// each row y with pixels, then source.pixel(fan, row, i, x) for each of its columns i (x: all
+// lanes i), (r, g, b, opacity) premultiplied, from the planes' lanes in `Order`. Returns the pixels
+// composited that add something.
+template <int S, int Order, class Source>
 CELLPROJ_AVX2_INLINE std::int64_t over_each_pixel(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows,
-                                                  int width, Pixel pixel) {
+                                                  int width, Source& source) {
   const FanVectors<S, Order> fan(f);
   const __m256d one = _mm256_set1_pd(1.0);
   std::int64_t added = 0;
@@ -98,51 +98,64 @@ CELLPROJ_AVX2_INLINE std::int64_t over_each_pixel(const FanPlanes& f, Image& ima
     if (!row_span<S>(f, y, width, b, e)) continue;
     float* line = image.pixel(i0, j0 + row0 + r);
     const FanRow<S, Order> row(fan, y);
+    source.row(y);
     __m256d x = _mm256_set1_pd(static_cast<double>(b));
     for (int i = b; i <= e; ++i, x = _mm256_add_pd(x, one))  // (integers: x is exactly i)
-      added += over_pixel(line + 4 * i, pixel(fan, row, y, i, x));
+      added += over_pixel(line + 4 * i, source.pixel(fan, row, i, x));
   }
   return added;
 }
 
-// pt-linear: opacity and colour, finished and composited "over" as CompositeOver does; the planes'
-// lanes as (r, g, b, opacity), the image's order.
+// pt-linear: opacity and colour, finished as CompositeOver does; the planes' lanes as (r, g, b,
+// opacity), the image's order.
+template <int S>
+struct LinearSource {
+  CELLPROJ_AVX2_INLINE void row(double) {}
+  CELLPROJ_AVX2_INLINE __m256d pixel(const FanVectors<S, 0x39>& fan, const FanRow<S, 0x39>& row, int, __m256d x) const {
+    // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
+    const __m256d u = _mm256_max_pd(row.at(fan, x), _mm256_setzero_pd());
+    const __m256d alpha = _mm256_min_pd(_mm256_permute4x64_pd(u, 0xFF), _mm256_set1_pd(1.0));
+    return _mm256_blend_pd(_mm256_mul_pd(u, alpha), alpha, 0x8);
+  }
+};
+
 template <int S>
 CELLPROJ_AVX2 std::int64_t over_pixels(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows,
                                        int width) {
-  const __m256d zero = _mm256_setzero_pd(), one = _mm256_set1_pd(1.0);
-  using Fan = FanVectors<S, 0x39>;
-  using Row = FanRow<S, 0x39>;
-  const auto pixel = [&](const Fan& fan, const Row& row, double, int, __m256d x) CELLPROJ_AVX2_LAMBDA {
-    // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
-    const __m256d u = _mm256_max_pd(row.at(fan, x), zero);
-    const __m256d alpha = _mm256_min_pd(_mm256_permute4x64_pd(u, 0xFF), one);
-    return _mm256_blend_pd(_mm256_mul_pd(u, alpha), alpha, 0x8);
-  };
-  return over_each_pixel<S, 0x39>(f, image, i0, j0, row0, rows, width, pixel);
+  LinearSource<S> source;
+  return over_each_pixel<S, 0x39>(f, image, i0, j0, row0, rows, width, source);
 }
 
 // pt-table: kappa_avg, thickness and the colour's red and green in the planes' lanes, its blue
-// beside them; each pixel's opacity from the table and its colour clamped to >= 0 times it, then
-// "over", as tet_fan.cpp's CompositeTable (the same operations, so the same bits).
+// beside them; each pixel's opacity from the table and its colour clamped to >= 0 times it, as
+// tet_fan.cpp's CompositeTable (the same operations, so the same bits).
 template <int S>
-CELLPROJ_AVX2 std::int64_t table_pixels(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0,
-                                        int row0, int rows, int width) {
-  const __m256d zero = _mm256_setzero_pd();
-  using Fan = FanVectors<S, 0xE4>;
-  using Row = FanRow<S, 0xE4>;
-  const auto pixel = [&](const Fan& fan, const Row& row, double y, int i, __m256d x) CELLPROJ_AVX2_LAMBDA {
+struct TableSource {
+  const FanPlanes& f;
+  const OpacityTable& table;
+  double blue0[S];  // the fifth quantity at the row's pixel 0, as fan_rows evaluates it
+  CELLPROJ_AVX2_INLINE void row(double y) {
+    for (int a = 0; a < S; ++a) blue0[a] = f.q[a].c[4] + f.q[a].gy[4] * y;
+  }
+  CELLPROJ_AVX2_INLINE __m256d pixel(const FanVectors<S, 0xE4>& fan, const FanRow<S, 0xE4>& row, int i,
+                                     __m256d x) const {
+    const __m256d zero = _mm256_setzero_pd();
     const int a = row.triangle(fan, x);
     // std::max(q, 0.0) lane by lane: _mm256_max_pd keeps its second operand's NaN and -0 as it does
     const __m256d q = _mm256_max_pd(zero, a < 0 ? zero : _mm256_add_pd(row.q0[a], _mm256_mul_pd(fan.qx[a], x)));
-    // the fifth quantity as fan_rows evaluates it
-    const double blue = a < 0 ? 0.0 : std::max(f.q[a].c[4] + f.q[a].gy[4] * y + f.q[a].gx[4] * i, 0.0);
+    const double blue = a < 0 ? 0.0 : std::max(blue0[a] + f.q[a].gx[4] * i, 0.0);
     const __m128d kl = _mm256_castpd256_pd128(q);
     const double alpha = table(_mm_cvtsd_f64(kl), _mm_cvtsd_f64(_mm_unpackhi_pd(kl, kl)));
     const __m128d rg = _mm_mul_pd(_mm256_extractf128_pd(q, 1), _mm_set1_pd(alpha));
     return _mm256_insertf128_pd(_mm256_castpd128_pd256(rg), _mm_set_pd(alpha, blue * alpha), 1);
-  };
-  return over_each_pixel<S, 0xE4>(f, image, i0, j0, row0, rows, width, pixel);
+  }
+};
+
+template <int S>
+CELLPROJ_AVX2 std::int64_t table_pixels(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0,
+                                        int row0, int rows, int width) {
+  TableSource<S> source{f, table, {}};
+  return over_each_pixel<S, 0xE4>(f, image, i0, j0, row0, rows, width, source);
 }
 
 // The exact rungs: each pixel's segment appended to the batch as AppendSegments does
