@@ -15,7 +15,7 @@ for ((r = 0; r < rounds; r++)); do
   for ((k = 0; k < n; k++)); do
     m=${methods[$(((k + r) % n))]}
     "$exe" render "$scene" --method "$m" --size "${size}x${size}" --frames "$frames" --threads 2 -o "$tmp/$m.png" \
-      --stats "${extra[@]}" 2>"$tmp/err" >/dev/null
+      --stats "${extra[@]}" 2>"$tmp/err" >/dev/null || { echo "$m failed:" >&2; tail -3 "$tmp/err" >&2; exit 1; }
     tail -1 "$tmp/err" | ${PYTHON:-/usr/bin/python3} -c 'import json, sys; s = json.load(sys.stdin)
 print(s["frame_seconds"], s["min_frame_seconds"])' >>"$tmp/$m.times"
   done
