@@ -17,9 +17,7 @@ Plane edge_plane(const ThickVertex& a, const ThickVertex& b, double x0, double y
   return {sign * (dx * (y0 - a.y) - dy * (x0 - a.x)), -sign * dy, sign * dx};
 }
 
-// Four doubles, one pixel each (GCC's and clang's vector extensions: AVX2 in the AVX2 clone, two
-// SSE2 halves in the default one).
-typedef double Lanes __attribute__((vector_size(32)));
+// Lanes (fan_row.hpp): four doubles, one pixel each.
 typedef double UnalignedLanes __attribute__((vector_size(32), aligned(8)));
 typedef float Floats __attribute__((vector_size(16)));
 typedef long long Counts __attribute__((vector_size(32)));  // a comparison of Lanes: -1 where true
@@ -32,11 +30,13 @@ typedef long long Counts __attribute__((vector_size(32)));  // a comparison of L
 // quantities v of pixels i .. i + 3 (those past e are the planes' values beyond the outline).
 template <int S, int Q, class Out>
 [[gnu::always_inline]] inline void fan_rows(const FanPlanes& f, int row0, int rows, int width, Out& out) {
+  int first[4], last[4];
   for (int r = 0; r < rows; ++r) {
     const double y = row0 + r;
     double p0[S], px[S], q0[S][Q], qx[S][Q];
-    int b, e;
-    if (!row_span<S>(f, y, width, b, e)) {
+    if (r % 4 == 0) row_spans<S>(f, y, width, first, last);
+    const int b = first[r % 4], e = last[r % 4];
+    if (e < b) {
       out.row(r, 0, -1);
       continue;
     }
