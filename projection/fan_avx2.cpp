@@ -92,13 +92,10 @@ CELLPROJ_AVX2_INLINE std::int64_t over_each_pixel(const FanPlanes& f, Image& ima
   const FanVectors<S, Order> fan(f);
   const __m256d one = _mm256_set1_pd(1.0);
   std::int64_t added = 0;
-  int first[4], last[4];
-  for (int r = 0; r < rows; ++r) {
-    const double y = row0 + r;
-    if (r % 4 == 0) row_spans<S>(f, y, width, first, last);
-    const int b = first[r % 4], e = last[r % 4];
-    if (e < b) continue;
-    float* line = image.pixel(i0, j0 + row0 + r);
+  RowSpans<S> spans{f, row0, rows, width};
+  for (int b, e; spans.next(b, e);) {
+    const double y = row0 + spans.r;
+    float* line = image.pixel(i0, j0 + row0 + spans.r);
     const FanRow<S, Order> row(fan, y);
     source.row(y);
     __m256d x = _mm256_set1_pd(static_cast<double>(b));
@@ -170,13 +167,10 @@ CELLPROJ_AVX2 void segments_pixels(const FanPlanes& f, const FanSegments& at, Se
                 s0 = _mm_set1_pd(at.piece.s0), ds = _mm_set1_pd(at.piece.ds), k0 = _mm_set1_pd(at.piece.k0),
                 dk = _mm_set1_pd(at.piece.dk), ones = _mm_set1_pd(1.0);
   const double* u2 = at.rays.u_squared() + at.i0;
-  int firsts[4], lasts[4];
-  for (int r = 0; r < at.rows; ++r) {
-    const double y = at.row0 + r;
-    if (r % 4 == 0) row_spans<S>(f, y, at.width, firsts, lasts);
-    const int first = firsts[r % 4], last = lasts[r % 4];
-    if (last < first) continue;
-    const int j = at.j0 + at.row0 + r;
+  RowSpans<S> spans{f, at.row0, at.rows, at.width};
+  for (int first, last; spans.next(first, last);) {
+    const double y = at.row0 + spans.r;
+    const int j = at.j0 + at.row0 + spans.r;
     const double v2 = Perspective ? at.rays.v_squared()[j] : 0.0;
     const std::size_t base = b.n - static_cast<std::size_t>(first);
     const FanRow<S, 0xE4> row(fan, y);

@@ -31,6 +31,24 @@ template <int S>
   for (int k = 0; k < 4; ++k) b[k] = static_cast<int>(std::ceil(lo[k])), e[k] = static_cast<int>(std::floor(hi[k]));
 }
 
+// The rows of a fan's box that hold pixels, in order: rows [row0, row0 + rows) from the box's
+// first, `width` pixels wide. next(b, e) moves to the next such row (its index from row0 in r, its
+// pixels b .. e); false past the last.
+template <int S>
+struct RowSpans {
+  const FanPlanes& f;
+  int row0, rows, width;
+  int r = -1, first[4] = {}, last[4] = {};
+  [[gnu::always_inline]] bool next(int& b, int& e) {
+    while (++r < rows) {
+      if (r % 4 == 0) row_spans<S>(f, row0 + r, width, first, last);
+      b = first[r % 4], e = last[r % 4];
+      if (b <= e) return true;
+    }
+    return false;
+  }
+};
+
 #if CELLPROJ_AVX2_DISPATCH
 // fan_composite_over, fan_composite_table and fan_segments one pixel at a time, the pixel's
 // quantities in an AVX2 vector (pt-table's fifth beside it; fan_avx2.cpp); call only where the
@@ -39,6 +57,9 @@ std::int64_t fan_over_avx2(const FanPlanes& f, Image& image, int i0, int j0, int
 std::int64_t fan_table_avx2(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0, int row0,
                             int rows, int width);
 void fan_segments_avx2(const FanPlanes& f, const FanSegments& at, SegmentBatch& out);
+// fan_composite_over two pixels at a time, each one's quantities in half of an AVX-512 vector
+// (fan_avx512.cpp); call only where the processor has AVX-512 F, VL and DQ.
+std::int64_t fan_over_avx512(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width);
 #endif
 
 }  // namespace cellproj

@@ -351,7 +351,7 @@ void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out, 
   // Room for every pixel of the rows, and three more for the last lanes' stores.
   out.reserve(out.n + static_cast<std::size_t>(at.rows) * static_cast<std::size_t>(at.width) + 3);
 #if CELLPROJ_AVX2_DISPATCH
-  if (lanes == FanLanes::quantities && __builtin_cpu_supports("avx2")) return fan_segments_avx2(f, at, out);
+  if (lanes != FanLanes::pixels && __builtin_cpu_supports("avx2")) return fan_segments_avx2(f, at, out);
 #endif
   const bool four = f.sectors == 4;
   const SegmentsFn fn = at.rays.perspective() ? (four ? segments_4_perspective : segments_3_perspective)
@@ -362,7 +362,10 @@ void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out, 
 std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width,
                                 FanLanes lanes) {
 #if CELLPROJ_AVX2_DISPATCH
-  if (lanes == FanLanes::quantities && __builtin_cpu_supports("avx2"))
+  if (lanes == FanLanes::pairs && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
+      __builtin_cpu_supports("avx512dq"))
+    return fan_over_avx512(f, image, i0, j0, row0, rows, width);
+  if (lanes != FanLanes::pixels && __builtin_cpu_supports("avx2"))
     return fan_over_avx2(f, image, i0, j0, row0, rows, width);
 #endif
   return (f.sectors == 4 ? over_4 : over_3)(f, image, i0, j0, row0, rows, width);
@@ -371,7 +374,7 @@ std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0
 std::int64_t fan_composite_table(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0, int row0,
                                  int rows, int width, FanLanes lanes) {
 #if CELLPROJ_AVX2_DISPATCH
-  if (lanes == FanLanes::quantities && __builtin_cpu_supports("avx2"))
+  if (lanes != FanLanes::pixels && __builtin_cpu_supports("avx2"))
     return fan_table_avx2(f, table, image, i0, j0, row0, rows, width);
 #endif
   return (f.sectors == 4 ? table_4 : table_3)(f, table, image, i0, j0, row0, rows, width);

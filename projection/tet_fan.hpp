@@ -72,11 +72,13 @@ void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& ou
 // premultiplied colour as fan_pixels gives them. The same bits as composite/fragment.hpp's over()
 // of those values. Returns the number of fragments composited, those adding nothing (opacity and
 // colour 0, which leave the image as it was) not counted.
-// `lanes`: `quantities`, one pixel at a time with its four quantities in a vector, where the
-// processor has AVX2 (else `pixels`); `pixels`, four pixels at a time (portable). The same bits.
-enum class FanLanes { quantities, pixels };
+// `lanes`: `pairs`, two pixels at a time, each one's four quantities in half of a vector, where
+// the processor has AVX-512 (else `quantities`); `quantities`, one pixel at a time with its four
+// quantities in a vector, where the processor has AVX2 (else `pixels`); `pixels`, four pixels at a
+// time (portable). The same bits.
+enum class FanLanes { pairs, quantities, pixels };
 std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width,
-                                FanLanes lanes = FanLanes::quantities);
+                                FanLanes lanes = FanLanes::pairs);
 
 // The exact rungs' fan (its planes the ends' quantities, affine_ends: front and back 1/z and s/z in
 // perspective, depth and scalar in orthographic): the pixels of rows [row0, row0 + rows) of its box
@@ -89,7 +91,7 @@ struct FanSegments {
   double smin, smax;
   LinearPiece piece;
 };
-// `lanes` as fan_composite_over's (the same bits either way).
+// `lanes` as fan_composite_over's, `pairs` as `quantities` (the same bits either way).
 void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out,
                   FanLanes lanes = FanLanes::quantities);
 
@@ -97,7 +99,7 @@ void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out,
 // image as fan_composite_over's: each pixel's opacity from `table`, its colour clamped to >= 0
 // times it; the same bits as fan_pixels' values through the table and composite/fragment.hpp's
 // over(). Returns the fragments composited, those adding nothing not counted. `lanes` as
-// fan_composite_over's (the same bits either way).
+// fan_composite_over's, `pairs` as `quantities` (the same bits either way).
 std::int64_t fan_composite_table(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0,
                                  int row0, int rows, int width, FanLanes lanes = FanLanes::quantities);
 

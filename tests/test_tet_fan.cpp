@@ -217,8 +217,9 @@ TEST(TetFan, ThickVertexOnOrBesideTheOutlineKeepsThePixels) {
   expect_fan_matches_triangles(beside, corner_values(rng));
 }
 
-// Both kernels of the fan (FanLanes): four pixels at a time, and one pixel with its quantities in
-// the lanes (AVX2 only; elsewhere the first again).
+// The kernels of the fan (FanLanes): two pixels with their quantities in the lanes (AVX-512 only;
+// pt-linear's, elsewhere the next), one pixel with its quantities in the lanes (AVX2 only;
+// elsewhere the last), and four pixels at a time.
 class FanKernels : public testing::TestWithParam<FanLanes> {};
 
 TEST_P(FanKernels, SegmentsStraightIntoTheBatchHaveSegmentEndsBits) {
@@ -357,9 +358,11 @@ TEST(TetFan, PtTableCompositedOverTheImageAsItsStoredPixelsThroughTheTableAre) {
   for (FanLanes lanes : {FanLanes::quantities, FanLanes::pixels}) expect_composited_as_stored(lanes, &table);
 }
 
-INSTANTIATE_TEST_SUITE_P(TetFan, FanKernels, testing::Values(FanLanes::quantities, FanLanes::pixels),
+INSTANTIATE_TEST_SUITE_P(TetFan, FanKernels, testing::Values(FanLanes::pairs, FanLanes::quantities, FanLanes::pixels),
                          [](const testing::TestParamInfo<FanLanes>& p) {
-                           return p.param == FanLanes::quantities ? "QuantitiesInLanes" : "PixelsInLanes";
+                           return p.param == FanLanes::pairs        ? "PairsInLanes"
+                                  : p.param == FanLanes::quantities ? "QuantitiesInLanes"
+                                                                    : "PixelsInLanes";
                          });
 
 // The opacity table (the paper's 2D alpha texture): 1 - exp(-kappa l) at its nodes, bilinear in
