@@ -85,7 +85,7 @@ TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of
       m = at, at += here;
     }
   }
-  bins.first.back() = at;
+  bins.first[static_cast<std::size_t>(tiles)] = at;
   bins.items.resize(at), bins.counted.resize(at);
   tbb::parallel_for(std::size_t(0), chunks, [&](std::size_t c) {
     std::size_t* next = &count[c * static_cast<std::size_t>(tiles)];

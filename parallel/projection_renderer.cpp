@@ -16,6 +16,7 @@
 #include "composite/ordered_pipeline.hpp"
 #include "composite/tiled_compositor.hpp"
 #include "grid/geometry.hpp"
+#include "parallel/cell_passes.hpp"
 #include "parallel/gl_frame.hpp"
 #include "parallel/splat_stencil.hpp"
 #include "raycast/cell_ray_tracer.hpp"
@@ -24,89 +25,6 @@
 
 namespace cellproj {
 namespace {
-
-// A cell's image box: its vertices' extent on the screen, whether one reaches behind the eye (or
-// the orthographic eye plane), whether one has no image position (NaN).
-struct ImageExtent {
-  double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-  bool behind = false, nan = false;
-};
-
-ImageExtent image_extent(const MeshView& cells, std::int64_t c, const ScreenPoints& screen) {
-  ImageExtent e;
-  const std::int64_t* id = cells.cell(c);
-  for (int k = 0, n = cells.cell_size(c); k < n; ++k) {
-    const ScreenVertex& v = screen.v[static_cast<std::size_t>(id[k])];
-    e.behind = e.behind || behind_eye(v.z), e.nan = e.nan || std::isnan(v.x) || std::isnan(v.y);
-    e.x0 = std::min(e.x0, v.x), e.x1 = std::max(e.x1, v.x), e.y0 = std::min(e.y0, v.y), e.y1 = std::max(e.y1, v.y);
-  }
-  return e;
-}
-
-// f(c, extent) for every cell, in parallel.
-template <class F>
-void for_each_extent(const MeshView& cells, const ScreenPoints& screen, F&& f) {
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096),
-                    [&](const tbb::blocked_range<std::int64_t>& r) {
-                      for (std::int64_t c = r.begin(); c < r.end(); ++c) f(c, image_extent(cells, c, screen));
-                    });
-}
-
-// Pixels under each cell's image bounding box (clamped to the image); a cell reaching behind a
-// perspective eye has no image box and is ray cast over the whole image (an orthographic one only
-// over its box).
-std::vector<float> cell_footprints(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays) {
-  std::vector<float> area(static_cast<std::size_t>(cells.n_cells));
-  const double w = rays.width(), h = rays.height();
-  for_each_extent(cells, screen, [&](std::int64_t c, const ImageExtent& e) {
-    const double dx = std::clamp(e.x1, 0.0, w) - std::clamp(e.x0, 0.0, w),
-                 dy = std::clamp(e.y1, 0.0, h) - std::clamp(e.y0, 0.0, h);
-    area[static_cast<std::size_t>(c)] =
-        e.behind && rays.perspective() ? static_cast<float>(w * h) : static_cast<float>((dx + 1) * (dy + 1));
-  });
-  return area;
-}
-
-// The image rows a cell may draw on: those whose centres its vertices' image box holds; one
-// more each way for a cell reaching behind an orthographic eye plane (ray cast over that wider
-// box), every row for one reaching behind a perspective eye (ray cast over the whole image).
-RowRange cell_rows(const ImageExtent& e, const PixelRays& rays) {
-  const int h = rays.height();
-  const double lo = e.behind ? std::floor(e.y0 - 0.5) : std::ceil(e.y0 - 0.5),
-               hi = e.behind ? std::ceil(e.y1 - 0.5) : std::floor(e.y1 - 0.5);
-  return (e.behind && rays.perspective()) || e.nan
-             ? RowRange{0, h}
-             : RowRange{int(std::clamp(lo, 0.0, double(h))), int(std::clamp(hi + 1.0, 0.0, double(h)))};
-}
-
-// Which cells of the frame are small: their projection covers fewer than `threshold` pixel
-// centres (MWSC section 6, Williams et al.'s software scan conversion), counted; with `rows`, also
-// the rows each cell reaches (cell_rows), in the same pass over the cells' vertices.
-std::vector<std::uint8_t> small_cells(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays,
-                                      double threshold, SplatCounters& counters, FrameBuffer<RowRange>* rows) {
-  std::vector<std::uint8_t> small(static_cast<std::size_t>(cells.n_cells), 0);
-  if (rows) rows->resize(static_cast<std::size_t>(cells.n_cells));
-  const int limit = static_cast<int>(std::min(std::ceil(threshold), 1e9));
-  std::atomic<std::int64_t> n_small{0}, none{0};
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096),
-                    [&](const tbb::blocked_range<std::int64_t>& r) {
-                      std::int64_t here = 0, empty = 0;
-                      for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-                        const std::int64_t* id = cells.cell(c);
-                        const ScreenVertex* v[8];
-                        const int n = std::min(cells.cell_size(c), 8);
-                        for (int k = 0; k < n; ++k) v[k] = &screen.v[static_cast<std::size_t>(id[k])];
-                        if (rows) (*rows)[static_cast<std::size_t>(c)] = cell_rows(image_extent(cells, c, screen), rays);
-                        const int covered = covered_pixels(v, n, rays.width(), rays.height(), std::max(limit, 1));
-                        if (covered < 0) continue;  // reaching behind the eye: projected (ray cast)
-                        empty += covered == 0;
-                        if (covered < threshold) small[static_cast<std::size_t>(c)] = 1, ++here;
-                      }
-                      n_small += here, none += empty;
-                    });
-  counters.small_cells = n_small, counters.covering_no_pixel = none;
-  return small;
-}
 
 struct FrameCounters {
   ProjectionCounters projection;
@@ -160,6 +78,7 @@ struct OrderedCells {
   SmallCells mode;
   const ProjectionSplats& splats;
   OpaqueMask* opaque = nullptr;  // early ray termination: composited front to back, tiles only
+  std::uint8_t* drew = nullptr;  // per cell, tiles only: set once it adds a fragment (count_small_after)
   void fragments(std::size_t k, FragmentBands& out, Scratch& s, Counters& c) const {
     const std::int64_t cell = order[k];
     if (mode != SmallCells::draw && small[static_cast<std::size_t>(cell)]) {
@@ -190,12 +109,14 @@ struct OrderedCells {
     const CellType type = cells.type(cell);
     ProjectionCounters pixels;
     ProjectionCounters& into = first ? c.projection : pixels;
+    const std::int64_t before = into.fragments;
     if (!opaque)
       project.project(ids, type, image, rows, s, into);
     else if (project.hidden_by(ids, type, rows, *opaque))
       ++into.hidden_cells;
     else
       project.project_under(ids, type, image, rows, *opaque, s, into);
+    if (drew && into.fragments != before) __atomic_store_n(&drew[cell], std::uint8_t{1}, __ATOMIC_RELAXED);
     if (!first) c.projection.add_pixels(pixels);
   }
 };
@@ -282,6 +203,10 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   st.splat_threshold = threshold_or(options.splat, kDefaultPixelThreshold);
   const bool software = !is_opengl(options.backend);
   const bool by_tiles = options.compositing == Compositing::tiles && st.small_cells != SmallCells::splat;
+  // Where nothing reads which cells are small before they are drawn (the default: tiles drawing
+  // every cell, a threshold of a pixel centre), they are counted after: a cell that added a
+  // fragment covers a centre, only the others are tested.
+  const bool count_after = by_tiles && st.small_cells == SmallCells::draw && st.splat_threshold <= 1.0;
   // The passes over the cells that need no order: which are small, which rows each reaches.
   std::vector<std::uint8_t> small;
   FrameBuffer<RowRange> reach;
@@ -289,7 +214,10 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   double small_seconds = 0;
   const auto cell_passes = [&](const MeshView& of) {
     const auto t_small = std::chrono::steady_clock::now();  // (the sort beside it does not touch st.splat)
-    small = small_cells(of, screen, rays, st.splat_threshold, st.splat, by_tiles ? &reach : nullptr);
+    if (count_after)
+      cell_reach(of, screen, rays, reach);
+    else
+      small = small_cells(of, screen, rays, st.splat_threshold, st.splat, by_tiles ? &reach : nullptr);
     small_seconds = seconds_since(t_small), passed = &of;
   };
 
@@ -354,7 +282,10 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     t = std::chrono::steady_clock::now();
     std::optional<OpaqueMask> opaque;
     if (options.early_termination) opaque.emplace(width, height);
-    const OrderedCells source{project, cells, order, small, st.small_cells, splats, opaque ? &*opaque : nullptr};
+    FrameBuffer<std::uint8_t> drew;
+    if (count_after) drew.assign(static_cast<std::size_t>(cells.n_cells), 0);
+    OrderedCells source{project, cells, order, small, st.small_cells, splats, opaque ? &*opaque : nullptr};
+    if (count_after) source.drew = drew.data();
     FrameCounters counters;
     if (by_tiles) {
       const int rows = options.tile_rows > 0 ? options.tile_rows
@@ -365,6 +296,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
           &visits, opaque.has_value());
       st.tiles = (height + rows - 1) / rows;
       st.tile_visits = static_cast<std::int64_t>(visits);
+      if (count_after) count_small_after(cells, screen, rays, st.splat_threshold, drew.data(), st.splat);
     } else {
       const std::vector<float> footprint = cell_footprints(cells, screen, rays);
       PipelineLimits limits;

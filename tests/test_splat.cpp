@@ -293,6 +293,28 @@ TEST(Splat, SmallCellsSplattedLowerTheErrorAgainstTheAntialiasedExactImage) {
   EXPECT_LT(compare(splatted, ref).rmse, 0.8 * compare(sliced, ref).rmse);
 }
 
+TEST(Splat, DrawnTilesCountTheCellsCoveringNoCentreAfterwardsAsTheStreamDoesBefore) {
+  // By default (tiles, every cell drawn, a threshold of one centre) the cells covering no pixel
+  // centre are counted after the frame, testing only those that added no fragment; the stream
+  // tests every cell first. The same counts, with cells adding nothing (extinction 0 below 0.3:
+  // they cover centres but add no fragment) and with cells culled as transparent or not.
+  const Graded g;
+  const TransferFunction part_clear{{{0.0, {0.15, 0.25, 0.6}}, {1.0, {1.0, 0.95, 0.8}}},
+                                    {{0.0, 0.0}, {0.3, 0.0}, {0.31, 4.0}, {1.0, 16.0}}};
+  for (const TransferFunction* tf : {&g.tf, &part_clear})
+    for (bool cull : {true, false}) {
+      ProjectionOptions tiles = projection_with(SmallCells::draw), stream = tiles;
+      tiles.cull_transparent = stream.cull_transparent = cull;
+      stream.compositing = Compositing::stream;
+      ProjectionStats after, before;
+      test::project(g.mesh, "scalar", *tf, g.camera, 48, tiles, Tetrahedralize::problem, &after);
+      test::project(g.mesh, "scalar", *tf, g.camera, 48, stream, Tetrahedralize::problem, &before);
+      EXPECT_GT(before.splat.covering_no_pixel, 100);
+      EXPECT_EQ(after.splat.covering_no_pixel, before.splat.covering_no_pixel) << "cull " << cull;
+      EXPECT_EQ(after.splat.small_cells, before.splat.small_cells) << "cull " << cull;
+    }
+}
+
 TEST(Splat, WithoutSmallCellsThePictureIsUnchanged) {
   const Mesh box = make_box(6, 6, 6, glm::dvec3(-1), glm::dvec3(1), true);
   Mesh m = box;
