@@ -4,9 +4,7 @@
 // test, interpolation, finish and "over" are one instruction each where the AVX2 kernel spends one
 // per pixel (a small tetrahedron's rows are a few pixels: four pixels a vector would spend most
 // lanes past a row's end).
-#include <limits>
-
-#include "projection/fan_row.hpp"
+#include "projection/fan_simd.hpp"
 
 #if CELLPROJ_AVX2_DISPATCH
 // GCC 12's AVX-512 intrinsics start some results from an "undefined" vector that its own warnings
@@ -15,28 +13,12 @@
 #if !defined(__clang__)
 #pragma GCC diagnostic ignored "-Wmaybe-uninitialized"
 #endif
-#include <immintrin.h>
 
 namespace cellproj {
 namespace {
 
 #define CELLPROJ_AVX512 __attribute__((target("avx512f,avx512vl,avx512dq")))
 #define CELLPROJ_AVX512_INLINE __attribute__((target("avx512f,avx512vl,avx512dq"), always_inline)) inline
-
-// A pixel's fan triangle from its wedge values w (lanes k < S; `inside`: those > 0), as
-// fan_avx2.cpp's FanRow::triangle: the one positive; where none or two are (on a spoke, at the
-// thick vertex, to rounding), the first largest; S (the zero planes) where none is taken (NaN).
-template <int S>
-CELLPROJ_AVX512_INLINE int triangle(unsigned inside, __m256d w) {
-  if (inside != 0 && (inside & (inside - 1)) == 0) return __builtin_ctz(inside);
-  alignas(32) double wa[4];
-  _mm256_store_pd(wa, w);
-  double best = -std::numeric_limits<double>::infinity();
-  int a = S;
-  for (int k = 0; k < S; ++k)
-    if (wa[k] > best) best = wa[k], a = k;
-  return a;
-}
 
 // Planes a and c side by side: pixel i's triangle in lanes 0-3, pixel i + 1's in lanes 4-7.
 CELLPROJ_AVX512_INLINE __m512d pair(const __m256d* planes, int a, int c) {
@@ -46,24 +28,13 @@ CELLPROJ_AVX512_INLINE __m512d pair(const __m256d* planes, int a, int c) {
 template <int S>
 CELLPROJ_AVX512 std::int64_t over_pairs(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows,
                                         int width) {
-  // The spokes (lane k: spoke k, in each half) and triangles left out, as fan_avx2.cpp's FanVectors.
-  alignas(32) double pc[4], pgy[4], pgx[4], left[4];
-  for (int k = 0; k < 4; ++k) {
-    const bool in = k < S;  // a fourth lane for three triangles: never chosen
-    pc[k] = in ? f.spoke[k].c : 0.0, pgy[k] = in ? f.spoke[k].gy : 0.0, pgx[k] = in ? f.spoke[k].gx : 0.0;
-    left[k] = in ? f.left_out[k] : -std::numeric_limits<double>::infinity();
-  }
-  const __m512d spoke_c = _mm512_broadcast_f64x4(_mm256_load_pd(pc)),
-                spoke_gy = _mm512_broadcast_f64x4(_mm256_load_pd(pgy)),
-                spoke_gx = _mm512_broadcast_f64x4(_mm256_load_pd(pgx)),
-                left_out = _mm512_broadcast_f64x4(_mm256_load_pd(left));
-  // Each triangle's quantity planes in the image's lane order (r, g, b, opacity); planes S are zero
-  // (no triangle taken: quantities 0, as the AVX2 kernel's).
-  __m256d qc[S], qgy[S], qx[S + 1], q0[S + 1];
-  for (int a = 0; a < S; ++a)
-    qc[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].c), 0x39),
-    qgy[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].gy), 0x39),
-    qx[a] = _mm256_permute4x64_pd(_mm256_loadu_pd(f.q[a].gx), 0x39);
+  // The AVX2 kernel's per-tetrahedron vectors, the spokes' in both halves; each triangle's
+  // quantity planes in the image's lane order (r, g, b, opacity), planes S zero (no triangle taken:
+  // quantities 0, as the AVX2 kernel's).
+  const FanVectors<S, 0x39> fan(f);
+  const __m512d spoke_gx = _mm512_broadcast_f64x4(fan.spoke_gx), left_out = _mm512_broadcast_f64x4(fan.left_out);
+  __m256d qx[S + 1], q0[S + 1];
+  for (int a = 0; a < S; ++a) qx[a] = fan.qx[a];
   qx[S] = q0[S] = _mm256_setzero_pd();
   const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0), two = _mm512_set1_pd(2.0),
                 sign = _mm512_set1_pd(-0.0), pixel_pair = _mm512_set_pd(1, 1, 1, 1, 0, 0, 0, 0);
@@ -72,9 +43,9 @@ CELLPROJ_AVX512 std::int64_t over_pairs(const FanPlanes& f, Image& image, int i0
   for (int b, e; spans.next(b, e);) {
     const double y = row0 + spans.r;
     float* line = image.pixel(i0, j0 + row0 + spans.r);
-    const __m512d spoke0 = _mm512_add_pd(spoke_c, _mm512_mul_pd(spoke_gy, _mm512_set1_pd(y)));
-    const __m256d yy = _mm256_set1_pd(y);
-    for (int a = 0; a < S; ++a) q0[a] = _mm256_add_pd(qc[a], _mm256_mul_pd(qgy[a], yy));
+    const FanRow<S, 0x39> row(fan, y);
+    const __m512d spoke0 = _mm512_broadcast_f64x4(row.spoke0);
+    for (int a = 0; a < S; ++a) q0[a] = row.q0[a];
     __m512d x = _mm512_add_pd(_mm512_set1_pd(static_cast<double>(b)), pixel_pair);  // (integers: exact)
     for (int i = b; i <= e; i += 2, x = _mm512_add_pd(x, two)) {
       // The wedge values min(spoke[a], -spoke[a + 1]) + left_out[a] of both pixels.
@@ -82,9 +53,10 @@ CELLPROJ_AVX512 std::int64_t over_pairs(const FanPlanes& f, Image& image, int i0
       const __m512d next = _mm512_permutex_pd(spoke, S == 4 ? 0x39 : 0xC9);
       const __m512d w = _mm512_add_pd(_mm512_min_pd(spoke, _mm512_xor_pd(next, sign)), left_out);
       const unsigned inside = _mm512_cmp_pd_mask(w, zero, _CMP_GT_OQ);
-      const int a = triangle<S>(inside & 0xF, _mm512_castpd512_pd256(w)),
-                c = triangle<S>(inside >> 4, _mm512_extractf64x4_pd(w, 1));
-      const __m512d q = _mm512_add_pd(pair(q0, a, c), _mm512_mul_pd(pair(qx, a, c), x));
+      const int a = wedge_triangle<S>(inside & 0xF, _mm512_castpd512_pd256(w)),
+                c = wedge_triangle<S>(inside >> 4, _mm512_extractf64x4_pd(w, 1));
+      const int qa = a < 0 ? S : a, qc = c < 0 ? S : c;
+      const __m512d q = _mm512_add_pd(pair(q0, qa, qc), _mm512_mul_pd(pair(qx, qa, qc), x));
       // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
       const __m512d u = _mm512_max_pd(q, zero);
       const __m512d alpha = _mm512_min_pd(_mm512_permutex_pd(u, 0xFF), one);
