@@ -59,8 +59,30 @@ int covered(const MeshView& cells, std::int64_t c, const ScreenPoints& screen, c
   return covered_pixels(v, n, rays.width(), rays.height(), limit);
 }
 
-// The pixel-centre limit of small_cells' counts for `threshold`.
-int limit_of(double threshold) { return std::max(static_cast<int>(std::min(std::ceil(threshold), 1e9)), 1); }
+// small_cells' counts of the cells into `counters`: those covering fewer than `threshold` pixel
+// centres, and those covering none. Cells whose `drew` is set (when given) are not tested: they
+// cover a centre. With `small`, each small cell's flag is set; with `rows`, each cell's rows.
+void count_small(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays, double threshold,
+                 const std::uint8_t* drew, std::uint8_t* small, RowRange* rows, SplatCounters& counters) {
+  const int limit = std::max(static_cast<int>(std::min(std::ceil(threshold), 1e9)), 1);
+  std::atomic<std::int64_t> n_small{0}, none{0};
+  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096),
+                    [&](const tbb::blocked_range<std::int64_t>& r) {
+                      std::int64_t here = 0, empty = 0;
+                      for (std::int64_t c = r.begin(); c < r.end(); ++c) {
+                        if (rows) rows[c] = cell_rows(image_extent(cells, c, screen), rays);
+                        if (drew && drew[c]) continue;
+                        const int n = covered(cells, c, screen, rays, limit);
+                        if (n < 0) continue;  // reaching behind the eye: projected (ray cast)
+                        empty += n == 0;
+                        if (n >= threshold) continue;
+                        ++here;
+                        if (small) small[c] = 1;
+                      }
+                      n_small += here, none += empty;
+                    });
+  counters.small_cells = n_small, counters.covering_no_pixel = none;
+}
 
 }  // namespace
 
@@ -81,22 +103,7 @@ std::vector<std::uint8_t> small_cells(const MeshView& cells, const ScreenPoints&
                                       double threshold, SplatCounters& counters, FrameBuffer<RowRange>* rows) {
   std::vector<std::uint8_t> small(static_cast<std::size_t>(cells.n_cells), 0);
   if (rows) rows->resize(static_cast<std::size_t>(cells.n_cells));
-  const int limit = limit_of(threshold);
-  std::atomic<std::int64_t> n_small{0}, none{0};
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096),
-                    [&](const tbb::blocked_range<std::int64_t>& r) {
-                      std::int64_t here = 0, empty = 0;
-                      for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-                        if (rows)
-                          (*rows)[static_cast<std::size_t>(c)] = cell_rows(image_extent(cells, c, screen), rays);
-                        const int n = covered(cells, c, screen, rays, limit);
-                        if (n < 0) continue;  // reaching behind the eye: projected (ray cast)
-                        empty += n == 0;
-                        if (n < threshold) small[static_cast<std::size_t>(c)] = 1, ++here;
-                      }
-                      n_small += here, none += empty;
-                    });
-  counters.small_cells = n_small, counters.covering_no_pixel = none;
+  count_small(cells, screen, rays, threshold, nullptr, small.data(), rows ? rows->data() : nullptr, counters);
   return small;
 }
 
@@ -109,20 +116,7 @@ void cell_reach(const MeshView& cells, const ScreenPoints& screen, const PixelRa
 
 void count_small_after(const MeshView& cells, const ScreenPoints& screen, const PixelRays& rays, double threshold,
                        const std::uint8_t* drew, SplatCounters& counters) {
-  const int limit = limit_of(threshold);  // 1: a cell that drew covers at least that, so is not small
-  std::atomic<std::int64_t> n_small{0}, none{0};
-  tbb::parallel_for(tbb::blocked_range<std::int64_t>(0, cells.n_cells, 4096),
-                    [&](const tbb::blocked_range<std::int64_t>& r) {
-                      std::int64_t here = 0, empty = 0;
-                      for (std::int64_t c = r.begin(); c < r.end(); ++c) {
-                        if (drew[c]) continue;
-                        const int n = covered(cells, c, screen, rays, limit);
-                        if (n < 0) continue;
-                        empty += n == 0, here += n < threshold;
-                      }
-                      n_small += here, none += empty;
-                    });
-  counters.small_cells = n_small, counters.covering_no_pixel = none;
+  count_small(cells, screen, rays, threshold, drew, nullptr, nullptr, counters);
 }
 
 }  // namespace cellproj
