@@ -32,7 +32,8 @@ CELLPROJ_AVX512 std::int64_t over_pairs(const FanPlanes& f, Image& image, int i0
   // quantity planes in the image's lane order (r, g, b, opacity), planes S zero (no triangle taken:
   // quantities 0, as the AVX2 kernel's).
   const FanVectors<S, 0x39> fan(f);
-  const __m512d spoke_gx = _mm512_broadcast_f64x4(fan.spoke_gx), left_out = _mm512_broadcast_f64x4(fan.left_out);
+  const __m512d spoke_c = _mm512_broadcast_f64x4(fan.spoke_c), spoke_gy = _mm512_broadcast_f64x4(fan.spoke_gy),
+                spoke_gx = _mm512_broadcast_f64x4(fan.spoke_gx), left_out = _mm512_broadcast_f64x4(fan.left_out);
   __m256d qx[S + 1], q0[S + 1];
   for (int a = 0; a < S; ++a) qx[a] = fan.qx[a];
   qx[S] = q0[S] = _mm256_setzero_pd();
@@ -43,9 +44,10 @@ CELLPROJ_AVX512 std::int64_t over_pairs(const FanPlanes& f, Image& image, int i0
   for (int b, e; spans.next(b, e);) {
     const double y = row0 + spans.r;
     float* line = image.pixel(i0, j0 + row0 + spans.r);
-    const FanRow<S, 0x39> row(fan, y);
-    const __m512d spoke0 = _mm512_broadcast_f64x4(row.spoke0);
-    for (int a = 0; a < S; ++a) q0[a] = row.q0[a];
+    // FanRow's values, the spokes' in both halves
+    const __m512d spoke0 = _mm512_add_pd(spoke_c, _mm512_mul_pd(spoke_gy, _mm512_set1_pd(y)));
+    const __m256d yy = _mm256_set1_pd(y);
+    for (int a = 0; a < S; ++a) q0[a] = _mm256_add_pd(fan.qc[a], _mm256_mul_pd(fan.qgy[a], yy));
     __m512d x = _mm512_add_pd(_mm512_set1_pd(static_cast<double>(b)), pixel_pair);  // (integers: exact)
     for (int i = b; i <= e; i += 2, x = _mm512_add_pd(x, two)) {
       // The wedge values min(spoke[a], -spoke[a + 1]) + left_out[a] of both pixels.
@@ -53,10 +55,9 @@ CELLPROJ_AVX512 std::int64_t over_pairs(const FanPlanes& f, Image& image, int i0
       const __m512d next = _mm512_permutex_pd(spoke, S == 4 ? 0x39 : 0xC9);
       const __m512d w = _mm512_add_pd(_mm512_min_pd(spoke, _mm512_xor_pd(next, sign)), left_out);
       const unsigned inside = _mm512_cmp_pd_mask(w, zero, _CMP_GT_OQ);
-      const int a = wedge_triangle<S>(inside & 0xF, _mm512_castpd512_pd256(w)),
-                c = wedge_triangle<S>(inside >> 4, _mm512_extractf64x4_pd(w, 1));
-      const int qa = a < 0 ? S : a, qc = c < 0 ? S : c;
-      const __m512d q = _mm512_add_pd(pair(q0, qa, qc), _mm512_mul_pd(pair(qx, qa, qc), x));
+      const int a = wedge_triangle<S, S>(inside & 0xF, _mm512_castpd512_pd256(w)),
+                c = wedge_triangle<S, S>(inside >> 4, _mm512_extractf64x4_pd(w, 1));
+      const __m512d q = _mm512_add_pd(pair(q0, a, c), _mm512_mul_pd(pair(qx, a, c), x));
       // finish_linear: opacity clamped to [0, 1], colour clamped to >= 0 times it
       const __m512d u = _mm512_max_pd(q, zero);
       const __m512d alpha = _mm512_min_pd(_mm512_permutex_pd(u, 0xFF), one);

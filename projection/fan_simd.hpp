@@ -38,14 +38,14 @@ struct FanVectors {
 // The triangle whose wedge holds a pixel, from its wedge values w = min(spoke[a], -spoke[a + 1]) +
 // left_out[a] (lanes a < S) and `inside`, the mask of those > 0: the one positive inside the
 // outline; where none or two are (on a spoke, at the thick vertex, to rounding), fan_rows' rule:
-// the first largest. -1 if none is taken (NaN).
-template <int S>
+// the first largest. `None` if none is taken (NaN).
+template <int S, int None = -1>
 CELLPROJ_AVX2_INLINE int wedge_triangle(unsigned inside, __m256d w) {
   if (inside != 0 && (inside & (inside - 1)) == 0) return __builtin_ctz(inside);
   alignas(32) double wa[4];
   _mm256_store_pd(wa, w);
   double best = -std::numeric_limits<double>::infinity();
-  int a = -1;
+  int a = None;
   for (int k = 0; k < S; ++k)
     if (wa[k] > best) best = wa[k], a = k;
   return a;
