@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
 # Frame time of two cellproj builds on one scene, measured in one run: A and B render in turn
-# (A, B, B, A, ... so drift favours neither), each FRAMES frames on 2 threads, and the median of
+# (A, B, B, A, ... so drift favours neither), each FRAMES frames on THREADS threads (2), and the median of
 # their per-run median frame times is printed with the ratio B/A, then the fastest frame of each
 # over all runs and their ratio (steadier on this machine), and whether the last pictures
 # are bit-identical (if not, their largest difference, with numpy). For judging one change on
 # this noisy machine, where only side-by-side runs tell tens of percent.
-# usage: bench/ab_frames.sh A_EXE B_EXE SCENE METHOD SIZE [ROUNDS=3] [FRAMES=4] [-- extra render options]
+# usage: [THREADS=2] bench/ab_frames.sh A_EXE B_EXE SCENE METHOD SIZE [ROUNDS=3] [FRAMES=4] [-- extra render options]
 #   A_EXE: e.g. a build of the previous commit (git worktree add /tmp/a REV; cmake -S /tmp/a -B
 #   /tmp/a/build -DCMAKE_BUILD_TYPE=Release; cmake --build /tmp/a/build --target cellproj).
 set -euo pipefail
@@ -16,7 +16,7 @@ if [ $# -gt 0 ] && [ "$1" != "--" ]; then frames=$1; shift; fi
 [ "${1:-}" = "--" ] && shift; extra=("$@")
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 frame() {  # EXE TAG -> median and fastest frame seconds of the run
-  "$1" render "$scene" --method "$method" --size "${size}x${size}" --frames "$frames" --threads 2 -o "$tmp/$2.png" \
+  "$1" render "$scene" --method "$method" --size "${size}x${size}" --frames "$frames" --threads "${THREADS:-2}" -o "$tmp/$2.png" \
     --npy "$tmp/$2.npy" --stats "${extra[@]}" 2>"$tmp/$2.err" >/dev/null
   tail -1 "$tmp/$2.err" | python3 -c 'import json, sys; s = json.load(sys.stdin); print(s["frame_seconds"], s["min_frame_seconds"])'
 }
