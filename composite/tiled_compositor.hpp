@@ -6,6 +6,7 @@
 // in the items' order, so 1 and N threads give the same image bit for bit, and the work of an item
 // is repeated only on the tiles it straddles. Items are binned to tiles in parallel first, in order.
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <cstdint>
 #include <numeric>
@@ -13,17 +14,15 @@
 #include <utility>
 #include <vector>
 
-#include <tbb/blocked_range.h>
-#include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
-#include <tbb/partitioner.h>
+#include <tbb/task_arena.h>
 
 #include "base/huge_pages.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {
 
-// Rows per tile for a `height`-row image: about 4 tiles per thread (the tasks balance by stealing
+// Rows per tile for a `height`-row image: about 4 tiles per thread (the workers balance by taking
 // whole tiles), at most 64 rows (a 1024-wide tile of 64 float RGBA rows is 1 MB, the size of a
 // core's L2 cache), at least 16: a cell straddling tiles is set up once per tile, and a cell h rows
 // tall meets about 1 + (h - 1) / rows tiles (1.12 for the 1M box at 1024² with 64 rows, 1.24 with
@@ -119,38 +118,39 @@ typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const 
   const TileBins bins = bin_to_tiles(n, image.height, rows, rows_of);
   if (visits) *visits = bins.items.size();
   const std::size_t tiles = bins.first.size() - 1;
-  // The busiest tiles first (most items), so that the last tasks to start are short ones.
+  // The busiest tiles first (most items), taken in that order from one counter by every worker
+  // (longest job first): the last tasks to start are short ones. (A parallel_for over the tiles
+  // splits their range in halves, so a busy tile could start last: up to a tenth of the phase idle
+  // on 2 threads, bench/results/tile_order.txt.)
   std::vector<std::size_t> by_load(tiles);
   std::iota(by_load.begin(), by_load.end(), std::size_t(0));
   std::stable_sort(by_load.begin(), by_load.end(), [&](std::size_t a, std::size_t b) {
     return bins.first[a + 1] - bins.first[a] > bins.first[b + 1] - bins.first[b];
   });
   std::vector<typename Source::Counters> counters(tiles);
-  tbb::enumerable_thread_specific<typename Source::Scratch> scratch;
-  tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, tiles, 1),
-      [&](const tbb::blocked_range<std::size_t>& r) {
-        typename Source::Scratch& s = scratch.local();
-        for (std::size_t q = r.begin(); q != r.end(); ++q) {
-          const std::size_t t = by_load[q];
-          const RowRange tile{static_cast<int>(t) * rows, std::min(image.height, static_cast<int>(t + 1) * rows)};
-          const std::size_t b = bins.first[t], e = bins.first[t + 1];
-          const auto at = [&](std::size_t m) { return front_to_back ? e - 1 - (m - b) : m; };
-          for (std::size_t m = b; m < e; ++m) {
-            if constexpr (HasPrefetch<Source>::value) {
-              // Items far apart in the order touch far apart memory: their loads start early.
-              constexpr std::size_t kAhead = 4;
-              constexpr int kStages = 3;
-              for (int stage = 0; stage < kStages; ++stage)
-                if (const std::size_t ahead = m + (kStages - stage) * kAhead; ahead < e)
-                  source.prefetch(bins.items[at(ahead)], stage);
-            }
-            const std::size_t k = bins.items[at(m)];
-            source.composite(k, image, tile, bins.counted[at(m)] != 0, s, counters[t]);
-          }
-        }
-      },
-      tbb::simple_partitioner());
+  std::atomic<std::size_t> next{0};
+  const auto draw_tile = [&](std::size_t t, typename Source::Scratch& s) {
+    const RowRange tile{static_cast<int>(t) * rows, std::min(image.height, static_cast<int>(t + 1) * rows)};
+    const std::size_t b = bins.first[t], e = bins.first[t + 1];
+    const auto at = [&](std::size_t m) { return front_to_back ? e - 1 - (m - b) : m; };
+    for (std::size_t m = b; m < e; ++m) {
+      if constexpr (HasPrefetch<Source>::value) {
+        // Items far apart in the order touch far apart memory: their loads start early.
+        constexpr std::size_t kAhead = 4;
+        constexpr int kStages = 3;
+        for (int stage = 0; stage < kStages; ++stage)
+          if (const std::size_t ahead = m + (kStages - stage) * kAhead; ahead < e)
+            source.prefetch(bins.items[at(ahead)], stage);
+      }
+      const std::size_t k = bins.items[at(m)];
+      source.composite(k, image, tile, bins.counted[at(m)] != 0, s, counters[t]);
+    }
+  };
+  const int workers = static_cast<int>(std::min<std::size_t>(tiles, tbb::this_task_arena::max_concurrency()));
+  tbb::parallel_for(0, workers, [&](int) {
+    typename Source::Scratch s;  // (one per worker: a task takes tiles until none is left)
+    for (std::size_t q; (q = next.fetch_add(1, std::memory_order_relaxed)) < tiles;) draw_tile(by_load[q], s);
+  });
   typename Source::Counters total{};
   for (const auto& c : counters) total.add(c);
   return total;
