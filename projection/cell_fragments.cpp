@@ -38,10 +38,13 @@ struct ExactShade {
   }
 };
 
+struct CompositeFragments;
+
 // The exact methods' fragments of one cell, gathered, their light computed together, then emitted
 // in the order they were given: segment_ends, then the weights over the batch (the same bits as
 // one by one, small cells in SIMD lanes), of the cell's one linear piece, or of each segment's
-// pieces where the cell's scalar range holds a breakpoint.
+// pieces where the cell's scalar range holds a breakpoint. A tile's compositing (CompositeFragments)
+// takes them four at a time (composite_over).
 template <class Emit>
 struct ExactFragments {
   const ExactShade& shade;
@@ -64,6 +67,7 @@ struct ExactFragments {
       linear_segment_weights_padded(b.n, b.length.data(), b.k0.data(), b.k1.data(), b.weights.data());
       segment_light(b, shade.piece);
     }
+    if constexpr (std::is_same_v<Emit, CompositeFragments>) return emitted += composite_over(b, emit.image);
     for (std::size_t k = 0; k < b.n; ++k) {  // (across a breakpoint opacity is set: depth is not read)
       const SegmentLight light{{b.red[k], b.green[k], b.blue[k]}, b.weights[k].depth, b.opacity[k]};
       emitted += emit(b.i[k], b.j[k], light.rgb, light.opacity());
@@ -342,7 +346,7 @@ GouraudCorner CellFragments::shade(const ThickVertex& t) const {
 }
 
 CellFragments::Seen CellFragments::tet_triangles(const Tet& tet, CellScratch& p, ProjectionCounters& counters,
-                                                  bool triangles) const {
+                                                 bool triangles) const {
   ScreenVertex v[4];
   ProjectedTet& pt = p.tet;
   const Seen seen = classify(tet, v, pt, counters);
@@ -456,8 +460,8 @@ void CellFragments::project(const std::int64_t* ids, CellType type, Image& image
   project(ids, type, image, {0, rays_.height()}, scratch, counters);
 }
 
-void CellFragments::project(const std::int64_t* ids, CellType type, Image& image, RowRange rows,
-                            CellScratch& scratch, ProjectionCounters& counters) const {
+void CellFragments::project(const std::int64_t* ids, CellType type, Image& image, RowRange rows, CellScratch& scratch,
+                            ProjectionCounters& counters) const {
   CompositeFragments emit{image};
   project_with(ids, type, rows, emit, scratch, counters);
 }
@@ -528,8 +532,7 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
       glm::dvec3 dc;
       double da = 0, dl = 0;
       rasterize_triangle_spans(
-          glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), box, rows.begin,
-          rows.end,
+          glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), box, rows.begin, rows.end,
           [&](const double* dw) {
             dc = mix(dw, &GouraudCorner::c), da = mix(dw, &GouraudCorner::a), dl = mix(dw, &GouraudCorner::l);
           },
@@ -564,8 +567,8 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
     const auto mix = [&q](const double* w, int m) { return w[0] * q[0][m] + w[1] * q[1][m] + w[2] * q[2][m]; };
     double dq[4];
     rasterize_triangle_spans(
-        glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height,
-        rows.begin, rows.end,
+        glm::dvec2(V[0].x, V[0].y), glm::dvec2(V[1].x, V[1].y), glm::dvec2(V[2].x, V[2].y), width, height, rows.begin,
+        rows.end,
         [&](const double* dw) {
           for (int m = 0; m < 4; ++m) dq[m] = mix(dw, m);
         },
@@ -659,8 +662,8 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
 }
 
 template <class Emit>
-void CellFragments::project_layers(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
-                                   CellScratch& p, ProjectionCounters& counters) const {
+void CellFragments::project_layers(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
+                                   ProjectionCounters& counters) const {
   ScreenVertex v[8];
   if (!load_cell(ids, type, v, p, counters)) return;  // split into tetrahedra for the view, or not drawn
   const FaceLayers faces = face_layers(v, ids, type, front_sign_);
@@ -700,7 +703,9 @@ void CellFragments::project_layers(const std::int64_t* ids, CellType type, RowRa
           for (int i = b; i < e; ++i) at(i, j, q0 + (i - b) * dq[0], q1 + (i - b) * dq[1]);
         });
   };
-  const auto back_at = [&](int i, int j) { return &p.back[2 * (static_cast<std::size_t>(j - box.j0) * bw + (i - box.i0))]; };
+  const auto back_at = [&](int i, int j) {
+    return &p.back[2 * (static_cast<std::size_t>(j - box.j0) * bw + (i - box.i0))];
+  };
   for (int t = 0; t < faces.n_back; ++t)
     rasterize(faces.back[t], [&](int i, int j, double depth, double scalar) {
       double* b = back_at(i, j);

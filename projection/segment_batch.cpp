@@ -4,7 +4,12 @@
 #include <cmath>
 
 #include "base/simd.hpp"
+#include "composite/fragment.hpp"
 #include "optics/segment_integral.hpp"
+
+#if CELLPROJ_AVX2_DISPATCH
+#include <immintrin.h>
+#endif
 
 namespace cellproj {
 namespace {
@@ -13,10 +18,9 @@ namespace {
 template <bool perspective>
 [[gnu::always_inline]] inline void ends(std::size_t n, const int* __restrict pi, const int* __restrict pj,
                                         const double* __restrict u2, const double* __restrict v2,
-                                        const double* __restrict zf, const double* __restrict zb,
-                                        double* __restrict sf, double* __restrict sb, double* __restrict length,
-                                        double* __restrict k0, double* __restrict k1, double smin, double smax,
-                                        const LinearPiece piece) {
+                                        const double* __restrict zf, const double* __restrict zb, double* __restrict sf,
+                                        double* __restrict sb, double* __restrict length, double* __restrict k0,
+                                        double* __restrict k1, double smin, double smax, const LinearPiece piece) {
   for (std::size_t k = 0; k < n; ++k) {
     const double per_depth = perspective ? PixelRays::length_per_depth_from(u2[pi[k]], v2[pj[k]]) : 1.0;
     double s0 = sf[k], s1 = sb[k];
@@ -33,23 +37,20 @@ template <bool perspective>
 }
 
 // One function per projection and target: the build's default, or AVX2 where the processor has it.
-CELLPROJ_AVX2_CLONES void perspective_ends(SegmentBatch& b, const PixelRays& rays,
-                                                                        double smin, double smax,
-                                                                        const LinearPiece& piece) {
+CELLPROJ_AVX2_CLONES void perspective_ends(SegmentBatch& b, const PixelRays& rays, double smin, double smax,
+                                           const LinearPiece& piece) {
   ends<true>(b, rays, smin, smax, piece);
 }
-CELLPROJ_AVX2_CLONES void orthographic_ends(SegmentBatch& b, const PixelRays& rays,
-                                                                         double smin, double smax,
-                                                                         const LinearPiece& piece) {
+CELLPROJ_AVX2_CLONES void orthographic_ends(SegmentBatch& b, const PixelRays& rays, double smin, double smax,
+                                            const LinearPiece& piece) {
   ends<false>(b, rays, smin, smax, piece);
 }
 
 // segment_light over n segments: LinearPiece::color at both ends, weighted (as
 // integrate_linear_closed_form).
 [[gnu::always_inline]] inline void light(std::size_t n, const EndWeights* __restrict w, const double* __restrict sf,
-                                         const double* __restrict sb, double* __restrict red,
-                                         double* __restrict green, double* __restrict blue,
-                                         double* __restrict opacity, const LinearPiece piece) {
+                                         const double* __restrict sb, double* __restrict red, double* __restrict green,
+                                         double* __restrict blue, double* __restrict opacity, const LinearPiece piece) {
   for (std::size_t k = 0; k < n; ++k) {
     const glm::dvec3 c = piece.color(sf[k]) * w[k].front + piece.color(sb[k]) * w[k].back;
     red[k] = c.r, green[k] = c.g, blue[k] = c.b, opacity[k] = w[k].opacity;
@@ -57,13 +58,66 @@ CELLPROJ_AVX2_CLONES void orthographic_ends(SegmentBatch& b, const PixelRays& ra
 }
 
 CELLPROJ_AVX2_CLONES void light(SegmentBatch& b, const LinearPiece& piece) {
-  light(b.n, b.weights.data(), b.sf.data(), b.sb.data(), b.red.data(), b.green.data(), b.blue.data(),
-        b.opacity.data(), piece);
+  light(b.n, b.weights.data(), b.sf.data(), b.sb.data(), b.red.data(), b.green.data(), b.blue.data(), b.opacity.data(),
+        piece);
 }
+
+// composite_over's fragment k, one at a time (CompositeFragments' operations).
+inline bool over_one(const SegmentBatch& b, std::size_t k, Image& image) {
+  if (b.opacity[k] == 0.0 && b.red[k] == 0.0 && b.green[k] == 0.0 && b.blue[k] == 0.0) return false;
+  const float src[4] = {static_cast<float>(b.red[k]), static_cast<float>(b.green[k]), static_cast<float>(b.blue[k]),
+                        static_cast<float>(b.opacity[k])};
+  over(image.pixel(b.i[k], b.j[k]), src);
+  return true;
+}
+
+#if CELLPROJ_AVX2_DISPATCH
+// Four fragments at a time: their colour and opacity converted to float in lanes and transposed to
+// one (r, g, b, opacity) vector each, then "over" one fragment after another (a pixel may come
+// twice: each reads what the one before wrote).
+__attribute__((target("avx2"))) std::int64_t over_avx2(const SegmentBatch& b, Image& image) {
+  std::int64_t added = 0;
+  std::size_t k = 0;
+  const __m256d zero = _mm256_setzero_pd();
+  const __m128 one = _mm_set1_ps(1.0f);
+  for (; k + 4 <= b.n; k += 4) {
+    const __m256d r = _mm256_loadu_pd(&b.red[k]), g = _mm256_loadu_pd(&b.green[k]), bl = _mm256_loadu_pd(&b.blue[k]),
+                  a = _mm256_loadu_pd(&b.opacity[k]);
+    // adds: not all four +-0 (NaN adds), as adds_nothing
+    const __m256d some =
+        _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(r, zero, _CMP_NEQ_UQ), _mm256_cmp_pd(g, zero, _CMP_NEQ_UQ)),
+                     _mm256_or_pd(_mm256_cmp_pd(bl, zero, _CMP_NEQ_UQ), _mm256_cmp_pd(a, zero, _CMP_NEQ_UQ)));
+    const unsigned adds = static_cast<unsigned>(_mm256_movemask_pd(some));
+    __m128 f0 = _mm256_cvtpd_ps(r), f1 = _mm256_cvtpd_ps(g), f2 = _mm256_cvtpd_ps(bl), f3 = _mm256_cvtpd_ps(a);
+    _MM_TRANSPOSE4_PS(f0, f1, f2, f3);
+    const __m128 src[4] = {f0, f1, f2, f3};
+    for (int l = 0; l < 4; ++l)
+      if (adds >> l & 1u) {
+        float* dst = image.pixel(b.i[k + l], b.j[k + l]);
+        const __m128 t = _mm_sub_ps(one, _mm_shuffle_ps(src[l], src[l], 0xFF));
+        _mm_storeu_ps(dst, _mm_add_ps(src[l], _mm_mul_ps(t, _mm_loadu_ps(dst))));
+      }
+    added += __builtin_popcount(adds);
+  }
+  for (; k < b.n; ++k) added += over_one(b, k, image);
+  return added;
+}
+#endif
 
 }  // namespace
 
 void segment_light(SegmentBatch& b, const LinearPiece& piece) { light(b, piece); }
+
+std::int64_t composite_over(SegmentBatch& b, Image& image, bool lanes) {
+  for (std::size_t k = 0; k < b.n; ++k)  // SegmentLight::opacity()'s
+    if (!(b.opacity[k] >= 0.0)) b.opacity[k] = -std::expm1(-b.weights[k].depth);
+#if CELLPROJ_AVX2_DISPATCH
+  if (lanes && __builtin_cpu_supports("avx2")) return over_avx2(b, image);
+#endif
+  std::int64_t added = 0;
+  for (std::size_t k = 0; k < b.n; ++k) added += over_one(b, k, image);
+  return added;
+}
 
 void segment_light_across(SegmentBatch& b, const TransferFunction& tf, bool cut) {
   SegmentBatch::Pieces& p = b.pieces;

@@ -3,6 +3,7 @@
 // work runs over arrays in SIMD lanes (each lane the same bits as the scalar code).
 #include <algorithm>
 #include <cstddef>
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -10,6 +11,7 @@
 #include "optics/linear_segment.hpp"
 #include "optics/transfer_function.hpp"
 #include "view/camera.hpp"
+#include "view/image.hpp"
 
 namespace cellproj {
 
@@ -84,5 +86,11 @@ void segment_light(SegmentBatch& b, const LinearPiece& piece);
 // computed together, composited front to back. The same bits as one segment at a time; opacity is
 // always set.
 void segment_light_across(SegmentBatch& b, const TransferFunction& tf, bool cut);
+// The batch's light composited "over" the image (composite/fragment.hpp's over(), in float), each
+// fragment at its pixel in the batch's order; those adding nothing (colour and opacity all 0) are
+// skipped and not counted. Opacity < 0 is first set to 1 - e^-depth. Returns the fragments
+// composited. The same bits as one fragment at a time; four at a time where the processor has
+// AVX2 (`lanes` false: one at a time).
+std::int64_t composite_over(SegmentBatch& b, Image& image, bool lanes = true);
 
 }  // namespace cellproj
