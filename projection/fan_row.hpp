@@ -60,6 +60,8 @@ void fan_segments_avx2(const FanPlanes& f, const FanSegments& at, SegmentBatch& 
 // fan_composite_over two pixels at a time, each one's quantities in half of an AVX-512 vector
 // (fan_avx512.cpp); call only where the processor has AVX-512 F, VL and DQ.
 std::int64_t fan_over_avx512(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width);
+// fan_segments two pixels at a time, the same way (fan_avx512.cpp; AVX-512 F, VL and DQ only).
+void fan_segments_avx512(const FanPlanes& f, const FanSegments& at, SegmentBatch& out);
 #endif
 
 }  // namespace cellproj

@@ -318,6 +318,13 @@ CELLPROJ_FAN_PLANES(planes_3, 3)
 CELLPROJ_FAN_PLANES(planes_4, 4)
 #undef CELLPROJ_FAN_PLANES
 
+#if CELLPROJ_AVX2_DISPATCH
+// Whether the processor has what the pair kernels need (fan_avx512.cpp).
+bool avx512() {
+  return __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") && __builtin_cpu_supports("avx512dq");
+}
+#endif
+
 }  // namespace
 
 FanPlanes fan_planes(const ProjectedTet& pt, double x0, double y0, int quantities, const double* thick,
@@ -351,6 +358,7 @@ void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out, 
   // Room for every pixel of the rows, and three more for the last lanes' stores.
   out.reserve(out.n + static_cast<std::size_t>(at.rows) * static_cast<std::size_t>(at.width) + 3);
 #if CELLPROJ_AVX2_DISPATCH
+  if (lanes == FanLanes::pairs && avx512()) return fan_segments_avx512(f, at, out);
   if (lanes != FanLanes::pixels && __builtin_cpu_supports("avx2")) return fan_segments_avx2(f, at, out);
 #endif
   const bool four = f.sectors == 4;
@@ -362,9 +370,7 @@ void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out, 
 std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width,
                                 FanLanes lanes) {
 #if CELLPROJ_AVX2_DISPATCH
-  if (lanes == FanLanes::pairs && __builtin_cpu_supports("avx512f") && __builtin_cpu_supports("avx512vl") &&
-      __builtin_cpu_supports("avx512dq"))
-    return fan_over_avx512(f, image, i0, j0, row0, rows, width);
+  if (lanes == FanLanes::pairs && avx512()) return fan_over_avx512(f, image, i0, j0, row0, rows, width);
   if (lanes != FanLanes::pixels && __builtin_cpu_supports("avx2"))
     return fan_over_avx2(f, image, i0, j0, row0, rows, width);
 #endif

@@ -73,7 +73,7 @@ void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& ou
 // of those values. Returns the number of fragments composited, those adding nothing (opacity and
 // colour 0, which leave the image as it was) not counted.
 // `lanes`: `pairs`, two pixels at a time, each one's four quantities in half of a vector, where
-// the processor has AVX-512 (else `quantities`); `quantities`, one pixel at a time with its four
+// the processor has AVX-512 (else `quantities`; pt-linear's and the exact rungs' fans); `quantities`, one pixel at a time with its four
 // quantities in a vector, where the processor has AVX2 (else `pixels`); `pixels`, four pixels at a
 // time (portable). The same bits.
 enum class FanLanes { pairs, quantities, pixels };
@@ -91,9 +91,8 @@ struct FanSegments {
   double smin, smax;
   LinearPiece piece;
 };
-// `lanes` as fan_composite_over's, `pairs` as `quantities` (the same bits either way).
-void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out,
-                  FanLanes lanes = FanLanes::quantities);
+// `lanes` as fan_composite_over's (the same bits either way).
+void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out, FanLanes lanes = FanLanes::pairs);
 
 // pt-table's fan (its five quantities kappa_avg, thickness and colour) composited "over" onto the
 // image as fan_composite_over's: each pixel's opacity from `table`, its colour clamped to >= 0
