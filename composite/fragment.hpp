@@ -67,6 +67,16 @@ inline void over(float* dst, const float src[4]) {
   for (int c = 0; c < 4; ++c) dst[c] = src[c] + t * dst[c];
 }
 
+// A fragment's premultiplied colour and opacity (double) "over" a float pixel, unless it adds
+// nothing; true if composited.
+inline bool over_fragment(float* dst, const glm::dvec3& rgb, double alpha) {
+  if (adds_nothing(rgb, alpha)) return false;
+  const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
+                        static_cast<float>(alpha)};
+  over(dst, src);
+  return true;
+}
+
 // Front to back: src behind what dst holds.
 inline void under(float* dst, const float src[4]) {
   const float t = 1.0f - dst[3];

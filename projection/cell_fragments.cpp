@@ -167,11 +167,7 @@ struct AppendFragments {
 struct CompositeFragments {
   Image& image;
   bool operator()(int i, int j, const glm::dvec3& rgb, double alpha) const {
-    if (adds_nothing(rgb, alpha)) return false;
-    const float src[4] = {static_cast<float>(rgb.r), static_cast<float>(rgb.g), static_cast<float>(rgb.b),
-                          static_cast<float>(alpha)};
-    over(image.pixel(i, j), src);
-    return true;
+    return over_fragment(image.pixel(i, j), rgb, alpha);
   }
   static bool hidden(int, int) { return false; }
   static constexpr bool may_hide = false;

@@ -62,13 +62,9 @@ CELLPROJ_AVX2_CLONES void light(SegmentBatch& b, const LinearPiece& piece) {
         piece);
 }
 
-// composite_over's fragment k, one at a time (CompositeFragments' operations).
+// composite_over's fragment k, one at a time (as CompositeFragments).
 inline bool over_one(const SegmentBatch& b, std::size_t k, Image& image) {
-  if (b.opacity[k] == 0.0 && b.red[k] == 0.0 && b.green[k] == 0.0 && b.blue[k] == 0.0) return false;
-  const float src[4] = {static_cast<float>(b.red[k]), static_cast<float>(b.green[k]), static_cast<float>(b.blue[k]),
-                        static_cast<float>(b.opacity[k])};
-  over(image.pixel(b.i[k], b.j[k]), src);
-  return true;
+  return over_fragment(image.pixel(b.i[k], b.j[k]), {b.red[k], b.green[k], b.blue[k]}, b.opacity[k]);
 }
 
 #if CELLPROJ_AVX2_DISPATCH
@@ -83,7 +79,7 @@ __attribute__((target("avx2"))) std::int64_t over_avx2(const SegmentBatch& b, Im
   for (; k + 4 <= b.n; k += 4) {
     const __m256d r = _mm256_loadu_pd(&b.red[k]), g = _mm256_loadu_pd(&b.green[k]), bl = _mm256_loadu_pd(&b.blue[k]),
                   a = _mm256_loadu_pd(&b.opacity[k]);
-    // adds: not all four +-0 (NaN adds), as adds_nothing
+    // adds: not all four +-0 (NaN adds), as over_fragment's adds_nothing
     const __m256d some =
         _mm256_or_pd(_mm256_or_pd(_mm256_cmp_pd(r, zero, _CMP_NEQ_UQ), _mm256_cmp_pd(g, zero, _CMP_NEQ_UQ)),
                      _mm256_or_pd(_mm256_cmp_pd(bl, zero, _CMP_NEQ_UQ), _mm256_cmp_pd(a, zero, _CMP_NEQ_UQ)));
