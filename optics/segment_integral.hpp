@@ -54,21 +54,23 @@ template <class Piece>
 void for_each_linear_piece(const TransferFunction& tf, double s0, double s1, Piece&& piece) {
   const auto& bp = tf.breakpoints();
   const double lo = std::min(s0, s1), hi = std::max(s0, s1);
-  // Breakpoints strictly between s0 and s1, in ray order.
-  auto first = std::upper_bound(bp.begin(), bp.end(), lo);
-  auto last = std::lower_bound(bp.begin(), bp.end(), hi);
+  // Breakpoints first .. last - 1 lie strictly between s0 and s1; the piece ending at breakpoint
+  // b lies in interval b going up, b + 1 going down (TransferFunction::piece_in).
+  const std::size_t first = tf.breakpoints_not_above(lo), last = tf.breakpoints_below(hi);
   double sa = s0, ta = 0.0;
-  auto cut = [&](double sb) {
+  auto cut = [&](std::size_t interval, double sb) {
     const double tb = s1 == s0 ? 1.0 : (sb - s0) / (s1 - s0);
-    piece(tf.piece(sa, sb), tb - ta);
+    piece(tf.piece_in(interval, sa, sb), tb - ta);
     sa = sb;
     ta = tb;
   };
-  if (s1 >= s0)
-    for (auto it = first; it < last; ++it) cut(*it);
-  else
-    for (auto it = last; it > first; --it) cut(*(it - 1));
-  cut(s1);
+  if (s1 >= s0) {
+    for (std::size_t b = first; b < last; ++b) cut(b, bp[b]);
+    cut(std::max(first, last), s1);  // (s1 == s0 on a breakpoint: last < first, the interval above)
+  } else {
+    for (std::size_t b = last; b > first; --b) cut(b, bp[b - 1]);
+    cut(first, s1);
+  }
 }
 
 // The light of such a segment: each piece integrated by integrate(L, k0, k1, c0, c1), composited.

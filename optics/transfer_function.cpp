@@ -56,6 +56,12 @@ TransferFunction::TransferFunction(std::vector<ColorPoint> color, std::vector<Ex
   for (const auto& p : extinction_) breakpoints_.push_back(p.s);
   std::sort(breakpoints_.begin(), breakpoints_.end());
   breakpoints_.erase(std::unique(breakpoints_.begin(), breakpoints_.end()), breakpoints_.end());
+  // Interval j's points lie in [breakpoint j - 1, breakpoint j): the segments there are those
+  // found at breakpoint j - 1 (no control point between), or the first clamp.
+  for (std::size_t j = 0; j <= breakpoints_.size(); ++j) {
+    color_segment_.push_back(j == 0 ? 0 : segment_at(color_, breakpoints_[j - 1]));
+    extinction_segment_.push_back(j == 0 ? 0 : segment_at(extinction_, breakpoints_[j - 1]));
+  }
 }
 
 glm::dvec3 TransferFunction::color(double s) const {
@@ -81,9 +87,20 @@ bool TransferFunction::has_transparent_range() const {
   return std::any_of(extinction_.begin(), extinction_.end(), [](const ExtinctionPoint& p) { return p.kappa == 0.0; });
 }
 
+std::size_t TransferFunction::breakpoints_not_above(double s) const {
+  return static_cast<std::size_t>(std::upper_bound(breakpoints_.begin(), breakpoints_.end(), s) - breakpoints_.begin());
+}
+
+std::size_t TransferFunction::breakpoints_below(double s) const {
+  return static_cast<std::size_t>(std::lower_bound(breakpoints_.begin(), breakpoints_.end(), s) - breakpoints_.begin());
+}
+
 TransferFunction::Ends TransferFunction::piece(double sa, double sb) const {
-  const double mid = 0.5 * (sa + sb);
-  const std::size_t ic = segment_at(color_, mid), ik = segment_at(extinction_, mid);
+  return piece_in(breakpoints_not_above(0.5 * (sa + sb)), sa, sb);
+}
+
+TransferFunction::Ends TransferFunction::piece_in(std::size_t interval, double sa, double sb) const {
+  const std::size_t ic = color_segment_[interval], ik = extinction_segment_[interval];
   auto rgb = [](const ColorPoint& p) { return p.rgb; };
   auto kappa = [](const ExtinctionPoint& p) { return p.kappa; };
   return {eval_on_segment<ColorPoint, glm::dvec3>(color_, ic, sa, rgb),

@@ -2,6 +2,7 @@
 // The transfer function: colour C(s) and extinction kappa(s), each piecewise linear in the scalar s
 // and clamped outside its first and last control points. Two control points at the same s make a
 // step; at the step itself the value on the right applies.
+#include <cstddef>
 #include <string>
 #include <vector>
 
@@ -44,6 +45,13 @@ class TransferFunction {
     double ka, kb;
   };
   Ends piece(double sa, double sb) const;
+  // The same for a piece known to lie in breakpoint interval `interval` (its points s have
+  // breakpoints_not_above(s) == interval): no search.
+  Ends piece_in(std::size_t interval, double sa, double sb) const;
+
+  // How many breakpoints are <= s (std::upper_bound's index), and < s (std::lower_bound's).
+  std::size_t breakpoints_not_above(double s) const;
+  std::size_t breakpoints_below(double s) const;
 
   const std::vector<ColorPoint>& color_points() const { return color_; }
   const std::vector<ExtinctionPoint>& extinction_points() const { return extinction_; }
@@ -53,6 +61,9 @@ class TransferFunction {
   std::vector<ColorPoint> color_;
   std::vector<ExtinctionPoint> extinction_;
   std::vector<double> breakpoints_;
+  // Per breakpoint interval j (between breakpoints j - 1 and j): the colour's and the extinction's
+  // segment that holds inside it (piece_in).
+  std::vector<std::size_t> color_segment_, extinction_segment_;
 };
 
 }  // namespace cellproj

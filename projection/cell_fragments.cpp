@@ -121,9 +121,8 @@ struct ThickPixelFragments {
 // The shade of a cell with scalar range [smin, smax]: its transfer-function piece, or whether a
 // breakpoint lies inside the range (then cut there by pt-breakpoints, `cuts`).
 bool holds_breakpoint(const TransferFunction& tf, double smin, double smax) {
-  const auto& bp = tf.breakpoints();
-  const auto it = std::upper_bound(bp.begin(), bp.end(), smin);
-  return it != bp.end() && *it < smax;
+  const std::size_t above = tf.breakpoints_not_above(smin);
+  return above < tf.breakpoints().size() && tf.breakpoints()[above] < smax;
 }
 
 ExactShade exact_shade(const TransferFunction& tf, const PixelRays& rays, bool cuts, double smin, double smax) {

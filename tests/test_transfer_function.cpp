@@ -1,9 +1,11 @@
+#include <cmath>
 #include <fstream>
 
 #include <gtest/gtest.h>
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "optics/segment_integral.hpp"
 #include "optics/transfer_function.hpp"
 #include "scene/transfer_function_json.hpp"
 #include "test_util.hpp"
@@ -27,6 +29,26 @@ TEST(TransferFunction, StepTakesTheRightValueAndPiecesTheirOwnSide) {
   const auto below = tf.piece(0.2, 0.5), above = tf.piece(0.5, 0.9);
   EXPECT_DOUBLE_EQ(below.kb, 0.0);  // the limit from below, not the value at the step
   EXPECT_DOUBLE_EQ(above.ka, 8.0);
+}
+
+TEST(TransferFunction, OneUlpPieceBelowAStepKeepsItsSide) {
+  // [0.5 - 2^-54, 0.5] lies below the step at 0.5, but its midpoint rounds to 0.5 itself: the
+  // piece takes the interval it was cut in, not the one its midpoint falls in.
+  const TransferFunction tf({{0.0, {1, 1, 1}}}, {{0.0, 1.0}, {0.5, 1.0}, {0.5, 5.0}, {1.0, 5.0}});
+  const double below = std::nextafter(0.5, 0.0);
+  ASSERT_EQ(0.5 * (below + 0.5), 0.5);
+  int pieces = 0;
+  for_each_linear_piece(tf, below, 0.5, [&](const TransferFunction::Ends& e, double fraction) {
+    EXPECT_EQ(e.ka, 1.0);
+    EXPECT_EQ(e.kb, 1.0);
+    EXPECT_EQ(fraction, 1.0);
+    ++pieces;
+  });
+  EXPECT_EQ(pieces, 1);
+  for_each_linear_piece(tf, 0.5, below, [&](const TransferFunction::Ends& e, double) {  // the other way
+    EXPECT_EQ(e.ka, 1.0);
+    EXPECT_EQ(e.kb, 1.0);
+  });
 }
 
 TEST(TransferFunction, BadInputIsRejectedWithContext) {
