@@ -87,14 +87,6 @@ bool TransferFunction::has_transparent_range() const {
   return std::any_of(extinction_.begin(), extinction_.end(), [](const ExtinctionPoint& p) { return p.kappa == 0.0; });
 }
 
-std::size_t TransferFunction::breakpoints_not_above(double s) const {
-  return static_cast<std::size_t>(std::upper_bound(breakpoints_.begin(), breakpoints_.end(), s) - breakpoints_.begin());
-}
-
-std::size_t TransferFunction::breakpoints_below(double s) const {
-  return static_cast<std::size_t>(std::lower_bound(breakpoints_.begin(), breakpoints_.end(), s) - breakpoints_.begin());
-}
-
 TransferFunction::Ends TransferFunction::piece(double sa, double sb) const {
   return piece_in(breakpoints_not_above(0.5 * (sa + sb)), sa, sb);
 }

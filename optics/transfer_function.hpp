@@ -2,6 +2,7 @@
 // The transfer function: colour C(s) and extinction kappa(s), each piecewise linear in the scalar s
 // and clamped outside its first and last control points. Two control points at the same s make a
 // step; at the step itself the value on the right applies.
+#include <algorithm>
 #include <cstddef>
 #include <string>
 #include <vector>
@@ -50,8 +51,12 @@ class TransferFunction {
   Ends piece_in(std::size_t interval, double sa, double sb) const;
 
   // How many breakpoints are <= s (std::upper_bound's index), and < s (std::lower_bound's).
-  std::size_t breakpoints_not_above(double s) const;
-  std::size_t breakpoints_below(double s) const;
+  std::size_t breakpoints_not_above(double s) const {
+    return static_cast<std::size_t>(std::upper_bound(breakpoints_.begin(), breakpoints_.end(), s) - breakpoints_.begin());
+  }
+  std::size_t breakpoints_below(double s) const {
+    return static_cast<std::size_t>(std::lower_bound(breakpoints_.begin(), breakpoints_.end(), s) - breakpoints_.begin());
+  }
 
   const std::vector<ColorPoint>& color_points() const { return color_; }
   const std::vector<ExtinctionPoint>& extinction_points() const { return extinction_; }
