@@ -5,8 +5,9 @@
 # (3; the order turned round every other round, so drift favours neither): the ratios of issue 21
 # and each rung's ns per fragment per round, from runs made one after the other, then their
 # median and range. This machine switches between two speeds minutes apart
-# (docs/accuracy.md): a round's ratio compares runs made in the same state, and the median over
-# rounds is what to quote (bench/results/vtk_1m_rounds.txt). With A_EXE given, also
+# (docs/accuracy.md): a round's ratio compares runs made within a minute or so, mostly in one
+# state; its slow state slows ours more than VTK's mapper, so rounds in it show lower ratios.
+# Quote the median with the range (bench/results/vtk_1m_rounds.txt). With A_EXE given, also
 # bench/ab_frames.sh A_EXE against this build on the same scene.
 # With SCENE set (a scene file, its mesh beside it: e.g. bench/run's DIR/meshes/tets-1m.json),
 # that scene instead of the box.
