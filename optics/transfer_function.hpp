@@ -46,8 +46,11 @@ class TransferFunction {
     double ka, kb;
   };
   Ends piece(double sa, double sb) const;
-  // The same for a piece known to lie in breakpoint interval `interval` (its points s have
-  // breakpoints_not_above(s) == interval): no search.
+  // piece() takes the interval that holds the midpoint, which tolerates ends a rounding past a
+  // breakpoint (polynomial_segment's sampled ranges) but, for a piece one ulp long below a step,
+  // can round onto the step. piece_in is for a piece known to lie in breakpoint interval
+  // `interval` (its points s have breakpoints_not_above(s) == interval, for_each_linear_piece's
+  // cuts): no search, no midpoint.
   Ends piece_in(std::size_t interval, double sa, double sb) const;
 
   // How many breakpoints are <= s (std::upper_bound's index), and < s (std::lower_bound's).
