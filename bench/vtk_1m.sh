@@ -41,8 +41,13 @@ for ((r = 1; r <= ${ROUNDS:-3}; r++)); do
   line="$r ${t[vtk]}"
   for m in "${methods[@]}"; do line+=" $m ${t[$m]}"; done
   echo "$line" >>"$log"
-  python3 -c "import sys; a = sys.argv[1:]; v = float(a[1])
-print(f'round {a[0]}: vtk-pt {v:.3f} s; ' + ', '.join(f'{a[k]} {float(a[k + 1]):.3f} s ({v / float(a[k + 1]):.2f}x, {float(a[k + 2]):.1f} ns/fragment)' for k in range(2, len(a), 3)))" $line
+  python3 - $line <<'PY'
+import sys
+a = sys.argv[1:]; v = float(a[1])
+rungs = [f"{a[k]} {float(a[k + 1]):.3f} s ({v / float(a[k + 1]):.2f}x, {float(a[k + 2]):.1f} ns/fragment)"
+         for k in range(2, len(a), 3)]
+print(f"round {a[0]}: vtk-pt {v:.3f} s; " + ", ".join(rungs))
+PY
 done
 python3 - "$log" <<'PY'
 import statistics, sys
@@ -50,7 +55,8 @@ rows = [line.split() for line in open(sys.argv[1])]
 for k in range(2, len(rows[0]), 3):
     x = [float(r[1]) / float(r[k + 1]) for r in rows]
     ns = statistics.median(float(r[k + 2]) for r in rows)
-    print(f"{rows[0][k]}: median {statistics.median(x):.2f}x VTK over {len(x)} rounds (range {min(x):.2f}-{max(x):.2f}x), {ns:.1f} ns/fragment")
+    print(f"{rows[0][k]}: median {statistics.median(x):.2f}x VTK over {len(x)} rounds "
+          f"(range {min(x):.2f}-{max(x):.2f}x), {ns:.1f} ns/fragment")
 PY
 if [ -n "$a" ]; then
   for m in pt-linear pt-breakpoints; do bash bench/ab_frames.sh "$a" "$exe" "$scene" $m 1024 5 4 | tail -1; done

@@ -55,10 +55,12 @@ class TransferFunction {
 
   // How many breakpoints are <= s (std::upper_bound's index), and < s (std::lower_bound's).
   std::size_t breakpoints_not_above(double s) const {
-    return static_cast<std::size_t>(std::upper_bound(breakpoints_.begin(), breakpoints_.end(), s) - breakpoints_.begin());
+    const auto& b = breakpoints_;
+    return static_cast<std::size_t>(std::upper_bound(b.begin(), b.end(), s) - b.begin());
   }
   std::size_t breakpoints_below(double s) const {
-    return static_cast<std::size_t>(std::lower_bound(breakpoints_.begin(), breakpoints_.end(), s) - breakpoints_.begin());
+    const auto& b = breakpoints_;
+    return static_cast<std::size_t>(std::lower_bound(b.begin(), b.end(), s) - b.begin());
   }
 
   const std::vector<ColorPoint>& color_points() const { return color_; }
