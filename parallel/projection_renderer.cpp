@@ -167,7 +167,8 @@ void check_options(const ProjectionOptions& o) {
   }
 }
 
-ProjectionRenderer::ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode) : mesh_(mesh), sorter_(mesh, mode) {
+ProjectionRenderer::ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode)
+    : local_(mesh), mesh_(local_.view()), sorter_(mesh_, mode) {
   const RecentredPoints& pts = sorter_.points();
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
     const std::int64_t* id = mesh.cell(c);
@@ -245,6 +246,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   if (software && passed != &cells) cell_passes(cells);  // (after the sort; or the view split cells after all)
   const std::vector<std::int64_t>& order = options.cull_transparent ? visible : view.sorted.order;
   st.culled_transparent = static_cast<std::int64_t>(view.sorted.order.size() - order.size());
+  st.cell_numbering_spread = local_.spread(), st.cells_renumbered = local_.renumbered();
   st.tetrahedralize = sorter_.mode();
   st.cells = cells.n_cells;
   st.tets = std::count(cells.types, cells.types + cells.n_cells, static_cast<std::uint8_t>(CellType::Tetra));

@@ -10,6 +10,7 @@
 #include <utility>
 #include <vector>
 
+#include "grid/cell_order.hpp"
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
 #include "parallel/projection_options.hpp"
@@ -43,6 +44,8 @@ struct ProjectionStats {
   double blend_seconds = 0.0;  // of project and composite: the ordered blend stage (software back end, stream)
   int tiles = 0;               // the image tiles composited by (software back end, tiles; 0: the stream)
   std::int64_t tile_visits = 0;  // cells drawn by tile: cells plus the repeats of those straddling tiles
+  double cell_numbering_spread = 0.0;  // the mesh's numbering_spread (grid/cell_order.hpp)
+  bool cells_renumbered = false;       // whether the renderer's copy of the cells is renumbered for locality
   std::string gl_renderer;                                    // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;
 };
@@ -50,7 +53,8 @@ struct ProjectionStats {
 class ProjectionRenderer {
  public:
   // Prepared once per mesh (its arrays must outlive the renderer): face topology, boundary hull,
-  // the sorter's planes. Cells other than tetrahedra are projected whole, except those `mode`
+  // the sorter's planes; the cells renumbered along a Hilbert curve where the mesh's numbering
+  // scatters them (LocalCells: the same picture, faster). Cells other than tetrahedra are projected whole, except those `mode`
   // splits into their canonical tetrahedra (grid/face_split): per view the ones a ray may cross
   // more than twice (problem), all of them once (all), or none.
   explicit ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode = Tetrahedralize::problem);
@@ -68,6 +72,7 @@ class ProjectionRenderer {
   // The exact traversal of the splats' stencil (parallel/splat_stencil.hpp), made on first use.
   const CellRayTracer& tracer() const;
 
+  LocalCells local_;  // the cells, renumbered or as given: mesh_ views them
   MeshView mesh_;
   SplittingSorter sorter_;
   mutable std::mutex tracer_mutex_;

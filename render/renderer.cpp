@@ -92,6 +92,8 @@ class ProjectionMode final : public Renderer {
     r.add("backend", options_.backend);
     r.add("sort", s.method);
     r.add("tetrahedralize", p.tetrahedralize);
+    r.add("cell_numbering_spread", p.cell_numbering_spread);
+    r.add("cells_renumbered", p.cells_renumbered);
     r.add({{"cells_projected", p.cells},
            {"tets", p.tets},
            {"problem_cells", p.problem_cells},
