@@ -3,7 +3,7 @@
 // visits one after another are near each other; in a mesh numbered at random their connectivity,
 // offsets and types sit on cache lines far apart, one miss each. Measured on the 1M box with its
 // cells shuffled (docs/methods.md, "Cell numbering"): the sort took 2 to 4 times as long and
-// pt-linear's frame 1.2 to 1.45 times. A renderer renumbers its copy of such a mesh's cells along a
+// pt-linear's frame 1.4 to 1.5 times. A renderer renumbers its copy of such a mesh's cells along a
 // Z-order (Morton) curve through their centroids; points keep their numbers (the face splits'
 // diagonals go from each face's lowest-numbered vertex, so the picture stays the same).
 #include <cstdint>
