@@ -3,7 +3,8 @@
 # back, measured in one run: the 1M box (box-tets -n 55, bench/scenes/box_1m.json's view) as
 # generated and with its cells shuffled (bench/shuffle_cells.py), rendered by A_EXE (a build
 # without the renumbering, e.g. of the commit before it) and this build's cellproj in turn:
-#  - frames: bench/ab_frames.sh, pt-linear and pt-breakpoints at 1024², ROUNDS rounds of 5 frames;
+#  - frames: bench/ab_frames.sh, pt-linear and pt-breakpoints at 1024², exact and slicing at 512²
+#    (the ray caster and slicing renumber too), ROUNDS rounds of 5 frames;
 #  - one render from the command line (read, prepare, one frame, write), wall seconds and the
 #    prepare_seconds of --stats, medians of ROUNDS runs each, A and B alternating.
 # Results: bench/results/cell_numbering.txt; docs/methods.md, "Cell numbering".
@@ -17,6 +18,7 @@ work=$(mktemp -d); trap 'rm -rf "$work"' EXIT
 for m in ordered shuffled; do sed "s/box_1m.vtu/$m.vtu/" bench/scenes/box_1m.json >"$work/$m.json"; done
 for m in ordered shuffled; do
   for method in pt-linear pt-breakpoints; do bash bench/ab_frames.sh "$a" "$b" "$work/$m.json" $method 1024 "$rounds" 5; done
+  for method in exact slicing; do bash bench/ab_frames.sh "$a" "$b" "$work/$m.json" $method 512 "$rounds" 5; done
 done
 once() {  # EXE SCENE -> wall seconds, prepare seconds, whether renumbered (B only)
   local start end

@@ -56,10 +56,10 @@ void integrate_run(const TransferFunction& tf, IsoparametricRun& run, double ta,
 
 }  // namespace
 
-ExactRenderer::ExactRenderer(const MeshView& mesh) : tracer_(mesh), n_points_(mesh.n_points) {
+ExactRenderer::ExactRenderer(const MeshView& mesh) : local_(mesh), tracer_(local_.view()), n_points_(mesh.n_points) {
   const bool all_tets = std::all_of(mesh.types, mesh.types + mesh.n_cells,
                                     [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); });
-  if (!all_tets) iso_ = std::make_unique<IsoparametricField>(mesh, tracer_.points());
+  if (!all_tets) iso_ = std::make_unique<IsoparametricField>(local_.view(), tracer_.points());
 }
 
 Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,

@@ -7,6 +7,7 @@
 #include <memory>
 #include <string>
 
+#include "grid/cell_order.hpp"
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
 #include "raycast/cell_ray_tracer.hpp"
@@ -23,8 +24,9 @@ struct ExactStats {
   std::int64_t newton_failures = 0;  // isoparametric points that fell back to the linear value
 };
 
-// Prepared once per mesh (its canonical tetrahedra and, for the other cells, their shape), then
-// renders any number of frames of any point field. Threads: those of the task arena it is called
+// Prepared once per mesh (its canonical tetrahedra and, for the other cells, their shape; the
+// cells renumbered along a Z-order curve where the mesh's numbering scatters them, LocalCells),
+// then renders any number of frames of any point field. Threads: those of the task arena it is called
 // from (oneTBB); the image splits into tiles among them.
 class ExactRenderer {
  public:
@@ -33,9 +35,11 @@ class ExactRenderer {
   Image render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
                CellInterpolation interpolation = CellInterpolation::isoparametric, ExactStats* stats = nullptr,
                const std::function<void(double)>& progress = {}) const;
-  const CellRayTracer& tracer() const { return tracer_; }
+  const CellRayTracer& tracer() const { return tracer_; }  // (over local_cells(): cell ids are its)
+  const LocalCells& local_cells() const { return local_; }
 
  private:
+  LocalCells local_;  // the cells the tracer holds, renumbered or as given
   CellRayTracer tracer_;
   std::int64_t n_points_ = 0;
   std::unique_ptr<IsoparametricField> iso_;  // null when every cell is a tetrahedron

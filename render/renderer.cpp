@@ -32,6 +32,13 @@ decltype(auto) timed_preparation(const Volume& volume, RenderReport* report, Get
   return prepared;
 }
 
+// How far apart the mesh's consecutive cells lie and whether the renderer drew a copy of them
+// renumbered for locality (grid/cell_order.hpp).
+void add_numbering(RenderReport& r, double spread, bool renumbered) {
+  r.add("cell_numbering_spread", spread);
+  r.add("cells_renumbered", std::int64_t{renumbered});
+}
+
 // What the small cells' rule found and the splats did, as report counters.
 void add_splats(RenderReport& r, SmallCells mode, double threshold, const SplatCounters& c) {
   r.add("small_cells_mode", mode);
@@ -79,8 +86,9 @@ class ProjectionMode final : public Renderer {
 
   std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
     // Per point: coordinates (twice: recentred), screen positions, optics. Per tetrahedron:
-    // connectivity, faces and neighbours, sorter planes and centroids.
-    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 120 + static_cast<std::uint64_t>(v.tets) * 320;
+    // connectivity, faces and neighbours, sorter planes and centroids, and 40 for the cells'
+    // renumbered copy (grid/cell_order.hpp; a hexahedron's 73 bytes are within its tetrahedra's).
+    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 120 + static_cast<std::uint64_t>(v.tets) * 360;
   }
 
  private:
@@ -92,8 +100,7 @@ class ProjectionMode final : public Renderer {
     r.add("backend", options_.backend);
     r.add("sort", s.method);
     r.add("tetrahedralize", p.tetrahedralize);
-    r.add("cell_numbering_spread", p.cell_numbering_spread);
-    r.add("cells_renumbered", p.cells_renumbered);
+    add_numbering(r, p.cell_numbering_spread, p.cells_renumbered);
     r.add({{"cells_projected", p.cells},
            {"tets", p.tets},
            {"problem_cells", p.problem_cells},
@@ -176,7 +183,10 @@ class ProjectionMode final : public Renderer {
 // The field checked and the exact renderer's preparation, made (and timed) on first use.
 const ExactRenderer& checked_exact(const Volume& volume, const Field& field, RenderReport* report) {
   volume.check(field);
-  return timed_preparation(volume, report, [&]() -> const ExactRenderer& { return volume.exact(); });
+  const ExactRenderer& exact =
+      timed_preparation(volume, report, [&]() -> const ExactRenderer& { return volume.exact(); });
+  if (report) add_numbering(*report, exact.local_cells().spread(), exact.local_cells().renumbered());
+  return exact;
 }
 
 class ExactMode final : public Renderer {
@@ -209,8 +219,8 @@ class ExactMode final : public Renderer {
 
   std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
     // Per point: coordinates (twice: recentred), isoparametric data. Per tetrahedron: the
-    // tracer's planes and tile bins.
-    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 120 + static_cast<std::uint64_t>(v.tets) * 400;
+    // tracer's planes and tile bins, and the cells' renumbered copy (40, as projection's).
+    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 120 + static_cast<std::uint64_t>(v.tets) * 440;
   }
 
  private:
@@ -387,15 +397,17 @@ class SlicingMode final : public Renderer {
                              if (level == 0) r.prepare_seconds = first.prepare_seconds;
                              fill(r, st, options_);
                              r.add("tetrahedralize", mode_);
+                             add_numbering(r, renderer.local_cells().spread(), renderer.local_cells().renumbered());
                              done(level, slices, std::move(image), std::move(r));
                            });
   }
 
   std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
     // Per point: coordinates (twice: recentred), screen attributes and height. Per tetrahedron:
-    // the slice cells' ids. Per pixel: the chunk's slice images (64 MB), lengths and layers.
+    // the slice cells' ids and the cells' renumbered copy (40, as projection's). Per pixel: the
+    // chunk's slice images (64 MB), lengths and layers.
     const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
-    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 112 + static_cast<std::uint64_t>(v.tets) * 48 +
+    return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 112 + static_cast<std::uint64_t>(v.tets) * 88 +
            pixels * 8 + (64ull << 20) + (512ull << 20);
   }
 

@@ -56,7 +56,7 @@ void gl_corners(const PlanePolygons& plane, const TransferFunction& tf, const Pi
 }  // namespace
 
 SliceRenderer::SliceRenderer(const MeshView& mesh, Tetrahedralize mode)
-    : mesh_(mesh), points_(recentre(mesh)), boundary_(boundary_triangles(mesh)) {
+    : local_(mesh), mesh_(local_.view()), points_(recentre(mesh_)), boundary_(boundary_triangles(mesh_)) {
   cells_ = slice_cells(mesh_, points_, mode);
   volume_.resize(static_cast<std::size_t>(cells_.size()));
   tbb::parallel_for(std::int64_t{0}, cells_.size(), [&](std::int64_t c) {

@@ -9,6 +9,7 @@
 #include <utility>
 #include <vector>
 
+#include "grid/cell_order.hpp"
 #include "grid/geometry.hpp"
 #include "grid/mesh.hpp"
 #include "optics/transfer_function.hpp"
@@ -67,8 +68,11 @@ class SliceRenderer {
 
   const SliceCells& cells() const { return cells_; }
 
+  const LocalCells& local_cells() const { return local_; }  // the cells sliced, renumbered or as given
+
  private:
-  MeshView mesh_;
+  LocalCells local_;  // renumbered along a Z-order curve where the mesh's numbering scatters them
+  MeshView mesh_;     // local_'s view
   RecentredPoints points_;
   SliceCells cells_;
   std::vector<double> volume_;              // of each slice cell, for the small cells' rule
