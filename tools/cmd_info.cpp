@@ -7,6 +7,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "grid/cell_order.hpp"
 #include "grid/overlaps.hpp"
 #include "grid/read_mesh.hpp"
 #include "grid/time_series.hpp"
@@ -78,6 +79,7 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
           {"degenerate_cells", loaded.report.degenerate_cells},
           {"inverted_cells", loaded.report.inverted_cells},
           {"duplicate_points", loaded.report.duplicate_points},
+          {"cell_numbering_spread", numbering_spread(view)},
           {"notes", m.notes},
           {"read_seconds", seconds_read},
           {"topology_seconds", seconds_topology}};
@@ -116,6 +118,9 @@ void print_text(const nlohmann::json& j) {
       "  degenerate cells %lld, inverted cells %lld (re-oriented), duplicate points %lld, non-manifold faces %lld\n",
       j["degenerate_cells"].get<long long>(), j["inverted_cells"].get<long long>(),
       j["duplicate_points"].get<long long>(), j["nonmanifold_faces"].get<long long>());
+  const double spread = j["cell_numbering_spread"].get<double>();
+  std::printf("  cell numbering: consecutive cells %.3g cell radii apart%s\n", spread,
+              spread > kLocalSpread ? " (scattered: the renderers draw a copy renumbered along a Z-order curve)" : "");
   for (const auto& c : j["constant_fields"])
     std::printf("  note: field '%s' is constant\n", c.get<std::string>().c_str());
   for (const auto& [k, v] : j["nonfinite_values"].items())
