@@ -81,7 +81,8 @@ std::vector<std::int64_t> morton_cell_order(const MeshView& mesh) {
   const std::unique_ptr<Keyed[]> keyed(new Keyed[n]);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t c) {
     const glm::dvec3 q = unit > 0 ? (centroid(mesh, static_cast<std::int64_t>(c)) - lo) / unit : glm::dvec3(0.0);
-    const auto bits = [](double v) { return spread_bits(static_cast<std::uint64_t>(std::clamp(v, 0.0, kTop))); };
+    // (NaN, of a trusted mesh's bad point, to 0: a key, not a cast of NaN)
+    const auto bits = [](double v) { return spread_bits(v > 0 ? static_cast<std::uint64_t>(std::min(v, kTop)) : 0); };
     keyed[c] = Keyed{bits(q.x) | bits(q.y) << 1 | bits(q.z) << 2, static_cast<std::int64_t>(c)};
   });
   tbb::parallel_sort(keyed.get(), keyed.get() + n);  // (ties in cell order: the same for any thread count)

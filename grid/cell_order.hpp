@@ -34,8 +34,10 @@ std::vector<std::int64_t> morton_cell_order(const MeshView& mesh);
 class LocalCells {
  public:
   explicit LocalCells(const MeshView& mesh, double max_spread = kLocalSpread);
-  LocalCells(const LocalCells&) = delete;  // view() points into this object's arrays
+  LocalCells(const LocalCells&) = delete;  // view() points into this object's arrays,
   LocalCells& operator=(const LocalCells&) = delete;
+  LocalCells(LocalCells&&) noexcept = default;  // which a move hands over in place
+  LocalCells& operator=(LocalCells&&) noexcept = default;
   const MeshView& view() const { return view_; }
   bool renumbered() const { return renumbered_; }
   double spread() const { return spread_; }  // the input's numbering_spread

@@ -53,10 +53,11 @@ struct ProjectionStats {
 class ProjectionRenderer {
  public:
   // Prepared once per mesh (its arrays must outlive the renderer): face topology, boundary hull,
-  // the sorter's planes; the cells renumbered along a Hilbert curve where the mesh's numbering
-  // scatters them (LocalCells: the same picture, faster). Cells other than tetrahedra are projected whole, except those `mode`
-  // splits into their canonical tetrahedra (grid/face_split): per view the ones a ray may cross
-  // more than twice (problem), all of them once (all), or none.
+  // the sorter's planes; the cells renumbered along a Z-order curve where the mesh's numbering
+  // scatters them (LocalCells: the same picture, faster). Cells other than tetrahedra are
+  // projected whole, except those `mode` splits into their canonical tetrahedra
+  // (grid/face_split): per view the ones a ray may cross more than twice (problem), all of them
+  // once (all), or none.
   explicit ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode = Tetrahedralize::problem);
   ~ProjectionRenderer();
 
