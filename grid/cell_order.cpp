@@ -12,16 +12,10 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "grid/geometry.hpp"
+
 namespace cellproj {
 namespace {
-
-glm::dvec3 centroid(const MeshView& mesh, std::int64_t c) {
-  const std::int64_t* id = mesh.cell(c);
-  const int n = mesh.cell_size(c);
-  glm::dvec3 sum(0.0);
-  for (int k = 0; k < n; ++k) sum += mesh.point(id[k]);
-  return sum / static_cast<double>(n);
-}
 
 // The mean distance from the cell's centroid to its vertices.
 double cell_radius(const MeshView& mesh, std::int64_t c, const glm::dvec3& centre) {
@@ -61,8 +55,8 @@ double numbering_spread(const MeshView& mesh) {
       [&](const tbb::blocked_range<std::int64_t>& r, Sums s) {
         for (std::int64_t k = r.begin(); k < r.end(); ++k) {
           const std::int64_t c = k * step;
-          const glm::dvec3 here = centroid(mesh, c);
-          s.first += glm::distance(here, centroid(mesh, c + 1)), s.second += cell_radius(mesh, c, here);
+          const glm::dvec3 here = cell_centroid(mesh, c);
+          s.first += glm::distance(here, cell_centroid(mesh, c + 1)), s.second += cell_radius(mesh, c, here);
         }
         return s;
       },
@@ -80,7 +74,7 @@ std::vector<std::int64_t> morton_cell_order(const MeshView& mesh) {
   const double unit = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / kTop;
   const std::unique_ptr<Keyed[]> keyed(new Keyed[n]);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t c) {
-    const glm::dvec3 q = unit > 0 ? (centroid(mesh, static_cast<std::int64_t>(c)) - lo) / unit : glm::dvec3(0.0);
+    const glm::dvec3 q = unit > 0 ? (cell_centroid(mesh, static_cast<std::int64_t>(c)) - lo) / unit : glm::dvec3(0.0);
     // (NaN, of a trusted mesh's bad point, to 0: a key, not a cast of NaN)
     const auto bits = [](double v) { return spread_bits(v > 0 ? static_cast<std::uint64_t>(std::min(v, kTop)) : 0); };
     keyed[c] = Keyed{bits(q.x) | bits(q.y) << 1 | bits(q.z) << 2, static_cast<std::int64_t>(c)};

@@ -45,6 +45,14 @@ double cell_size(const MeshView& mesh, std::int64_t c) {
   return glm::length(hi - lo);
 }
 
+glm::dvec3 cell_centroid(const MeshView& mesh, std::int64_t c) {
+  const std::int64_t* ids = mesh.cell(c);
+  const int n = mesh.cell_size(c);
+  glm::dvec3 sum(0.0);
+  for (int k = 0; k < n; ++k) sum += mesh.point(ids[k]);
+  return sum / double(n);
+}
+
 glm::dvec3 newell_normal(const glm::dvec3* p, int n) {
   glm::dvec3 s(0.0);
   for (int i = 0; i < n; ++i) s += glm::cross(p[i], p[(i + 1) % n]);

@@ -25,6 +25,9 @@ double cell_signed_volume(const MeshView& mesh, std::int64_t cell);
 // The diagonal of the cell's bounding box: a length scale for tolerances.
 double cell_size(const MeshView& mesh, std::int64_t cell);
 
+// The mean of the cell's vertices.
+glm::dvec3 cell_centroid(const MeshView& mesh, std::int64_t cell);
+
 // Non-planarity of quad (a, b, c, d): the distance between its two diagonals (0 when planar).
 double quad_warp(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d);
 

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
+#include "grid/geometry.hpp"
 #include "grid/tetrahedralize.hpp"
 
 namespace cellproj {
@@ -34,11 +35,7 @@ class TreeBuilder {
  public:
   TreeBuilder(const MeshView& mesh, const std::vector<double>& costs) : costs_(costs) {
     centroids_.resize(static_cast<std::size_t>(mesh.n_cells));
-    for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
-      glm::dvec3 sum(0.0);
-      for (int k = 0; k < mesh.cell_size(c); ++k) sum += mesh.point(mesh.cell(c)[k]);
-      centroids_[c] = sum / double(mesh.cell_size(c));
-    }
+    for (std::int64_t c = 0; c < mesh.n_cells; ++c) centroids_[c] = cell_centroid(mesh, c);
   }
 
   // Makes the node of `leaves` leaves over cells [begin, end) of ids_, returning its index.
