@@ -5,8 +5,8 @@
 # without the renumbering, e.g. of the commit before it) and this build's cellproj in turn:
 #  - frames: bench/ab_frames.sh, pt-linear and pt-breakpoints at 1024², exact and slicing at 512²
 #    (the ray caster and slicing renumber too), ROUNDS rounds of 5 frames;
-#  - one render from the command line (read, prepare, one frame, write), wall seconds and the
-#    prepare_seconds of --stats, medians of ROUNDS runs each, A and B alternating.
+#  - one render from the command line (read, prepare, one frame, write), wall seconds, and the
+#    prepare_seconds and the sort's phase of --stats, medians of ROUNDS runs each, A and B alternating.
 # Results: bench/results/cell_numbering.txt; docs/methods.md, "Cell numbering".
 # usage: [ROUNDS=3] bench/cell_numbering.sh A_EXE [BUILD_DIR]
 set -euo pipefail
@@ -20,13 +20,13 @@ for m in ordered shuffled; do
   for method in pt-linear pt-breakpoints; do bash bench/ab_frames.sh "$a" "$b" "$work/$m.json" $method 1024 "$rounds" 5; done
   for method in exact slicing; do bash bench/ab_frames.sh "$a" "$b" "$work/$m.json" $method 512 "$rounds" 5; done
 done
-once() {  # EXE SCENE -> wall seconds, prepare seconds, whether renumbered (B only)
+once() {  # EXE SCENE -> wall seconds, prepare seconds, whether renumbered (B only), sort seconds
   local start end
   start=$(date +%s.%N)
   "$1" render "$2" --size 1024x1024 --threads 2 --stats -o "$work/once.png" 2>"$work/once.err" >/dev/null
   end=$(date +%s.%N)
   tail -1 "$work/once.err" | python3 -c "import json, sys; s = json.load(sys.stdin)
-print($end - $start, s['prepare_seconds'], s.get('cells_renumbered', '-'))"
+print($end - $start, s['prepare_seconds'], s.get('cells_renumbered', '-'), s['phase_seconds']['sort'])"
 }
 for m in ordered shuffled; do
   log=$work/once_$m.txt
@@ -40,6 +40,6 @@ med = lambda tag, k: statistics.median(float(r[k]) for r in rows if r[0] == tag)
 renumbered = {r[3] for r in rows if r[0] == "b"}
 print(f"{sys.argv[1]:9s} one render (pt-breakpoints, 1024²): wall A {med('a', 1):.2f} s  B {med('b', 1):.2f} s  "
       f"B/A {med('b', 1) / med('a', 1):.3f};  prepare A {med('a', 2):.2f} s  B {med('b', 2):.2f} s;  "
-      f"B renumbered: {','.join(sorted(renumbered))}")
+      f"sort A {med('a', 4):.3f} s  B {med('b', 4):.3f} s;  B renumbered: {','.join(sorted(renumbered))}")
 PY
 done

@@ -2,7 +2,7 @@
 // Cells renumbered for memory locality. The visibility order sweeps through space, so the cells it
 // visits one after another are near each other; in a mesh numbered at random their connectivity,
 // offsets and types sit on cache lines far apart, one miss each. Measured on the 1M box with its
-// cells shuffled (docs/methods.md, "Cell numbering"): the sort took 2 to 4 times as long and
+// cells shuffled (docs/methods.md, "Cell numbering"): the sort took 1.7 to 4 times as long and
 // pt-linear's frame 1.4 to 1.5 times. A renderer renumbers its copy of such a mesh's cells along a
 // Z-order (Morton) curve through their centroids; points keep their numbers (the face splits'
 // diagonals go from each face's lowest-numbered vertex, so the picture stays the same).
@@ -25,8 +25,8 @@ double numbering_spread(const MeshView& mesh);
 
 // The cells in the order of a Z-order (Morton) curve through their centroids, 21 bits an axis over
 // the points' box, ties in cell order: the same for any number of threads. (CGAL's hilbert_sort
-// took 0.27 s for the 1M box's cells on 2 threads, its index sort through a property map; keys and
-// a parallel sort, a fraction of that: docs/methods.md, "Cell numbering".)
+// of the 1M box's centroids took 0.31-0.34 s on one thread through its index map, these keys and a
+// parallel sort 0.03-0.07 s: bench/cell_order.sh.)
 std::vector<std::int64_t> morton_cell_order(const MeshView& mesh);
 
 // The mesh with its cells renumbered along morton_cell_order where numbering_spread exceeds
