@@ -1,10 +1,8 @@
 #include "grid/cell_order.hpp"
 
 #include <algorithm>
-#include <functional>
 #include <limits>
 #include <memory>
-#include <numeric>
 #include <utility>
 
 #include <tbb/blocked_range.h>
@@ -68,90 +66,28 @@ double numbering_spread(const MeshView& mesh) {
   return sums.second > 0.0 ? sums.first / sums.second : 0.0;  // (both sums over the same cells)
 }
 
-namespace {
-
-// Items [0, n) in the Z-order of position(i), 21 bits an axis over the points' box (which holds
-// every centroid), ties in item order.
-template <class Position>
-std::vector<std::int64_t> morton_order(const MeshView& mesh, std::int64_t n, const Position& position) {
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+std::vector<std::int64_t> morton_cell_order(const MeshView& mesh) {
+  const auto n = static_cast<std::size_t>(mesh.n_cells);
+  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);  // the points' box holds the centroids
   for (std::int64_t p = 0; p < mesh.n_points; ++p) lo = glm::min(lo, mesh.point(p)), hi = glm::max(hi, mesh.point(p));
   static constexpr double kTop = 2097151.0;  // 2^21 - 1: 21 bits an axis
   const double unit = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / kTop;
-  const auto m = static_cast<std::size_t>(n);
-  const std::unique_ptr<Keyed[]> keyed(new Keyed[m]);
-  tbb::parallel_for(std::size_t(0), m, [&](std::size_t i) {
-    const glm::dvec3 q = unit > 0 ? (position(static_cast<std::int64_t>(i)) - lo) / unit : glm::dvec3(0.0);
+  const std::unique_ptr<Keyed[]> keyed(new Keyed[n]);
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t c) {
+    const glm::dvec3 q = unit > 0 ? (cell_centroid(mesh, static_cast<std::int64_t>(c)) - lo) / unit : glm::dvec3(0.0);
     // (NaN, of a trusted mesh's bad point, to 0: a key, not a cast of NaN)
     const auto bits = [](double v) { return spread_bits(v > 0 ? static_cast<std::uint64_t>(std::min(v, kTop)) : 0); };
-    keyed[i] = Keyed{bits(q.x) | bits(q.y) << 1 | bits(q.z) << 2, static_cast<std::int64_t>(i)};
+    keyed[c] = Keyed{bits(q.x) | bits(q.y) << 1 | bits(q.z) << 2, static_cast<std::int64_t>(c)};
   });
-  tbb::parallel_sort(keyed.get(), keyed.get() + m);  // (ties in item order: the same for any thread count)
-  std::vector<std::int64_t> order(m);
-  tbb::parallel_for(std::size_t(0), m, [&](std::size_t k) { order[k] = keyed[k].cell; });
+  tbb::parallel_sort(keyed.get(), keyed.get() + n);  // (ties in cell order: the same for any thread count)
+  std::vector<std::int64_t> order(n);
+  tbb::parallel_for(std::size_t(0), n, [&](std::size_t k) { order[k] = keyed[k].cell; });
   return order;
 }
 
-bool all_tetrahedra(const MeshView& mesh) {
-  return std::all_of(mesh.types, mesh.types + mesh.n_cells,
-                     [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); });
-}
-
-}  // namespace
-
-std::vector<std::int64_t> morton_cell_order(const MeshView& mesh) {
-  return morton_order(mesh, mesh.n_cells, [&](std::int64_t c) { return cell_centroid(mesh, c); });
-}
-
-std::vector<std::int64_t> morton_point_order(const MeshView& mesh) {
-  return morton_order(mesh, mesh.n_points, [&](std::int64_t p) { return mesh.point(p); });
-}
-
-double point_numbering_spread(const MeshView& mesh) {
-  if (mesh.n_points < 2 || mesh.n_cells < 1) return 0.0;
-  const std::int64_t pairs = mesh.n_points - 1, step = pairs >= 65536 ? 17 : 1, samples = (pairs + step - 1) / step;
-  const std::int64_t cell_step = mesh.n_cells >= 65536 ? 17 : 1, cells = (mesh.n_cells + cell_step - 1) / cell_step;
-  const auto sum = [](std::int64_t n, auto&& term) {
-    return tbb::parallel_deterministic_reduce(
-        tbb::blocked_range<std::int64_t>(0, n, 1024), 0.0,
-        [&](const tbb::blocked_range<std::int64_t>& r, double s) {
-          for (std::int64_t k = r.begin(); k < r.end(); ++k) s += term(k);
-          return s;
-        },
-        std::plus<double>());
-  };
-  const double steps =
-      sum(samples, [&](std::int64_t k) { return glm::distance(mesh.point(k * step), mesh.point(k * step + 1)); });
-  const double radii = sum(cells, [&](std::int64_t k) {
-    const std::int64_t c = k * cell_step;
-    return cell_radius(mesh, c, cell_centroid(mesh, c));
-  });
-  return radii > 0.0 ? (steps / double(samples)) / (radii / double(cells)) : 0.0;
-}
-
-LocalCells::LocalCells(const MeshView& mesh, double max_spread, bool points)
-    : view_(mesh), spread_(numbering_spread(mesh)) {
-  if (points && all_tetrahedra(mesh)) point_spread_ = point_numbering_spread(mesh);
-  const bool cells = spread_ > max_spread, renumber_points = point_spread_ > max_spread;
-  if (!cells && !renumber_points) return;
-  std::vector<std::int64_t> new_id;  // per input point, its number here (renumbered points only)
-  if (renumber_points) {
-    point_order_ = morton_point_order(mesh);
-    new_id.resize(point_order_.size()), points_.resize(3 * point_order_.size());
-    tbb::parallel_for(std::size_t(0), point_order_.size(), [&](std::size_t k) {
-      const glm::dvec3 x = mesh.point(point_order_[k]);
-      points_[3 * k] = x.x, points_[3 * k + 1] = x.y, points_[3 * k + 2] = x.z;
-      new_id[static_cast<std::size_t>(point_order_[k])] = static_cast<std::int64_t>(k);
-    });
-    view_.points = PointArray(points_.data());
-  }
-  std::vector<std::int64_t> order;
-  if (cells) {
-    order = morton_cell_order(mesh);
-  } else {
-    order.resize(static_cast<std::size_t>(mesh.n_cells));
-    std::iota(order.begin(), order.end(), std::int64_t(0));
-  }
+LocalCells::LocalCells(const MeshView& mesh, double max_spread) : view_(mesh), spread_(numbering_spread(mesh)) {
+  if (!(spread_ > max_spread)) return;
+  const std::vector<std::int64_t> order = morton_cell_order(mesh);
   const std::size_t n = order.size();
   offsets_.resize(n + 1), types_.resize(n);
   offsets_[0] = 0;
@@ -160,13 +96,11 @@ LocalCells::LocalCells(const MeshView& mesh, double max_spread, bool points)
   connectivity_.resize(static_cast<std::size_t>(offsets_[n]));
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t k) {
     const std::int64_t c = order[k];
-    const std::int64_t* id = mesh.cell(c);
-    for (int v = 0, m = mesh.cell_size(c); v < m; ++v)
-      connectivity_[static_cast<std::size_t>(offsets_[k] + v)] = renumber_points ? new_id[id[v]] : id[v];
+    std::copy_n(mesh.cell(c), mesh.cell_size(c), connectivity_.begin() + offsets_[k]);
     types_[k] = mesh.types[c];
   });
   view_.connectivity = connectivity_.data(), view_.offsets = offsets_.data(), view_.types = types_.data();
-  renumbered_ = cells;
+  renumbered_ = true;
 }
 
 }  // namespace cellproj

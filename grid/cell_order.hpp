@@ -4,10 +4,8 @@
 // offsets and types sit on cache lines far apart, one miss each. Measured on the 1M box with its
 // cells shuffled (docs/methods.md, "Cell numbering"): the sort took 1.7 to 4 times as long and
 // pt-linear's frame 1.4 to 1.5 times. A renderer renumbers its copy of such a mesh's cells along a
-// Z-order (Morton) curve through their centroids. Points keep their numbers (the face splits'
-// diagonals go from each face's lowest-numbered vertex, so the picture stays the same), except in
-// a mesh of tetrahedra, which has no face split: there the projection renderer renumbers scattered
-// points too (a Delaunay cloud's: 0.8 of pt-linear's frame).
+// Z-order (Morton) curve through their centroids; points keep their numbers (the face splits'
+// diagonals go from each face's lowest-numbered vertex, so the picture stays the same).
 #include <cstdint>
 #include <vector>
 
@@ -31,38 +29,25 @@ double numbering_spread(const MeshView& mesh);
 // parallel sort 0.03-0.07 s: bench/cell_order.sh.)
 std::vector<std::int64_t> morton_cell_order(const MeshView& mesh);
 
-// The same for points: the mean distance between consecutive points over the mean cell radius.
-double point_numbering_spread(const MeshView& mesh);
-std::vector<std::int64_t> morton_point_order(const MeshView& mesh);
-
 // The mesh with its cells renumbered along morton_cell_order where numbering_spread exceeds
-// max_spread, and with `points` its points along morton_point_order where
-// point_numbering_spread does, for a mesh of tetrahedra only (other cells' face splits go by point
-// numbers: renumbered points would move them); the arrays owned here. Else the mesh itself (a
-// view of the caller's arrays). With points renumbered, a point field must be read through
-// point_order(): the renderer gathers each frame's field.
+// max_spread (the arrays owned here), else the mesh itself (a view of the caller's arrays).
 class LocalCells {
  public:
-  explicit LocalCells(const MeshView& mesh, double max_spread = kLocalSpread, bool points = false);
+  explicit LocalCells(const MeshView& mesh, double max_spread = kLocalSpread);
   LocalCells(const LocalCells&) = delete;  // view() points into this object's arrays,
   LocalCells& operator=(const LocalCells&) = delete;
   LocalCells(LocalCells&&) noexcept = default;  // which a move hands over in place
   LocalCells& operator=(LocalCells&&) noexcept = default;
   const MeshView& view() const { return view_; }
-  bool renumbered() const { return renumbered_; }  // the cells
-  double spread() const { return spread_; }        // the input's numbering_spread
-  bool points_renumbered() const { return !point_order_.empty(); }
-  double point_spread() const { return point_spread_; }  // 0 unless points were considered
-  // Point k here is the input's point_order()[k] (points renumbered only).
-  const std::vector<std::int64_t>& point_order() const { return point_order_; }
+  bool renumbered() const { return renumbered_; }
+  double spread() const { return spread_; }  // the input's numbering_spread
 
  private:
-  std::vector<std::int64_t> offsets_, connectivity_, point_order_;
+  std::vector<std::int64_t> offsets_, connectivity_;
   std::vector<std::uint8_t> types_;
-  std::vector<double> points_;
   MeshView view_;
   bool renumbered_ = false;
-  double spread_ = 0.0, point_spread_ = 0.0;
+  double spread_ = 0.0;
 };
 
 }  // namespace cellproj

@@ -168,7 +168,7 @@ void check_options(const ProjectionOptions& o) {
 }
 
 ProjectionRenderer::ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode)
-    : local_(mesh, kLocalSpread, /*points=*/true), mesh_(local_.view()), sorter_(mesh_, mode) {
+    : local_(mesh), mesh_(local_.view()), sorter_(mesh_, mode) {
   const RecentredPoints& pts = sorter_.points();
   for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
     const std::int64_t* id = mesh.cell(c);
@@ -193,13 +193,6 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   check_options(options);
   const auto start = std::chrono::steady_clock::now();
   ProjectionStats st;
-  FrameBuffer<double> gathered;  // the field in the renderer's point numbers, where it renumbered them
-  if (scalar && local_.points_renumbered()) {
-    const std::vector<std::int64_t>& from = local_.point_order();
-    gathered.resize(from.size());
-    tbb::parallel_for(std::size_t(0), from.size(), [&](std::size_t k) { gathered[k] = scalar[from[k]]; });
-    scalar = gathered.data();
-  }
   const RecentredPoints& points = sorter_.points();
 
   auto t = std::chrono::steady_clock::now();
@@ -254,7 +247,6 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   const std::vector<std::int64_t>& order = options.cull_transparent ? visible : view.sorted.order;
   st.culled_transparent = static_cast<std::int64_t>(view.sorted.order.size() - order.size());
   st.cell_numbering_spread = local_.spread(), st.cells_renumbered = local_.renumbered();
-  st.point_numbering_spread = local_.point_spread(), st.points_renumbered = local_.points_renumbered();
   st.tetrahedralize = sorter_.mode();
   st.cells = cells.n_cells;
   st.tets = std::count(cells.types, cells.types + cells.n_cells, static_cast<std::uint8_t>(CellType::Tetra));

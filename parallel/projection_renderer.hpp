@@ -46,8 +46,6 @@ struct ProjectionStats {
   std::int64_t tile_visits = 0;  // cells drawn by tile: cells plus the repeats of those straddling tiles
   double cell_numbering_spread = 0.0;  // the mesh's numbering_spread (grid/cell_order.hpp)
   bool cells_renumbered = false;       // whether the renderer's copy of the cells is renumbered for locality
-  double point_numbering_spread = 0.0;  // the same for points (meshes of tetrahedra only; 0 otherwise)
-  bool points_renumbered = false;       // and whether the points are (the field gathered each frame)
   std::string gl_renderer;                                    // the OpenGL back ends: GL_RENDERER
   double seconds = 0.0;
 };
@@ -55,8 +53,8 @@ struct ProjectionStats {
 class ProjectionRenderer {
  public:
   // Prepared once per mesh (its arrays must outlive the renderer): face topology, boundary hull,
-  // the sorter's planes; the cells (and for a mesh of tetrahedra the points) renumbered along a
-  // Z-order curve where the mesh's numbering scatters them (LocalCells: the same picture, faster). Cells other than tetrahedra are
+  // the sorter's planes; the cells renumbered along a Z-order curve where the mesh's numbering
+  // scatters them (LocalCells: the same picture, faster). Cells other than tetrahedra are
   // projected whole, except those `mode` splits into their canonical tetrahedra
   // (grid/face_split): per view the ones a ray may cross more than twice (problem), all of them
   // once (all), or none.

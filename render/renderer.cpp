@@ -101,8 +101,6 @@ class ProjectionMode final : public Renderer {
     r.add("sort", s.method);
     r.add("tetrahedralize", p.tetrahedralize);
     add_numbering(r, p.cell_numbering_spread, p.cells_renumbered);
-    r.add("point_numbering_spread", p.point_numbering_spread);
-    r.add("points_renumbered", std::int64_t{p.points_renumbered});
     r.add({{"cells_projected", p.cells},
            {"tets", p.tets},
            {"problem_cells", p.problem_cells},

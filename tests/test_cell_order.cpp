@@ -35,24 +35,6 @@ Mesh shuffled(const Mesh& m, unsigned seed = 7) {
   return out;
 }
 
-// m with its points in a random order (a fixed seed): coordinates, fields and connectivity with them.
-Mesh shuffled_points(const Mesh& m, unsigned seed = 11) {
-  const std::int64_t n = m.n_points();
-  std::vector<std::int64_t> order(static_cast<std::size_t>(n)), new_id(order.size());
-  std::iota(order.begin(), order.end(), std::int64_t(0));
-  std::shuffle(order.begin(), order.end(), std::mt19937(seed));
-  Mesh out = m;
-  for (std::int64_t k = 0; k < n; ++k) {
-    const auto from = static_cast<std::size_t>(order[static_cast<std::size_t>(k)]);
-    new_id[from] = k;
-    for (int a = 0; a < 3; ++a) out.points[3 * static_cast<std::size_t>(k) + a] = m.points[3 * from + a];
-    for (std::size_t f = 0; f < m.fields.size(); ++f)
-      out.fields[f].values[static_cast<std::size_t>(k)] = m.fields[f].values[from];
-  }
-  for (std::int64_t& id : out.connectivity) id = new_id[static_cast<std::size_t>(id)];
-  return out;
-}
-
 // Each cell as its sorted vertex ids and type, the list sorted: the cells whatever their numbers.
 std::vector<std::array<std::int64_t, 9>> cell_set(const MeshView& v) {
   std::vector<std::array<std::int64_t, 9>> cells;
@@ -199,39 +181,4 @@ TEST(CellOrder, TheRayCasterAndSlicingDrawAShuffledMeshTheSameToo) {
       EXPECT_EQ(renumbered_flag(renumbered), 1);
     }
   }
-}
-
-TEST(CellOrder, ShuffledPointsAreRenumberedForTetrahedraOnlyAndDrawTheSame) {
-  // Tetrahedra: the renderer renumbers the points (no face split reads their numbers) and gathers
-  // the field each frame; the picture is the same bits as with the points in order.
-  const Mesh m = box_tets(16), s = shuffled_points(m);
-  EXPECT_LT(point_numbering_spread(m.view()), kLocalSpread);
-  EXPECT_GT(point_numbering_spread(s.view()), kLocalSpread);
-  const LocalCells local(s.view(), kLocalSpread, /*points=*/true);
-  ASSERT_TRUE(local.points_renumbered());
-  EXPECT_FALSE(local.renumbered());  // the cells were in order: kept so, their ids remapped
-  EXPECT_LT(point_numbering_spread(local.view()), kLocalSpread);
-  for (std::int64_t c = 0; c < s.n_cells(); c += 97)  // each cell's corners where they were
-    for (int k = 0; k < 4; ++k)
-      EXPECT_EQ(local.view().point(local.view().cell(c)[k]), s.view().point(s.view().cell(c)[k]));
-  const TransferFunction tf = order_tf();
-  const Camera camera = test::perspective({3.2, -2.5, 2.1}, {0, 0, 0}, 40);
-  for (const ProjectionMethod method : {ProjectionMethod::pt_linear, ProjectionMethod::pt_breakpoints}) {
-    ProjectionStats as_given, renumbered;
-    const Image a =
-        test::project(m, "s", tf, camera, 96, test::with_method(method), Tetrahedralize::problem, &as_given);
-    const Image b =
-        test::project(s, "s", tf, camera, 96, test::with_method(method), Tetrahedralize::problem, &renumbered);
-    EXPECT_FALSE(as_given.points_renumbered);
-    EXPECT_TRUE(renumbered.points_renumbered);
-    EXPECT_EQ(a.rgba, b.rgba) << name_of(method);
-  }
-  // Other cells: their face splits' diagonals go by point numbers, so the points stay as given.
-  const Mesh mixed_points = shuffled_points(mixed(20));
-  EXPECT_GT(point_numbering_spread(mixed_points.view()), kLocalSpread);
-  ProjectionStats mixed_stats;
-  test::project(mixed_points, "s", tf, camera, 32, test::with_method(ProjectionMethod::pt_linear),
-                Tetrahedralize::problem, &mixed_stats);
-  EXPECT_FALSE(mixed_stats.points_renumbered);
-  EXPECT_FALSE(LocalCells(mixed_points.view(), kLocalSpread, true).points_renumbered());
 }
