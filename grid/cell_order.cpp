@@ -68,8 +68,7 @@ double numbering_spread(const MeshView& mesh) {
 
 std::vector<std::int64_t> morton_cell_order(const MeshView& mesh) {
   const auto n = static_cast<std::size_t>(mesh.n_cells);
-  glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);  // the points' box holds the centroids
-  for (std::int64_t p = 0; p < mesh.n_points; ++p) lo = glm::min(lo, mesh.point(p)), hi = glm::max(hi, mesh.point(p));
+  const auto [lo, hi] = point_bounds(mesh);  // (it holds the centroids)
   static constexpr double kTop = 2097151.0;  // 2^21 - 1: 21 bits an axis
   const double unit = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / kTop;
   const std::unique_ptr<Keyed[]> keyed(new Keyed[n]);

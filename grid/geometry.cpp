@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <cstring>
+#include <limits>
 #include <tuple>
 
 #include <glm/common.hpp>
@@ -53,6 +54,12 @@ glm::dvec3 cell_centroid(const MeshView& mesh, std::int64_t c) {
   return sum / double(n);
 }
 
+std::pair<glm::dvec3, glm::dvec3> point_bounds(const MeshView& m) {
+  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
+  for (std::int64_t p = 0; p < m.n_points; ++p) lo = glm::min(lo, m.point(p)), hi = glm::max(hi, m.point(p));
+  return {lo, hi};
+}
+
 glm::dvec3 newell_normal(const glm::dvec3* p, int n) {
   glm::dvec3 s(0.0);
   for (int i = 0; i < n; ++i) s += glm::cross(p[i], p[(i + 1) % n]);
@@ -62,8 +69,7 @@ glm::dvec3 newell_normal(const glm::dvec3* p, int n) {
 RecentredPoints recentre(const MeshView& mesh) {
   RecentredPoints r;
   if (mesh.n_points == 0) return r;
-  glm::dvec3 lo = mesh.point(0), hi = lo;
-  for (std::int64_t p = 1; p < mesh.n_points; ++p) lo = glm::min(lo, mesh.point(p)), hi = glm::max(hi, mesh.point(p));
+  const auto [lo, hi] = point_bounds(mesh);
   r.centre = 0.5 * (lo + hi);
   r.lo = lo - r.centre, r.hi = hi - r.centre;  // rounding is monotone: the extremes of the recentred points
   r.half_diagonal = 0.5 * glm::length(hi - lo);

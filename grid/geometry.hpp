@@ -28,6 +28,9 @@ double cell_size(const MeshView& mesh, std::int64_t cell);
 // The mean of the cell's vertices.
 glm::dvec3 cell_centroid(const MeshView& mesh, std::int64_t cell);
 
+// The box of the mesh's points: its lower and upper corner (lower above upper for no points).
+std::pair<glm::dvec3, glm::dvec3> point_bounds(const MeshView& mesh);
+
 // Non-planarity of quad (a, b, c, d): the distance between its two diagonals (0 when planar).
 double quad_warp(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c, const glm::dvec3& d);
 

@@ -6,20 +6,14 @@
 #include <limits>
 
 #include "base/error.hpp"
+#include "grid/geometry.hpp"
 #include "grid/validate.hpp"
 #include "scene/quick_scene.hpp"
 #include "scene/transfer_function_json.hpp"
 
 namespace cellproj {
 
-std::pair<glm::dvec3, glm::dvec3> bounds(const MeshView& m) {
-  glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
-  for (std::int64_t p = 0; p < m.n_points; ++p) {
-    lo = glm::min(lo, m.point(p));
-    hi = glm::max(hi, m.point(p));
-  }
-  return {lo, hi};
-}
+std::pair<glm::dvec3, glm::dvec3> bounds(const MeshView& m) { return point_bounds(m); }
 
 std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& m) { return bounds(m.view()); }
 
