@@ -68,9 +68,11 @@ double numbering_spread(const MeshView& mesh) {
 
 std::vector<std::int64_t> morton_cell_order(const MeshView& mesh) {
   const auto n = static_cast<std::size_t>(mesh.n_cells);
-  const auto [lo, hi] = point_bounds(mesh);  // (it holds the centroids)
+  // (a pair, not a structured binding: C++17 lambdas may not capture bindings, and clang says so)
+  const std::pair<glm::dvec3, glm::dvec3> box = point_bounds(mesh);  // (it holds the centroids)
+  const glm::dvec3 lo = box.first, extent = box.second - box.first;
   static constexpr double kTop = 2097151.0;  // 2^21 - 1: 21 bits an axis
-  const double unit = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z}) / kTop;
+  const double unit = std::max({extent.x, extent.y, extent.z}) / kTop;
   const std::unique_ptr<Keyed[]> keyed(new Keyed[n]);
   tbb::parallel_for(std::size_t(0), n, [&](std::size_t c) {
     const glm::dvec3 q = unit > 0 ? (cell_centroid(mesh, static_cast<std::int64_t>(c)) - lo) / unit : glm::dvec3(0.0);
