@@ -1,5 +1,6 @@
 // The visibility sorts against the order oracle: zero order violations where a sort is exact,
 // every cell exactly once always, cycles found and reported.
+#include <algorithm>
 #include <cmath>
 #include <numeric>
 
@@ -9,6 +10,8 @@
 
 #include <atomic>
 #include <filesystem>
+#include <fstream>
+#include <random>
 #include <set>
 
 #include <tbb/task_arena.h>
@@ -282,6 +285,48 @@ TEST(Visibility, AutoPicksWhatTheMeshNeeds) {
   const Camera c = both_projections(1)[0];
   EXPECT_EQ(convex.sorter->sort(SortMethod::automatic, {c, 32, 32}).stats.method, SortMethod::mpvo);
   EXPECT_EQ(ring.sorter->sort(SortMethod::automatic, {c, 32, 32}).stats.method, SortMethod::mpvo_abuffer);
+}
+
+// The queue of a mesh of tetrahedra alone (visibility/mpvo.cpp: no branch per face) against the
+// loop every other mesh takes: a Delaunay mesh of random points, irregular as a real one, and the
+// same mesh with two wedges far off beside it (so not all tetrahedra) give the same order once the
+// wedges are taken out. The points hold the corners of [-1, 1]^3 and the wedges sit at x = +-5 to
+// 6, so both meshes recentre on the origin and every face's side is computed alike.
+TEST(Visibility, TheTetrahedraQueueKeepsTheGeneralOrder) {
+  const test::TempDir dir;
+  const std::string path = dir.file("cloud.xyzs");
+  {
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::ofstream out(path);
+    out.precision(17);
+    for (int k = 0; k < 8; ++k) out << (k & 1 ? 1 : -1) << ' ' << (k & 2 ? 1 : -1) << ' ' << (k & 4 ? 1 : -1) << " 0\n";
+    for (int k = 0; k < 600; ++k) out << u(rng) << ' ' << u(rng) << ' ' << u(rng) << ' ' << u(rng) << '\n';
+  }
+  Mesh tets = read_point_cloud(path);
+  Mesh mixed = tets;
+  const std::int64_t n = tets.n_cells();
+  for (const double x : {5.0, -6.0}) {
+    std::int64_t id[6];
+    for (int k = 0; k < 6; ++k)  // two triangles, the second 1 along x
+      id[k] = mixed.add_point({x + (k >= 3 ? 1.0 : 0.0), k % 3 == 1 ? 0.5 : 0.0, k % 3 == 2 ? 0.5 : 0.0});
+    mixed.add_cell(CellType::Wedge, id);
+  }
+  mixed.fields[0].values.resize(static_cast<std::size_t>(mixed.n_points()), 0.0);
+  const Scene all_tets(std::move(tets)), with_wedges(std::move(mixed));
+  ASSERT_TRUE(all_tets.convex);
+  for (const Camera& c : both_projections(4)) {
+    SortStats st;
+    EXPECT_EQ(all_tets.check(SortMethod::mpvo, c, 64, &st).violations, 0);
+    EXPECT_TRUE(st.cycles.empty());
+    const SortView view{c, 64, 64};
+    const std::vector<std::int64_t> queue = all_tets.sorter->sort(SortMethod::mpvo, view).order;
+    std::vector<std::int64_t> general = with_wedges.sorter->sort(SortMethod::mpvo, view).order;
+    ASSERT_EQ(general.size(), queue.size() + 2);
+    general.erase(std::remove_if(general.begin(), general.end(), [&](std::int64_t c) { return c >= n; }),
+                  general.end());
+    EXPECT_EQ(general, queue) << "eye " << c.eye.x << "," << c.eye.y << "," << c.eye.z;
+  }
 }
 
 TEST(Visibility, PairwiseAgreesOnSmallMeshes) {
