@@ -37,11 +37,17 @@ inline int first_tile(const RowRange& reach, int height, int rows) {
   return std::clamp(reach.begin, 0, height - 1) / rows;
 }
 
-// The position of each item in its tiles' lists: tile t holds items order[first[t] .. first[t+1]).
+// The items of each tile, in order: tile t holds items[first[t] .. first[t+1]), each given by its
+// key (its position in the order, or what key_of made of it).
 struct TileBins {
   std::vector<std::size_t> first;     // tiles + 1 offsets
-  FrameBuffer<std::size_t> items;     // each tile's items, in order (fresh every frame)
+  FrameBuffer<std::size_t> items;     // each tile's items' keys, in order (fresh every frame)
   FrameBuffer<std::uint8_t> counted;  // per entry of items: 1 in the item's first tile
+};
+
+// An item's key is its position in the order unless told otherwise.
+struct PositionKey {
+  std::size_t operator()(std::size_t k) const { return k; }
 };
 
 // Whether a Source has prefetch(k, stage): composite_in_tiles' look-ahead.
@@ -52,9 +58,10 @@ struct HasPrefetch<S, std::void_t<decltype(std::declval<const S&>().prefetch(std
 
 // Bins items [0, n) to tiles of `rows` rows; rows_of(k) is the RowRange item k may draw on (an
 // empty one is binned to the tile of its first row, clamped, so that each item is met at least
-// once: its counters count it). Parallel over chunks of the order; each tile's list stays in order.
-template <class RowsOf>
-TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of) {
+// once: its counters count it), key_of(k) what the bins hold for it. Parallel over chunks of the
+// order; each tile's list stays in order.
+template <class RowsOf, class KeyOf = PositionKey>
+TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of, const KeyOf& key_of = {}) {
   const int tiles = std::max(1, (height + rows - 1) / rows);
   auto span = [&](std::size_t k, int& t0, int& t1) {
     const RowRange r = rows_of(k);
@@ -91,7 +98,8 @@ TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of
     for (std::size_t k = c * kChunk, e = std::min(n, k + kChunk); k < e; ++k) {
       int t0, t1;
       span(k, t0, t1);
-      for (int t = t0; t <= t1; ++t) bins.counted[next[t]] = t == t0, bins.items[next[t]++] = k;
+      const std::size_t key = key_of(k);
+      for (int t = t0; t <= t1; ++t) bins.counted[next[t]] = t == t0, bins.items[next[t]++] = key;
     }
   });
   return bins;
@@ -99,23 +107,25 @@ TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of
 
 // Composites items [0, n) of the order onto `image` tile by tile. A Source provides
 //   Scratch, Counters (as composite_in_order's, composite/ordered_pipeline.hpp), and
-//   void composite(std::size_t k, Image& image, RowRange rows, bool first, Scratch&, Counters&) const
-//             draws item k "over" the image in `rows` only; `first`: the first of its tiles (count
-//             the item there, its pixels everywhere); called from many threads, one per tile;
+//   void composite(std::size_t key, Image& image, RowRange rows, bool first, Scratch&, Counters&) const
+//             draws the item of that key (key_of of its position) "over" the image in `rows` only;
+//             `first`: the first of its tiles (count the item there, its pixels everywhere);
+//             called from many threads, one per tile;
 // and may provide
-//   void prefetch(std::size_t k, int stage) const
-//             a hint that item k comes soon: stages 0 to kStages - 1 are called
-//             kAhead items apart, the last kAhead items before k is drawn, so that each stage may
+//   void prefetch(std::size_t key, int stage) const
+//             a hint that that item comes soon: stages 0 to kStages - 1 are called
+//             kAhead items apart, the last kAhead items before it is drawn, so that each stage may
 //             read what the one before loaded.
 // Returns the sum of the tiles' counters.
 // `visits`, when given, receives the number of (item, tile) pairs drawn: n plus the repeats of the
 // items that straddle tiles. `front_to_back`: each tile takes its items from the last to the first
-// (the source composites "under": early ray termination).
-template <class Source, class RowsOf>
+// (the source composites "under": early ray termination). A key that is what the source reads
+// first (a cell rather than its position in the order) spares each tile a scattered read an item.
+template <class Source, class RowsOf, class KeyOf = PositionKey>
 typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const RowsOf& rows_of, int rows,
                                              const Source& source, std::size_t* visits = nullptr,
-                                             bool front_to_back = false) {
-  const TileBins bins = bin_to_tiles(n, image.height, rows, rows_of);
+                                             bool front_to_back = false, const KeyOf& key_of = {}) {
+  const TileBins bins = bin_to_tiles(n, image.height, rows, rows_of, key_of);
   if (visits) *visits = bins.items.size();
   const std::size_t tiles = bins.first.size() - 1;
   // The busiest tiles first (most items), taken in that order from one counter by every worker
@@ -142,8 +152,7 @@ typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const 
           if (const std::size_t ahead = m + (kStages - stage) * kAhead; ahead < e)
             source.prefetch(bins.items[at(ahead)], stage);
       }
-      const std::size_t k = bins.items[at(m)];
-      source.composite(k, image, tile, bins.counted[at(m)] != 0, s, counters[t]);
+      source.composite(bins.items[at(m)], image, tile, bins.counted[at(m)] != 0, s, counters[t]);
     }
   };
   const int workers = static_cast<int>(std::min<std::size_t>(tiles, tbb::this_task_arena::max_concurrency()));

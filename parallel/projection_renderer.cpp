@@ -91,19 +91,19 @@ struct OrderedCells {
     project.project(cells.cell(order[k]), cells.type(order[k]), image, s, c.projection);
     ++c.projection.direct_cells;
   }
-  // composite_in_tiles' look-ahead, in the order a cell's data is reached: its offset and type,
-  // then its point ids, then its points. (The image's pixels under them were tried as a fourth
-  // stage: slower, bench/results/prefetch.txt.)
-  void prefetch(std::size_t k, int stage) const {
-    const std::int64_t cell = order[k];
+  // composite_in_tiles' look-ahead (its items keyed by cell), in the order a cell's data is
+  // reached: its offset and type, then its point ids, then its points. (The image's pixels under
+  // them were tried as a fourth stage: slower, bench/results/prefetch.txt.)
+  void prefetch(std::size_t key, int stage) const {
+    const auto cell = static_cast<std::int64_t>(key);
     if (stage == 0) return __builtin_prefetch(&cells.offsets[cell]), __builtin_prefetch(&cells.types[cell]);
     if (stage == 1) return __builtin_prefetch(cells.cell(cell));
     project.prefetch_points(cells.cell(cell), cells.cell_size(cell));
   }
-  // A tile's rows of the k-th cell (composite_in_tiles; never with splats): the cell counted by its
-  // first tile, its pixels by each.
-  void composite(std::size_t k, Image& image, RowRange rows, bool first, Scratch& s, Counters& c) const {
-    const std::int64_t cell = order[k];
+  // A tile's rows of a cell (composite_in_tiles, keyed by cell; never with splats): the cell counted
+  // by its first tile, its pixels by each.
+  void composite(std::size_t key, Image& image, RowRange rows, bool first, Scratch& s, Counters& c) const {
+    const auto cell = static_cast<std::int64_t>(key);
     if (mode == SmallCells::skip && small[static_cast<std::size_t>(cell)]) return;
     const std::int64_t* ids = cells.cell(cell);
     const CellType type = cells.type(cell);
@@ -295,7 +295,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
       std::size_t visits = 0;
       counters = composite_in_tiles(
           image, order.size(), [&](std::size_t k) { return reach[static_cast<std::size_t>(order[k])]; }, rows, source,
-          &visits, opaque.has_value());
+          &visits, opaque.has_value(), [&](std::size_t k) { return static_cast<std::size_t>(order[k]); });
       st.tiles = (height + rows - 1) / rows;
       st.tile_visits = static_cast<std::int64_t>(visits);
       if (count_after) count_small_after(cells, screen, rays, st.splat_threshold, drew.data(), st.splat);
