@@ -48,7 +48,8 @@ constexpr const char* name_of(ProjectionMethod method) { return traits(method).n
 enum class WholeCells { automatic, layers, polygons };
 inline constexpr double kLayersUpToPixels = 256;  // the area of the cell's image box, in pixels
 // A tetrahedron is drawn as one fan over its pixel box (tet_fan.hpp) when the box (within the
-// image) has at most this many pixels; a larger one triangle by triangle, row by row.
+// image) has at most this many pixels; a larger one triangle by triangle, row by row. (pt-linear
+// composited by tiles draws every tetrahedron as a fan: it fills no buffer the size of the box.)
 inline constexpr std::int64_t kFanUpToPixels = 1024;
 
 }  // namespace cellproj

@@ -17,6 +17,7 @@
 #include "composite/tiled_compositor.hpp"
 #include "grid/generate.hpp"
 #include "parallel/projection_renderer.hpp"
+#include "projection/method.hpp"
 #include "scene/names.hpp"
 #include "test_util.hpp"
 
@@ -127,6 +128,27 @@ TEST(Tiles, TheSameBitsAndCountsAsTheStreamForAnyTileHeightAndThreads) {
             EXPECT_GE(st.tile_visits, st.cells) << what;  // every cell met at least once
           }
       }
+  }
+}
+
+// pt-linear's tiles draw a tetrahedron of any size as one fan (its image box may exceed
+// kFanUpToPixels: no buffer), the stream draws one that large by its triangles: the same bits and
+// counts on a mesh of 48 tetrahedra each a few thousand pixels wide, in perspective and orthographic.
+TEST(Tiles, LargeTetrahedraByTheFanAsByTheirTriangles) {
+  const TransferFunction tf = tiles_tf();
+  const Mesh m = generate("box-tets", 2);
+  const ProjectionRenderer r(m.view());
+  for (Projection projection : {Projection::Perspective, Projection::Orthographic}) {
+    const Camera cam = test::view_from({2.6, -3.1, 2.2}, projection);
+    ProjectionOptions o = test::with_method(ProjectionMethod::pt_linear);
+    o.compositing = Compositing::stream;
+    ProjectionStats st_stream, st_tiles;
+    const Image stream = r.render(test::field_values(m), tf, cam, 256, 256, o, &st_stream);
+    o.compositing = Compositing::tiles;
+    const Image tiles = r.render(test::field_values(m), tf, cam, 256, 256, o, &st_tiles);
+    EXPECT_GT(st_stream.counters.fragments / 48, 4 * kFanUpToPixels);  // mean image box well above it
+    EXPECT_EQ(stream.rgba, tiles.rgba);
+    expect_same_counts(st_stream, st_tiles, projection == Projection::Perspective ? "perspective" : "orthographic");
   }
 }
 
