@@ -68,7 +68,9 @@ CELLPROJ_AVX512 std::int64_t over_pairs(const FanPlanes& f, Image& image, int i0
                                         int width) {
   FanPairs<S, 0x39> fan(f);  // quantity lanes in the image's order (r, g, b, opacity)
   const __m512d zero = _mm512_setzero_pd(), one = _mm512_set1_pd(1.0), two = _mm512_set1_pd(2.0);
-  std::int64_t added = 0;
+  // The pixels that add something, counted in the opacity lanes: the colour lanes are u times the
+  // opacity, u clamped to >= 0 (never NaN), so they are not all 0 only where the opacity is not.
+  __m512i added = _mm512_setzero_si512();
   RowSpans<S> spans{f, row0, rows, width};
   for (int b, e; spans.next(b, e);) {
     float* line = image.pixel(i0, j0 + row0 + spans.r);
@@ -84,11 +86,11 @@ CELLPROJ_AVX512 std::int64_t over_pairs(const FanPlanes& f, Image& image, int i0
       const __m256 s = _mm512_cvtpd_ps(src), t = _mm256_sub_ps(_mm256_set1_ps(1.0f), _mm256_shuffle_ps(s, s, 0xFF));
       float* dst = line + 4 * i;
       _mm256_mask_storeu_ps(dst, in_row, _mm256_add_ps(s, _mm256_mul_ps(t, _mm256_maskz_loadu_ps(in_row, dst))));
-      const unsigned adds = _mm512_mask_cmp_pd_mask(in_row, src, zero, _CMP_NEQ_UQ);
-      added += ((adds & 0xF) != 0) + ((adds >> 4) != 0);
+      const __mmask8 adds = _mm512_mask_cmp_pd_mask(in_row & 0x88, src, zero, _CMP_NEQ_UQ);
+      added = _mm512_mask_add_epi64(added, adds, added, _mm512_set1_epi64(1));
     }
   }
-  return added;
+  return _mm512_reduce_add_epi64(added);
 }
 
 // The exact rungs' fan two pixels at a time: fan_avx2.cpp's segments_pixels with pixel i's
