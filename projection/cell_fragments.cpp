@@ -590,8 +590,8 @@ bool CellFragments::project_fan(RowRange rows, Emit& emit, CellScratch& p, Proje
   // A tile's pt-linear composites the fan straight onto the image, at any size; the other uses
   // fill a buffer the size of the box (the exact rungs' batch, a stream's pixels), and pt-table's
   // kernel, a table look-up a pixel, is slower than the triangles' on large tetrahedra.
-  const bool unbuffered = std::is_same_v<Emit, CompositeFragments> && method_.gouraud && !method_.opacity_table;
-  if (box.empty() || (!unbuffered && std::int64_t{bw} * (box.j1 - box.j0 + 1) > kFanUpToPixels)) return box.empty();
+  const bool any_size = std::is_same_v<Emit, CompositeFragments> && method_.gouraud && !method_.opacity_table;
+  if (box.empty() || (!any_size && std::int64_t{bw} * (box.j1 - box.j0 + 1) > kFanUpToPixels)) return box.empty();
   const int j0 = std::max(box.j0, rows.begin), j1 = std::min(box.j1, rows.end - 1);
   if (j0 > j1) return true;
   // The quantities interpolated: pt-linear opacity and colour, pt-table kappa_avg, thickness and

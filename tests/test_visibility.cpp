@@ -323,7 +323,7 @@ TEST(Visibility, TheTetrahedraQueueKeepsTheGeneralOrder) {
     const std::vector<std::int64_t> queue = all_tets.sorter->sort(SortMethod::mpvo, view).order;
     std::vector<std::int64_t> general = with_wedges.sorter->sort(SortMethod::mpvo, view).order;
     ASSERT_EQ(general.size(), queue.size() + 2);
-    general.erase(std::remove_if(general.begin(), general.end(), [&](std::int64_t c) { return c >= n; }),
+    general.erase(std::remove_if(general.begin(), general.end(), [&](std::int64_t cell) { return cell >= n; }),
                   general.end());
     EXPECT_EQ(general, queue) << "eye " << c.eye.x << "," << c.eye.y << "," << c.eye.z;
   }

@@ -127,8 +127,9 @@ std::vector<std::int64_t> topological_order(const VisibilitySorter::Prepared& p,
   for (const Relations* rel : lists)
     for (std::int64_t m : rel->to) ++in[m];
 
-  std::vector<std::int64_t> order;  // doubles as Kahn's FIFO queue
-  reserve_in_huge_pages(order, static_cast<std::size_t>(n) + 4);  // (drain_tetrahedra's room)
+  // Kahn's FIFO queue is the order itself (4 more for drain_tetrahedra's writes past its tail).
+  std::vector<std::int64_t> order;
+  reserve_in_huge_pages(order, static_cast<std::size_t>(n) + 4);
   for (std::int64_t c = 0; c < n; ++c)
     if (in[c] == 0) order.push_back(c);
   std::size_t head = 0;
