@@ -1,17 +1,17 @@
 #!/usr/bin/env bash
 # The mpvo sort's phases in two cellproj builds, measured in one run: `cellproj sortbench` of every
-# mesh by A and B in turn (A, B, B, A, ... so drift favours neither), 24 views, one thread; per
+# mesh by A and B in turn (A, B, B, A, ... so drift favours neither), 24 views, one thread (THREADS); per
 # mesh the median over the rounds of each phase (face_relations, topological_sort) and of the
 # whole sort, with B/A. For judging a change to the sort on this noisy machine.
-# usage: [ROUNDS=3] [VIEWS=24] bench/sort_ab.sh A_EXE B_EXE MESH...
+# usage: [ROUNDS=3] [VIEWS=24] [THREADS=1] bench/sort_ab.sh A_EXE B_EXE MESH...
 set -euo pipefail
 a=$1; b=$2; shift 2
 rounds=${ROUNDS:-3}
 tmp=$(mktemp -d); trap 'rm -rf "$tmp"' EXIT
 for ((r = 0; r < rounds; r++)); do
   for x in $( ((r % 2 == 0)) && echo a b || echo b a); do
-    "$([ $x = a ] && echo "$a" || echo "$b")" sortbench "$@" --sorts mpvo --views "${VIEWS:-24}" --threads 1 --json \
-      2>/dev/null >>"$tmp/$x.jsonl"
+    "$([ $x = a ] && echo "$a" || echo "$b")" sortbench "$@" --sorts mpvo --views "${VIEWS:-24}" \
+      --threads "${THREADS:-1}" --json 2>/dev/null >>"$tmp/$x.jsonl"
   done
 done
 python3 - "$tmp/a.jsonl" "$tmp/b.jsonl" <<'PY'

@@ -5,7 +5,9 @@
 #include <memory>
 
 #include <gtest/gtest.h>
+#include <tbb/task_arena.h>
 
+#include "grid/generate.hpp"
 #include "grid/split_topology.hpp"
 #include "grid/topology.hpp"
 #include "raycast/order_oracle.hpp"
@@ -59,5 +61,27 @@ TEST(SplitSorting, SplitSorterCopyingWholeCellsPlanesSortsTheSame) {
         EXPECT_EQ(a.stats.face_relations, b.stats.face_relations);
         EXPECT_EQ(a.stats.gap_relations, b.stats.gap_relations);
       }
+  }
+}
+
+// The face relations are found in parallel chunks of faces and of cells (visibility/mpvo.cpp): on
+// meshes of several chunks (tetrahedra alone; hexahedra, wedges and pyramids split where they
+// fold, with split quads beside whole cells) one thread and four give the same order, and it has
+// no violation.
+TEST(SplitSorting, FaceRelationsInParallelSortAsOnOneThread) {
+  for (int kind = 0; kind < 2; ++kind) {
+    const Mesh m = kind == 0 ? generate("box-tets", 16) : twisted_mixed(18);
+    const SplittingSorter sorter(m.view(), kind == 0 ? Tetrahedralize::none : Tetrahedralize::problem);
+    for (const Camera& c : test::views_of_unit_mesh(3)) {
+      ViewOrder one, four;
+      tbb::task_arena(1).execute([&] { one = sorter.sort(SortMethod::mpvo, {c, 64, 64}); });
+      tbb::task_arena(4).execute([&] { four = sorter.sort(SortMethod::mpvo, {c, 64, 64}); });
+      ASSERT_GT(one.mesh->cells.n_cells, 8192 * 2) << "several chunks of cells";
+      EXPECT_EQ(one.sorted.order, four.sorted.order) << kind;
+      EXPECT_EQ(one.sorted.stats.face_relations, four.sorted.stats.face_relations);
+      const CellRayTracer tracer(one.mesh->cells);
+      const OrderCheck k = check_order(tracer, one.mesh->cells.n_cells, one.sorted.order, c, 64, 64);
+      EXPECT_EQ(k.violations, 0) << kind << ", " << one.problem_cells << " problem cells";
+    }
   }
 }

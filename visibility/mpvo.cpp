@@ -3,8 +3,14 @@
 #include <algorithm>
 
 #include <cmath>
+#include <cstring>
+#include <functional>
 #include <iterator>
 #include <limits>
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_reduce.h>
 
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <glm/geometric.hpp>
@@ -31,17 +37,28 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
   return o == CGAL::POSITIVE ? 1 : o == CGAL::NEGATIVE ? -1 : 0;  // POSITIVE: on the normal side, outside a
 }
 
-// Which side of shared face f the viewpoint is on: > 0 outside face_a (so face_a is behind).
-int viewpoint_side(const VisibilitySorter::Prepared& p, const ViewFrame& v, std::size_t f) {
-  const glm::dvec3& n = p.normal[f];  // unit length
-  if (!v.perspective) {
-    const double s = -(n.x * v.dir.x + n.y * v.dir.y + n.z * v.dir.z);
-    return s > 1e-14 ? 1 : s < -1e-14 ? -1 : 0;
+// Which side of a shared face the viewpoint is on: > 0 outside face_a (so face_a is behind). The
+// view and the arrays are copied in: byte stores between calls could alias them otherwise.
+struct ViewpointSide {
+  const VisibilitySorter::Prepared& p;
+  const ViewFrame& v;
+  const glm::dvec3* normal = p.normal.data();  // unit length
+  const double* offset = p.offset.data();
+  bool perspective = v.perspective;
+  glm::dvec3 dir = v.dir, eye = v.eye;
+  double near = 1e-9 * v.eye_scale;
+
+  int operator()(std::size_t f) const {
+    const glm::dvec3& n = normal[f];
+    if (!perspective) {
+      const double s = -(n.x * dir.x + n.y * dir.y + n.z * dir.z);
+      return s > 1e-14 ? 1 : s < -1e-14 ? -1 : 0;
+    }
+    const double s = n.x * eye.x + n.y * eye.y + n.z * eye.z - offset[f];
+    if (std::abs(s) > near) return s > 0 ? 1 : -1;
+    return side_near_plane(p, v, f, s);
   }
-  const double s = n.x * v.eye.x + n.y * v.eye.y + n.z * v.eye.z - p.offset[f];
-  if (std::abs(s) > 1e-9 * v.eye_scale) return s > 0 ? 1 : -1;
-  return side_near_plane(p, v, f, s);
-}
+};
 
 // Kahn's loop over the face relations of a mesh of tetrahedra alone, with no branch on a cell's
 // face bits or on a successor's in-count (on an irregular mesh both look like coin tosses to the
@@ -82,24 +99,65 @@ void drain_tetrahedra(const VisibilitySorter::Prepared& p, FaceOrder& faces, std
 
 }  // namespace
 
+// The face relations in two parallel passes with no two writes to one place (what is left serial
+// is Amdahl's s): each shared face writes its side into its two cells' face slots, +1 for the cell
+// composited first, -1 for the other (a split quad's side has no slot: `split_faces` below); then
+// each cell turns its slots into its ahead bits and in-count.
 FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v) {
-  const std::size_t n = p.centroid.size();
+  const std::size_t n = p.centroid.size(), n_faces = p.face_a.size();
+  const bool tetrahedra = p.all_tetrahedra;  // (copied: the byte stores below could alias p's members)
+  const std::int64_t* const fo = p.topo->face_offsets.data();
+  auto first_slot = [=](std::size_t c) { return tetrahedra ? 4 * c : static_cast<std::size_t>(fo[c]); };
+  FrameBuffer<std::int8_t> slots(p.across.size(), 0);
   FaceOrder out;
-  out.ahead.assign(n, 0);
-  out.in.assign(n, 0);
-  std::vector<std::pair<std::int64_t, std::int64_t>> split;
-  for (std::size_t f = 0; f < p.face_a.size(); ++f) {
-    const int side = viewpoint_side(p, v, f);
-    if (side > 0) {  // the viewpoint is beyond face_a's face: face_a is behind, face_b comes after it
-      out.ahead[p.face_a[f]] |= static_cast<std::uint8_t>(1u << p.local_a[f]);
-      ++out.in[p.face_b[f]];
-    } else if (side < 0 && p.local_b[f] == kNoLocalFace) {
-      split.emplace_back(p.face_b[f], p.face_a[f]);  // counted in topological_order, as every list
-    } else if (side < 0) {
-      out.ahead[p.face_b[f]] |= static_cast<std::uint8_t>(1u << p.local_b[f]);
-      ++out.in[p.face_a[f]];
+  out.relations = tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, n_faces, 16384), std::int64_t{0},
+      [&](const tbb::blocked_range<std::size_t>& r, std::int64_t count) {
+        const ViewpointSide side{p, v};
+        const std::int32_t *a = p.face_a.data(), *b = p.face_b.data();
+        const std::uint8_t *local_a = p.local_a.data(), *local_b = p.local_b.data();
+        std::int8_t* const slot = slots.data();
+        for (std::size_t f = r.begin(); f < r.end(); ++f) {
+          const int s = side(f);  // > 0: face_a first
+          const bool split = local_b[f] == kNoLocalFace;
+          slot[first_slot(a[f]) + local_a[f]] = static_cast<std::int8_t>(split && s < 0 ? 0 : s);
+          if (!split) slot[first_slot(b[f]) + local_b[f]] = static_cast<std::int8_t>(-s);
+          count += s != 0;
+        }
+        return count;
+      },
+      std::plus<>());
+  out.ahead.resize(n);
+  out.in.resize(n);
+  std::uint8_t* const ahead = out.ahead.data();
+  std::int32_t* const in = out.in.data();
+  const std::int8_t* const slot = slots.data();
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 8192), [=](const tbb::blocked_range<std::size_t>& r) {
+    if (tetrahedra) {  // a cell's four slots as one word: bytes of 1 (ahead), 0 or 0xff (one more before it)
+      for (std::size_t c = r.begin(); c < r.end(); ++c) {
+        std::uint32_t w;
+        std::memcpy(&w, slot + 4 * c, 4);
+        const std::uint32_t first = w & ~(w >> 7) & 0x01010101u;  // byte k's 1 to bit 24 + k:
+        ahead[c] = static_cast<std::uint8_t>((first * 0x01020408u) >> 24);
+        in[c] = __builtin_popcount(w & 0x80808080u);
+      }
+      return;
     }
-    out.relations += side != 0;
+    for (std::size_t c = r.begin(); c < r.end(); ++c) {
+      const std::int8_t* s = slot + first_slot(c);
+      const std::size_t faces = tetrahedra ? 4 : static_cast<std::size_t>(fo[c + 1] - fo[c]);
+      unsigned bits = 0;
+      std::int32_t before = 0;
+      for (std::size_t k = 0; k < faces; ++k) bits |= static_cast<unsigned>(s[k] > 0) << k, before += s[k] < 0;
+      ahead[c] = static_cast<std::uint8_t>(bits), in[c] = before;
+    }
+  });
+  // A split quad's cell has no slot for its triangles' faces: its in-count and relations from here.
+  std::vector<std::pair<std::int64_t, std::int64_t>> split;
+  for (const std::int32_t f : p.split_faces) {
+    const int s = ViewpointSide{p, v}(static_cast<std::size_t>(f));
+    if (s > 0) ++out.in[p.face_b[f]];
+    if (s < 0) split.emplace_back(p.face_b[f], p.face_a[f]);  // counted in topological_order, as every list
   }
   if (!split.empty()) out.split.build(static_cast<std::int64_t>(n), split);
   return out;

@@ -32,6 +32,7 @@ struct VisibilitySorter::Prepared {
   std::vector<std::uint8_t> local_a, local_b;  // per shared face: its index among face_a's / face_b's faces
                                                // (local_b kNoLocalFace: face_b's side is a split quad)
   std::vector<std::int32_t> across;            // per cell face (topology order): the cell across a shared face, or -1
+  std::vector<std::int32_t> split_faces;       // the shared faces whose face_b side is a split quad
   bool all_tetrahedra = false;                 // then cell c's faces start at 4 c
   // Boundary faces off the convex hull as triangles (quads split by the diagonal from their lowest
   // id), outward, over the points they use (indices into boundary_point, so that a view projects

@@ -233,6 +233,8 @@ VisibilitySorter::VisibilitySorter(const MeshView& mesh, const FaceTopology& top
       p.boundary_tri.push_back({local_id(tri[t][0]), local_id(tri[t][1]), local_id(tri[t][2])});
     }
   }
+  for (std::size_t f = 0; f < n_shared; ++f)
+    if (p.local_b[f] == kNoLocalFace) p.split_faces.push_back(static_cast<std::int32_t>(f));
   p.face_start = std::move(first);
   p.all_tetrahedra = std::all_of(mesh.types, mesh.types + mesh.n_cells,
                                  [](std::uint8_t t) { return t == static_cast<std::uint8_t>(CellType::Tetra); });
