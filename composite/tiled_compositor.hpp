@@ -37,6 +37,12 @@ inline int first_tile(const RowRange& reach, int height, int rows) {
   return std::clamp(reach.begin, 0, height - 1) / rows;
 }
 
+// The tiles [t0, t1] an item reaching `reach` is binned to (an empty reach: its first row's tile).
+inline void tile_span(const RowRange& reach, int height, int rows, int& t0, int& t1) {
+  t0 = first_tile(reach, height, rows);
+  t1 = reach.empty() ? t0 : std::max(t0, std::clamp(reach.end - 1, 0, height - 1) / rows);
+}
+
 // The items of each tile, in order: tile t holds items[first[t] .. first[t+1]), each given by its
 // key (its position in the order, or what key_of made of it).
 struct TileBins {
@@ -63,12 +69,7 @@ struct HasPrefetch<S, std::void_t<decltype(std::declval<const S&>().prefetch(std
 template <class RowsOf, class KeyOf = PositionKey>
 TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of, const KeyOf& key_of = {}) {
   const int tiles = std::max(1, (height + rows - 1) / rows);
-  auto span = [&](std::size_t k, int& t0, int& t1) {
-    const RowRange r = rows_of(k);
-    t0 = first_tile(r, height, rows);
-    t1 = r.empty() ? t0 : std::clamp(r.end - 1, 0, height - 1) / rows;
-    t1 = std::max(t0, t1);
-  };
+  auto span = [&](std::size_t k, int& t0, int& t1) { tile_span(rows_of(k), height, rows, t0, t1); };
   constexpr std::size_t kChunk = 16384;
   const std::size_t chunks = (n + kChunk - 1) / kChunk;
   std::vector<std::size_t> count(chunks * static_cast<std::size_t>(tiles), 0);  // per chunk, per tile
@@ -124,9 +125,12 @@ TileBins bin_to_tiles(std::size_t n, int height, int rows, const RowsOf& rows_of
 template <class Source, class RowsOf, class KeyOf = PositionKey>
 typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const RowsOf& rows_of, int rows,
                                              const Source& source, std::size_t* visits = nullptr,
-                                             bool front_to_back = false, const KeyOf& key_of = {}) {
-  const TileBins bins = bin_to_tiles(n, image.height, rows, rows_of, key_of);
-  if (visits) *visits = bins.items.size();
+                                             bool front_to_back = false, const KeyOf& key_of = {});
+
+// composite_in_tiles after its binning: the tiles of `rows` rows composited from their bins.
+template <class Source>
+typename Source::Counters composite_bins(Image& image, const TileBins& bins, int rows, const Source& source,
+                                         bool front_to_back = false) {
   const std::size_t tiles = bins.first.size() - 1;
   // The busiest tiles first (most items), taken in that order from one counter by every worker
   // (longest job first): the last tasks to start are short ones. (A parallel_for over the tiles
@@ -163,6 +167,15 @@ typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const 
   typename Source::Counters total{};
   for (const auto& c : counters) total.add(c);
   return total;
+}
+
+template <class Source, class RowsOf, class KeyOf>
+typename Source::Counters composite_in_tiles(Image& image, std::size_t n, const RowsOf& rows_of, int rows,
+                                             const Source& source, std::size_t* visits, bool front_to_back,
+                                             const KeyOf& key_of) {
+  const TileBins bins = bin_to_tiles(n, image.height, rows, rows_of, key_of);
+  if (visits) *visits = bins.items.size();
+  return composite_bins(image, bins, rows, source, front_to_back);
 }
 
 }  // namespace cellproj

@@ -13,6 +13,9 @@ namespace cellproj {
 // used when small cells are splatted).
 enum class Compositing { tiles, stream };
 
+enum class TileOrders { automatic, on, off };
+inline constexpr int kTileOrdersFromThreads = 4;
+
 struct ProjectionOptions {
   ProjectionMethod method = ProjectionMethod::pt_breakpoints;
   Backend backend = Backend::software;  // the OpenGL ones draw the Gouraud methods
@@ -24,6 +27,12 @@ struct ProjectionOptions {
   bool cull_transparent = true;           // cells with extinction 0 over their scalar range not drawn (same picture)
   Compositing compositing = Compositing::tiles;
   int tile_rows = 0;  // rows per tile (tiles); 0: tile_rows(), about 4 tiles per thread, 16 to 64 rows
+  // Tiles: each orders its own cells by the face relations among them where those are the whole
+  // order (mpvo on a convex mesh; parallel/tile_orders.hpp), instead of one sort of every cell
+  // before them (the serial stage of Amdahl's law). The same picture. Automatic: from
+  // kTileOrdersFromThreads threads, where the tiles' orders (about 4 times the work of the one
+  // sort, in parallel) take less time than the serial sort (docs/methods.md, "Each tile its order").
+  TileOrders tile_orders = TileOrders::automatic;
   // Tiles composited front to back, each pixel closed once within kOpaqueWithin (1e-6) of opaque
   // and cells wholly behind closed pixels not projected (composite/opaque_mask.hpp). Not the same
   // bits as back to front: the sums round in another order.

@@ -19,6 +19,7 @@
 #include "parallel/cell_passes.hpp"
 #include "parallel/gl_frame.hpp"
 #include "parallel/splat_stencil.hpp"
+#include "parallel/tile_orders.hpp"
 #include "raycast/cell_ray_tracer.hpp"
 #include "splat/splat.hpp"
 #include "view/screen.hpp"
@@ -79,6 +80,7 @@ struct OrderedCells {
   const ProjectionSplats& splats;
   OpaqueMask* opaque = nullptr;  // early ray termination: composited front to back, tiles only
   std::uint8_t* drew = nullptr;  // per cell, tiles only: set once it adds a fragment (count_small_after)
+  const std::uint8_t* clear = nullptr;  // per cell, tiles only: not drawn (transparent, kept in the tiles' orders)
   void fragments(std::size_t k, FragmentBands& out, Scratch& s, Counters& c) const {
     const std::int64_t cell = order[k];
     if (mode != SmallCells::draw && small[static_cast<std::size_t>(cell)]) {
@@ -105,6 +107,7 @@ struct OrderedCells {
   void composite(std::size_t key, Image& image, RowRange rows, bool first, Scratch& s, Counters& c) const {
     const auto cell = static_cast<std::int64_t>(key);
     if (mode == SmallCells::skip && small[static_cast<std::size_t>(cell)]) return;
+    if (clear && clear[cell]) return;
     const std::int64_t* ids = cells.cell(cell);
     const CellType type = cells.type(cell);
     ProjectionCounters pixels;
@@ -130,9 +133,9 @@ OpacityTable opacity_table(const TransferFunction& tf, int size, double max_diam
 
 // The order without the cells whose scalar range has extinction 0 throughout: they add nothing to
 // any ray (emission is C kappa, absorption kappa), so the picture is the same bits without them.
-std::vector<std::int64_t> without_transparent(const std::vector<std::int64_t>& order, const MeshView& cells,
-                                              const double* scalar, const TransferFunction& tf) {
-  if (!tf.has_transparent_range()) return order;
+// Per cell, whether it is such a cell (empty when the transfer function has no transparent range).
+std::vector<std::uint8_t> transparent_cells(const MeshView& cells, const double* scalar, const TransferFunction& tf) {
+  if (!tf.has_transparent_range()) return {};
   std::vector<std::uint8_t> clear(static_cast<std::size_t>(cells.n_cells), 0);
   tbb::parallel_for(std::int64_t(0), cells.n_cells, [&](std::int64_t c) {
     const std::int64_t* id = cells.cell(c);
@@ -140,6 +143,13 @@ std::vector<std::int64_t> without_transparent(const std::vector<std::int64_t>& o
     for (int k = 1; k < cells.cell_size(c); ++k) lo = std::min(lo, scalar[id[k]]), hi = std::max(hi, scalar[id[k]]);
     clear[static_cast<std::size_t>(c)] = tf.transparent_over(lo, hi);
   });
+  return clear;
+}
+
+std::vector<std::int64_t> without_transparent(const std::vector<std::int64_t>& order, const MeshView& cells,
+                                              const double* scalar, const TransferFunction& tf) {
+  const std::vector<std::uint8_t> clear = transparent_cells(cells, scalar, tf);
+  if (clear.empty()) return order;
   std::vector<std::int64_t> kept;
   kept.reserve(order.size());
   for (std::int64_t c : order)
@@ -226,11 +236,21 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   sort_view.gaps = options.gaps;
   ViewOrder view;
   std::vector<std::int64_t> visible;  // the order without the transparent cells (cull_transparent)
+  std::vector<std::uint8_t> clear;    // or, with the tiles' own orders, those cells flagged
+  // Each tile orders its own cells where the face relations are the whole order (parallel/tile_orders.hpp).
+  ViewRelations relations;
+  const bool tile_orders =
+      software && by_tiles &&
+      (options.tile_orders == TileOrders::on || (options.tile_orders == TileOrders::automatic &&
+                                                 tbb::this_task_arena::max_concurrency() >= kTileOrdersFromThreads));
   double sort_seconds = 0;
   const auto sort = [&] {
     const auto t_sort = std::chrono::steady_clock::now();  // (on one thread the passes may run first)
-    view = sorter_.sort(options.sort, sort_view);
-    if (options.cull_transparent) visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
+    view = sorter_.sort(options.sort, sort_view, tile_orders ? &relations : nullptr);
+    if (options.cull_transparent && view.sorted.relations_only)
+      clear = transparent_cells(view.mesh->cells, scalar, tf);
+    else if (options.cull_transparent)
+      visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
     sort_seconds = seconds_since(t_sort);
   };
   // Where the cells sorted are those of the base mesh whatever the view (every mode but problem,
@@ -242,10 +262,32 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   } else {
     sort();
   }
+  if (software && passed != &view.mesh->cells)
+    cell_passes(view.mesh->cells);  // (after the sort; or the view split cells)
+  const int rows =
+      options.tile_rows > 0 ? options.tile_rows : tile_rows(height, tbb::this_task_arena::max_concurrency());
+  std::optional<TileBins> tile_bins;  // the cells of each tile in the tile's own order
+  double tile_seconds = 0;
+  if (view.sorted.relations_only) {
+    t = std::chrono::steady_clock::now();
+    const MeshView& base = view.mesh->cells;
+    tile_bins =
+        bin_to_tiles(static_cast<std::size_t>(base.n_cells), height, rows, [&](std::size_t c) { return reach[c]; });
+    if (!order_tiles(*tile_bins, relations, base.n_cells, reach, height, rows)) {  // a cycle: the whole mesh sorted
+      tile_bins.reset(), clear.clear();
+      const auto t_sort = std::chrono::steady_clock::now();
+      view = sorter_.sort(options.sort, sort_view);
+      if (options.cull_transparent) visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
+      sort_seconds += seconds_since(t_sort);
+      if (passed != &view.mesh->cells) cell_passes(view.mesh->cells);
+    }
+    tile_seconds = seconds_since(t);
+  }
   const MeshView& cells = view.mesh->cells;
-  if (software && passed != &cells) cell_passes(cells);  // (after the sort; or the view split cells after all)
   const std::vector<std::int64_t>& order = options.cull_transparent ? visible : view.sorted.order;
-  st.culled_transparent = static_cast<std::int64_t>(view.sorted.order.size() - order.size());
+  st.tile_orders = tile_bins.has_value();
+  st.culled_transparent = tile_bins ? std::count(clear.begin(), clear.end(), std::uint8_t{1})
+                                    : static_cast<std::int64_t>(view.sorted.order.size() - order.size());
   st.cell_numbering_spread = local_.spread(), st.cells_renumbered = local_.renumbered();
   st.tetrahedralize = sorter_.mode();
   st.cells = cells.n_cells;
@@ -255,6 +297,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   st.cycle_splits = view.cycle_splits;
   st.phase_seconds.emplace_back("sort", sort_seconds);
   if (software) st.phase_seconds.emplace_back("small cells", small_seconds);  // (beside the sort, or after it)
+  if (st.tile_orders) st.phase_seconds.emplace_back("tile orders", tile_seconds);  // (binning included)
 
   const MethodTraits& method = traits(options.method);
   std::optional<OpacityTable> table;
@@ -288,14 +331,16 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     if (count_after) drew.assign(static_cast<std::size_t>(cells.n_cells), 0);
     OrderedCells source{project, cells, order, small, st.small_cells, splats, opaque ? &*opaque : nullptr};
     if (count_after) source.drew = drew.data();
+    if (!clear.empty()) source.clear = clear.data();
     FrameCounters counters;
     if (by_tiles) {
-      const int rows = options.tile_rows > 0 ? options.tile_rows
-                                             : tile_rows(height, tbb::this_task_arena::max_concurrency());
-      std::size_t visits = 0;
-      counters = composite_in_tiles(
-          image, order.size(), [&](std::size_t k) { return reach[static_cast<std::size_t>(order[k])]; }, rows, source,
-          &visits, opaque.has_value(), [&](std::size_t k) { return static_cast<std::size_t>(order[k]); });
+      std::size_t visits = tile_bins ? tile_bins->items.size() : 0;
+      if (tile_bins)
+        counters = composite_bins(image, *tile_bins, rows, source, opaque.has_value());
+      else
+        counters = composite_in_tiles(
+            image, order.size(), [&](std::size_t k) { return reach[static_cast<std::size_t>(order[k])]; }, rows, source,
+            &visits, opaque.has_value(), [&](std::size_t k) { return static_cast<std::size_t>(order[k]); });
       st.tiles = (height + rows - 1) / rows;
       st.tile_visits = static_cast<std::int64_t>(visits);
       if (count_after) count_small_after(cells, screen, rays, st.splat_threshold, drew.data(), st.splat);

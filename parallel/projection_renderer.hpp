@@ -44,6 +44,7 @@ struct ProjectionStats {
   double blend_seconds = 0.0;  // of project and composite: the ordered blend stage (software back end, stream)
   int tiles = 0;               // the image tiles composited by (software back end, tiles; 0: the stream)
   std::int64_t tile_visits = 0;  // cells drawn by tile: cells plus the repeats of those straddling tiles
+  bool tile_orders = false;      // each tile ordered its own cells (ProjectionOptions::tile_orders), no global order
   double cell_numbering_spread = 0.0;  // the mesh's numbering_spread (grid/cell_order.hpp)
   bool cells_renumbered = false;       // whether the renderer's copy of the cells is renumbered for locality
   std::string gl_renderer;                                    // the OpenGL back ends: GL_RENDERER

@@ -67,7 +67,7 @@ class ProjectionMode final : public Renderer {
     std::vector<std::string> used = {"method",          "backend",          "sort",        "gaps",
                                      "table-size",      "tetrahedralize",   "small-cells", "splat-threshold",
                                      "splat-prefilter", "cull-transparent", "compositing", "tile-rows",
-                                     "early-termination"};
+                                     "early-termination", "tile-orders"};
     if (traits(options_.method).gouraud) used.push_back("whole-cells");  // the exact rungs always draw layers
     return used;
   }
@@ -150,6 +150,7 @@ class ProjectionMode final : public Renderer {
     r.add("compositing", p.tiles > 0 ? "tiles" : "stream");
     r.add("tiles", p.tiles);
     r.add("tile_visits", p.tile_visits);
+    r.add("visibility_order", p.tile_orders ? "per tile" : "global");
     r.add("fragment_traffic_gb_per_second", stream ? ReportValue(72.0 * n / seconds / 1e9) : ReportValue());
     r.add("blend_seconds", stream ? ReportValue(p.blend_seconds) : ReportValue());
   }

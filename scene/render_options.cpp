@@ -145,6 +145,11 @@ RenderSettings settings_from(const RenderOptions& o) {
     throw InputError("--tile-rows: expected an integer in [0, 65536] (0: automatic), got " + std::to_string(o.tile_rows));
   s.projection.tile_rows = o.tile_rows;
   s.projection.early_termination = on_off("early-termination", o.early_termination);
+  if (o.tile_orders != "auto" && o.tile_orders != "on" && o.tile_orders != "off")
+    throw InputError("--tile-orders: expected auto, on or off, got '" + o.tile_orders + "'");
+  s.projection.tile_orders = o.tile_orders == "auto" ? TileOrders::automatic
+                             : o.tile_orders == "on" ? TileOrders::on
+                                                     : TileOrders::off;
   if (o.whole_cells != "auto" && o.whole_cells != "layers" && o.whole_cells != "polygons")
     throw InputError("--whole-cells: expected auto, layers or polygons, got '" + o.whole_cells + "'");
   s.projection.whole_cells = o.whole_cells == "auto"     ? WholeCells::automatic
@@ -158,32 +163,33 @@ std::vector<std::string> render_option_names() {
           "slice-integral", "small-cells", "table-size", "slices",  "splat-threshold", "splat-prefilter",
           "iso",            "layer",       "layer-weights", "silhouettes", "silhouette-epsilon", "volume", "iso-mode",
           "iso-opacity",    "cull-transparent", "compositing", "tile-rows", "early-termination",
-          "whole-cells"};
+          "whole-cells",    "tile-orders"};
 }
 
 void set_option(RenderOptions& o, const std::string& given_name, const std::string& value) {
   std::string name = given_name;
   std::replace(name.begin(), name.end(), '_', '-');
-  std::string* text = name == "method"           ? &o.method
-                      : name == "sort"           ? &o.sort
-                      : name == "gaps"           ? &o.gaps
-                      : name == "backend"        ? &o.backend
-                      : name == "tetrahedralize" ? &o.tetrahedralize
-                      : name == "interpolation"  ? &o.interpolation
-                      : name == "slice-axis"     ? &o.slice_axis
-                      : name == "slice-integral" ? &o.slice_integral
-                      : name == "small-cells"    ? &o.small_cells
-                      : name == "layer"          ? &o.layer
-                      : name == "layer-weights"  ? &o.layer_weights
-                      : name == "silhouettes"    ? &o.silhouettes
-                      : name == "volume"         ? &o.volume
-                      : name == "iso-mode"       ? &o.iso_mode
-                      : name == "iso-opacity"    ? &o.iso_opacity
-                      : name == "cull-transparent" ? &o.cull_transparent
-                      : name == "compositing"    ? &o.compositing
+  std::string* text = name == "method"              ? &o.method
+                      : name == "sort"              ? &o.sort
+                      : name == "gaps"              ? &o.gaps
+                      : name == "backend"           ? &o.backend
+                      : name == "tetrahedralize"    ? &o.tetrahedralize
+                      : name == "interpolation"     ? &o.interpolation
+                      : name == "slice-axis"        ? &o.slice_axis
+                      : name == "slice-integral"    ? &o.slice_integral
+                      : name == "small-cells"       ? &o.small_cells
+                      : name == "layer"             ? &o.layer
+                      : name == "layer-weights"     ? &o.layer_weights
+                      : name == "silhouettes"       ? &o.silhouettes
+                      : name == "volume"            ? &o.volume
+                      : name == "iso-mode"          ? &o.iso_mode
+                      : name == "iso-opacity"       ? &o.iso_opacity
+                      : name == "cull-transparent"  ? &o.cull_transparent
+                      : name == "compositing"       ? &o.compositing
                       : name == "early-termination" ? &o.early_termination
-                      : name == "whole-cells"    ? &o.whole_cells
-                                                 : nullptr;
+                      : name == "whole-cells"       ? &o.whole_cells
+                      : name == "tile-orders"       ? &o.tile_orders
+                                                    : nullptr;
   if (text)
     *text = value;
   else if (name == "iso")

@@ -14,8 +14,8 @@ struct RenderOptions {
   std::string method = "pt-breakpoints", sort = "auto", gaps = "auto", backend = "software", tetrahedralize = "problem",
               interpolation = "isoparametric", slice_axis = "auto", slice_integral = "preintegrated",
               small_cells = "draw", layer = "1", layer_weights, silhouettes = "none", volume = "on",
-              iso_mode = "ordered", iso_opacity = "constant", cull_transparent = "on",
-              compositing = "tiles", early_termination = "off", whole_cells = "auto";
+              iso_mode = "ordered", iso_opacity = "constant", cull_transparent = "on", compositing = "tiles",
+              early_termination = "off", whole_cells = "auto", tile_orders = "auto";
   std::vector<std::string> iso;  // --iso V[:R,G,B[,A]], repeatable
   int table_size = 256, slices = 256, tile_rows = 0;
   double splat_threshold = SplatOptions{}.threshold;  // NaN: the method's default

@@ -1,6 +1,9 @@
 #include "test_util.hpp"
 
+#include <fstream>
 #include <random>
+
+#include "grid/read_mesh.hpp"
 
 namespace cellproj::test {
 
@@ -171,6 +174,19 @@ Mesh twisted_mixed(int n) {
     return glm::dvec3(std::cos(a) * p.x - std::sin(a) * p.y, std::sin(a) * p.x + std::cos(a) * p.y,
                       p.z + 0.1 * p.x * p.y);
   });
+}
+
+Mesh delaunay_cube(const TempDir& dir, int points, unsigned seed) {
+  const std::string path = dir.file("cloud" + std::to_string(seed) + ".xyzs");
+  {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    std::ofstream out(path);
+    out.precision(17);
+    for (int k = 0; k < 8; ++k) out << (k & 1 ? 1 : -1) << ' ' << (k & 2 ? 1 : -1) << ' ' << (k & 4 ? 1 : -1) << " 0\n";
+    for (int k = 0; k < points; ++k) out << u(rng) << ' ' << u(rng) << ' ' << u(rng) << ' ' << u(rng) << '\n';
+  }
+  return read_point_cloud(path);
 }
 
 }  // namespace cellproj::test

@@ -26,6 +26,11 @@ class TempDir {
   std::filesystem::path path_;
 };
 
+// The Delaunay tetrahedra (grid/read_mesh's point clouds, CGAL) of the cube [-1, 1]^3's corners
+// and `points` random points inside it, each with a random scalar: a convex, irregular mesh. The
+// cloud's file is written into `dir`.
+Mesh delaunay_cube(const TempDir& dir, int points, unsigned seed);
+
 // The message of the InputError that f() throws ("" when it throws none).
 template <class F>
 std::string input_error(F&& f) {

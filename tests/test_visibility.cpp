@@ -24,6 +24,7 @@
 #include "scene/names.hpp"
 #include "test_util.hpp"
 #include "visibility/sort.hpp"
+#include "visibility/subset_order.hpp"
 
 using namespace cellproj;
 
@@ -294,16 +295,7 @@ TEST(Visibility, AutoPicksWhatTheMeshNeeds) {
 // 6, so both meshes recentre on the origin and every face's side is computed alike.
 TEST(Visibility, TheTetrahedraQueueKeepsTheGeneralOrder) {
   const test::TempDir dir;
-  const std::string path = dir.file("cloud.xyzs");
-  {
-    std::mt19937 rng(7);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    std::ofstream out(path);
-    out.precision(17);
-    for (int k = 0; k < 8; ++k) out << (k & 1 ? 1 : -1) << ' ' << (k & 2 ? 1 : -1) << ' ' << (k & 4 ? 1 : -1) << " 0\n";
-    for (int k = 0; k < 600; ++k) out << u(rng) << ' ' << u(rng) << ' ' << u(rng) << ' ' << u(rng) << '\n';
-  }
-  Mesh tets = read_point_cloud(path);
+  Mesh tets = test::delaunay_cube(dir, 600, 7);
   Mesh mixed = tets;
   const std::int64_t n = tets.n_cells();
   for (const double x : {5.0, -6.0}) {
@@ -495,4 +487,33 @@ TEST(Visibility, AnEyeNearlyInAFacePlaneIsDecidedExactly) {
       EXPECT_EQ(r.order.back(), z > 0 ? 0 : 1) << "the cell on the eye's side is composited last, z = " << z;
     }
   }
+}
+
+// order_subset (an image tile's own order): Kahn's queue over the relations among the members
+// only. Three tetrahedra in a chain 0 -> 1 -> 2 (face 0 of each towards the next, face 1 back):
+// all three in any listing come out 0, 1, 2; without the middle one, 0 and 2 are unrelated and
+// keep their listing; a relation 2 -> 0 closes a cycle: false, the cells untouched and the counts
+// left at 0 for the next tile.
+TEST(Visibility, SubsetOrderRelatesOnlyItsMembers) {
+  std::vector<std::int32_t> across = {1, -1, -1, -1, 2, 0, -1, -1, -1, 1, -1, -1};  // 4 faces a cell
+  ViewRelations r;
+  r.tetrahedra = true;
+  r.across = across.data();
+  r.ahead = {0b0001, 0b0001, 0b0000};
+  r.behind = {0b0000, 0b0010, 0b0010};
+  SubsetScratch scratch;
+  const auto all = [](std::int32_t) { return true; };
+  std::vector<std::size_t> cells = {2, 0, 1};
+  ASSERT_TRUE(order_subset(r, 3, cells.data(), cells.size(), all, scratch));
+  EXPECT_EQ(cells, (std::vector<std::size_t>{0, 1, 2}));
+  cells = {2, 0};
+  ASSERT_TRUE(order_subset(
+      r, 3, cells.data(), cells.size(), [](std::int32_t c) { return c != 1; }, scratch));
+  EXPECT_EQ(cells, (std::vector<std::size_t>{2, 0}));
+  across[2 * 4 + 3] = 0, across[0 * 4 + 2] = 2;  // a face between 2 (its face 3) and 0 (its face 2)
+  r.ahead[2] |= 0b1000, r.behind[0] |= 0b0100;   // across which 2 comes before 0
+  cells = {1, 2, 0};
+  EXPECT_FALSE(order_subset(r, 3, cells.data(), cells.size(), all, scratch));
+  EXPECT_EQ(cells, (std::vector<std::size_t>{1, 2, 0}));
+  for (int c = 0; c < 3; ++c) EXPECT_EQ(scratch.count[c], 0) << c;
 }

@@ -325,6 +325,11 @@ Action add_render(CLI::App& app) {
           "software projection with --compositing tiles: on composites each tile front to back, closing a pixel "
           "once within 1e-6 of opaque and leaving out the cells behind closed pixels (faster on opaque "
           "scenes; the picture within 2e-6 of off, not the same bits), or off (default)");
+  setting("tile-orders", args->options.tile_orders,
+          "software projection with --compositing tiles: on has each image tile order its own cells by the "
+          "face relations among them where those are the whole order (mpvo on a convex mesh), with no serial "
+          "sort of the whole mesh before the tiles; off sorts every cell once; auto (default): on from " +
+              std::to_string(kTileOrdersFromThreads) + " threads; the same picture");
   setting("whole-cells", args->options.whole_cells,
           "software pt-linear and pt-table on hexahedra, wedges and pyramids: layers (the thick-vertex "
           "formula at every pixel from the cell's front and back faces), polygons (the image-plane "

@@ -46,7 +46,7 @@ struct ViewpointSide {
   const double* offset = p.offset.data();
   bool perspective = v.perspective;
   glm::dvec3 dir = v.dir, eye = v.eye;
-  double near = 1e-9 * v.eye_scale;
+  double plane_tolerance = 1e-9 * v.eye_scale;
 
   int operator()(std::size_t f) const {
     const glm::dvec3& n = normal[f];
@@ -55,7 +55,7 @@ struct ViewpointSide {
       return s > 1e-14 ? 1 : s < -1e-14 ? -1 : 0;
     }
     const double s = n.x * eye.x + n.y * eye.y + n.z * eye.z - offset[f];
-    if (std::abs(s) > near) return s > 0 ? 1 : -1;
+    if (std::abs(s) > plane_tolerance) return s > 0 ? 1 : -1;
     return side_near_plane(p, v, f, s);
   }
 };
@@ -103,7 +103,7 @@ void drain_tetrahedra(const VisibilitySorter::Prepared& p, FaceOrder& faces, std
 // is Amdahl's s): each shared face writes its side into its two cells' face slots, +1 for the cell
 // composited first, -1 for the other (a split quad's side has no slot: `split_faces` below); then
 // each cell turns its slots into its ahead bits and in-count.
-FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v) {
+FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, bool behind) {
   const std::size_t n = p.centroid.size(), n_faces = p.face_a.size();
   const bool tetrahedra = p.all_tetrahedra;  // (copied: the byte stores below could alias p's members)
   const std::int64_t* const fo = p.topo->face_offsets.data();
@@ -129,7 +129,9 @@ FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v
       std::plus<>());
   out.ahead.resize(n);
   out.in.resize(n);
+  if (behind) out.behind.resize(n);
   std::uint8_t* const ahead = out.ahead.data();
+  std::uint8_t* const before_bits = behind ? out.behind.data() : nullptr;
   std::int32_t* const in = out.in.data();
   const std::int8_t* const slot = slots.data();
   tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 8192), [=](const tbb::blocked_range<std::size_t>& r) {
@@ -137,19 +139,21 @@ FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v
       for (std::size_t c = r.begin(); c < r.end(); ++c) {
         std::uint32_t w;
         std::memcpy(&w, slot + 4 * c, 4);
-        const std::uint32_t first = w & ~(w >> 7) & 0x01010101u;  // byte k's 1 to bit 24 + k:
-        ahead[c] = static_cast<std::uint8_t>((first * 0x01020408u) >> 24);
+        const std::uint32_t first = w & ~(w >> 7) & 0x01010101u;            // bit 8 k set: byte k is 1
+        ahead[c] = static_cast<std::uint8_t>((first * 0x01020408u) >> 24);  // (bit 8 k to bit 24 + k)
         in[c] = __builtin_popcount(w & 0x80808080u);
+        if (before_bits) before_bits[c] = static_cast<std::uint8_t>((((w >> 7) & 0x01010101u) * 0x01020408u) >> 24);
       }
       return;
     }
     for (std::size_t c = r.begin(); c < r.end(); ++c) {
       const std::int8_t* s = slot + first_slot(c);
       const std::size_t faces = tetrahedra ? 4 : static_cast<std::size_t>(fo[c + 1] - fo[c]);
-      unsigned bits = 0;
-      std::int32_t before = 0;
-      for (std::size_t k = 0; k < faces; ++k) bits |= static_cast<unsigned>(s[k] > 0) << k, before += s[k] < 0;
-      ahead[c] = static_cast<std::uint8_t>(bits), in[c] = before;
+      unsigned bits = 0, back = 0;
+      for (std::size_t k = 0; k < faces; ++k)
+        bits |= static_cast<unsigned>(s[k] > 0) << k, back |= static_cast<unsigned>(s[k] < 0) << k;
+      ahead[c] = static_cast<std::uint8_t>(bits), in[c] = __builtin_popcount(back);
+      if (before_bits) before_bits[c] = static_cast<std::uint8_t>(back);
     }
   });
   // A split quad's cell has no slot for its triangles' faces: its in-count and relations from here.

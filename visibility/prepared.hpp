@@ -74,11 +74,12 @@ struct Relations {
 // must come before c. A face seen exactly edge-on makes no relation.
 struct FaceOrder {
   FrameBuffer<std::uint8_t> ahead;  // fresh every view (base/huge_pages.hpp)
+  FrameBuffer<std::uint8_t> behind;  // bit k: the cell across face k comes before (kept when asked: ViewRelations)
   FrameBuffer<std::int32_t> in;
   Relations split;  // from a cell with a split quad to the tetrahedra across it (no bit on that side)
   std::int64_t relations = 0;
 };
-FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v);
+FaceOrder face_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, bool behind = false);
 // Relations across the gaps of a non-convex mesh: visibility/image_faces.hpp.
 // Relations from pairwise occlusion tests between every two cells whose projections overlap.
 Relations pairwise_relations(const VisibilitySorter::Prepared& p, const ViewFrame& v, const SortView& view,

@@ -8,6 +8,7 @@
 #include <utility>
 #include <vector>
 
+#include "base/huge_pages.hpp"
 #include "grid/geometry.hpp"
 #include "grid/mesh.hpp"
 #include "grid/topology.hpp"
@@ -44,8 +45,20 @@ struct SortStats {
 };
 
 struct SortResult {
-  std::vector<std::int64_t> order;  // every cell once, back to front
+  std::vector<std::int64_t> order;  // every cell once, back to front (empty when relations_only)
   SortStats stats;
+  bool relations_only = false;  // the relations were handed back to be ordered by subsets (ViewRelations)
+};
+
+// The relations across shared faces for one view, without their order: for sorting subsets of the
+// cells apart, each image tile its own (visibility/subset_order.hpp). Given only where they are
+// the whole order (mpvo on a convex mesh, no quad split beside whole cells).
+struct ViewRelations {
+  FrameBuffer<std::uint8_t> ahead, behind;     // per cell: bit k, the cell across face k comes after / before it
+  const std::int32_t* across = nullptr;        // per cell face: the cell across it (the sorter's: it outlives this)
+  const std::int64_t* face_offsets = nullptr;  // where cell c's faces start (4 c for tetrahedra alone)
+  bool tetrahedra = false;
+  std::int64_t first_face(std::int64_t c) const { return tetrahedra ? 4 * c : face_offsets[c]; }
 };
 
 // The view a sort is for: the camera (eye point in perspective, direction in orthographic) and
@@ -73,7 +86,9 @@ class VisibilitySorter {
   ~VisibilitySorter();
   VisibilitySorter(VisibilitySorter&&) noexcept;
 
-  SortResult sort(SortMethod method, const SortView& view) const;
+  // With `relations` given, where the method is mpvo on a convex mesh with no split quad: those
+  // relations filled and no order (SortResult::relations_only), for the caller to order by subsets.
+  SortResult sort(SortMethod method, const SortView& view, ViewRelations* relations = nullptr) const;
 
   std::int64_t cells() const;
   bool convex_boundary() const;

@@ -54,6 +54,12 @@ std::vector<std::int64_t> mpvo_order(const VisibilitySorter::Prepared& p, const 
   return order;
 }
 
+// What mpvo-abuffer reports having found the gaps with on a convex boundary, where none can be.
+GapMethod gaps_on_convex(const SortView& view) {
+  const GapMethod gaps_by = view.abuffer_every_pixel ? GapMethod::abuffer : view.gaps;
+  return gaps_by == GapMethod::abuffer ? GapMethod::abuffer : GapMethod::overlaps;
+}
+
 // mpvo-abuffer: the face relations, and the relations across gaps from the faces' overlaps, found
 // side by side (they are independent; the topological sort needs both). A view where two faces
 // pass through each other, or where a visibility cycle holds a relation from the overlaps, takes
@@ -62,7 +68,7 @@ std::vector<std::int64_t> mpvo_with_gaps(const VisibilitySorter::Prepared& p, co
                                          SortStats& stats, PhaseClock& clock) {
   const GapMethod gaps_by = view.abuffer_every_pixel ? GapMethod::abuffer : view.gaps;
   if (p.boundary_tri.empty()) {  // a convex boundary: no face can bound a gap
-    stats.gaps_from = gaps_by == GapMethod::abuffer ? GapMethod::abuffer : GapMethod::overlaps;
+    stats.gaps_from = gaps_on_convex(view);
     return mpvo_order(p, v, stats, clock);
   }
   FaceOrder faces;
@@ -264,7 +270,7 @@ ViewFrame view_frame(const VisibilitySorter::Prepared& p, const SortView& view) 
   return v;
 }
 
-SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const {
+SortResult VisibilitySorter::sort(SortMethod method, const SortView& view, ViewRelations* relations) const {
   check_camera(view.camera, "sort view");
   const auto start = std::chrono::steady_clock::now();
   const Prepared& p = *p_;
@@ -273,6 +279,20 @@ SortResult VisibilitySorter::sort(SortMethod method, const SortView& view) const
   r.stats.method = method;
   PhaseClock clock(r.stats);
   const ViewFrame v = view_frame(p, view);
+  // (mpvo-abuffer on a convex boundary is mpvo: mpvo_with_gaps)
+  const bool faces_alone = method == SortMethod::mpvo || (method == SortMethod::mpvo_abuffer && p.boundary_tri.empty());
+  if (relations && faces_alone && p.convex && p.split_faces.empty()) {
+    if (method == SortMethod::mpvo_abuffer) r.stats.gaps_from = gaps_on_convex(view);
+    FaceOrder faces = face_relations(p, v, true);
+    r.stats.face_relations = faces.relations;
+    relations->ahead = std::move(faces.ahead), relations->behind = std::move(faces.behind);
+    relations->across = p.across.data(), relations->face_offsets = p.topo->face_offsets.data();
+    relations->tetrahedra = p.all_tetrahedra;
+    r.relations_only = true;
+    clock.lap("face_relations");
+    r.stats.seconds = seconds_since(start);
+    return r;
+  }
   switch (method) {
     case SortMethod::centroid:
       r.order = centroid_order(p, v);

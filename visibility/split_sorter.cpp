@@ -84,11 +84,11 @@ std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector
   return s;
 }
 
-ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view) const {
+ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view, ViewRelations* relations) const {
   ViewOrder out;
   if (mode_ == Tetrahedralize::all) {
     out.mesh = base_mesh();
-    out.sorted = out.mesh->sorter->sort(method, view);
+    out.sorted = out.mesh->sorter->sort(method, view, relations);
     return out;
   }
   check_camera(view.camera, "sort view");
@@ -97,7 +97,7 @@ ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view) const {
                                   : std::vector<char>(static_cast<std::size_t>(mesh_.n_cells), 0);
   if (mode_ == Tetrahedralize::none || out.problem_cells == 0) {
     out.mesh = base_mesh();
-    out.sorted = out.mesh->sorter->sort(method, view);
+    out.sorted = out.mesh->sorter->sort(method, view, relations);  // (a split mesh has split quads: no relations)
   } else {
     out.mesh = split_for(problem);
     out.sorted = out.mesh->sorter->sort(method, view);

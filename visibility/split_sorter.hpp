@@ -46,7 +46,8 @@ class SplittingSorter {
   SplittingSorter(const MeshView& mesh, Tetrahedralize mode);
   ~SplittingSorter();
   // Thread-safe; the last view's split mesh is kept and reused while the problem cells stay the same.
-  ViewOrder sort(SortMethod method, const SortView& view) const;
+  // `relations`: as VisibilitySorter::sort's, where the view splits no cell.
+  ViewOrder sort(SortMethod method, const SortView& view, ViewRelations* relations = nullptr) const;
   Tetrahedralize mode() const { return mode_; }
   const RecentredPoints& points() const { return *points_; }
   // The mesh sorted when no cell needs splitting (the input mesh, or all its cells split).
