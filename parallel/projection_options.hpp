@@ -29,9 +29,12 @@ struct ProjectionOptions {
   int tile_rows = 0;  // rows per tile (tiles); 0: tile_rows(), about 4 tiles per thread, 16 to 64 rows
   // Tiles: each orders its own cells by the face relations among them where those are the whole
   // order (mpvo on a convex mesh; parallel/tile_orders.hpp), instead of one sort of every cell
-  // before them (the serial stage of Amdahl's law). The same picture. Automatic: from
+  // before them (the serial stage of Amdahl's law). The same picture where no view makes a
+  // visibility cycle; a cycle within a tile falls back to the one sort, but one spread over
+  // several tiles is ordered by each apart, unlike the one sort, which breaks it. Automatic: from
   // kTileOrdersFromThreads threads, where the tiles' orders (about 4 times the work of the one
-  // sort, in parallel) take less time than the serial sort (docs/methods.md, "Each tile its order").
+  // sort, in parallel) take less time than the serial sort (docs/methods.md, "Each tile its
+  // order"), on a mesh no view can make a cycle in (VisibilitySorter::acyclic).
   TileOrders tile_orders = TileOrders::automatic;
   // Tiles composited front to back, each pixel closed once within kOpaqueWithin (1e-6) of opaque
   // and cells wholly behind closed pixels not projected (composite/opaque_mask.hpp). Not the same

@@ -237,12 +237,14 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   ViewOrder view;
   std::vector<std::int64_t> visible;  // the order without the transparent cells (cull_transparent)
   std::vector<std::uint8_t> clear;    // or, with the tiles' own orders, those cells flagged
-  // Each tile orders its own cells where the face relations are the whole order (parallel/tile_orders.hpp).
+  // Each tile orders its own cells where the face relations are the whole order (parallel/tile_orders.hpp);
+  // automatically only where no view can make a visibility cycle, which tiles could order apart.
   ViewRelations relations;
   const bool tile_orders =
       software && by_tiles &&
-      (options.tile_orders == TileOrders::on || (options.tile_orders == TileOrders::automatic &&
-                                                 tbb::this_task_arena::max_concurrency() >= kTileOrdersFromThreads));
+      (options.tile_orders == TileOrders::on ||
+       (options.tile_orders == TileOrders::automatic &&
+        tbb::this_task_arena::max_concurrency() >= kTileOrdersFromThreads && sorter_.base().sorter->acyclic()));
   double sort_seconds = 0;
   const auto sort = [&] {
     const auto t_sort = std::chrono::steady_clock::now();  // (on one thread the passes may run first)

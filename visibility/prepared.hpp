@@ -5,6 +5,7 @@
 #include <chrono>
 #include <cstdint>
 #include <memory>
+#include <mutex>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -34,6 +35,8 @@ struct VisibilitySorter::Prepared {
   std::vector<std::int32_t> across;            // per cell face (topology order): the cell across a shared face, or -1
   std::vector<std::int32_t> split_faces;       // the shared faces whose face_b side is a split quad
   bool all_tetrahedra = false;                 // then cell c's faces start at 4 c
+  mutable std::once_flag acyclic_checked;      // VisibilitySorter::acyclic, on its first call
+  mutable bool acyclic = false;
   // Boundary faces off the convex hull as triangles (quads split by the diagonal from their lowest
   // id), outward, over the points they use (indices into boundary_point, so that a view projects
   // each point once).

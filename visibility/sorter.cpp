@@ -10,9 +10,13 @@
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
+#include <tbb/parallel_reduce.h>
+
+#include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 
 #include "base/error.hpp"
 #include "base/timing.hpp"
+#include "grid/cell_type.hpp"
 #include "grid/tetrahedralize.hpp"
 #include "visibility/image_faces.hpp"
 
@@ -258,6 +262,42 @@ bool VisibilitySorter::Prepared::face_triangle(std::size_t f, std::int64_t tri[3
 VisibilitySorter::~VisibilitySorter() = default;
 VisibilitySorter::VisibilitySorter(VisibilitySorter&&) noexcept = default;
 std::int64_t VisibilitySorter::cells() const { return p_->mesh.n_cells; }
+
+namespace {
+
+// Whether the tetrahedra are Delaunay: across every shared face, the far vertex of face_b's cell
+// is not inside face_a's circumsphere (on it is allowed: a box's cubes split in six). Parallel.
+bool locally_delaunay(const VisibilitySorter::Prepared& p) {
+  using K = CGAL::Exact_predicates_inexact_constructions_kernel;
+  const auto point = [&](std::int64_t id) {
+    const glm::dvec3 x = p.point(id);
+    return K::Point_3(x.x, x.y, x.z);
+  };
+  const FaceDef* faces = cell_def(CellType::Tetra).face;
+  return tbb::parallel_reduce(
+      tbb::blocked_range<std::size_t>(0, p.face_a.size(), 4096), true,
+      [&](const tbb::blocked_range<std::size_t>& r, bool ok) {
+        for (std::size_t f = r.begin(); ok && f < r.end(); ++f) {
+          const std::int64_t *a = p.mesh.cell(p.face_a[f]), *b = p.mesh.cell(p.face_b[f]);
+          const FaceDef& shared = faces[p.local_b[f]];
+          const int far = 6 - shared.v[0] - shared.v[1] - shared.v[2];  // local vertices 0..3 sum to 6
+          const K::Point_3 x0 = point(a[0]), x1 = point(a[1]), x2 = point(a[2]), x3 = point(a[3]);
+          ok = CGAL::orientation(x0, x1, x2, x3) != CGAL::COPLANAR &&
+               CGAL::side_of_bounded_sphere(x0, x1, x2, x3, point(b[far])) != CGAL::ON_BOUNDED_SIDE;
+        }
+        return ok;
+      },
+      [](bool x, bool y) { return x && y; });
+}
+
+}  // namespace
+
+bool VisibilitySorter::acyclic() const {
+  std::call_once(p_->acyclic_checked,
+                 [&] { p_->acyclic = p_->all_tetrahedra && p_->split_faces.empty() && locally_delaunay(*p_); });
+  return p_->acyclic;
+}
+
 bool VisibilitySorter::convex_boundary() const { return p_->convex; }
 
 ViewFrame view_frame(const VisibilitySorter::Prepared& p, const SortView& view) {

@@ -97,7 +97,10 @@ ViewOrder SplittingSorter::sort(SortMethod method, const SortView& view, ViewRel
                                   : std::vector<char>(static_cast<std::size_t>(mesh_.n_cells), 0);
   if (mode_ == Tetrahedralize::none || out.problem_cells == 0) {
     out.mesh = base_mesh();
-    out.sorted = out.mesh->sorter->sort(method, view, relations);  // (a split mesh has split quads: no relations)
+    // Relations only where no cell folds: whole cells a ray may cross more than twice (none mode)
+    // make MPVO's order depend on which of its linear extensions is taken (and a split mesh has
+    // split quads, which relate through lists).
+    out.sorted = out.mesh->sorter->sort(method, view, out.problem_cells == 0 ? relations : nullptr);
   } else {
     out.mesh = split_for(problem);
     out.sorted = out.mesh->sorter->sort(method, view);

@@ -46,7 +46,7 @@ class SplittingSorter {
   SplittingSorter(const MeshView& mesh, Tetrahedralize mode);
   ~SplittingSorter();
   // Thread-safe; the last view's split mesh is kept and reused while the problem cells stay the same.
-  // `relations`: as VisibilitySorter::sort's, where the view splits no cell.
+  // `relations`: as VisibilitySorter::sort's, where no cell folds in this view (none split).
   ViewOrder sort(SortMethod method, const SortView& view, ViewRelations* relations = nullptr) const;
   Tetrahedralize mode() const { return mode_; }
   const RecentredPoints& points() const { return *points_; }
