@@ -27,6 +27,7 @@ bool order_tiles(TileBins& bins, const ViewRelations& relations, std::int64_t n_
   tbb::enumerable_thread_specific<TileScratch> scratch;
   std::atomic<bool> ordered{true};
   tbb::parallel_for(std::size_t(0), tiles, [&](std::size_t t) {
+    if (!ordered.load(std::memory_order_relaxed)) return;  // a tile stalled: the whole mesh is sorted instead
     TileScratch& s = scratch.local();
     s.member.resize((static_cast<std::size_t>(n_cells) + 63) / 64, 0);
     std::size_t* const cells = bins.items.data() + bins.first[t];

@@ -223,18 +223,15 @@ TEST(Tiles, EachTileOrderingItsOwnCellsGivesTheSamePicture) {
 
 // A tile whose relations hold a visibility cycle hands the frame back to the sort of the whole
 // mesh, which breaks it. The canonical tetrahedra of a box of hexahedra whose inner corners are
-// moved (valid cells, a convex boundary) are not Delaunay, and MPVO meets cycles in 11 of these
-// 20 views. `auto` never takes the tiles' orders on such a mesh.
+// moved (valid cells, a convex boundary) are not Delaunay, and MPVO meets cycles within a tile in
+// more than 5 of these 20 views. `auto` never takes the tiles' orders on such a mesh.
 TEST(Tiles, ATileWithAVisibilityCycleFallsBackToTheWholeOrder) {
   Mesh m = make_curvilinear(
       7, 7, 7,
       [](const glm::dvec3& u) {
         glm::dvec3 p = 2.0 * u - 1.0;
         const auto inside = [](double t) { return t > 1e-9 && t < 1 - 1e-9; };
-        const auto h = [](double x) { return std::sin(x) * 43758.5453 - std::floor(std::sin(x) * 43758.5453) - 0.5; };
-        if (inside(u.x) && inside(u.y) && inside(u.z))
-          p += 0.2 * glm::dvec3(h(12.9898 * u.x + 78.233 * u.y + 37.719 * u.z),
-                                h(39.35 * u.x + 11.13 * u.y + 83.16 * u.z), h(73.16 * u.x + 52.24 * u.y + 9.15 * u.z));
+        if (inside(u.x) && inside(u.y) && inside(u.z)) p += 0.1 * test::jitter(u);
         return p;
       },
       false);

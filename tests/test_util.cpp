@@ -117,8 +117,6 @@ ProjectionOptions with_method(ProjectionMethod method, SortMethod sort) {
   return o;
 }
 
-namespace {
-
 // A deterministic jitter in [-1, 1]^3 per grid point.
 glm::dvec3 jitter(const glm::dvec3& u) {
   auto h = [](double x) {
@@ -129,7 +127,6 @@ glm::dvec3 jitter(const glm::dvec3& u) {
           h(73.156 * u.x + 52.235 * u.y + 9.151 * u.z)};
 }
 
-}  // namespace
 
 Mesh warped_hexahedra(int n) {
   const double cell = 2.0 / n;

@@ -26,6 +26,9 @@ class TempDir {
   std::filesystem::path path_;
 };
 
+// A deterministic jitter in [-1, 1]^3 per grid point (a hash of its position).
+glm::dvec3 jitter(const glm::dvec3& u);
+
 // The Delaunay tetrahedra (grid/read_mesh's point clouds, CGAL) of the cube [-1, 1]^3's corners
 // and `points` random points inside it, each with a random scalar: a convex, irregular mesh. The
 // cloud's file is written into `dir`.
