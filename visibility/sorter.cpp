@@ -293,8 +293,7 @@ bool locally_delaunay(const VisibilitySorter::Prepared& p) {
 }  // namespace
 
 bool VisibilitySorter::acyclic() const {
-  std::call_once(p_->acyclic_checked,
-                 [&] { p_->acyclic = p_->all_tetrahedra && p_->split_faces.empty() && locally_delaunay(*p_); });
+  std::call_once(p_->acyclic_checked, [&] { p_->acyclic = p_->convex && p_->all_tetrahedra && locally_delaunay(*p_); });
   return p_->acyclic;
 }
 
