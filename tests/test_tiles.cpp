@@ -156,12 +156,13 @@ TEST(Tiles, LargeTetrahedraByTheFanAsByTheirTriangles) {
 // Each tile ordering its own cells (parallel/tile_orders.hpp) gives the same bits as one order of
 // every cell, on convex Delaunay meshes of tetrahedra (a box; random points, irregular; a grid
 // graded towards one face: big cells behind small ones), where no view makes a cycle, in perspective and
-// orthographic, with the eye outside and inside, for several tile heights and thread counts; with
-// transparent cells (not drawn, kept in the relations) and front to back. A mesh whose boundary
+// orthographic, with the eye outside and inside, for two tile heights and thread counts; front to
+// back with transparent cells (not drawn, kept in the relations). A mesh whose boundary
 // is not convex keeps the global order. `auto` takes the tiles' orders on these meshes from 4 threads.
 TEST(Tiles, EachTileOrderingItsOwnCellsGivesTheSamePicture) {
   const test::TempDir dir;
   // Extinction 0 below -0.2: the cells there are culled from drawing.
+  const TransferFunction base_tf = tiles_tf();
   const TransferFunction clear_below({{-1, {0.1, 0.2, 0.9}}, {0.0, {0.9, 0.9, 0.2}}, {1, {1, 1, 1}}},
                                      {{-1, 0.0}, {-0.2, 0.0}, {0.1, 3.0}, {1, 1.5}});
   std::vector<Camera> cams = test::views_of_unit_mesh(2);
@@ -184,31 +185,32 @@ TEST(Tiles, EachTileOrderingItsOwnCellsGivesTheSamePicture) {
     const double* s = test::field_values(m);
     for (std::size_t v = 0; v < cams.size(); ++v)
       for (ProjectionMethod method : {ProjectionMethod::pt_linear, ProjectionMethod::pt_breakpoints})
-        for (const TransferFunction& tf : {tiles_tf(), clear_below})
-          for (bool front_to_back : {false, true}) {
-            ProjectionOptions o = test::with_method(method);
-            o.early_termination = front_to_back;
-            o.tile_orders = TileOrders::off;
-            ProjectionStats st_global;
-            const Image global = r.render(s, tf, cams[v], 72, 60, o, &st_global);
-            EXPECT_FALSE(st_global.tile_orders);
-            EXPECT_GT(st_global.counters.fragments, 500);
-            o.tile_orders = TileOrders::on;
-            for (int rows : {0, 5})
-              for (int threads : {1, 3}) {
-                o.tile_rows = rows;
-                ProjectionStats st;
-                Image tiles;
-                tbb::task_arena(threads).execute([&] { tiles = r.render(s, tf, cams[v], 72, 60, o, &st); });
-                const std::string what = "mesh " + std::to_string(k) + " view " + std::to_string(v) + " " +
-                                         name_of(method) + " rows " + std::to_string(rows) + " threads " +
-                                         std::to_string(threads) + (front_to_back ? " front to back" : "");
-                EXPECT_TRUE(st.tile_orders) << what;
-                EXPECT_EQ(global.rgba, tiles.rgba) << what;
-                expect_same_counts(st_global, st, what);
-                EXPECT_EQ(st_global.culled_transparent, st.culled_transparent) << what;
-              }
+        for (int variant = 0; variant < 2; ++variant) {  // back to front; front to back with culled cells
+          const bool front_to_back = variant == 1;
+          const TransferFunction& tf = front_to_back ? clear_below : base_tf;
+          ProjectionOptions o = test::with_method(method);
+          o.early_termination = front_to_back;
+          o.tile_orders = TileOrders::off;
+          ProjectionStats st_global;
+          const Image global = r.render(s, tf, cams[v], 72, 60, o, &st_global);
+          EXPECT_FALSE(st_global.tile_orders);
+          EXPECT_GT(st_global.counters.fragments, 500);
+          o.tile_orders = TileOrders::on;
+          for (int run = 0; run < 2; ++run) {  // default tiles on 1 thread; 5-row tiles on 3
+            const int rows = run == 0 ? 0 : 5, threads = run == 0 ? 1 : 3;
+            o.tile_rows = rows;
+            ProjectionStats st;
+            Image tiles;
+            tbb::task_arena(threads).execute([&] { tiles = r.render(s, tf, cams[v], 72, 60, o, &st); });
+            const std::string what = "mesh " + std::to_string(k) + " view " + std::to_string(v) + " " +
+                                     name_of(method) + " rows " + std::to_string(rows) + " threads " +
+                                     std::to_string(threads) + (front_to_back ? " front to back" : "");
+            EXPECT_TRUE(st.tile_orders) << what;
+            EXPECT_EQ(global.rgba, tiles.rgba) << what;
+            expect_same_counts(st_global, st, what);
+            EXPECT_EQ(st_global.culled_transparent, st.culled_transparent) << what;
           }
+        }
   }
   const Mesh wavy = test::wavy_grid(4, true);  // its sides bulge in and out
   const ProjectionRenderer r(wavy.view());
