@@ -2,7 +2,8 @@
 // Each image tile puts its own cells in visibility order (visibility/subset_order.hpp) instead of
 // one sort of the whole mesh before the tiles: no serial stage stands between the face relations
 // (parallel) and the tiles' compositing (parallel). Where the face relations are the whole order
-// (mpvo on a convex mesh; VisibilitySorter::sort with ViewRelations); the same pictures.
+// (mpvo on a convex mesh; VisibilitySorter::sort with ViewRelations); the same pictures where they
+// hold no visibility cycle (VisibilitySorter::acyclic; a cycle within one tile makes it return false).
 #include <cstdint>
 
 #include "composite/tiled_compositor.hpp"

@@ -9,6 +9,8 @@
 // image box holds the pixel centre and its rows reach the tile: the relations among the tile's
 // cells order every pair that overlaps at one of its pixels, as the whole mesh's order does, and
 // each pixel composites the same cells in the same order (docs/sorting.md, "Each tile its order").
+// That holds where the relations have no visibility cycle (VisibilitySorter::acyclic): a cycle
+// spread over several tiles is ordered by each tile apart, where the whole mesh's sort breaks it.
 #include <algorithm>
 #include <cstddef>
 #include <cstdint>
