@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# What a mesh's cell numbering costs, and what renumbering the cells (grid/cell_order.hpp) gives
+# What a mesh's cell numbering costs, and what renumbering the cells (mesh/cell_order.hpp) gives
 # back, measured in one run: the 1M box (box-tets -n 55, bench/scenes/box_1m.json's view) as
 # generated and with its cells shuffled (bench/shuffle_cells.py), rendered by A_EXE (a build
 # without the renumbering, e.g. of the commit before it) and this build's cellproj in turn:

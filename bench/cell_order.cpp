@@ -1,4 +1,4 @@
-// What the cells' renumbering costs (grid/cell_order.hpp) on a mesh file, and CGAL's Hilbert sort
+// What the cells' renumbering costs (mesh/cell_order.hpp) on a mesh file, and CGAL's Hilbert sort
 // of the same centroids beside the Morton keys it was chosen over: the median of `runs` calls of
 // each, in seconds, on the threads oneTBB gives (bench/cell_order.sh).
 #include <algorithm>
@@ -13,9 +13,9 @@
 #include <CGAL/hilbert_sort.h>
 #include <CGAL/property_map.h>
 
-#include "grid/cell_order.hpp"
-#include "grid/geometry.hpp"
-#include "grid/read_mesh.hpp"
+#include "io/read_mesh.hpp"
+#include "mesh/cell_order.hpp"
+#include "mesh/geometry.hpp"
 
 using namespace cellproj;
 

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""Which node counts per element VTK's Exodus reader reads right (grid/exodus_rules.cpp's table).
+"""Which node counts per element VTK's Exodus reader reads right (io/exodus_rules.cpp's table).
 
 Writes the twisted mixed mesh as Exodus (`cellproj generate mixed`), then, for each block and each
 candidate count, pads every element's connectivity with node 1 up to that count (ncdump / ncgen)

@@ -14,9 +14,9 @@
 #include "base/error.hpp"
 #include "optics/colormaps.hpp"
 #include "render/renderer.hpp"
+#include "render/settings_table.hpp"
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
-#include "scene/render_options.hpp"
 
 using namespace cellproj;
 
@@ -202,7 +202,7 @@ cp_status cp_renderer_create(const char* method, cp_renderer** renderer) {
   *renderer = nullptr;
   return guarded([&] {
     auto r = std::make_unique<cp_renderer>();
-    r->options.method = method;
+    set_option(r->options, "method", method);
     make_renderer(settings_from(r->options));  // the method checked now
     *renderer = r.release();
   });
@@ -215,7 +215,9 @@ cp_status cp_renderer_set(cp_renderer* renderer, const char* option, const char*
   return guarded([&] {
     RenderOptions o = renderer->options;
     set_option(o, option, value);
-    refuse_unused(*make_renderer(settings_from(o)), o.given);  // checked now, kept only when good
+    const RenderSettings settings = settings_from(o);
+    make_renderer(settings);  // checked now, kept only when good
+    refuse_unused(settings, o.given);
     renderer->options = std::move(o);
   });
 }

@@ -7,24 +7,26 @@
 #include "composite/fragment.hpp"
 #include "composite/partial_image.hpp"
 #include "distributed/binary_swap.hpp"
-#include "visibility/brick_order.hpp"
+#include "partition/brick_order.hpp"
 
 namespace cellproj {
 
-const char* const kRankStatNames[10] = {"bricks",       "cells",        "load_seconds",      "sort_seconds",
-                                        "render_seconds", "render_cpu_seconds", "wait_seconds", "composite_seconds",
-                                        "bytes_sent",   "bytes_received"};
+const char* const kRankStatNames[10] = {"bricks",         "cells",
+                                        "load_seconds",   "sort_seconds",
+                                        "render_seconds", "render_cpu_seconds",
+                                        "wait_seconds",   "composite_seconds",
+                                        "bytes_sent",     "bytes_received"};
 
 std::vector<double> RankStats::values() const {
-  return {double(bricks), double(cells),     load_seconds,       sort_seconds,       render_seconds,
-          render_cpu_seconds, wait_seconds, composite_seconds, double(bytes_sent), double(bytes_received)};
+  return {double(bricks),     double(cells), load_seconds,      sort_seconds,       render_seconds,
+          render_cpu_seconds, wait_seconds,  composite_seconds, double(bytes_sent), double(bytes_received)};
 }
 
 void check_distributable(const RenderSettings& settings) {
   const char* why = settings.mode == RenderMode::reduction ? "takes one value of each whole ray"
                     : settings.mode == RenderMode::layers  ? "counts crossings along each whole ray"
                     : !settings.iso.surfaces.empty() && settings.iso.mode != IsoMode::ordered
-                        ? "blends iso-surfaces out of depth order (use --iso-mode ordered)"
+                        ? "blends iso-surfaces out of depth order (use setting 'iso-mode' ordered)"
                         : nullptr;
   if (why)
     throw InputError(std::string("a distributed render composites the bricks' pictures in depth order, and this "
@@ -85,7 +87,8 @@ BrickRenderer::BrickRenderer(const Communicator& comm, const PartitionIndex& ind
     LoadedMesh loaded = load_mesh(path, reader);
     if (loaded.mesh.n_cells() != index.bricks[b].cells)
       throw InputError(where(path, "brick " + std::to_string(b) + " has " + std::to_string(loaded.mesh.n_cells()) +
-                                       " cells where " + index.path + " lists " + std::to_string(index.bricks[b].cells)));
+                                       " cells where " + index.path + " lists " +
+                                       std::to_string(index.bricks[b].cells)));
     return std::move(loaded.mesh);
   });
 }

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "distributed/communicator.hpp"
-#include "grid/kd_partition.hpp"
+#include "partition/kd_partition.hpp"
+#include "partition/partition_index.hpp"
 #include "render/renderer.hpp"
-#include "scene/partition_index.hpp"
 
 namespace cellproj {
 
@@ -36,7 +36,8 @@ class BrickRenderer {
  public:
   // This rank's bricks read from the index's files (each read isolated and validated; a missing or
   // corrupt file is an error naming rank and file on every rank).
-  BrickRenderer(const Communicator& comm, const PartitionIndex& index, const std::string& field, const ReadOptions& reader);
+  BrickRenderer(const Communicator& comm, const PartitionIndex& index, const std::string& field,
+                const ReadOptions& reader);
   // Or cut from `mesh`, which every rank holds, into one brick per rank (the k-d tree built here).
   BrickRenderer(const Communicator& comm, const Mesh& mesh, const std::string& field, const std::string& cost_model);
   ~BrickRenderer();

@@ -17,7 +17,7 @@ bool launched_by_mpi() {
 
 MpiSession::MpiSession(int* argc, char*** argv) {
   if (!launched_by_mpi()) return;
-  // The readers run in a forked child (grid/isolated_read): over shared memory and TCP that is safe,
+  // The readers run in a forked child (io/isolated_read): over shared memory and TCP that is safe,
   // and OpenMPI's warning about it would only alarm.
   setenv("OMPI_MCA_mpi_warn_on_fork", "0", 0);
   int provided = 0;

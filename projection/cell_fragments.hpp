@@ -10,7 +10,7 @@
 #include "composite/fragment.hpp"
 #include "composite/gl_corner.hpp"
 #include "composite/opaque_mask.hpp"
-#include "grid/tetrahedralize.hpp"
+#include "mesh/tetrahedralize.hpp"
 #include "optics/transfer_function.hpp"
 #include "projection/method.hpp"
 #include "projection/projected_cell.hpp"
@@ -23,11 +23,11 @@
 namespace cellproj {
 
 struct ProjectionCounters {
-  std::int64_t tets = 0;                    // tetrahedra projected
-  std::int64_t polyhedra = 0;               // other cells projected whole (image-plane subdivision)
-  std::int64_t polygons = 0;                // their front ∩ back polygons (pt-linear and pt-table)
-  std::int64_t layered = 0;                 // polyhedra drawn as a front and a back layer instead (pt-analytic, pt-breakpoints)
-  std::int64_t unmatched = 0;               // their front-layer pixel centres with no back (0 but for rounding)
+  std::int64_t tets = 0;       // tetrahedra projected
+  std::int64_t polyhedra = 0;  // other cells projected whole (image-plane subdivision)
+  std::int64_t polygons = 0;   // their front ∩ back polygons (pt-linear and pt-table)
+  std::int64_t layered = 0;    // polyhedra drawn as a front and a back layer instead (pt-analytic, pt-breakpoints)
+  std::int64_t unmatched = 0;  // their front-layer pixel centres with no back (0 but for rounding)
   std::int64_t subdivisions_looked_up = 0;  // cells whose projection topology was known (the fast path)
   std::int64_t class1 = 0, class2 = 0;
   std::int64_t empty = 0;       // zero projected area (slivers seen edge-on, zero-volume cells)
@@ -46,7 +46,15 @@ struct ProjectionCounters {
     fragments += o.fragments, unmatched += o.unmatched, hidden_fragments += o.hidden_fragments;
   }
 };
-
+// Each counter the report shows, with its key (render/report.hpp): f(key, value).
+template <class F>
+void each_counter(const ProjectionCounters& c, F&& f) {
+  f("polyhedra", c.polyhedra), f("polygons", c.polygons), f("layered_polyhedra", c.layered);
+  f("layer_pixels_unmatched", c.unmatched), f("subdivisions_looked_up", c.subdivisions_looked_up);
+  f("class1_tets", c.class1), f("class2_tets", c.class2), f("empty_tets", c.empty), f("behind_eye_tets", c.behind_eye);
+  f("fragments", c.fragments), f("breakpoint_cells", c.breakpoint_cells), f("direct_cells", c.direct_cells);
+  f("hidden_cells", c.hidden_cells), f("hidden_fragments", c.hidden_fragments);
+}
 
 // Extinction and colour at every point (the corners of the Gouraud-shaded methods), once per frame.
 struct PointOptics {

@@ -188,7 +188,7 @@ struct CellFaces {
 };
 
 // Calls add(a, b, c) for each triangle of the cell's faces, in local vertex numbers, turning
-// outward: a quad splits along the diagonal from its lowest id (grid/tetrahedralize's split_quad).
+// outward: a quad splits along the diagonal from its lowest id (mesh/tetrahedralize's split_quad).
 // Returns the diagonals taken, 2 bits per face.
 template <class Add>
 std::uint64_t split_faces(const CellDef& def, const std::int64_t* ids, Add&& add) {

@@ -13,7 +13,7 @@
 #include <unordered_map>
 #include <vector>
 
-#include "grid/cell_type.hpp"
+#include "mesh/cell_type.hpp"
 #include "projection/projected_tet.hpp"
 
 namespace cellproj {

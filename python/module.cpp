@@ -12,15 +12,15 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
-#include "grid/clip.hpp"
-#include "grid/time_series.hpp"
+#include "io/series_files.hpp"
+#include "mesh/clip.hpp"
 #include "optics/colormaps.hpp"
 #include "python/numpy_mesh.hpp"
 #include "render/renderer.hpp"
+#include "render/settings_table.hpp"
 #include "scene/camera_json.hpp"
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
-#include "scene/render_options.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/transfer_function_json.hpp"
 #include "scene/volume_scene.hpp"
@@ -30,6 +30,9 @@ using namespace cellproj;
 using cellproj::python::NumpyMesh;
 
 namespace {
+
+// A library message as Python says it: setting 'table-size' as the keyword table_size=.
+std::string python_words(const std::string& message) { return spell_settings(message, "", "=", '_'); }
 
 // The keyword arguments as render options (method=, sort=, table_size=, ...).
 RenderOptions options_from(const std::string& method, const py::kwargs& kwargs) {
@@ -117,9 +120,9 @@ PYBIND11_MODULE(_cellproj, m) {
     try {
       if (p) std::rethrow_exception(p);
     } catch (const InputError& e) {
-      input_error(e.what());
+      input_error(python_words(e.what()).c_str());
     } catch (const ResourceError& e) {
-      resource_error(e.what());
+      resource_error(python_words(e.what()).c_str());
     }
   });
 
@@ -237,8 +240,9 @@ PYBIND11_MODULE(_cellproj, m) {
          std::pair<int, int> size, const std::string& field, const std::string& method, int threads,
          const py::kwargs& kwargs) {
         const RenderOptions options = options_from(method, kwargs);
-        const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(options));
-        refuse_unused(*renderer, options.given);
+        const RenderSettings settings = settings_from(options);
+        const std::unique_ptr<Renderer> renderer = make_renderer(settings);
+        refuse_unused(settings, options.given);
         const ImageSize image_size = size_from(size);
         const Field f = mesh.field(field);
         if (!tf) tf = default_tf(mesh, f.name, QuickLook{});
@@ -261,11 +265,12 @@ PYBIND11_MODULE(_cellproj, m) {
          const py::kwargs& kwargs) {
         Scene scene = load_scene(path);
         // Several volumes are drawn by the exact renderer, its default there (render/volume_set.hpp).
-        RenderOptions options = options_from(method.empty() ? scene.volumes.size() > 1 ? "exact" : "pt-breakpoints" : method, kwargs);
+        RenderOptions options =
+            options_from(method.empty() ? scene.volumes.size() > 1 ? "exact" : "pt-breakpoints" : method, kwargs);
         for (const std::string& w : apply_scene_options(scene, options))
-          PyErr_WarnEx(PyExc_UserWarning, w.c_str(), 1);
+          PyErr_WarnEx(PyExc_UserWarning, python_words(w).c_str(), 1);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(options));
-        refuse_unused(*renderer, options.given);
+        refuse_unused(settings_from(options), options.given);
         if (size) std::tie(scene.width, scene.height) = std::tie(size->first, size->second);
         const ImageSize image_size = size_from({scene.width, scene.height});
         if (!field.empty()) scene.field = field;
@@ -274,16 +279,18 @@ PYBIND11_MODULE(_cellproj, m) {
           scene.view = view;
         }
         if (scene.volumes.size() > 1) {  // as `cellproj render` of such a scene
-          if (!field.empty()) throw InputError(path + " has several volumes: give each volume's \"field\" in the scene");
+          if (!field.empty())
+            throw InputError(path + " has several volumes: give each volume's \"field\" in the scene");
           if (time) throw InputError(path + " has several volumes: time series take one mesh");
-          const auto volume_given = std::find(options.given.begin(), options.given.end(), "volume") != options.given.end();
+          const bool volume_given = option_given(options, "volume");
           const RenderSettings settings = settings_from(options);
           py::gil_scoped_release release;
           const VolumeScene volumes(
               scene, [](const SceneVolume& v) { return load_mesh(v.mesh, v.reader); },
               volume_given ? std::optional<bool>(settings.iso.volume) : std::nullopt);
           tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
-          Image image = arena.execute([&] { return render_volumes(volumes.entries(), settings, volumes.camera(), image_size); });
+          Image image =
+              arena.execute([&] { return render_volumes(volumes.entries(), settings, volumes.camera(), image_size); });
           py::gil_scoped_acquire acquire;
           return to_numpy(std::move(image));
         }
@@ -300,7 +307,8 @@ PYBIND11_MODULE(_cellproj, m) {
             TimeSeries series = list_series(scene.mesh, scene.reader);
             const double t = time ? *time : series.frames.front().time;
             locate(series, t);
-            auto player = std::make_unique<SeriesPlayer>(std::move(series), scene.field, scene.reader);
+            auto player =
+                std::make_unique<SeriesPlayer>(std::move(series), scene.field, key_frame_reader(scene.reader));
             PreparedScene prepared = prepare_scene(scene, first_key_frame(*player));
             SeriesFrame frame = player->frame_at(t);
             return Played{std::move(player), std::move(prepared), std::move(frame)};
@@ -316,7 +324,8 @@ PYBIND11_MODULE(_cellproj, m) {
             return to_numpy(render_frame(*renderer, volume, field_of(mesh, p.player->field_name()), p.prepared.tf,
                                          p.prepared.camera, image_size, threads));
           }
-          const Volume volume(p.player->view(p.frame), {/*trusted: key frames are validated*/ !p.player->points_move()});
+          const Volume volume(p.player->view(p.frame),
+                              {/*trusted: key frames are validated*/ !p.player->points_move()});
           const Field f{p.frame.field.data(), static_cast<std::int64_t>(p.frame.field.size()), p.player->field_name()};
           return to_numpy(render_frame(*renderer, volume, f, p.prepared.tf, p.prepared.camera, image_size, threads));
         }
@@ -325,7 +334,8 @@ PYBIND11_MODULE(_cellproj, m) {
           return prepare_scene(scene);
         }();
         // Clipped after preparing, as the CLI does: colours and framing are the whole mesh's.
-        const Mesh mesh = scene.clip.empty() ? std::move(prepared.loaded.mesh) : clip_mesh(prepared.loaded.mesh, scene.clip);
+        const Mesh mesh =
+            scene.clip.empty() ? std::move(prepared.loaded.mesh) : clip_mesh(prepared.loaded.mesh, scene.clip);
         if (mesh.n_cells() == 0)
           throw InputError(where(path, "nothing of the mesh is on the kept side of the clipping planes"));
         const Volume volume(mesh.view(), {/*trusted: load_mesh validated it*/ true});

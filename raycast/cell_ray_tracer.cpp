@@ -12,7 +12,7 @@
 #include <tbb/parallel_for.h>
 #include <glm/geometric.hpp>
 
-#include "grid/geometry.hpp"
+#include "mesh/geometry.hpp"
 
 namespace cellproj {
 namespace {
@@ -115,7 +115,8 @@ glm::dvec3 CellRayTracer::gradient(std::uint32_t tet, const double* scalar) cons
   const glm::dvec3 a = P(t[0]), e1 = P(t[1]) - a, e2 = P(t[2]) - a, e3 = P(t[3]) - a;
   const double d1 = scalar[t[1]] - scalar[t[0]], d2 = scalar[t[2]] - scalar[t[0]], d3 = scalar[t[3]] - scalar[t[0]];
   // grad = (d1 (e2 x e3) + d2 (e3 x e1) + d3 (e1 x e2)) / (e1 . (e2 x e3))
-  return (d1 * glm::cross(e2, e3) + d2 * glm::cross(e3, e1) + d3 * glm::cross(e1, e2)) / glm::dot(e1, glm::cross(e2, e3));
+  return (d1 * glm::cross(e2, e3) + d2 * glm::cross(e3, e1) + d3 * glm::cross(e1, e2)) /
+         glm::dot(e1, glm::cross(e2, e3));
 }
 
 std::vector<glm::dvec3> CellRayTracer::point_gradients(const double* scalar) const {
@@ -221,9 +222,8 @@ void CellRayTracer::View::tile_segments(int tile, const double* scalar, std::vec
       }
   }
   for (int p = 0; p < kTile * kTile; ++p)
-    std::sort(lists[p].begin(), lists[p].end(), [](const RaySegment& a, const RaySegment& b) {
-      return a.t0 < b.t0 || (a.t0 == b.t0 && a.t1 < b.t1);
-    });
+    std::sort(lists[p].begin(), lists[p].end(),
+              [](const RaySegment& a, const RaySegment& b) { return a.t0 < b.t0 || (a.t0 == b.t0 && a.t1 < b.t1); });
 }
 
 void CellRayTracer::trace(const Camera& camera, int width, int height, const double* scalar, const Visitor& visit,
@@ -238,7 +238,9 @@ void CellRayTracer::trace(const Camera& camera, int width, int height, const dou
     auto& pixel_lists = lists.local();
     Ray tile_rays[kTile * kTile];
     view.tile_segments(tile, scalar, pixel_lists.data(), tile_rays);
-    view.for_each_pixel(tile, [&](int i, int j, int px) { visit(i, j, tile_rays[px], pixel_lists[px].data(), pixel_lists[px].size()); });
+    view.for_each_pixel(tile, [&](int i, int j, int px) {
+      visit(i, j, tile_rays[px], pixel_lists[px].data(), pixel_lists[px].size());
+    });
     if (progress) progress(double(++done) / n_tiles);
   });
 }

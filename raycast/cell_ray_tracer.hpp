@@ -1,15 +1,15 @@
 #pragma once
 // Exact traversal of the rays through pixel centres: for every pixel, the segments of the ray in
 // each cell, front to back. Cells other than tetrahedra are traversed through their canonical
-// tetrahedralization (grid/tetrahedralize.hpp), inside which the field is linear.
-#include <cstdint>
+// tetrahedralization (mesh/tetrahedralize.hpp), inside which the field is linear.
 #include <algorithm>
+#include <cstdint>
 #include <functional>
 #include <vector>
 
-#include "grid/geometry.hpp"
-#include "grid/mesh.hpp"
-#include "grid/tetrahedralize.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/tetrahedralize.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {
@@ -60,8 +60,8 @@ class CellRayTracer {
     const CellRayTracer* tracer_;
     PixelRays rays_;
     int width_, height_, tiles_x_, tiles_y_;
-    std::vector<PixelBox> box_;         // per tetrahedron
-    std::vector<std::int64_t> start_;   // per tile, into binned_
+    std::vector<PixelBox> box_;          // per tetrahedron
+    std::vector<std::int64_t> start_;    // per tile, into binned_
     std::vector<std::uint32_t> binned_;  // tetrahedra by tile
   };
 

@@ -32,25 +32,28 @@ bool wants_silhouette(Silhouettes mode, int layer) {
 }  // namespace
 
 void check(const LayerOptions& o) {
-  if (!std::isfinite(o.iso)) throw InputError("--iso: the iso-value must be a finite number");
+  if (!std::isfinite(o.iso)) throw InputError("setting 'iso': the iso-value must be a finite number");
   if (o.layers.empty() || o.layers.front() < 1)
-    throw InputError("--layer: layers are numbered from 1 (the nearest crossing of the iso-value)");
+    throw InputError("setting 'layer': layers are numbered from 1 (the nearest crossing of the iso-value)");
   for (std::size_t k = 1; k < o.layers.size(); ++k)
-    if (o.layers[k] <= o.layers[k - 1]) throw InputError("--layer: give the layers in increasing order, each once");
-  if (o.layers.back() > 1000) throw InputError("--layer: at most layer 1000");
+    if (o.layers[k] <= o.layers[k - 1])
+      throw InputError("setting 'layer': give the layers in increasing order, each once");
+  if (o.layers.back() > 1000) throw InputError("setting 'layer': at most layer 1000");
   if (!o.weights.empty()) {
     if (o.weights.size() != o.layers.size())
-      throw InputError("--layer-weights: " + std::to_string(o.weights.size()) + " weights for " +
+      throw InputError("setting 'layer-weights': " + std::to_string(o.weights.size()) + " weights for " +
                        std::to_string(o.layers.size()) + " layers; give one per layer");
     double sum = 0.0;
     for (double w : o.weights) {
-      if (!(w >= 0.0) || !std::isfinite(w)) throw InputError("--layer-weights: weights must be finite and >= 0");
+      if (!(w >= 0.0) || !std::isfinite(w))
+        throw InputError("setting 'layer-weights': weights must be finite and >= 0");
       sum += w;
     }
-    if (!(sum > 0.0)) throw InputError("--layer-weights: at least one weight must be positive");
+    if (!(sum > 0.0)) throw InputError("setting 'layer-weights': at least one weight must be positive");
   }
   if (!(o.silhouette_epsilon > 0.0 && o.silhouette_epsilon <= 1.0))
-    throw InputError("--silhouette-epsilon: expected a number in (0, 1], got " + std::to_string(o.silhouette_epsilon));
+    throw InputError("setting 'silhouette-epsilon': expected a number in (0, 1], got " +
+                     std::to_string(o.silhouette_epsilon));
 }
 
 int iso_crossings(const RaySegment* seg, std::size_t n, double iso, double tolerance,

@@ -44,6 +44,12 @@ struct LayerStats {
   std::int64_t silhouette_pixels = 0;  // pixels drawn as a silhouette
   int max_crossings = 0;               // the most crossings on one ray
 };
+// Each counter the report shows, with its key (render/report.hpp): f(key, value).
+template <class F>
+void each_counter(const LayerStats& s, F&& f) {
+  f("segments", s.segments), f("crossings", s.crossings), f("rays_with_layer", s.rays_with_layer);
+  f("silhouette_pixels", s.silhouette_pixels), f("max_crossings_on_a_ray", std::int64_t{s.max_crossings});
+}
 
 // Per pixel (row-major from the top), how many times the ray crosses V, and the depth t of the
 // first `keep` crossings (NaN past the count): what layers are drawn from, for tests and callers.

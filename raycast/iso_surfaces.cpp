@@ -20,14 +20,15 @@ namespace cellproj {
 namespace {
 
 void check_unit(double v, const std::string& what) {
-  if (!(v >= 0.0 && v <= 1.0)) throw InputError("--iso: " + what + " must be in [0, 1], got " + std::to_string(v));
+  if (!(v >= 0.0 && v <= 1.0))
+    throw InputError("setting 'iso': " + what + " must be in [0, 1], got " + std::to_string(v));
 }
 
 }  // namespace
 
 void check(const IsoOptions& o) {
   for (const IsoSurface& s : o.surfaces) {
-    if (!std::isfinite(s.value)) throw InputError("--iso: the iso-value must be a finite number");
+    if (!std::isfinite(s.value)) throw InputError("setting 'iso': the iso-value must be a finite number");
     for (int c = 0; c < 3; ++c) check_unit(s.color[c], "colour components");
     check_unit(s.opacity, "the opacity");
   }

@@ -23,6 +23,11 @@ struct IsoStats {
   std::string fit_exponents;           // spectrum-fit: each surface's exponent p, comma-separated
   std::int64_t overlap_pieces = 0;     // several volumes: pieces of ray inside two or more of them
 };
+// Each counter the report shows, with its key (render/report.hpp): f(key, value).
+template <class F>
+void each_counter(const IsoStats& s, F&& f) {
+  f("segments", s.segments), f("surface_crossings", s.surface_crossings);
+}
 
 // The picture of `options` (premultiplied RGBA without background, as every renderer's). The
 // volume, when on, is the exact integral of the transfer function along each segment of the

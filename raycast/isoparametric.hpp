@@ -7,7 +7,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "grid/mesh.hpp"
+#include "mesh/mesh.hpp"
 
 namespace cellproj {
 

@@ -19,6 +19,11 @@ struct ReductionStats {
   std::int64_t segments = 0;  // ray-tetrahedron segments reduced
   std::int64_t rays_hit = 0;  // pixels whose ray meets the mesh
 };
+// Each counter the report shows, with its key (render/report.hpp): f(key, value).
+template <class F>
+void each_counter(const ReductionStats& s, F&& f) {
+  f("segments", s.segments), f("rays_hit", s.rays_hit);
+}
 
 // Exact for the field linear in each canonical tetrahedron: a linear segment's extremes are at its
 // ends and its mean is the mean of its ends, so no sampling step is involved. A pixel whose ray

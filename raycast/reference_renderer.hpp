@@ -7,8 +7,8 @@
 #include <memory>
 #include <string>
 
-#include "grid/cell_order.hpp"
-#include "grid/mesh.hpp"
+#include "mesh/cell_order.hpp"
+#include "mesh/mesh.hpp"
 #include "optics/transfer_function.hpp"
 #include "raycast/cell_ray_tracer.hpp"
 #include "raycast/interpolation.hpp"
@@ -23,6 +23,11 @@ struct ExactStats {
   std::int64_t segments = 0;         // ray-tetrahedron segments integrated
   std::int64_t newton_failures = 0;  // isoparametric points that fell back to the linear value
 };
+// Each counter the report shows, with its key (render/report.hpp): f(key, value).
+template <class F>
+void each_counter(const ExactStats& s, F&& f) {
+  f("segments", s.segments), f("newton_failures", s.newton_failures);
+}
 
 // Prepared once per mesh (its canonical tetrahedra and, for the other cells, their shape; the
 // cells renumbered along a Z-order curve where the mesh's numbering scatters them, LocalCells),

@@ -11,7 +11,9 @@
 namespace cellproj {
 
 std::vector<double> animation_times(const std::string& text) {
-  const auto bad = [&] { return InputError("--animate: expected T0:T1:FRAMES (e.g. 0:2.5:60), got '" + text + "'"); };
+  const auto bad = [&] {
+    return InputError("setting 'animate': expected T0:T1:FRAMES (e.g. 0:2.5:60), got '" + text + "'");
+  };
   const std::size_t a = text.find(':'), b = a == std::string::npos ? a : text.find(':', a + 1);
   if (b == std::string::npos) throw bad();
   double t0 = 0, t1 = 0;
@@ -27,7 +29,7 @@ std::vector<double> animation_times(const std::string& text) {
   }
   if (!std::isfinite(t0) || !std::isfinite(t1)) throw bad();
   if (frames < 1 || frames > 100000)
-    throw InputError("--animate: FRAMES must be in [1, 100000], got " + std::to_string(frames));
+    throw InputError("setting 'animate': FRAMES must be in [1, 100000], got " + std::to_string(frames));
   std::vector<double> times(static_cast<std::size_t>(frames), t0);
   for (int f = 1; f < frames; ++f) times[f] = f == frames - 1 ? t1 : t0 + (t1 - t0) * f / (frames - 1);
   return times;
@@ -47,8 +49,8 @@ PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::ve
   };
   std::unique_ptr<Volume> volume;
   const double* volume_points = nullptr;
-  Mesh clipped_mesh;          // with clipping planes: the clipped cells the volume views
-  ClipWeights clip_weights;   // how a frame's field maps onto the clipped points
+  Mesh clipped_mesh;         // with clipping planes: the clipped cells the volume views
+  ClipWeights clip_weights;  // how a frame's field maps onto the clipped points
   std::vector<double> clipped_field;
   SeriesFrame current = std::move(first);
   const int n = static_cast<int>(times.size());
@@ -68,7 +70,8 @@ PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::ve
           ClipReport report;
           clipped_mesh = clip_mesh(whole, clip, &report, &clip_weights);
           if (clipped_mesh.n_cells() == 0)
-            throw InputError(where(player.series().source, "nothing of the mesh at time " + std::to_string(current.time) +
+            throw InputError(where(player.series().source, "nothing of the mesh at time " +
+                                                               std::to_string(current.time) +
                                                                " is on the kept side of the clipping planes"));
           if (clipped && stats.volumes == 0) *clipped = report;
           volume = std::make_unique<Volume>(clipped_mesh.view(), VolumeOptions{trusted});

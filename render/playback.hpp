@@ -6,15 +6,15 @@
 #include <string>
 #include <vector>
 
-#include "grid/clip.hpp"
-#include "grid/time_series.hpp"
+#include "mesh/clip.hpp"
+#include "mesh/time_series.hpp"
 #include "optics/transfer_function.hpp"
 #include "render/renderer.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {
 
-// "T0:T1:N": N frame times from T0 to T1 inclusive (N = 1: T0); InputError naming --animate.
+// "T0:T1:N": N frame times from T0 to T1 inclusive (N = 1: T0); InputError naming setting 'animate'.
 std::vector<double> animation_times(const std::string& text);
 
 struct PlaybackStats {
@@ -28,13 +28,13 @@ using FrameDone = std::function<void(int frame, Image&& image, const RenderRepor
 // Renders the frames at `times` (the first given as `first`, made by the caller) with `renderer`,
 // frame f seen by camera_of(f); done(f, ...) is called in order. With `prefetch`, frame f + 1 is
 // made on a background thread while frame f renders; without it, in turn. The pictures are the
-// same bits either way. With `clip` planes every frame is clipped (grid/clip.hpp): while the points
+// same bits either way. With `clip` planes every frame is clipped (mesh/clip.hpp): while the points
 // do not move, the cells once and each frame's field mapped onto the clipped points; `clipped`
 // receives what the planes did to the first frame.
 PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::vector<double>& times, bool prefetch,
                           const Renderer& renderer, const TransferFunction& tf,
                           const std::function<Camera(int)>& camera_of, ImageSize size, const FrameDone& done,
-                          const std::function<Progress(int)>& progress_of = {},
-                          const std::vector<ClipPlane>& clip = {}, ClipReport* clipped = nullptr);
+                          const std::function<Progress(int)>& progress_of = {}, const std::vector<ClipPlane>& clip = {},
+                          ClipReport* clipped = nullptr);
 
 }  // namespace cellproj

@@ -4,8 +4,8 @@
 
 #include "base/error.hpp"
 #include "base/timing.hpp"
-#include "grid/tetrahedralize.hpp"
-#include "parallel/projection_renderer.hpp"
+#include "frame/projection_renderer.hpp"
+#include "mesh/tetrahedralize.hpp"
 #include "raycast/iso_layers.hpp"
 #include "raycast/iso_surfaces.hpp"
 #include "raycast/ray_reduction.hpp"
@@ -33,7 +33,7 @@ decltype(auto) timed_preparation(const Volume& volume, RenderReport* report, Get
 }
 
 // How far apart the mesh's consecutive cells lie and whether the renderer drew a copy of them
-// renumbered for locality (grid/cell_order.hpp).
+// renumbered for locality (mesh/cell_order.hpp).
 void add_numbering(RenderReport& r, double spread, bool renumbered) {
   r.add("cell_numbering_spread", spread);
   r.add("cells_renumbered", std::int64_t{renumbered});
@@ -43,14 +43,7 @@ void add_numbering(RenderReport& r, double spread, bool renumbered) {
 void add_splats(RenderReport& r, SmallCells mode, double threshold, const SplatCounters& c) {
   r.add("small_cells_mode", mode);
   r.add("splat_threshold", threshold);
-  r.add({{"small_cells", c.small_cells},
-         {"cells_covering_no_pixel", c.covering_no_pixel},
-         {"splats", c.splats},
-         {"splat_fragments", c.splat_fragments},
-         {"splat_fragments_masked", c.masked_fragments},
-         {"splats_refused_degenerate", c.refused_degenerate},
-         {"splats_refused_inverted", c.refused_inverted},
-         {"splats_behind_eye", c.behind_eye}});
+  r.add_counters(c);
   if (c.refused_degenerate + c.refused_inverted > 0)
     r.warnings.push_back(std::to_string(c.refused_degenerate + c.refused_inverted) + " small cells have no splat (" +
                          std::to_string(c.refused_degenerate) + " of zero volume, " +
@@ -63,14 +56,6 @@ class ProjectionMode final : public Renderer {
     check_options(options);
   }
   std::string name() const override { return name_of(options_.method); }
-  std::vector<std::string> settings_used() const override {
-    std::vector<std::string> used = {"method",          "backend",          "sort",        "gaps",
-                                     "table-size",      "tetrahedralize",   "small-cells", "splat-threshold",
-                                     "splat-prefilter", "cull-transparent", "compositing", "tile-rows",
-                                     "early-termination", "tile-orders"};
-    if (traits(options_.method).gouraud) used.push_back("whole-cells");  // the exact rungs always draw layers
-    return used;
-  }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
@@ -87,7 +72,7 @@ class ProjectionMode final : public Renderer {
   std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
     // Per point: coordinates (twice: recentred), screen positions, optics. Per tetrahedron:
     // connectivity, faces and neighbours, sorter planes and centroids, and 40 for the cells'
-    // renumbered copy (grid/cell_order.hpp; a hexahedron's 73 bytes are within its tetrahedra's).
+    // renumbered copy (mesh/cell_order.hpp; a hexahedron's 73 bytes are within its tetrahedra's).
     return common_bytes(size) + static_cast<std::uint64_t>(v.points) * 120 + static_cast<std::uint64_t>(v.tets) * 360;
   }
 
@@ -95,38 +80,10 @@ class ProjectionMode final : public Renderer {
   void fill(RenderReport& r, const ProjectionStats& p) const {
     r.seconds = p.seconds;
     r.phase_seconds = p.phase_seconds;
-    const ProjectionCounters& c = p.counters;
-    const SortStats& s = p.sort;
     r.add("backend", options_.backend);
-    r.add("sort", s.method);
-    r.add("tetrahedralize", p.tetrahedralize);
     add_numbering(r, p.cell_numbering_spread, p.cells_renumbered);
-    r.add({{"cells_projected", p.cells},
-           {"tets", p.tets},
-           {"problem_cells", p.problem_cells},
-           {"cells_split", p.cells_split},
-           {"cycle_splits", p.cycle_splits},
-           {"cells_culled_transparent", p.culled_transparent},
-           {"polyhedra", c.polyhedra},
-           {"polygons", c.polygons},
-           {"layered_polyhedra", c.layered},
-           {"layer_pixels_unmatched", c.unmatched},
-           {"subdivisions_looked_up", c.subdivisions_looked_up},
-           {"class1_tets", c.class1},
-           {"class2_tets", c.class2},
-           {"empty_tets", c.empty},
-           {"behind_eye_tets", c.behind_eye},
-           {"fragments", c.fragments},
-           {"breakpoint_cells", c.breakpoint_cells},
-           {"direct_cells", c.direct_cells},
-           {"hidden_cells", c.hidden_cells},
-           {"hidden_fragments", c.hidden_fragments},
-           {"face_relations", s.face_relations},
-           {"gap_relations", s.gap_relations},
-           {"gap_pair_tests", s.gap_pair_tests},
-           {"abuffer_runs", s.abuffer_runs},
-           {"cycles", static_cast<std::int64_t>(s.cycles.size())}});
-    r.add("gaps_from", s.method == SortMethod::mpvo_abuffer ? ReportValue(s.gaps_from) : ReportValue());
+    r.add_counters(p);
+    r.add("gaps_from", p.sort.method == SortMethod::mpvo_abuffer ? ReportValue(p.sort.gaps_from) : ReportValue());
     add_fragment_rates(r, p);
     add_splats(r, p.small_cells, p.splat_threshold, p.splat);
     if (p.small_cells == SmallCells::splat) r.add("splat_stencil_tiles", p.splat_stencil_tiles);
@@ -147,10 +104,6 @@ class ProjectionMode final : public Renderer {
     r.add("ns_per_fragment", rated ? ReportValue(1e9 * seconds / n) : ReportValue());
     r.add("fragments_per_second", rated ? ReportValue(n / seconds) : ReportValue());
     const bool stream = rated && p.tiles == 0;
-    r.add("compositing", p.tiles > 0 ? "tiles" : "stream");
-    r.add("tiles", p.tiles);
-    r.add("tile_visits", p.tile_visits);
-    r.add("visibility_order", p.tile_orders ? "per tile" : "global");
     r.add("fragment_traffic_gb_per_second", stream ? ReportValue(72.0 * n / seconds / 1e9) : ReportValue());
     r.add("blend_seconds", stream ? ReportValue(p.blend_seconds) : ReportValue());
   }
@@ -159,22 +112,25 @@ class ProjectionMode final : public Renderer {
     // The software back end ray casts the tetrahedra reaching behind the eye; OpenGL cannot draw
     // them, nor can whole cells be projected there.
     if (p.counters.behind_eye > 0 && (is_opengl(options_.backend) || mode_ == Tetrahedralize::none))
-      r.warnings.push_back(std::to_string(p.counters.behind_eye) +
-                           " cells reach behind the eye and were not drawn (the camera is inside or too close to the "
-                           "mesh); use --backend software with --tetrahedralize problem or all, which ray casts them");
+      r.warnings.push_back(
+          std::to_string(p.counters.behind_eye) +
+          " cells reach behind the eye and were not drawn (the camera is inside or too close to the "
+          "mesh); use setting 'backend' software with setting 'tetrahedralize' problem or all, which ray casts them");
     if (mode_ == Tetrahedralize::none && p.problem_cells > 0)
-      r.warnings.push_back(std::to_string(p.problem_cells) +
-                           " cells have a face folded in this view and were projected whole (--tetrahedralize none): "
-                           "the order and the picture may be wrong there");
+      r.warnings.push_back(
+          std::to_string(p.problem_cells) +
+          " cells have a face folded in this view and were projected whole (setting 'tetrahedralize' none): "
+          "the order and the picture may be wrong there");
     if (p.sort.cycles.empty()) return;
     std::int64_t cells = 0;
     for (const VisibilityCycle& c : p.sort.cycles) cells += c.size;
     const std::size_t n = p.sort.cycles.size();
-    r.warnings.push_back("the visibility sort met " + std::to_string(n) + " visibility cycle" + (n == 1 ? "" : "s") +
-                         " (" + std::to_string(cells) +
-                         " cells) and broke each at one relation: those cells have no back-to-front order (cells that "
-                         "overlap, or warped faces), so the picture may be wrong where they cover each other; --method "
-                         "exact is exact there, and `cellproj info --overlaps` tells whether cells overlap");
+    r.warnings.push_back(
+        "the visibility sort met " + std::to_string(n) + " visibility cycle" + (n == 1 ? "" : "s") + " (" +
+        std::to_string(cells) +
+        " cells) and broke each at one relation: those cells have no back-to-front order (cells that "
+        "overlap, or warped faces), so the picture may be wrong where they cover each other; setting 'method' "
+        "exact is exact there, and the overlaps check of `cellproj info` tells whether cells overlap");
   }
 
   ProjectionOptions options_;
@@ -197,9 +153,6 @@ class ExactMode final : public Renderer {
     check(iso_);
   }
   std::string name() const override { return "exact"; }
-  std::vector<std::string> settings_used() const override {
-    return {"method", "interpolation", "iso", "volume", "iso-mode", "iso-opacity"};
-  }
   void prepare(const Volume& volume) const override { volume.exact(); }
 
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
@@ -211,9 +164,8 @@ class ExactMode final : public Renderer {
     if (report) {
       report->seconds = st.trace_seconds;
       report->phase_seconds = {{"trace and integrate", st.trace_seconds}};
-      report->add("segments", st.segments);
       report->add("interpolation", interpolation_);
-      report->add("newton_failures", st.newton_failures);
+      report->add_counters(st);
     }
     return image;
   }
@@ -238,7 +190,7 @@ class ExactMode final : public Renderer {
       report->add("iso_mode", iso_.mode);
       report->add("iso_opacity", iso_.opacity);
       report->add("volume", std::string(iso_.volume ? "on" : "off"));
-      report->add({{"segments", st.segments}, {"surface_crossings", st.surface_crossings}});
+      report->add_counters(st);
       if (iso_.opacity == IsoOpacity::spectrum_fit) {
         report->add("spectrum_fit_max_error", st.fit_max_error);
         report->add("spectrum_fit_exponents", st.fit_exponents);
@@ -258,7 +210,6 @@ class ReductionMode final : public Renderer {
   std::string name() const override {
     return reduction_ == RayReduction::maximum ? "mip" : reduction_ == RayReduction::minimum ? "minip" : "average";
   }
-  std::vector<std::string> settings_used() const override { return {"method"}; }
   void prepare(const Volume& volume) const override { volume.exact(); }
 
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
@@ -270,7 +221,7 @@ class ReductionMode final : public Renderer {
     if (report) {
       report->seconds = st.seconds;
       report->phase_seconds = {{"trace and reduce", st.seconds}};
-      report->add({{"segments", st.segments}, {"rays_hit", st.rays_hit}});
+      report->add_counters(st);
     }
     return image;
   }
@@ -289,9 +240,6 @@ class LayersMode final : public Renderer {
  public:
   explicit LayersMode(const LayerOptions& options) : options_(options) { check(options); }
   std::string name() const override { return "layers"; }
-  std::vector<std::string> settings_used() const override {
-    return {"method", "iso", "layer", "layer-weights", "silhouettes", "silhouette-epsilon"};
-  }
   void prepare(const Volume& volume) const override { volume.exact(); }
 
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
@@ -305,11 +253,7 @@ class LayersMode final : public Renderer {
       report->phase_seconds = {{"trace and peel", st.seconds}};
       report->add("iso", options_.iso);
       report->add("silhouettes", options_.silhouettes);
-      report->add({{"segments", st.segments},
-                   {"crossings", st.crossings},
-                   {"rays_with_layer", st.rays_with_layer},
-                   {"silhouette_pixels", st.silhouette_pixels},
-                   {"max_crossings_on_a_ray", st.max_crossings}});
+      report->add_counters(st);
     }
     return image;
   }
@@ -326,39 +270,29 @@ class LayersMode final : public Renderer {
 void fill(RenderReport& r, const SlicingStats& st, const SlicingOptions& o) {
   r.seconds = st.seconds;
   r.phase_seconds = st.phase_seconds;
-  r.add("slice_axis", st.axis);
   r.add("backend", o.backend);
   r.add("slice_integral", o.integral);
-  r.add("spacing", st.spacing);
-  r.add({{"slices", st.slices},
-         {"planes_behind_eye", st.planes_behind_eye},
-         {"planes_reused", st.planes_reused},
-         {"polygons", st.polygons},
-         {"clipped_polygons", st.clipped_polygons},
-         {"fragments", st.fragments},
-         {"overlapping_fragments", st.overlapping_fragments},
-         {"cells_between_planes", st.cells_between_planes},
-         {"rays_along_planes", st.rays_along_planes},
-         {"table_layers", st.table_layers}});
+  r.add_counters(st);
   if (!st.gl_renderer.empty()) r.add("gl_renderer", st.gl_renderer);
   add_splats(r, st.small_cells, st.splat_threshold, st.splat);
   if (st.cells_between_planes > 0)
     r.warnings.push_back(std::to_string(st.cells_between_planes) +
                          " cells (or tetrahedra of split cells) lie between two planes and add nothing to the picture; "
-                         "more --slices catch them");
+                         "more setting 'slices' catch them");
   if (st.slices == 0)
     r.warnings.push_back(
         "no slice plane lies in front of the eye: the picture is empty (the camera is inside the "
-        "mesh or beyond it); use --slice-axis view or more --slices");
+        "mesh or beyond it); use setting 'slice-axis' view or more setting 'slices'");
   if (st.rays_along_planes > 0)
     r.warnings.push_back(std::to_string(st.rays_along_planes) +
                          " pixels' rays run along the slice planes or away from them (an axis-aligned stack in "
                          "perspective, the camera near or inside the mesh): their slices are composited out of order; "
-                         "use --slice-axis view or auto");
+                         "use setting 'slice-axis' view or auto");
   if (st.overlapping_fragments > 0)
-    r.warnings.push_back(std::to_string(st.overlapping_fragments) +
-                         " pixels were covered twice by one slice: cells overlap (`cellproj info --overlaps`), and "
-                         "only one of them shows there");
+    r.warnings.push_back(
+        std::to_string(st.overlapping_fragments) +
+        " pixels were covered twice by one slice: cells overlap (the overlaps check of `cellproj info`), and "
+        "only one of them shows there");
 }
 
 class SlicingMode final : public Renderer {
@@ -367,10 +301,6 @@ class SlicingMode final : public Renderer {
     check_options(options);
   }
   std::string name() const override { return "slicing"; }
-  std::vector<std::string> settings_used() const override {
-    return {"method",      "backend",        "slices",      "slice-axis",      "slice-integral", "table-size",
-            "progressive", "tetrahedralize", "small-cells", "splat-threshold", "splat-prefilter"};
-  }
   void prepare(const Volume& volume) const override { volume.slicing(mode_); }
 
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
@@ -423,7 +353,7 @@ void render_progressive(const Volume& volume, const Field& field, const Transfer
                         const RenderSettings& settings, const Camera& camera, ImageSize size,
                         const std::vector<int>& levels, const LevelDone& done) {
   if (settings.mode != RenderMode::slicing)
-    throw InputError("progressive refinement is a slicing feature: use --method slicing");
+    throw InputError("progressive refinement is a slicing feature: use setting 'method' slicing");
   SlicingMode(settings.slicing, settings.tetrahedralize)
       .render_levels(volume, field, tf, camera, size, levels,
                      [&](std::size_t level, int slices, Image&& image, RenderReport&& report) {

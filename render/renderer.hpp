@@ -30,9 +30,6 @@ class Renderer {
  public:
   virtual ~Renderer() = default;
   virtual std::string name() const = 0;  // "pt-breakpoints", "exact", ...
-  // The RenderSettings fields this renderer reads, by their command-line names ("sort",
-  // "interpolation", ...): a front end refuses the others when given explicitly.
-  virtual std::vector<std::string> settings_used() const = 0;
   // Makes the volume's preparation for this renderer now (render() makes it when missing).
   virtual void prepare(const Volume& volume) const = 0;
   // One frame of `field` (Volume::check'ed). Threads: those of the calling task arena.

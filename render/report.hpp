@@ -2,7 +2,6 @@
 // What a render call measured and what the user should know about its picture, in a form any
 // front end can print without knowing the renderer (the CLI's --stats JSON, Python's dict).
 #include <cstdint>
-#include <initializer_list>
 #include <string>
 #include <utility>
 #include <variant>
@@ -20,8 +19,9 @@ namespace cellproj {
 
 // A counter, a time, a text, or a choice the renderer made (printed by its name, scene/names.hpp);
 // monostate where a value does not apply to this frame (JSON null).
-using ReportValue = std::variant<std::monostate, std::int64_t, double, std::string, Backend, SortMethod, GapMethod,
-                                 Tetrahedralize, CellInterpolation, SliceAxis, SliceIntegral, SmallCells, Silhouettes, IsoMode, IsoOpacity>;
+using ReportValue =
+    std::variant<std::monostate, std::int64_t, double, std::string, Backend, SortMethod, GapMethod, Tetrahedralize,
+                 CellInterpolation, SliceAxis, SliceIntegral, SmallCells, Silhouettes, IsoMode, IsoOpacity>;
 
 struct RenderReport {
   double seconds = 0.0;          // the frame, preparation excluded
@@ -31,8 +31,17 @@ struct RenderReport {
   std::vector<std::string> warnings;                        // where the picture may be wrong, and what to do about it
 
   void add(std::string name, ReportValue value) { values.emplace_back(std::move(name), std::move(value)); }
-  void add(std::initializer_list<std::pair<const char*, std::int64_t>> counters) {
-    for (const auto& [name, value] : counters) add(name, value);
+  // A stage's counters, each under its key: the stage lists them once, beside its stats struct
+  // (each_counter(stats, f)), and a new counter is one line there.
+  template <class Stats>
+  void add_counters(const Stats& stats) {
+    each_counter(stats, [this](const char* name, auto value) { add(name, ReportValue(value)); });
+  }
+  // The value of `name`, or nullptr.
+  const ReportValue* find(const std::string& name) const {
+    for (const auto& [n, v] : values)
+      if (n == name) return &v;
+    return nullptr;
   }
 };
 

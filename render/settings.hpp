@@ -1,7 +1,7 @@
 #pragma once
 // What to render with: the mode (a renderer) and its settings, as named fields. Every field has
 // the default a user gets from `cellproj render` without options.
-#include "parallel/projection_options.hpp"
+#include "frame/projection_options.hpp"
 #include "raycast/interpolation.hpp"
 #include "raycast/iso_options.hpp"
 #include "raycast/layer_options.hpp"
@@ -12,7 +12,7 @@
 namespace cellproj {
 
 enum class RenderMode {
-  projection,  // cell projection (parallel/, projection/): `projection.method` picks the rung of the ladder
+  projection,  // cell projection (frame/, projection/): `projection.method` picks the rung of the ladder
   exact,       // the reference ray integrator (raycast/)
   slicing,     // plane slicing (slicing/): cells cut on parallel planes, composited without a sort
   reduction,   // one value per ray (raycast/): maximum, minimum or mean intensity projection

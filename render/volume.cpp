@@ -6,7 +6,7 @@
 #include <mutex>
 
 #include "base/error.hpp"
-#include "parallel/projection_renderer.hpp"
+#include "frame/projection_renderer.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "slicing/slice_renderer.hpp"
 

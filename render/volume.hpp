@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "grid/mesh.hpp"
-#include "grid/validate.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/validate.hpp"
 #include "visibility/methods.hpp"
 
 namespace cellproj {

@@ -13,8 +13,9 @@ namespace cellproj {
 Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettings& settings, const Camera& camera,
                      ImageSize size, RenderReport* report, const Progress& progress) {
   if (settings.mode != RenderMode::exact)
-    throw InputError("several volumes are drawn together by --method exact only: cell projection and slicing order "
-                     "or cut the cells of one mesh, and cells of overlapping meshes cannot be ordered as whole cells");
+    throw InputError(
+        "several volumes are drawn together by setting 'method' exact only: cell projection and slicing order "
+        "or cut the cells of one mesh, and cells of overlapping meshes cannot be ordered as whole cells");
   if (volumes.empty()) throw InputError("render_volumes: no volume to draw");
   check(settings.iso);
   std::vector<VolumePart> parts;
@@ -43,7 +44,8 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
     report->add("iso_surfaces", surfaces);
     report->add("iso_mode", settings.iso.mode);
     report->add("iso_opacity", settings.iso.opacity);
-    report->add({{"segments", st.segments}, {"surface_crossings", st.surface_crossings}, {"overlap_pieces", st.overlap_pieces}});
+    report->add_counters(st);
+    report->add("overlap_pieces", st.overlap_pieces);
     if (settings.iso.opacity == IsoOpacity::spectrum_fit) {
       report->add("spectrum_fit_max_error", st.fit_max_error);
       report->add("spectrum_fit_exponents", st.fit_exponents);

@@ -6,8 +6,8 @@
 #include <limits>
 
 #include "base/error.hpp"
-#include "grid/geometry.hpp"
-#include "grid/validate.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/validate.hpp"
 #include "scene/quick_scene.hpp"
 #include "scene/transfer_function_json.hpp"
 

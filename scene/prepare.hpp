@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
-#include "grid/read_mesh.hpp"
-#include "grid/time_series.hpp"
+#include "io/read_mesh.hpp"
+#include "io/series_files.hpp"
 #include "optics/transfer_function.hpp"
 #include "scene/scene_file.hpp"
 #include "view/camera.hpp"

@@ -33,13 +33,13 @@ std::string field_of(const LoadedMesh& loaded, const std::string& field) {
   std::string list;
   for (const auto& f : m.fields) list += (list.empty() ? "" : ", ") + f.name;
   throw InputError(m.fields.empty() ? m.source + ": the mesh has no point fields to render"
-                                    : "--field: " + m.source + " has several fields, give one of: " + list);
+                                    : "setting 'field': " + m.source + " has several fields, give one of: " + list);
 }
 
 // [[s, kappa], ...] for look.opacity over [lo, hi], kappa such that kappa * diagonal is the depth.
 nlohmann::json extinction(const QuickLook& look, double lo, double hi, double diagonal) {
   if (!(look.depth > 0) || !std::isfinite(look.depth))
-    throw InputError("--depth: expected a positive optical depth, got " + std::to_string(look.depth));
+    throw InputError("setting 'depth': expected a positive optical depth, got " + std::to_string(look.depth));
   const double per_length = 1.0 / (diagonal > 0 ? diagonal : 1.0), k = look.depth * per_length;
   if (look.opacity == "ramp") return {{lo, 0.0}, {hi, k}};
   if (look.opacity == "reverse") return {{lo, k}, {hi, 0.0}};
@@ -59,12 +59,12 @@ nlohmann::json extinction(const QuickLook& look, double lo, double hi, double di
         throw std::invalid_argument("bad");
       points.push_back({s, depth * per_length});
     } catch (const std::exception&) {
-      throw InputError("--opacity: expected ramp, reverse, flat or S=DEPTH,S=DEPTH,... (DEPTH >= 0), got '" + item +
-                       "' in '" + t + "'");
+      throw InputError("setting 'opacity': expected ramp, reverse, flat or S=DEPTH,S=DEPTH,... (DEPTH >= 0), got '" +
+                       item + "' in '" + t + "'");
     }
     at = comma + 1;
   }
-  if (points.empty()) throw InputError("--opacity: empty; give ramp, reverse, flat or S=DEPTH,S=DEPTH,...");
+  if (points.empty()) throw InputError("setting 'opacity': empty; give ramp, reverse, flat or S=DEPTH,S=DEPTH,...");
   return points;
 }
 
@@ -74,7 +74,7 @@ nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double 
   try {
     colormap(look.colormap, lo, hi);
   } catch (const InputError& e) {
-    throw InputError(std::string("--colormap: ") + e.what());
+    throw InputError(std::string("setting 'colormap': ") + e.what());
   }
   return {{"color_preset", {{"name", look.colormap}, {"range", {lo, hi}}}},
           {"extinction", extinction(look, lo, hi, diagonal)}};
@@ -90,7 +90,7 @@ Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dve
   if (view.empty()) return frame_box(lo, hi, Projection::Orthographic, {0.6, 0.5, 1.0}, {0, 1, 0}, aspect);
   for (const NamedView& v : kViews)
     if (view == v.name) return frame_box(lo, hi, Projection::Orthographic, v.from, v.up, aspect);
-  throw InputError("--view: unknown view '" + view + "' (known: " + view_names() + ")");
+  throw InputError("setting 'view': unknown view '" + view + "' (known: " + view_names() + ")");
 }
 
 nlohmann::json quick_scene(const LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,

@@ -6,7 +6,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grid/read_mesh.hpp"
+#include "io/read_mesh.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {

@@ -5,12 +5,12 @@
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
-#include <sstream>
 #include <fstream>
+#include <sstream>
 
 #include "base/error.hpp"
 #include "base/file_status.hpp"
-#include "scene/render_options.hpp"
+#include "render/settings_table.hpp"
 
 namespace fs = std::filesystem;
 
@@ -60,26 +60,30 @@ int positive_int(const nlohmann::json& v, const std::string& at, int max, int mi
 }  // namespace
 
 std::vector<std::string> apply_scene_options(const Scene& scene, RenderOptions& options) {
-  const auto& defaults = options.method == "layers" ? scene.layer_options
-                         : options.method == "exact" ? scene.iso_options
-                                                     : std::vector<std::pair<std::string, std::string>>{};
+  const std::string method = option_text(options, "method");
+  const auto& defaults = method == "layers"  ? scene.layer_options
+                         : method == "exact" ? scene.iso_options
+                                             : std::vector<std::pair<std::string, std::string>>{};
   for (const auto& [name, value] : defaults)
-    if (std::find(options.given.begin(), options.given.end(), name) == options.given.end()) {
+    if (!option_given(options, name)) {
       set_option(options, name, value);
-      options.given.erase(std::find(options.given.begin(), options.given.end(), name));  // a default, not the user's word
+      const std::string canonical = find_setting(name)->name;  // set_option knew it
+      options.given.erase(
+          std::find(options.given.begin(), options.given.end(), canonical));  // a default, not the user's word
     }
   std::vector<std::string> warnings;
-  const bool has_iso = std::any_of(scene.iso_options.begin(), scene.iso_options.end(),
-                                   [](const auto& o) { return o.first == "iso"; });
-  if (has_iso && options.method != "exact")
-    warnings.push_back(where(scene.source, "its iso-surfaces are drawn by --method exact; --method " + options.method +
-                                               " draws the volume alone"));
+  const bool has_iso =
+      std::any_of(scene.iso_options.begin(), scene.iso_options.end(), [](const auto& o) { return o.first == "iso"; });
+  if (has_iso && method != "exact")
+    warnings.push_back(where(scene.source, "its iso-surfaces are drawn by setting 'method' exact; setting 'method' " +
+                                               method + " draws the volume alone"));
   return warnings;
 }
 
 ClipPlane parse_clip_plane(const std::string& text) {
   const std::vector<double> v = parse_number_list("clip", text);
-  if (v.size() != 6) throw InputError("--clip: expected x,y,z,nx,ny,nz (a point and the normal), got '" + text + "'");
+  if (v.size() != 6)
+    throw InputError("setting 'clip': expected x,y,z,nx,ny,nz (a point and the normal), got '" + text + "'");
   ClipPlane p{{v[0], v[1], v[2]}, {v[3], v[4], v[5]}};
   check(p);
   return p;
@@ -95,7 +99,7 @@ void parse_size(const std::string& t, int& w, int& h) {
     if (a != x || b != t.size() - x - 1 || w < 1 || h < 1 || w > 16384 || h > 16384)
       throw std::invalid_argument("range");
   } catch (const std::exception&) {
-    throw InputError("--size: expected WxH with W and H in [1, 16384], e.g. 512x512; got '" + t + "'");
+    throw InputError("setting 'size': expected WxH with W and H in [1, 16384], e.g. 512x512; got '" + t + "'");
   }
 }
 
@@ -158,9 +162,9 @@ std::string numbers_text(const nlohmann::json& v, const std::string& at) {
 }
 
 // Render options from a scene, checked now by their parser for `method`, so that a bad value
-// names the scene ("scene.json: layers: --layer: ...").
-void check_options(const std::vector<std::pair<std::string, std::string>>& o, const std::string& method,
-                   bool needs_iso, const std::string& at) {
+// names the scene ("scene.json: layers: setting 'layer': ...").
+void check_options(const std::vector<std::pair<std::string, std::string>>& o, const std::string& method, bool needs_iso,
+                   const std::string& at) {
   RenderOptions check;
   set_option(check, "method", method);
   if (needs_iso) set_option(check, "iso", "0");
@@ -173,8 +177,9 @@ void check_options(const std::vector<std::pair<std::string, std::string>>& o, co
 }
 
 // {"iso": 0.5, "color": [1, 0, 0], "layer": [1, 2], "weights": [2, 1], "silhouettes": "both",
-// "silhouette_epsilon": 0.2} as the options --iso 0.5:1,0,0 --layer 1,2 ...
-std::vector<std::pair<std::string, std::string>> layer_options_from_json(const nlohmann::json& l, const std::string& at) {
+// "silhouette_epsilon": 0.2} as the settings iso 0.5:1,0,0, layer 1,2 ...
+std::vector<std::pair<std::string, std::string>> layer_options_from_json(const nlohmann::json& l,
+                                                                         const std::string& at) {
   if (!l.is_object()) throw InputError(at + ": expected an object");
   only_keys(l, at, {"iso", "color", "layer", "weights", "silhouettes", "silhouette_epsilon"});
   const auto number = [&](const nlohmann::json& v, const std::string& key) { return number_text(v, at + "." + key); };
@@ -187,17 +192,20 @@ std::vector<std::pair<std::string, std::string>> layer_options_from_json(const n
   } else if (l.contains("color")) {
     throw InputError(at + ".color: goes with \"iso\"");
   }
-  if (l.contains("layer")) o.emplace_back("layer", l["layer"].is_number() ? number(l["layer"], "layer") : numbers(l["layer"], "layer"));
+  if (l.contains("layer"))
+    o.emplace_back("layer", l["layer"].is_number() ? number(l["layer"], "layer") : numbers(l["layer"], "layer"));
   if (l.contains("weights")) o.emplace_back("layer-weights", numbers(l["weights"], "weights"));
   if (l.contains("silhouettes")) o.emplace_back("silhouettes", text(l["silhouettes"], at + ".silhouettes"));
-  if (l.contains("silhouette_epsilon")) o.emplace_back("silhouette-epsilon", number(l["silhouette_epsilon"], "silhouette_epsilon"));
+  if (l.contains("silhouette_epsilon"))
+    o.emplace_back("silhouette-epsilon", number(l["silhouette_epsilon"], "silhouette_epsilon"));
   check_options(o, "layers", !l.contains("iso"), at);
   return o;
 }
 
 // The scene's iso-surfaces: "iso": [{"value": V, "color": [r, g, b], "opacity": A}, ...] with
-// "iso_mode", "iso_opacity" and "volume" (true or false), as --iso V:R,G,B,A ... --iso-mode ...
-std::vector<std::pair<std::string, std::string>> iso_options_from_json(const nlohmann::json& j, const std::string& path) {
+// "iso_mode", "iso_opacity" and "volume" (true or false), as the settings iso V:R,G,B,A ..., iso-mode ...
+std::vector<std::pair<std::string, std::string>> iso_options_from_json(const nlohmann::json& j,
+                                                                       const std::string& path) {
   std::vector<std::pair<std::string, std::string>> o;
   each_object(j, "iso", path, "{\"value\": V, \"color\": [r, g, b], \"opacity\": A}", {"value", "color", "opacity"},
               [&](const nlohmann::json& s, const std::string& at) {
@@ -213,7 +221,8 @@ std::vector<std::pair<std::string, std::string>> iso_options_from_json(const nlo
   if (j.contains("iso_mode")) o.emplace_back("iso-mode", text(j["iso_mode"], path + ": iso_mode"));
   if (j.contains("iso_opacity")) o.emplace_back("iso-opacity", text(j["iso_opacity"], path + ": iso_opacity"));
   if (j.contains("volume")) {
-    if (!j["volume"].is_boolean()) throw InputError(path + ": volume: expected true or false, got " + j["volume"].dump());
+    if (!j["volume"].is_boolean())
+      throw InputError(path + ": volume: expected true or false, got " + j["volume"].dump());
     o.emplace_back("volume", j["volume"].get<bool>() ? "on" : "off");
   }
   check_options(o, "exact", false, path);
@@ -249,9 +258,9 @@ SceneVolume volume_from_json(const nlohmann::json& v, const std::string& at, con
   if (v.contains("field")) out.field = text(v["field"], at + ".field");
   if (!v.contains("transfer_function")) throw InputError(at + ": missing \"transfer_function\"");
   out.transfer_function = v["transfer_function"];
-  // Its iso-surfaces and "volume" by the parser of the top-level ones (and of --iso, --volume).
+  // Its iso-surfaces and "volume" by the parser of the top-level ones (and of the settings iso and volume).
   RenderOptions o;
-  o.method = "exact";
+  set_option(o, "method", "exact");
   for (const auto& [name, value] : iso_options_from_json(v, at)) set_option(o, name, value);
   const IsoOptions iso = settings_from(o).iso;
   out.iso = iso.surfaces;
@@ -263,8 +272,9 @@ SceneVolume volume_from_json(const nlohmann::json& v, const std::string& at, con
 
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
-  only_keys(j, path, {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers", "clip", "iso",
-                      "iso_mode", "iso_opacity", "volume", "volumes"});
+  only_keys(j, path,
+            {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers", "clip", "iso", "iso_mode",
+             "iso_opacity", "volume", "volumes"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
@@ -272,10 +282,12 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
     for (const char* key : {"mesh", "reader", "field", "transfer_function", "iso", "volume", "layers"})
       if (j.contains(key))
         throw InputError(path + ": " + key + ": with a \"volumes\" list, give it inside each volume" +
-                         (std::string(key) == "layers" ? " (--method layers draws one mesh)" : ""));
+                         (std::string(key) == "layers" ? " (setting 'method' layers draws one mesh)" : ""));
     each_object(j, "volumes", path, "{\"mesh\": ..., \"transfer_function\": ...}",
                 {"mesh", "reader", "field", "transfer_function", "iso", "volume"},
-                [&](const nlohmann::json& v, const std::string& at) { s.volumes.push_back(volume_from_json(v, at, s.base_dir)); });
+                [&](const nlohmann::json& v, const std::string& at) {
+                  s.volumes.push_back(volume_from_json(v, at, s.base_dir));
+                });
     if (s.volumes.empty()) throw InputError(path + ": volumes: the list is empty");
     const SceneVolume& first = s.volumes.front();
     s.mesh = first.mesh, s.reader = first.reader, s.field = first.field, s.transfer_function = first.transfer_function;

@@ -8,10 +8,10 @@
 #include <glm/vec3.hpp>
 #include <nlohmann/json.hpp>
 
-#include "grid/clip.hpp"
-#include "grid/read_mesh.hpp"
+#include "io/read_mesh.hpp"
+#include "mesh/clip.hpp"
 #include "raycast/iso_options.hpp"
-#include "scene/render_options.hpp"
+#include "render/settings_table.hpp"
 #include "scene/camera_json.hpp"
 #include "view/camera.hpp"
 
@@ -40,9 +40,9 @@ struct Scene {
   glm::dvec3 background{0.0};
   std::string base_dir;  // the scene file's folder
   // The "layers" block as render options by their command-line names ("iso" -> "0.5:1,0,0",
-  // "layer" -> "1,2"): what --method layers draws unless the command line says otherwise.
+  // "layer" -> "1,2"): what method layers draws unless the command line says otherwise.
   std::vector<std::pair<std::string, std::string>> layer_options;
-  // The "iso" list with "iso_mode", "iso_opacity", "volume", as options: what --method exact draws
+  // The "iso" list with "iso_mode", "iso_opacity", "volume", as options: what method exact draws
   // besides the volume unless the command line says otherwise.
   std::vector<std::pair<std::string, std::string>> iso_options;
   std::vector<ClipPlane> clip;  // the mesh clipped by these planes before any method draws it
@@ -56,12 +56,12 @@ Scene load_scene(const std::string& path);
 // The same from a parsed scene: `source` names it in messages, relative paths are taken from `base_dir`.
 Scene scene_from_json(const nlohmann::json& j, const std::string& source, const std::string& base_dir);
 
-// The scene's render options (its "layers" block for --method layers, its "iso" list for exact) as
+// The scene's render options (its "layers" block for method layers, its "iso" list for exact) as
 // defaults of `options`: those the options do not give already, not marked as given. Returns the
 // warnings, such as iso-surfaces a method does not draw.
 std::vector<std::string> apply_scene_options(const Scene& scene, RenderOptions& options);
 
-// "x,y,z,nx,ny,nz": a clipping plane through (x, y, z) with normal (nx, ny, nz); InputError naming --clip.
+// "x,y,z,nx,ny,nz": a clipping plane through (x, y, z) with normal (nx, ny, nz); InputError naming setting 'clip'.
 ClipPlane parse_clip_plane(const std::string& text);
 
 // "WxH" -> width, height; throws InputError.

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "grid/clip.hpp"
+#include "mesh/clip.hpp"
 #include "render/volume_set.hpp"
 #include "scene/prepare.hpp"
 
@@ -16,7 +16,7 @@ namespace cellproj {
 class VolumeScene {
  public:
   // read(volume) reads each mesh (e.g. load_mesh). draw_volume, when given, replaces every volume's
-  // "volume" (as --volume). InputError when the clipping planes keep nothing of any volume.
+  // "volume" (as setting volume). InputError when the clipping planes keep nothing of any volume.
   VolumeScene(const Scene& scene, const std::function<LoadedMesh(const SceneVolume&)>& read,
               std::optional<bool> draw_volume = std::nullopt);
   VolumeScene(const VolumeScene&) = delete;  // entries point into it
@@ -24,7 +24,7 @@ class VolumeScene {
 
   const std::vector<VolumeEntry>& entries() const { return entries_; }  // the volumes clipping kept
   const Camera& camera() const { return prepared_.camera; }
-  const PreparedVolumes& prepared() const { return prepared_; }  // every volume, in the scene's order
+  const PreparedVolumes& prepared() const { return prepared_; }        // every volume, in the scene's order
   const std::vector<ClipReport>& clipped() const { return clipped_; }  // per volume, in the scene's order
   const std::vector<std::string>& warnings() const { return prepared_.warnings; }
 

@@ -6,8 +6,8 @@
 
 #include <tbb/parallel_for.h>
 
-#include "grid/tetrahedralize.hpp"
-#include "grid/topology.hpp"
+#include "mesh/tetrahedralize.hpp"
+#include "mesh/topology.hpp"
 #include "view/raster.hpp"
 
 namespace cellproj {

@@ -7,14 +7,14 @@
 #include <cstdint>
 #include <vector>
 
-#include "grid/mesh.hpp"
+#include "mesh/mesh.hpp"
 #include "slicing/slice_cut.hpp"
 
 namespace cellproj {
 
 using BoundaryTriangle = std::array<std::int64_t, 3>;
 
-// The mesh's boundary faces (grid/topology, seams glued) as triangles, quads split by their
+// The mesh's boundary faces (mesh/topology, seams glued) as triangles, quads split by their
 // canonical diagonal.
 std::vector<BoundaryTriangle> boundary_triangles(const MeshView& mesh);
 

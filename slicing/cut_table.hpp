@@ -1,11 +1,11 @@
 #pragma once
 // Where a plane cuts a cell (Yagel et al. 1996, the marching-cubes idea for one plane): for each
 // cell type and each set of its vertices below the plane, the edges the plane crosses, in order
-// around the section polygon. Built once from the cell's faces (grid/cell_type), so it holds for
+// around the section polygon. Built once from the cell's faces (mesh/cell_type), so it holds for
 // every supported type.
 #include <cstdint>
 
-#include "grid/cell_type.hpp"
+#include "mesh/cell_type.hpp"
 
 namespace cellproj {
 

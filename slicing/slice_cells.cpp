@@ -2,7 +2,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "grid/tetrahedralize.hpp"
+#include "mesh/tetrahedralize.hpp"
 
 namespace cellproj {
 namespace {

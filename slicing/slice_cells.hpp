@@ -1,13 +1,13 @@
 #pragma once
 // The cells slicing cuts, made once per mesh. A cell whose faces are planar and which is convex is
 // cut whole: each plane gives one convex polygon. Any other cell (a warped quadrilateral face, a
-// concave hexahedron) is cut as its canonical tetrahedra (grid/tetrahedralize), which split each
+// concave hexahedron) is cut as its canonical tetrahedra (mesh/tetrahedralize), which split each
 // shared face as the neighbour does, so the sections of neighbours still meet edge to edge.
 #include <cstdint>
 #include <vector>
 
-#include "grid/geometry.hpp"
-#include "grid/mesh.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/mesh.hpp"
 #include "visibility/methods.hpp"
 
 namespace cellproj {

@@ -8,7 +8,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "grid/geometry.hpp"
+#include "mesh/geometry.hpp"
 #include "slicing/slicing_options.hpp"
 #include "view/camera.hpp"
 

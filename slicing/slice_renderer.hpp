@@ -9,9 +9,9 @@
 #include <utility>
 #include <vector>
 
-#include "grid/cell_order.hpp"
-#include "grid/geometry.hpp"
-#include "grid/mesh.hpp"
+#include "mesh/cell_order.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/mesh.hpp"
 #include "optics/transfer_function.hpp"
 #include "slicing/boundary_crossings.hpp"
 #include "slicing/slice_cells.hpp"
@@ -43,6 +43,15 @@ struct SlicingStats {
   std::vector<std::pair<std::string, double>> phase_seconds;  // table, cut, scan convert, composite
   double seconds = 0.0;
 };
+// Each value of a slicing frame the report shows, with its key (render/report.hpp): f(key, value).
+template <class F>
+void each_counter(const SlicingStats& s, F&& f) {
+  f("slice_axis", s.axis), f("spacing", s.spacing), f("slices", s.slices), f("planes_behind_eye", s.planes_behind_eye);
+  f("planes_reused", s.planes_reused), f("polygons", s.polygons), f("clipped_polygons", s.clipped_polygons);
+  f("fragments", s.fragments), f("overlapping_fragments", s.overlapping_fragments);
+  f("cells_between_planes", s.cells_between_planes), f("rays_along_planes", s.rays_along_planes);
+  f("table_layers", s.table_layers);
+}
 
 // One level of progressive refinement, as soon as it is composited: its index in the list, its
 // plane count, the image (the callee's to keep) and its stats.

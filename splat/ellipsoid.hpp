@@ -6,8 +6,8 @@
 #include <glm/mat3x3.hpp>
 #include <glm/vec3.hpp>
 
-#include "grid/cell_type.hpp"
-#include "grid/geometry.hpp"
+#include "mesh/cell_type.hpp"
+#include "mesh/geometry.hpp"
 
 namespace cellproj {
 

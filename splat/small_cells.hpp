@@ -24,5 +24,13 @@ struct SplatCounters {
   std::int64_t behind_eye = 0;          // splats centred at or behind the eye
   void add(const SplatCounters& o);
 };
+// Each counter with its report key (render/report.hpp), in one place: f(key, value).
+template <class F>
+void each_counter(const SplatCounters& c, F&& f) {
+  f("small_cells", c.small_cells), f("cells_covering_no_pixel", c.covering_no_pixel), f("splats", c.splats);
+  f("splat_fragments", c.splat_fragments), f("splat_fragments_masked", c.masked_fragments);
+  f("splats_refused_degenerate", c.refused_degenerate), f("splats_refused_inverted", c.refused_inverted);
+  f("splats_behind_eye", c.behind_eye);
+}
 
 }  // namespace cellproj

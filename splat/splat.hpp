@@ -13,8 +13,8 @@
 #include <glm/vec3.hpp>
 
 #include "composite/fragment.hpp"
-#include "grid/cell_type.hpp"
-#include "grid/geometry.hpp"
+#include "mesh/cell_type.hpp"
+#include "mesh/geometry.hpp"
 #include "optics/transfer_function.hpp"
 #include "splat/ellipsoid.hpp"
 #include "splat/small_cells.hpp"

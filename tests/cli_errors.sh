@@ -80,9 +80,9 @@ expect 0 "warning: the visibility sort met 1 visibility cycle \(3 cells\) .* --m
 expect 0 "overlapping cells: none" -- info "$tmp/box.vtu" --overlaps
 printf '# vtk DataFile Version 3.0\nx\nASCII\nDATASET UNSTRUCTURED_GRID\nPOINTS 8 double\n0 0 0 1 0 0 0 1 0 0.2 0.2 1 0 0 0.5 1 0 0.5 0 1 0.5 0.3 0.3 -0.5\nCELLS 2 10\n4 0 1 2 3\n4 4 6 5 7\nCELL_TYPES 2\n10 10\n' > "$tmp/overlap.vtk"
 expect 0 "WARNING: cells overlap in 1 pair \(first: cells 0 and 1\)" -- info "$tmp/overlap.vtk" --overlaps
-expect 2 "--backend does not apply to --method exact, which reads --method, --interpolation" -- render "$tmp/ok.json" --method exact --backend opengl
+expect 2 "--backend does not apply to --method exact, which reads --method, .*--interpolation" -- render "$tmp/ok.json" --method exact --backend opengl
 expect 2 "--interpolation does not apply to --method pt-breakpoints, which reads .*--tetrahedralize" -- render "$tmp/ok.json" --interpolation canonical-tets
-expect 2 "unknown --tetrahedralize 'some' \(known: problem, all, none\)" -- render "$tmp/ok.json" --tetrahedralize some
+expect 2 "--tetrahedralize: unknown tetrahedralize mode 'some' \(known: problem, all, none\)" -- render "$tmp/ok.json" --tetrahedralize some
 expect 2 "--tetrahedralize does not apply to --method exact" -- render "$tmp/ok.json" --method exact --tetrahedralize all
 if [ "$gl" = ON ]; then
   expect 2 "OpenGL back ends draw pt-linear and pt-table only, not pt-breakpoints" -- render "$tmp/ok.json" --backend opengl
@@ -120,7 +120,7 @@ grep -q '"sort":"mpvo".*"violations":0' "$tmp/out" || { echo "FAIL: mpvo on a bo
 # A twisted mixed mesh: its problem cells are split per view and mpvo-abuffer's order has no violation.
 "$exe" generate mixed -n 6 -o "$tmp/mixed.vtu" >/dev/null || { echo "FAIL: generate mixed"; failed=$((failed+1)); }
 expect 0 '"problem_cells":[0-9]+.*"violations":0,' -- sortbench "$tmp/mixed.vtu" --views 3 --size 48x48 --sorts mpvo-abuffer --projection persp --check --json
-expect 2 "unknown --tetrahedralize 'half'" -- sortbench "$tmp/mixed.vtu" --tetrahedralize half
+expect 2 "unknown tetrahedralize mode 'half'" -- sortbench "$tmp/mixed.vtu" --tetrahedralize half
 # The A-buffer's sweep and its reference (every pixel ordered) find the same gap relations.
 # The overlaps' relations hold every one the A-buffer finds (auto: no view of this mesh needs the A-buffer).
 "$exe" sortbench "$tmp/mixed.vtu" --views 3 --size 96x96 --sorts mpvo-abuffer --gaps abuffer --json > "$tmp/sweep.json" &&
@@ -143,8 +143,8 @@ expect 2 "--slices must be at least 1, not 0" -- render "$tmp/ok.json" --method 
 expect 2 "--slices must be at least 1, not -2" -- render "$tmp/ok.json" --method slicing --slices -2
 expect 2 "slices" -- render "$tmp/ok.json" --method slicing --slices 1.5
 expect 2 "--slices 600 is more than a 32x24 image can use: at most 512" -- render "$tmp/ok.json" --method slicing --slices 600 --size 32x24
-expect 2 "unknown --slice-axis 'w' \(known: auto, view, x, y, z\)" -- render "$tmp/ok.json" --method slicing --slice-axis w
-expect 2 "unknown --slice-integral 'midpoint'" -- render "$tmp/ok.json" --method slicing --slice-integral midpoint
+expect 2 "--slice-axis: unknown slice axis 'w' \(known: auto, view, x, y, z\)" -- render "$tmp/ok.json" --method slicing --slice-axis w
+expect 2 "--slice-integral: unknown slice integral 'midpoint'" -- render "$tmp/ok.json" --method slicing --slice-integral midpoint
 expect 2 "--slices does not apply to --method pt-table" -- render "$tmp/ok.json" --method pt-table --slices 8
 expect 2 "--sort does not apply to --method slicing" -- render "$tmp/ok.json" --method slicing --sort mpvo
 expect 2 "--progressive: expected an integer, got 'x'" -- render "$tmp/ok.json" --method slicing --progressive 8,x
@@ -154,7 +154,7 @@ expect 0 "wrote .*prog-32.png" -- render "$tmp/ok.json" --method slicing --progr
 [ -s "$tmp/prog-8.png" ] && [ -s "$tmp/prog-32.png" ] && grep -q '"planes_reused":8' "$tmp/err" || { echo "FAIL: --progressive files or reuse"; failed=$((failed+1)); }
 expect 0 '"slice_axis":"view".*"slices":16' -- render "$tmp/ok.json" --method slicing --slices 16 --slice-axis view --slice-integral sampled --size 32x24 -o "$tmp/sl.png" --stats
 # Splatting small cells.
-expect 2 "unknown --small-cells 'blur' \(known: splat, draw, skip\)" -- render "$tmp/ok.json" --small-cells blur
+expect 2 "--small-cells: unknown small-cells mode 'blur' \(known: splat, draw, skip\)" -- render "$tmp/ok.json" --small-cells blur
 expect 2 "--splat-threshold must be a finite number >= 0, not -1" -- render "$tmp/ok.json" --splat-threshold -1 --size 32x24
 expect 2 "pre-filter must be 0.3 to 4 pixels, not 0.1" -- render "$tmp/ok.json" --splat-prefilter 0.1 --size 32x24
 expect 2 "--small-cells does not apply to --method exact" -- render "$tmp/ok.json" --method exact --small-cells splat
@@ -205,7 +205,7 @@ done
 expect 2 "^--max-memory: expected a finite number > 0" -- info "$tmp/box.vtu" --max-memory 0
 expect 2 "^--scale: expected a finite number > 0 \\(a gain\\), got 'nan'" -- compare "$tmp/ok.npy" "$tmp/ok.npy" --scale nan
 expect 2 "^--time-step: Value -1 not in range 0 to 2147483647" -- info "$tmp/box.vtu" --time-step -1
-expect 2 "--splat-threshold must be a finite number >= 0, not nan" -- render "$tmp/box.vtu" --splat-threshold nan
+expect 2 "--splat-threshold: must be a finite number >= 0, not nan" -- render "$tmp/box.vtu" --splat-threshold nan
 expect 2 "^--format: unknown format 'nope' \\(known: vtk-xml, vtk-legacy, exodus" -- info "$tmp/box.vtu" --format nope
 expect 2 "generate: unknown kind 'nope'; the kinds are: box" -- generate nope -o "$tmp/nope.vtu"
 expect 0 "wrote .*q.json" -- scene "$tmp/box.vtu" -o "$tmp/q/q.json" --view +y --colormap viridis --size 40x30
@@ -225,7 +225,7 @@ expect 0 "wrote .*layers" -- render "$tmp/box.vtu" --method layers --iso 0.5:1,0
 expect 0 "wrote" -- render "$tmp/box.vtu" --method exact --iso 0.5:1,0,0,0.4 --iso 0.8:0,0,1,0.4 --iso-mode oit4 --volume off --size 32x24 -o "$tmp/iso.png"
 expect 2 "--iso does not apply to --method pt-breakpoints" -- render "$tmp/box.vtu" --iso 0.5
 expect 2 "--iso: .*opacity must be in \[0, 1\]" -- render "$tmp/box.vtu" --method exact --iso 0.5:1,0,0,2
-expect 2 "unknown --iso-mode 'oit5'" -- render "$tmp/box.vtu" --method exact --iso 0.5 --iso-mode oit5
+expect 2 "--iso-mode: unknown iso-surface mode 'oit5'" -- render "$tmp/box.vtu" --method exact --iso 0.5 --iso-mode oit5
 expect 2 "draws the crossings of one iso-value" -- render "$tmp/box.vtu" --method layers --iso 0.5 --iso 0.7
 # A scene's iso list: what exact draws; other methods warn that they draw the volume alone.
 echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "iso": [{"value": 0.5, "color": [1, 0, 0], "opacity": 0.4}], "iso_mode": "oit3", "volume": false}' > "$tmp/isoscene.json"

@@ -11,6 +11,9 @@ cmake -S "$src/examples" -B "$work" -DCMAKE_PREFIX_PATH="$prefix" -DCMAKE_BUILD_
 cmake --build "$work" -j2 >/dev/null
 "$work/solver_render" "$work/solver.png"
 test -s "$work/solver.png" && test -s "$work/solver_step1.png"
+# A solver links the render stack alone: no file-format library is loaded with it (docs/architecture.md).
+formats=$(ldd "$work/solver_render" | grep -Ei 'vtk|netcdf|cgns|libtet' || true)
+[ -z "$formats" ] || { echo "solver_render loads file-format libraries:"; echo "$formats"; exit 1; }
 "$work/render_c" "$work/render_c.png"
 # Only public headers are installed, and each compiles on its own against the installed tree.
 inc=$prefix/include/cellproj
@@ -19,7 +22,7 @@ internal=$(find "$inc" -name '*.hpp' | grep -E 'cell_fragments|projected_|topolo
 for h in $(cd "$inc" && find . -name '*.hpp' | sed 's|^\./||'); do
   echo "#include \"$h\"" | c++ -std=c++17 -fsyntax-only -I"$inc" -x c++ - || { echo "$h does not compile alone"; exit 1; }
 done
-passed=3
+passed=4
 if [ -n "$python" ] && [ -d "$prefix/lib/python3/dist-packages/cellproj" ]; then
   PYTHONPATH=$prefix/lib/python3/dist-packages "$python" -c "
 import cellproj, sys

@@ -1,4 +1,4 @@
-// Cells renumbered for locality (grid/cell_order.hpp): a structured numbering is judged local and
+// Cells renumbered for locality (mesh/cell_order.hpp): a structured numbering is judged local and
 // left alone, a shuffled one renumbered along a Morton curve; the renumbering keeps every cell,
 // is the same on any thread count, and the renderer draws a shuffled mesh bit for bit as the
 // mesh numbered in order (points keep their numbers, and every ray meets the same cells in the same
@@ -13,8 +13,8 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
-#include "grid/cell_order.hpp"
-#include "grid/generate.hpp"
+#include "mesh/cell_order.hpp"
+#include "mesh/generate.hpp"
 #include "render/renderer.hpp"
 #include "render/volume.hpp"
 #include "test_util.hpp"

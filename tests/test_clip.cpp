@@ -7,12 +7,12 @@
 #include <cmath>
 
 #include "base/error.hpp"
-#include "grid/clip.hpp"
-#include "grid/generate.hpp"
-#include "grid/geometry.hpp"
-#include "grid/tetrahedralize.hpp"
-#include "grid/topology.hpp"
-#include "grid/validate.hpp"
+#include "mesh/clip.hpp"
+#include "mesh/generate.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/tetrahedralize.hpp"
+#include "mesh/topology.hpp"
+#include "mesh/validate.hpp"
 #include "tests/test_util.hpp"
 
 namespace cellproj {
@@ -95,17 +95,20 @@ TEST(Clip, TheWeightsMapAFieldOntoTheClippedPointsAsClippingItDoes) {
   PointField& f = m.add_field("f", "test");
   for (std::int64_t p = 0; p < m.n_points(); ++p) f.values[p] = std::cos(3 * m.view().point(p).x) + p % 7;
   for (int planes = 1; planes <= 3; ++planes) {
-    const std::vector<ClipPlane> all = {{{0.1, 0, 0}, {1, 0.3, 0}}, {{0, 0, 0.2}, {0.2, 0, 1}}, {{0, -0.4, 0}, {0, -1, 0.5}}};
+    const std::vector<ClipPlane> all = {
+        {{0.1, 0, 0}, {1, 0.3, 0}}, {{0, 0, 0.2}, {0.2, 0, 1}}, {{0, -0.4, 0}, {0, -1, 0.5}}};
     const std::vector<ClipPlane> use(all.begin(), all.begin() + planes);
     ClipWeights w;
     const Mesh c = clip_mesh(m, use, nullptr, &w);
     ASSERT_EQ(w.size(), c.n_points());
     const std::vector<double> mapped = w.apply(m.field("f").values);
     double worst = 0.0;
-    for (std::int64_t p = 0; p < c.n_points(); ++p) worst = std::max(worst, std::abs(mapped[p] - c.field("f").values[p]));
+    for (std::int64_t p = 0; p < c.n_points(); ++p)
+      worst = std::max(worst, std::abs(mapped[p] - c.field("f").values[p]));
     EXPECT_LT(worst, 1e-12) << planes << " planes";
     int single = 0;
-    for (std::int64_t p = 0; p < w.size(); ++p) single += w.start[p + 1] - w.start[p] == 1 && w.weight[w.start[p]] == 1.0;
+    for (std::int64_t p = 0; p < w.size(); ++p)
+      single += w.start[p + 1] - w.start[p] == 1 && w.weight[w.start[p]] == 1.0;
     EXPECT_GT(single, 0);
   }
 }

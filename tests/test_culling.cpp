@@ -2,8 +2,8 @@
 // culling work that cannot show): the same bits for every method, small cells splatted too.
 #include <gtest/gtest.h>
 
-#include "grid/generate.hpp"
-#include "parallel/projection_renderer.hpp"
+#include "frame/projection_renderer.hpp"
+#include "mesh/generate.hpp"
 #include "tests/test_util.hpp"
 
 namespace cellproj {

@@ -9,8 +9,8 @@
 
 #include "base/error.hpp"
 #include "composite/opaque_mask.hpp"
-#include "parallel/projection_renderer.hpp"
-#include "scene/names.hpp"
+#include "frame/projection_renderer.hpp"
+#include "render/names.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
@@ -34,7 +34,7 @@ TEST(EarlyTermination, TheMaskTellsWhetherEveryPixelOfABoxIsOpaque) {
   EXPECT_FALSE(m.all(59, 70, 1, 1));
   EXPECT_FALSE(m.all(60, 71, 1, 1));
   EXPECT_FALSE(m.all(60, 70, 0, 1));
-  EXPECT_TRUE(m.all(5, 4, 0, 2));  // an empty box
+  EXPECT_TRUE(m.all(5, 4, 0, 2));            // an empty box
   for (int i = 0; i < 40; ++i) m.set(i, 0);  // row 0: enough opaque pixels, none in the box
   EXPECT_FALSE(m.all(60, 70, 0, 0));
   EXPECT_TRUE(m.all(0, 39, 0, 0));
@@ -51,7 +51,8 @@ TEST(EarlyTermination, WithinTwoMillionthsOfBackToFrontAndTheSameBitsForAnyThrea
       const Mesh m = test::wavy_grid(6, tetrahedra);
       const ProjectionRenderer r(m.view(), tetrahedra ? Tetrahedralize::problem : Tetrahedralize::none);
       const double* s = test::field_values(m, "s");
-      const Camera cams[2] = {test::view_from({0.5, -3, 2}, Projection::Perspective), test::inside_wavy_grid(Projection::Perspective)};
+      const Camera cams[2] = {test::view_from({0.5, -3, 2}, Projection::Perspective),
+                              test::inside_wavy_grid(Projection::Perspective)};
       for (int v = 0; v < (tetrahedra ? 2 : 1); ++v)
         for (ProjectionMethod method :
              {ProjectionMethod::pt_linear, ProjectionMethod::pt_table, ProjectionMethod::pt_breakpoints}) {

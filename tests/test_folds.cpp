@@ -1,4 +1,4 @@
-// The folds of warped quadrilateral faces (grid/face_split, MWSC section 4): found once per mesh,
+// The folds of warped quadrilateral faces (mesh/face_split, MWSC section 4): found once per mesh,
 // they give in every view the cells a ray may cross more than twice, by their definition.
 #include <algorithm>
 #include <array>
@@ -7,9 +7,9 @@
 
 #include <gtest/gtest.h>
 
-#include "grid/face_split.hpp"
-#include "grid/split_topology.hpp"
-#include "grid/topology.hpp"
+#include "mesh/face_split.hpp"
+#include "mesh/split_topology.hpp"
+#include "mesh/topology.hpp"
 #include "test_util.hpp"
 #include "visibility/split_sorter.hpp"
 

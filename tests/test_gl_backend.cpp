@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
-#include "parallel/projection_renderer.hpp"
+#include "frame/projection_renderer.hpp"
+#include "render/names.hpp"
 #include "render/renderer.hpp"
-#include "scene/names.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;

@@ -4,19 +4,19 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cstdio>
 #include <cmath>
+#include <cstdio>
 #include <limits>
 
 #include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
-#include "grid/generate.hpp"
+#include "mesh/generate.hpp"
 #include "raycast/iso_layers.hpp"
 #include "raycast/isoparametric.hpp"
 #include "render/renderer.hpp"
-#include "scene/render_options.hpp"
+#include "render/settings_table.hpp"
 #include "tests/test_util.hpp"
 
 namespace cellproj {
@@ -193,11 +193,12 @@ TEST(IsoLayers, TheHexahedraContourOfTheCanonicalTetsAgainstTheIsoparametricOne)
           }
         }
     }
-    std::printf("shells %d^3 (h = %.4f): %d rays, %d crossings compared, %d rays with a different crossing count; "
-                "depth, canonical tets vs isoparametric: max %.4f (%.2f h), rms %.5f; against the spheres: tets %.4f, "
-                "isoparametric %.4f\n",
-                res, h, compared, crossings, differing, tets_vs_iso, tets_vs_iso / h,
-                std::sqrt(sum2 / std::max(crossings, 1)), tets_vs_sphere, iso_vs_sphere);
+    std::printf(
+        "shells %d^3 (h = %.4f): %d rays, %d crossings compared, %d rays with a different crossing count; "
+        "depth, canonical tets vs isoparametric: max %.4f (%.2f h), rms %.5f; against the spheres: tets %.4f, "
+        "isoparametric %.4f\n",
+        res, h, compared, crossings, differing, tets_vs_iso, tets_vs_iso / h, std::sqrt(sum2 / std::max(crossings, 1)),
+        tets_vs_sphere, iso_vs_sphere);
     EXPECT_GT(crossings, 1000);
     EXPECT_GT(compared, differing * 10);
     EXPECT_LT(tets_vs_iso, 0.3 * h);  // second order in h: the two contours differ well inside a cell
@@ -302,24 +303,24 @@ TEST(IsoLayers, TheSamePictureFromOneAndTwoThreads) {
 
 TEST(IsoLayers, BadOptionsAreRefusedNamingTheOption) {
   const auto refused = [](std::vector<std::pair<std::string, std::string>> given, const std::string& says) {
-    RenderOptions o;
-    for (const auto& [name, value] : given) set_option(o, name, value);
     try {
+      RenderOptions o;
+      for (const auto& [name, value] : given) set_option(o, name, value);  // each value checked as it is set
       settings_from(o);
       ADD_FAILURE() << "accepted; expected: " << says;
     } catch (const InputError& e) {
       EXPECT_NE(std::string(e.what()).find(says), std::string::npos) << e.what();
     }
   };
-  refused({{"method", "layers"}}, "needs --iso");
-  refused({{"method", "layers"}, {"iso", "x"}}, "--iso");
+  refused({{"method", "layers"}}, "needs setting 'iso'");
+  refused({{"method", "layers"}, {"iso", "x"}}, "setting 'iso'");
   refused({{"method", "layers"}, {"iso", "0.5:1,2"}}, "colour");
   refused({{"method", "layers"}, {"iso", "0"}, {"layer", "2,1"}}, "increasing");
   refused({{"method", "layers"}, {"iso", "0"}, {"layer", "0"}}, "numbered from 1");
   refused({{"method", "layers"}, {"iso", "0"}, {"layer", "1,2"}, {"layer-weights", "1"}}, "one per layer");
   refused({{"method", "layers"}, {"iso", "0"}, {"layer-weights", "-1"}}, ">= 0");
-  refused({{"method", "layers"}, {"iso", "0"}, {"silhouettes", "some"}}, "--silhouettes");
-  refused({{"method", "layers"}, {"iso", "0"}, {"silhouette-epsilon", "2"}}, "--silhouette-epsilon");
+  refused({{"method", "layers"}, {"iso", "0"}, {"silhouettes", "some"}}, "setting 'silhouettes'");
+  refused({{"method", "layers"}, {"iso", "0"}, {"silhouette-epsilon", "2"}}, "setting 'silhouette-epsilon'");
   RenderOptions o;
   set_option(o, "method", "layers");
   set_option(o, "iso", "0.25:1,0,0");

@@ -8,11 +8,11 @@
 #include <tbb/task_arena.h>
 
 #include "base/error.hpp"
-#include "grid/generate.hpp"
+#include "mesh/generate.hpp"
 #include "raycast/iso_layers.hpp"
 #include "raycast/iso_surfaces.hpp"
 #include "raycast/reference_renderer.hpp"
-#include "scene/render_options.hpp"
+#include "render/settings_table.hpp"
 #include "tests/test_util.hpp"
 
 namespace cellproj {
@@ -138,10 +138,10 @@ TEST(IsoSurfaces, OptionsAreParsedAndBadOnesRefusedNamingTheOption) {
   EXPECT_EQ(s.iso.mode, IsoMode::oit4);
   EXPECT_FALSE(s.iso.volume);
   const auto refused = [](const std::string& name, const std::string& value, const std::string& says) {
-    RenderOptions bad;
-    set_option(bad, "method", "exact");
-    set_option(bad, name, value);
     try {
+      RenderOptions bad;
+      set_option(bad, "method", "exact");
+      set_option(bad, name, value);
       settings_from(bad);
       ADD_FAILURE() << name << " " << value << " accepted";
     } catch (const InputError& e) {
@@ -150,9 +150,9 @@ TEST(IsoSurfaces, OptionsAreParsedAndBadOnesRefusedNamingTheOption) {
   };
   refused("iso", "0.5:1,0,0,1.5", "opacity must be in [0, 1]");
   refused("iso", "0.5:1,0", "give V, V:R,G,B or V:R,G,B,A");
-  refused("iso-mode", "oit5", "--iso-mode");
-  refused("iso-opacity", "thick", "--iso-opacity");
-  refused("volume", "maybe", "--volume: expected on or off");
+  refused("iso-mode", "oit5", "setting 'iso-mode'");
+  refused("iso-opacity", "thick", "setting 'iso-opacity'");
+  refused("volume", "maybe", "setting 'volume': expected on or off");
 }
 
 }  // namespace

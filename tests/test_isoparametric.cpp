@@ -3,7 +3,7 @@
 
 #include <gtest/gtest.h>
 
-#include "grid/validate.hpp"
+#include "mesh/validate.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "test_util.hpp"
 

@@ -16,9 +16,9 @@
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
-#include "grid/header_counts.hpp"
-#include "grid/netcdf_check.hpp"
-#include "grid/read_mesh.hpp"
+#include "io/header_counts.hpp"
+#include "io/netcdf_check.hpp"
+#include "io/read_mesh.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
@@ -75,7 +75,7 @@ TEST(LibraryCounts, ACgnsZoneBeyondTheMemoryLimitIsRefusedBeforeVtkReadsIt) {
                          "needs about"),
             std::string::npos)
       << message;
-  EXPECT_NE(message.find("more than the 4.0 GiB allowed by --max-memory"), std::string::npos) << message;
+  EXPECT_NE(message.find("more than the 4.0 GiB allowed by setting 'max-memory'"), std::string::npos) << message;
   // A structured zone of 2000^3 vertices.
   write_cgns_zones(path, {{2000, 2000, 2000, 1999, 1999, 1999, 0, 0, 0}});
   EXPECT_NE(read_error(path, 4).find("its header declares 8000000000 points and 7988005999 cells"), std::string::npos)
@@ -157,7 +157,8 @@ TEST(LibraryCounts, AClassicNetcdfHeaderCountingMoreThanTheFileHoldsIsRefusedByC
             std::string::npos);
   // The attribute count follows the dimension "num_nodes" (4 + 12 name bytes + 4) and NC_ATTRIBUTE.
   const std::string message = with(40, std::string("\x7f\x00\x00\x00", 4));
-  EXPECT_NE(message.find("corrupt: its header declares 2130706432 attributes at byte 44"), std::string::npos) << message;
+  EXPECT_NE(message.find("corrupt: its header declares 2130706432 attributes at byte 44"), std::string::npos)
+      << message;
 }
 
 TEST(LibraryCounts, ExodusBlocksWithoutNodesTypeOrShapeShortCoordinatesAndUnnamedResultsAreRefused) {
@@ -167,8 +168,8 @@ TEST(LibraryCounts, ExodusBlocksWithoutNodesTypeOrShapeShortCoordinatesAndUnname
   // without its element type (it looked up a block it had not sorted), and a connectivity not
   // shaped by its block's dimensions (connect1 and connect2 swapped).
   test::TempDir dir;
-  const auto write = [&](const std::string& name, bool nodes, std::size_t coordinates, bool names,
-                         bool typed = true, bool shaped = true) {
+  const auto write = [&](const std::string& name, bool nodes, std::size_t coordinates, bool names, bool typed = true,
+                         bool shaped = true) {
     const std::string path = dir.file(name);
     int id = 0, d_nodes = 0, d_coord = 0, d_blk = 0, d_el = 0, d_per = 0, d_var = 0, v = 0;
     EXPECT_EQ(nc_create(path.c_str(), NC_64BIT_OFFSET | NC_CLOBBER, &id), NC_NOERR);
@@ -193,8 +194,9 @@ TEST(LibraryCounts, ExodusBlocksWithoutNodesTypeOrShapeShortCoordinatesAndUnname
   EXPECT_EQ(write("good.exo", true, 4, true), "");
   EXPECT_NE(write("blocks.exo", false, 4, true).find("blocks.exo: corrupt: 1 element blocks but no nodes"),
             std::string::npos);
-  EXPECT_NE(write("short.exo", true, 3, true).find("short.exo: corrupt: coordinate 'coordx' holds 3 values for 4 nodes"),
-            std::string::npos);
+  EXPECT_NE(
+      write("short.exo", true, 3, true).find("short.exo: corrupt: coordinate 'coordx' holds 3 values for 4 nodes"),
+      std::string::npos);
   EXPECT_NE(write("unnamed.exo", true, 4, false)
                 .find("unnamed.exo: corrupt: it declares 1 result variables ('num_nod_var') but has no 'name_nod_var'"),
             std::string::npos);
@@ -245,12 +247,11 @@ TEST(LibraryCounts, ExodusRepeatedBlockIdsAndNameLengthsOutOfRangeAreRefused) {
   EXPECT_NE(write("zeros.exo", {0, 0}, 32)
                 .find("zeros.exo: corrupt: element blocks 1 and 2 both have the id 0 ('eb_prop1'); ids must be unique"),
             std::string::npos);
-  EXPECT_NE(write("repeat.exo", {1, 2, 1}, 32)
-                .find("repeat.exo: corrupt: element blocks 1 and 3 both have the id 1"),
+  EXPECT_NE(write("repeat.exo", {1, 2, 1}, 32).find("repeat.exo: corrupt: element blocks 1 and 3 both have the id 1"),
             std::string::npos);
-  EXPECT_NE(write("empty.exo", {1}, 0)
-                .find("empty.exo: corrupt: its attribute 'maximum_name_length' is 0, outside [1, 256]"),
-            std::string::npos);
+  EXPECT_NE(
+      write("empty.exo", {1}, 0).find("empty.exo: corrupt: its attribute 'maximum_name_length' is 0, outside [1, 256]"),
+      std::string::npos);
   EXPECT_NE(write("negative.exo", {1}, -2147483616).find("is -2147483616, outside [1, 256]"), std::string::npos);
   EXPECT_NE(write("long.exo", {1}, 257).find("is 257, outside [1, 256]"), std::string::npos);
   // Two variables of one name (a fuzzed file's connect1 renamed 'eb_prop1', the name of another:
@@ -289,8 +290,10 @@ TEST(LibraryCounts, ExodusNodeCountsOfTheElementTypeIntegerStatusesAndRecordCoun
     const std::size_t first = 0;
     const double t = 0.0;
     nc_put_var1_double(id, v, &first, &t);
-    if (status_type == NC_CHAR) nc_put_var_text(id, status, "\1");
-    else nc_put_var1_int(id, status, &first, &per_element);
+    if (status_type == NC_CHAR)
+      nc_put_var_text(id, status, "\1");
+    else
+      nc_put_var1_int(id, status, &first, &per_element);
     std::vector<int> nodes(static_cast<std::size_t>(per_element));
     for (int k = 0; k < per_element; ++k) nodes[static_cast<std::size_t>(k)] = 1 + k % 8;
     nc_put_var_int(id, connect, nodes.data());

@@ -10,18 +10,18 @@
 #include <random>
 
 #include "composite/fragment.hpp"
-#include "grid/generate.hpp"
-#include "grid/geometry.hpp"
-#include "grid/kd_partition.hpp"
-#include "grid/tetrahedralize.hpp"
-#include "grid/validate.hpp"
+#include "io/read_mesh.hpp"
+#include "io/write_mesh.hpp"
+#include "mesh/generate.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/tetrahedralize.hpp"
+#include "mesh/validate.hpp"
+#include "partition/brick_order.hpp"
+#include "partition/kd_partition.hpp"
 #include "raycast/cell_ray_tracer.hpp"
 #include "raycast/order_oracle.hpp"
-#include "visibility/split_sorter.hpp"
-#include "grid/write_mesh.hpp"
-#include "grid/read_mesh.hpp"
 #include "tests/test_util.hpp"
-#include "visibility/brick_order.hpp"
+#include "visibility/split_sorter.hpp"
 
 namespace cellproj {
 namespace {
@@ -34,7 +34,8 @@ double volume(const Mesh& m) {
   for (std::int64_t c = 0; c < v.n_cells; ++c) {
     const int n = canonical_tetrahedra(v, c, tets);
     for (int t = 0; t < n; ++t)
-      sum += std::abs(tet_volume6(v.point(tets[t][0]), v.point(tets[t][1]), v.point(tets[t][2]), v.point(tets[t][3]))) / 6;
+      sum +=
+          std::abs(tet_volume6(v.point(tets[t][0]), v.point(tets[t][1]), v.point(tets[t][2]), v.point(tets[t][3]))) / 6;
   }
   return sum;
 }
@@ -142,7 +143,8 @@ TEST(Partition, BrickOrderIsBackToFrontAlongEveryRay) {
       for (int k = 0; k < n; ++k) position[order[k]] = k;
       for (int r = 0; r < 50; ++r) {
         const glm::dvec3 d = glm::normalize(persp ? glm::dvec3(u(rng), u(rng), u(rng)) : target - eye);
-        const glm::dvec3 o = persp ? eye : eye + glm::dvec3(u(rng), u(rng), u(rng)) * 0.8;  // orthographic: parallel rays
+        const glm::dvec3 o =
+            persp ? eye : eye + glm::dvec3(u(rng), u(rng), u(rng)) * 0.8;  // orthographic: parallel rays
         std::vector<std::pair<double, int>> hits;
         for (int b = 0; b < n; ++b)
           if (const double t = entry(tree.nodes[tree.leaf_of[b]].box, o, d); std::isfinite(t)) hits.push_back({t, b});
@@ -159,7 +161,8 @@ TEST(Partition, RanksGetContiguousSubtreesBalancedByCost) {
   const Mesh m = generate("graded-tets", 8);  // cells graded in size: a cell count split is not a cost split
   const KdTree tree = build_kd_tree(m.view(), cell_costs(m.view()), 8);
   double lo = 1e300, hi = 0;
-  for (int b = 0; b < 8; ++b) lo = std::min(lo, tree.nodes[tree.leaf_of[b]].cost), hi = std::max(hi, tree.nodes[tree.leaf_of[b]].cost);
+  for (int b = 0; b < 8; ++b)
+    lo = std::min(lo, tree.nodes[tree.leaf_of[b]].cost), hi = std::max(hi, tree.nodes[tree.leaf_of[b]].cost);
   EXPECT_LT(hi / lo, 1.2);  // the split is by centroid: a cell's whole cost goes to one side
   for (int ranks : {1, 2, 3, 4, 8, 11}) {
     const std::vector<int> roots = rank_subtrees(tree, ranks);

@@ -13,15 +13,15 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
-#include "grid/face_split.hpp"
-#include "grid/read_mesh.hpp"
-#include "grid/split_topology.hpp"
-#include "grid/tetrahedralize.hpp"
-#include "parallel/projection_renderer.hpp"
+#include "frame/projection_renderer.hpp"
+#include "io/read_mesh.hpp"
+#include "mesh/face_split.hpp"
+#include "mesh/split_topology.hpp"
+#include "mesh/tetrahedralize.hpp"
 #include "projection/projected_cell.hpp"
 #include "raycast/order_oracle.hpp"
 #include "raycast/reference_renderer.hpp"
-#include "scene/names.hpp"
+#include "render/names.hpp"
 #include "test_util.hpp"
 #include "view/screen.hpp"
 #include "visibility/split_sorter.hpp"
@@ -165,7 +165,7 @@ TEST(Polyhedra, WarpedGridsMatchExactAndSplitOnlyProblemCells) {
       EXPECT_LT(d.max_abs, 1e-3) << "mesh " << kind << " eye " << c.eye.x << " " << c.eye.y << " " << c.eye.z;
       EXPECT_LT(d.rmse, 2e-5) << "mesh " << kind << " eye " << c.eye.x << " " << c.eye.y << " " << c.eye.z;
       EXPECT_EQ(st.cells_split, st.problem_cells + st.cycle_splits);
-      EXPECT_EQ(st.counters.unmatched, 0);  // the front and back layers cover the same centres
+      EXPECT_EQ(st.counters.unmatched, 0);           // the front and back layers cover the same centres
       EXPECT_LT(st.problem_cells, m.n_cells() / 2);  // a heavily warped grid: up to a third in perspective
       EXPECT_TRUE(st.sort.cycles.empty());
       problem_views += st.problem_cells > 0;
@@ -191,7 +191,7 @@ TEST(Polyhedra, WholeCellsWhereFacesFoldAreWrong) {
 }
 
 // Two blocks with their interface points repeated render as the mesh stored with each point
-// once: the seam is glued (grid/seams.cpp), so the order, the problem cells split and the picture
+// once: the seam is glued (mesh/seams.cpp), so the order, the problem cells split and the picture
 // are the same, whether the sort is auto or asked for.
 TEST(Polyhedra, SeamedMeshRendersAsIfStoredWhole) {
   Mesh whole = twisted_mixed(4);

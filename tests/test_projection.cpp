@@ -9,10 +9,10 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
-#include "parallel/projection_renderer.hpp"
+#include "frame/projection_renderer.hpp"
 #include "projection/projected_tet.hpp"
 #include "raycast/reference_renderer.hpp"
-#include "scene/names.hpp"
+#include "render/names.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;

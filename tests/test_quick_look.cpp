@@ -5,8 +5,8 @@
 
 #include "base/error.hpp"
 #include "optics/colormaps.hpp"
+#include "render/settings_table.hpp"
 #include "scene/quick_scene.hpp"
-#include "scene/render_options.hpp"
 #include "view/color_bar.hpp"
 
 namespace cellproj {
@@ -44,18 +44,19 @@ TEST(RenderOptions, AreSetByEitherSpellingAndCheckedByName) {
   RenderOptions o;
   set_option(o, "table_size", "64");
   set_option(o, "slice-axis", "view");
-  EXPECT_EQ(o.table_size, 64);
+  EXPECT_EQ(option_text(o, "table-size"), "64");
+  EXPECT_EQ(option_text(o, "sort"), "auto");  // not given: its default
   EXPECT_EQ(o.given, (std::vector<std::string>{"table-size", "slice-axis"}));
   EXPECT_EQ(settings_from(o).projection.table_size, 64);
   try {
     set_option(o, "slices", "12x");
     FAIL();
   } catch (const InputError& e) {
-    EXPECT_NE(std::string(e.what()).find("--slices: expected an integer, got '12x'"), std::string::npos);
+    EXPECT_NE(std::string(e.what()).find("setting 'slices': expected an integer, got '12x'"), std::string::npos);
   }
   EXPECT_THROW(set_option(o, "colour", "red"), InputError);
-  o.sort = "bogus";
-  EXPECT_THROW(settings_from(o), InputError);
+  EXPECT_THROW(set_option(o, "sort", "bogus"), InputError);
+  EXPECT_EQ(option_text(o, "sort"), "auto");  // a bad value is not kept
 }
 
 TEST(ColorBar, DrawsTheColoursInOrderOnTheRightAndLeavesTheRestAlone) {

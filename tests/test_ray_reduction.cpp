@@ -3,7 +3,7 @@
 
 #include <cmath>
 
-#include "grid/generate.hpp"
+#include "mesh/generate.hpp"
 #include "raycast/ray_reduction.hpp"
 #include "tests/test_util.hpp"
 

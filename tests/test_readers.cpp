@@ -3,10 +3,10 @@
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <sstream>
 #include <iterator>
-#include <thread>
 #include <regex>
+#include <sstream>
+#include <thread>
 #include <tuple>
 
 #include <gtest/gtest.h>
@@ -21,13 +21,13 @@
 
 #include "base/bytes.hpp"
 #include "base/error.hpp"
-#include "grid/header_counts.hpp"
-#include "grid/isolated_read.hpp"
-#include "grid/read_mesh.hpp"
-#include "grid/topology.hpp"
-#include "grid/vtk_messages.hpp"
-#include "grid/write_mesh.hpp"
+#include "io/header_counts.hpp"
+#include "io/isolated_read.hpp"
+#include "io/read_mesh.hpp"
+#include "io/vtk_messages.hpp"
+#include "io/write_mesh.hpp"
 #include "legacy_samples.hpp"
+#include "mesh/topology.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
@@ -276,14 +276,14 @@ TEST(Readers, ALegacyDatasetFieldVtkCannotReadIsRefusedBeforeItsReaderCrashes) {
   // ParaView writes a METADATA block after an array; a string array ends the walk (not followed).
   EXPECT_EQ(with("FIELD FieldData 2\nTIME 1 1 double\n0.5\nMETADATA\nINFORMATION 0\n\nCYCLE 1 1 int\n3\n"), "");
   EXPECT_EQ(with("FIELD FieldData 2\nnames 1 2 string\nfield one\nFIELD two\nCYCLE 1 1 int\n3\n"), "");
-  EXPECT_NE(with("FIELD FieldData 1\nfoo 1 2 nonsense\n1 2\n").find(
-                "the dataset's FIELD block 'FieldData', array 0 ('foo'): unknown type 'nonsense' (VTK's legacy "
-                "reader would crash on it)"),
+  EXPECT_NE(with("FIELD FieldData 1\nfoo 1 2 nonsense\n1 2\n")
+                .find("the dataset's FIELD block 'FieldData', array 0 ('foo'): unknown type 'nonsense' (VTK's legacy "
+                      "reader would crash on it)"),
             std::string::npos);
   EXPECT_NE(with("FIELD FieldData 1\nfoo 1 1 bogus\n7\n", true).find("unknown type 'bogus'"), std::string::npos);
   EXPECT_NE(with("FIELD FieldData x\n").find("has no name and array count"), std::string::npos);
-  EXPECT_NE(with("FIELD F 2\na 1 3 double\n1 2\nb 1 1 double\n4\n").find(
-                "array 0 ('a'): its values end, or stop being numbers, after 2 of 3"),
+  EXPECT_NE(with("FIELD F 2\na 1 3 double\n1 2\nb 1 1 double\n4\n")
+                .find("array 0 ('a'): its values end, or stop being numbers, after 2 of 3"),
             std::string::npos);
   EXPECT_NE(with("FIELD F 1\na 1 x double\n").find("its components, tuples and type are not all there"),
             std::string::npos);
@@ -378,7 +378,8 @@ TEST(Readers, ALegacyArrayOfANegativeCountInPointOrCellDataIsRefusedByName) {
   EXPECT_EQ(with("FIELD F 1\na 1 -9 double\n1 2\n"),
             where(dir.file("data.vtk"),
                   "POINT_DATA's FIELD block 'F', array 0 ('a'): a negative count (1 components of -9 tuples)"));
-  EXPECT_EQ(with("COLOR_SCALARS c 0\n"), where(dir.file("data.vtk"), "POINT_DATA's COLOR_SCALARS 'c' declares 0 components"));
+  EXPECT_EQ(with("COLOR_SCALARS c 0\n"),
+            where(dir.file("data.vtk"), "POINT_DATA's COLOR_SCALARS 'c' declares 0 components"));
   EXPECT_EQ(with("LOOKUP_TABLE t -2\n"),
             where(dir.file("data.vtk"), "POINT_DATA's LOOKUP_TABLE 't' declares a negative count (-2)"));
   // A count beyond the file: VTK sizes the array first (44444444441 components asked for 12 GB).
@@ -407,8 +408,9 @@ TEST(Readers, ALegacyStructuredGridWithAnArrayNamedFieldSomethingReads) {
   std::string bad = grid;
   bad.insert(bad.find("DIMENSIONS"), "FIELD FieldData 1\nfoo 1 1 bogus\n7\n");
   spit(dir.file("bad.vtk"), bad);
-  EXPECT_NE(read_error(dir.file("bad.vtk")).find("the dataset's FIELD block 'FieldData', array 0 ('foo'): unknown type"),
-            std::string::npos);
+  EXPECT_NE(
+      read_error(dir.file("bad.vtk")).find("the dataset's FIELD block 'FieldData', array 0 ('foo'): unknown type"),
+      std::string::npos);
 }
 
 // A parallel file: two pieces of one box, their interface points repeated. Read as one conforming
@@ -425,7 +427,8 @@ TEST(Readers, StructuredXmlPiecesMustCoverTheWholeExtent) {
       std::istringstream in(e);
       int x[6];
       for (int& v : x) in >> v;
-      f << "<Piece Extent=\"" << e << "\"><Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">";
+      f << "<Piece Extent=\"" << e
+        << "\"><Points><DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">";
       for (int k = x[4]; k <= x[5]; ++k)
         for (int j = x[2]; j <= x[3]; ++j)
           for (int i = x[0]; i <= x[1]; ++i) f << i << " " << j << " " << k << " ";
@@ -438,8 +441,7 @@ TEST(Readers, StructuredXmlPiecesMustCoverTheWholeExtent) {
   const Mesh m = read_mesh(vts("two.vts", "0 2 0 1 0 1", {"0 1 0 1 0 1", "1 2 0 1 0 1"}));
   EXPECT_EQ(m.n_cells(), 2);
   for (const std::string& gap : {std::string("0 3 0 1 0 1"), std::string("0 2 0 2 0 1")}) {
-    const std::string what =
-        test::input_error([&] { read_mesh(vts("gap.vts", gap, {"0 1 0 1 0 1", "1 2 0 1 0 1"})); });
+    const std::string what = test::input_error([&] { read_mesh(vts("gap.vts", gap, {"0 1 0 1 0 1", "1 2 0 1 0 1"})); });
     EXPECT_NE(what.find("gap.vts: its pieces' extents do not cover its WholeExtent (" + gap + ")"), std::string::npos)
         << what;
   }
@@ -452,7 +454,8 @@ TEST(Readers, AnImageDatasOriginAndSpacingMustBeThreeFiniteNumbers) {
   const auto vti = [&](const std::string& name, const std::string& origin, const std::string& spacing) {
     std::ofstream(dir.file(name)) << "<?xml version=\"1.0\"?>\n<VTKFile type=\"ImageData\" version=\"0.1\">\n"
                                   << "<ImageData WholeExtent=\"0 2 0 1 0 1\" Origin=\"" << origin << "\" Spacing=\""
-                                  << spacing << "\">\n<Piece Extent=\"0 2 0 1 0 1\"></Piece>\n</ImageData>\n</VTKFile>\n";
+                                  << spacing
+                                  << "\">\n<Piece Extent=\"0 2 0 1 0 1\"></Piece>\n</ImageData>\n</VTKFile>\n";
     return dir.file(name);
   };
   const Mesh m = read_mesh(vti("good.vti", "0 0 0", "0.5 2 1"));
@@ -461,7 +464,8 @@ TEST(Readers, AnImageDatasOriginAndSpacingMustBeThreeFiniteNumbers) {
        {std::tuple("0 0 0", "1 nan 1", "Spacing '1 nan 1'"), std::tuple("0 x 0", "1 1 1", "Origin '0 x 0'"),
         std::tuple("0 0", "1 1 1", "Origin '0 0'"), std::tuple("0 0 0", "1 inf 1", "Spacing '1 inf 1'")}) {
     const std::string what = test::input_error([&, o = origin, sp = spacing] { read_mesh(vti("bad.vti", o, sp)); });
-    EXPECT_NE(what.find(std::string("bad.vti: its ImageData ") + bad + " is not three finite numbers"), std::string::npos)
+    EXPECT_NE(what.find(std::string("bad.vti: its ImageData ") + bad + " is not three finite numbers"),
+              std::string::npos)
         << what;
   }
 }
@@ -590,7 +594,7 @@ TEST(Readers, ParallelVtuPiecesAreMergedAtTheirInterface) {
   EXPECT_FALSE(read_error(dir.file("missing.pvtu")).empty());
 }
 
-// The isolated reader (grid/isolated_read.hpp): what a reader does in its child process comes
+// The isolated reader (io/isolated_read.hpp): what a reader does in its child process comes
 // back to the caller as a mesh or an error, never as the caller's crash.
 TEST(IsolatedRead, MovesTheMeshBackBitForBit) {
   Mesh m = make_box(3, 2, 2, glm::dvec3(-1), glm::dvec3(1), false);
@@ -725,10 +729,13 @@ TEST(Plot3d, ASolutionFileIsCheckedAgainstItsGridBeforeVtkReadsIt) {
     ASSERT_NE(m.find_field("Density"), nullptr) << fortran;
     EXPECT_EQ(m.field("Density").values.size(), 24u);
     spit(q, good.substr(0, good.size() - 30));  // cut short
-    EXPECT_NE(read_error(xyz).find(q + ": PLOT3D solution (q) file: truncated or corrupt: its 1 grid(s) of 5 variables need"),
-              std::string::npos) << read_error(xyz);
+    EXPECT_NE(
+        read_error(xyz).find(q + ": PLOT3D solution (q) file: truncated or corrupt: its 1 grid(s) of 5 variables need"),
+        std::string::npos)
+        << read_error(xyz);
     spit(q, plot3d_q(4, 3, 3, fortran));  // another grid's solution
-    EXPECT_NE(read_error(xyz).find("grid 1's dimension 3 is 3, the grid file's is 2"), std::string::npos) << read_error(xyz);
+    EXPECT_NE(read_error(xyz).find("grid 1's dimension 3 is 3, the grid file's is 2"), std::string::npos)
+        << read_error(xyz);
   }
 }
 
@@ -744,7 +751,8 @@ TEST(Plot3d, TheHeaderIsMatchedAsVtkDetectsItAndCorruptOnesAreRefusedFirst) {
     // Cut short, and a dimension made huge: refused by the header check (no reader allocates it).
     const std::string bytes = plot3d(4, 3, 2, fortran);
     spit(file, bytes.substr(0, bytes.size() - 40));
-    EXPECT_NE(read_error(file).find("PLOT3D grid (little-endian): truncated or corrupt"), std::string::npos) << read_error(file);
+    EXPECT_NE(read_error(file).find("PLOT3D grid (little-endian): truncated or corrupt"), std::string::npos)
+        << read_error(file);
     std::string huge = bytes;
     const int big = 1 << 30;
     huge.replace(fortran ? 20 : 4, 4, reinterpret_cast<const char*>(&big), 4);

@@ -7,7 +7,7 @@
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
-#include "parallel/gl_frame.hpp"
+#include "frame/gl_frame.hpp"
 #include "render/renderer.hpp"
 #include "test_util.hpp"
 

@@ -4,8 +4,8 @@
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
-#include "grid/read_mesh.hpp"
-#include "grid/write_mesh.hpp"
+#include "io/read_mesh.hpp"
+#include "io/write_mesh.hpp"
 #include "scene/prepare.hpp"
 #include "scene/scene_file.hpp"
 #include "test_util.hpp"

@@ -5,8 +5,8 @@
 
 #include <gtest/gtest.h>
 
-#include "grid/read_mesh.hpp"
-#include "grid/topology.hpp"
+#include "io/read_mesh.hpp"
+#include "mesh/topology.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;

@@ -288,7 +288,7 @@ TEST(Slicing, ACameraInsideTheMeshIsClipped) {
   const Image ref = render(v, field_of(m, "s"), ramp(), exact_tets(), c, {48, 48});
   RenderReport r;
   const Image img = render(v, field_of(m, "s"), ramp(), slicing(512), c, {48, 48}, &r);
-  EXPECT_EQ(std::get<SliceAxis>(r.values[0].second), SliceAxis::view) << "the eye is inside: the view family";
+  EXPECT_EQ(std::get<SliceAxis>(*r.find("slice_axis")), SliceAxis::view) << "the eye is inside: the view family";
   EXPECT_EQ(counter(r, "planes_behind_eye"), 0) << "the view family spends its planes in front of the eye";
   EXPECT_EQ(counter(r, "rays_along_planes"), 0);
   for (float x : img.rgba) ASSERT_TRUE(std::isfinite(x));

@@ -6,8 +6,8 @@
 
 #include <gtest/gtest.h>
 
-#include "grid/generate.hpp"
-#include "parallel/splat_stencil.hpp"
+#include "frame/splat_stencil.hpp"
+#include "mesh/generate.hpp"
 #include "raycast/cell_ray_tracer.hpp"
 #include "test_util.hpp"
 

@@ -7,11 +7,11 @@
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
 
-#include "grid/generate.hpp"
-#include "grid/split_topology.hpp"
-#include "grid/topology.hpp"
+#include "mesh/generate.hpp"
+#include "mesh/split_topology.hpp"
+#include "mesh/topology.hpp"
 #include "raycast/order_oracle.hpp"
-#include "scene/names.hpp"
+#include "render/names.hpp"
 #include "test_util.hpp"
 #include "visibility/split_sorter.hpp"
 

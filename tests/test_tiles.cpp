@@ -15,11 +15,11 @@
 
 #include "base/huge_pages.hpp"
 #include "composite/tiled_compositor.hpp"
-#include "grid/generate.hpp"
-#include "grid/validate.hpp"
-#include "parallel/projection_renderer.hpp"
+#include "frame/projection_renderer.hpp"
+#include "mesh/generate.hpp"
+#include "mesh/validate.hpp"
 #include "projection/method.hpp"
-#include "scene/names.hpp"
+#include "render/names.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
@@ -79,8 +79,7 @@ TEST(FrameMemory, FramesAfterTheFirstTakeNoNewMemory) {
   const TransferFunction tf = tiles_tf();
   const Camera cam = test::view_from({3.6, -4.6, 3.0}, Projection::Perspective);
   const auto frame = [&] {
-    Image image =
-        r.render(test::field_values(m), tf, cam, 1024, 1024, test::with_method(ProjectionMethod::pt_linear));
+    Image image = r.render(test::field_values(m), tf, cam, 1024, 1024, test::with_method(ProjectionMethod::pt_linear));
     EXPECT_GT(*std::max_element(image.rgba.begin(), image.rgba.end()), 0.0f);
     return image;
   };
@@ -98,7 +97,8 @@ TEST(Tiles, TheSameBitsAndCountsAsTheStreamForAnyTileHeightAndThreads) {
     const Mesh m = test::wavy_grid(5, tetrahedra);
     const ProjectionRenderer r(m.view(), tetrahedra ? Tetrahedralize::problem : Tetrahedralize::none);
     const double* s = test::field_values(m, "s");
-    const Camera cams[3] = {test::view_from({0.5, -3, 2}, Projection::Perspective), test::inside_wavy_grid(Projection::Perspective),
+    const Camera cams[3] = {test::view_from({0.5, -3, 2}, Projection::Perspective),
+                            test::inside_wavy_grid(Projection::Perspective),
                             test::inside_wavy_grid(Projection::Orthographic)};
     for (int v = 0; v < 3; ++v)
       for (ProjectionMethod method :
@@ -153,7 +153,7 @@ TEST(Tiles, LargeTetrahedraByTheFanAsByTheirTriangles) {
   }
 }
 
-// Each tile ordering its own cells (parallel/tile_orders.hpp) gives the same bits as one order of
+// Each tile ordering its own cells (frame/tile_orders.hpp) gives the same bits as one order of
 // every cell, on convex Delaunay meshes of tetrahedra (a box; random points, irregular; a grid
 // graded towards one face: big cells behind small ones), where no view makes a cycle, in perspective and
 // orthographic, with the eye outside and inside, for two tile heights and thread counts; front to

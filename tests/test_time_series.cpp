@@ -9,9 +9,9 @@
 #include <netcdf.h>
 
 #include "base/error.hpp"
-#include "grid/generate.hpp"
-#include "grid/time_series.hpp"
-#include "grid/write_mesh.hpp"
+#include "io/series_files.hpp"
+#include "io/write_mesh.hpp"
+#include "mesh/generate.hpp"
 #include "render/playback.hpp"
 #include "scene/camera_json.hpp"
 #include "tests/test_util.hpp"
@@ -90,11 +90,11 @@ TEST(TimeSeries, BadCollectionsAreRefusedNamingTheFile) {
   expect_refused([&] { list_series(dir.file("none_%03d.vtu"), {}); }, "names no key frame");
   expect_refused([&] { list_series(dir.file("a.vtu"), {}); }, "not a time series");
   write_pvd(dir.file("gone.pvd"), {{0.0, "a.vtu"}, {1.0, "gone.vtu"}});
-  SeriesPlayer player(list_series(dir.file("gone.pvd"), {}), "f", {});
+  SeriesPlayer player(list_series(dir.file("gone.pvd"), {}), "f", key_frame_reader({}));
   expect_refused([&] { player.frame_at(0.5); }, "gone.vtu");
   write_vtu(make_box(2, 2, 2, {-1, -1, -1}, {1, 1, 1}, true), dir.file("other.vtu"));
   write_pvd(dir.file("cells.pvd"), {{0.0, "a.vtu"}, {1.0, "other.vtu"}});
-  SeriesPlayer differ(list_series(dir.file("cells.pvd"), {}), "f", {});
+  SeriesPlayer differ(list_series(dir.file("cells.pvd"), {}), "f", key_frame_reader({}));
   expect_refused([&] { differ.frame_at(0.5); }, "its cells differ from the first key frame's");
 }
 
@@ -106,7 +106,7 @@ TEST(TimeSeries, TheFieldIsTheLinearMixOfTheTwoKeyFramesAroundTAndOnlyTwoAreRead
     sets.push_back({0.5 * k, "s" + std::to_string(k) + ".vtu"});
   }
   write_pvd(dir.file("s.pvd"), sets);
-  SeriesPlayer player(list_series(dir.file("s.pvd"), {}), "", {});
+  SeriesPlayer player(list_series(dir.file("s.pvd"), {}), "", key_frame_reader({}));
   int frames = 0;
   const double* shared = nullptr;
   for (double t = 0.0; t <= 1.5; t += 0.125, ++frames) {
@@ -132,7 +132,7 @@ TEST(TimeSeries, MovingPointsAreDetectedAndInterpolated) {
   write_vtu(step(0, 0.5), dir.file("a.vtu"));
   write_vtu(step(1, 0.5), dir.file("b.vtu"));
   write_pvd(dir.file("m.pvd"), {{0.0, "a.vtu"}, {2.0, "b.vtu"}});
-  SeriesPlayer player(list_series(dir.file("m.pvd"), {}), "f", {});
+  SeriesPlayer player(list_series(dir.file("m.pvd"), {}), "f", key_frame_reader({}));
   const SeriesFrame f = player.frame_at(0.5);
   EXPECT_TRUE(player.points_move());
   const std::vector<double> a = step(0, 0.5).points, b = step(1, 0.5).points;
@@ -168,7 +168,7 @@ TEST(TimeSeries, AnExodusFilesTimeStepsAreItsKeyFrames) {
   ASSERT_EQ(s.frames.size(), 2u);
   EXPECT_EQ(s.frames[1].time, 4.0);
   EXPECT_EQ(s.frames[1].time_step, 1);
-  SeriesPlayer player(s, "f", {});
+  SeriesPlayer player(s, "f", key_frame_reader({}));
   const SeriesFrame f = player.frame_at(1.0);
   const Mesh m0 = read_mesh(path), m1 = read_mesh(path, [] {
                                      ReadOptions o;
@@ -194,7 +194,7 @@ TEST(TimeSeries, PlaybackEqualsRenderingASingleStepFileOfTheInterpolatedField) {
   const auto renderer = make_renderer(RenderSettings{});
   const auto camera = [](int f) { return orbit(test::view_from({2, -3, 4}, Projection::Perspective), 10.0 * f); };
   for (bool prefetch : {true, false}) {
-    SeriesPlayer player(list_series(dir.file("s.pvd"), {}), "f", {});
+    SeriesPlayer player(list_series(dir.file("s.pvd"), {}), "f", key_frame_reader({}));
     std::vector<Image> played(times.size());
     const PlaybackStats st =
         play_series(player, player.frame_at(times[0]), times, prefetch, *renderer, tf, camera, {48, 40},
@@ -230,7 +230,7 @@ TEST(TimeSeries, AClippedPlaybackEqualsEachFrameClippedOnItsOwn) {
     write_vtu(step(1, move), dir.file("b.vtu"));
     write_pvd(dir.file("s.pvd"), {{0.0, "a.vtu"}, {1.0, "b.vtu"}});
     const std::vector<double> times = {0.0, 0.4, 1.0};
-    SeriesPlayer player(list_series(dir.file("s.pvd"), {}), "f", {});
+    SeriesPlayer player(list_series(dir.file("s.pvd"), {}), "f", key_frame_reader({}));
     std::vector<Image> played(times.size());
     ClipReport report;
     const PlaybackStats st = play_series(
@@ -239,7 +239,7 @@ TEST(TimeSeries, AClippedPlaybackEqualsEachFrameClippedOnItsOwn) {
     EXPECT_EQ(st.volumes, move == 0.0 ? 1 : 3) << move;
     EXPECT_GT(report.cut, 0);
     for (std::size_t f = 0; f < times.size(); ++f) {
-      SeriesPlayer one(list_series(dir.file("s.pvd"), {}), "f", {});
+      SeriesPlayer one(list_series(dir.file("s.pvd"), {}), "f", key_frame_reader({}));
       const SeriesFrame frame = one.frame_at(times[f]);
       Mesh whole = one.cells();
       whole.points = *frame.points;

@@ -6,13 +6,13 @@
 #include <random>
 #include <string>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
 #include <tbb/task_arena.h>
+#include <glm/geometric.hpp>
 
-#include "grid/geometry.hpp"
-#include "grid/split_topology.hpp"
-#include "grid/topology.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/split_topology.hpp"
+#include "mesh/topology.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
@@ -203,8 +203,9 @@ TEST(Topology, MatchesAMapOfFaceKeys) {
     double max_warp = 0, max_relative = 0;
     for (const auto& [key, list] : faces) {
       for (std::size_t i = 0; i < list.size(); ++i) {
-        const std::int64_t expected =
-            list.size() == 1 ? kBoundary : list.size() == 2 ? list[1 - i].second : kNonManifold;
+        const std::int64_t expected = list.size() == 1   ? kBoundary
+                                      : list.size() == 2 ? list[1 - i].second
+                                                         : kNonManifold;
         if (t.neighbor[list[i].first] != kSplitFace) EXPECT_EQ(t.neighbor[list[i].first], expected) << kind;
       }
       shared += list.size() == 2;

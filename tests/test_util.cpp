@@ -3,7 +3,7 @@
 #include <fstream>
 #include <random>
 
-#include "grid/read_mesh.hpp"
+#include "io/read_mesh.hpp"
 
 namespace cellproj::test {
 
@@ -126,7 +126,6 @@ glm::dvec3 jitter(const glm::dvec3& u) {
   return {h(12.9898 * u.x + 78.233 * u.y + 37.719 * u.z), h(39.3468 * u.x + 11.135 * u.y + 83.155 * u.z),
           h(73.156 * u.x + 52.235 * u.y + 9.151 * u.z)};
 }
-
 
 Mesh warped_hexahedra(int n) {
   const double cell = 2.0 / n;

@@ -7,9 +7,9 @@
 #include <vector>
 
 #include "base/error.hpp"
-#include "grid/generate.hpp"
+#include "frame/projection_renderer.hpp"
+#include "mesh/generate.hpp"
 #include "optics/transfer_function.hpp"
-#include "parallel/projection_renderer.hpp"
 #include "raycast/reference_renderer.hpp"
 #include "view/camera.hpp"
 
@@ -29,7 +29,7 @@ class TempDir {
 // A deterministic jitter in [-1, 1]^3 per grid point (a hash of its position).
 glm::dvec3 jitter(const glm::dvec3& u);
 
-// The Delaunay tetrahedra (grid/read_mesh's point clouds, CGAL) of the cube [-1, 1]^3's corners
+// The Delaunay tetrahedra (io/read_mesh's point clouds, CGAL) of the cube [-1, 1]^3's corners
 // and `points` random points inside it, each with a random scalar: a convex, irregular mesh. The
 // cloud's file is written into `dir`.
 Mesh delaunay_cube(const TempDir& dir, int points, unsigned seed);

@@ -6,11 +6,11 @@
 #include <gtest/gtest.h>
 
 #include "base/error.hpp"
-#include "grid/geometry.hpp"
-#include "grid/overlaps.hpp"
-#include "grid/tetrahedralize.hpp"
-#include "grid/topology.hpp"
-#include "grid/validate.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/overlaps.hpp"
+#include "mesh/tetrahedralize.hpp"
+#include "mesh/topology.hpp"
+#include "mesh/validate.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;

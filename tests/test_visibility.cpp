@@ -17,11 +17,11 @@
 #include <tbb/task_arena.h>
 
 #include "base/chunks.hpp"
-#include "grid/read_mesh.hpp"
-#include "grid/topology.hpp"
-#include "grid/validate.hpp"
+#include "io/read_mesh.hpp"
+#include "mesh/topology.hpp"
+#include "mesh/validate.hpp"
 #include "raycast/order_oracle.hpp"
-#include "scene/names.hpp"
+#include "render/names.hpp"
 #include "test_util.hpp"
 #include "visibility/sort.hpp"
 #include "visibility/subset_order.hpp"
@@ -118,7 +118,7 @@ TEST(Visibility, MpvoAbufferOnNonConvexMeshesHasNoViolations) {
 }
 
 // Two blocks with their interface points repeated sort as the mesh stored with each point once:
-// the seam is glued into shared faces (grid/seams.cpp), so a seamed box is convex, needs no
+// the seam is glued into shared faces (mesh/seams.cpp), so a seamed box is convex, needs no
 // A-buffer, and every sort gives the same order as without the seam, with no violations.
 TEST(Visibility, SeamedMeshesSortAsIfStoredWhole) {
   for (const char* kind : {"box", "swirl", "mixed"}) {

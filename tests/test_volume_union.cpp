@@ -6,11 +6,11 @@
 #include <algorithm>
 #include <cmath>
 
-#include <nlohmann/json.hpp>
 #include <tbb/task_arena.h>
+#include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
-#include "grid/generate.hpp"
+#include "mesh/generate.hpp"
 #include "raycast/volume_union.hpp"
 #include "render/volume_set.hpp"
 #include "scene/scene_file.hpp"
@@ -71,7 +71,8 @@ TEST(VolumeUnion, TwoHalvesOfAMeshGiveTheWholeMeshsPicture) {
   const Mesh left = half(m, true), right = half(m, false);
   ASSERT_GT(left.n_cells(), 0);
   ASSERT_GT(right.n_cells(), 0);
-  const TransferFunction tf({{-1, {0.1, 0.2, 0.9}}, {0.2, {0.9, 0.8, 0.2}}, {1, {1, 0.1, 0.1}}}, {{-1, 0.3}, {0.4, 3.0}, {1, 1.0}});
+  const TransferFunction tf({{-1, {0.1, 0.2, 0.9}}, {0.2, {0.9, 0.8, 0.2}}, {1, {1, 0.1, 0.1}}},
+                            {{-1, 0.3}, {0.4, 3.0}, {1, 1.0}});
   for (const Camera& c : test::views_of_unit_mesh(3)) {
     IsoStats st;
     const Image both = union_of({&left, &right}, {&tf, &tf}, c, 40, &st);
@@ -91,7 +92,8 @@ TEST(VolumeUnion, OverlappingVolumesAddTheirExtinctionsAndEmissions) {
   const glm::dvec3 a0(1, 0, 0), a1(0, 1, 0), b0(0, 0, 1), b1(1, 1, 0);
   const double k1 = 1.2, k2 = 0.7;
   const TransferFunction tf1({{0, a0}, {1, a1}}, {{0, k1}}), tf2({{0, b0}, {1, b1}}, {{0, k2}});
-  const TransferFunction sum({{0, (k1 * a0 + k2 * b0) / (k1 + k2)}, {1, (k1 * a1 + k2 * b1) / (k1 + k2)}}, {{0, k1 + k2}});
+  const TransferFunction sum({{0, (k1 * a0 + k2 * b0) / (k1 + k2)}, {1, (k1 * a1 + k2 * b1) / (k1 + k2)}},
+                             {{0, k1 + k2}});
   for (const Camera& c : test::views_of_unit_mesh(3)) {
     IsoStats st;
     const Image both = union_of({&tets, &hexes}, {&tf1, &tf2}, c, 32, &st);
@@ -104,7 +106,8 @@ TEST(VolumeUnion, OverlappingVolumesAddTheirExtinctionsAndEmissions) {
 TEST(VolumeUnion, OrderIndependentModesDoNotDependOnTheVolumesOrderOrTheThreads) {
   Mesh a = generate("box-tets", 8), b = generate("shells", 6);
   const TransferFunction ta = test::constant_tf(0.4, {0.2, 0.4, 1.0}), tb = test::constant_tf(0.8, {1.0, 0.6, 0.2});
-  const std::vector<IsoSurface> sa = {{0.8, {1, 0, 0}, 0.4, true}}, sb = {{0.0, {0, 1, 0}, 0.3, true}, {0.5, {1, 1, 0}, 0.5, true}};
+  const std::vector<IsoSurface> sa = {{0.8, {1, 0, 0}, 0.4, true}},
+                                sb = {{0.0, {0, 1, 0}, 0.3, true}, {0.5, {1, 1, 0}, 0.5, true}};
   const Camera c = test::views_of_unit_mesh(2)[1];
   for (IsoMode mode : {IsoMode::oit3, IsoMode::oit4}) {
     Image ab, ba, ab1;
@@ -139,7 +142,10 @@ TEST(VolumeUnion, TheScenesVolumesListAndItsErrors) {
   const nlohmann::json tf = {{"color", {{0, 1, 1, 1}}}, {"extinction", {{0, 1}}}};
   nlohmann::json j = {{"volumes",
                        {{{"mesh", "a.vtu"}, {"transfer_function", tf}},
-                        {{"mesh", "b.vtu"}, {"field", "p"}, {"transfer_function", tf}, {"volume", false},
+                        {{"mesh", "b.vtu"},
+                         {"field", "p"},
+                         {"transfer_function", tf},
+                         {"volume", false},
                          {"iso", {{{"value", 0.5}, {"color", {1, 0, 0}}, {"opacity", 0.3}}}}}}},
                       {"iso_mode", "oit4"}};
   const Scene s = scene_from_json(j, "two.json", "/data");
@@ -156,7 +162,8 @@ TEST(VolumeUnion, TheScenesVolumesListAndItsErrors) {
   const Scene s1 = scene_from_json(one, "one.json", "/data");
   EXPECT_TRUE(s1.volumes.empty());
   EXPECT_EQ(s1.mesh, "/data/b.vtu");
-  EXPECT_EQ(std::count_if(s1.iso_options.begin(), s1.iso_options.end(), [](const auto& o) { return o.first == "iso"; }), 1);
+  EXPECT_EQ(std::count_if(s1.iso_options.begin(), s1.iso_options.end(), [](const auto& o) { return o.first == "iso"; }),
+            1);
   const auto refused = [](nlohmann::json bad, const std::string& says) {
     try {
       scene_from_json(bad, "bad.json", "");

@@ -5,9 +5,9 @@
 #include <fstream>
 
 #include "base/error.hpp"
-#include "grid/generate.hpp"
-#include "grid/time_series.hpp"
-#include "grid/write_mesh.hpp"
+#include "io/series_files.hpp"
+#include "io/write_mesh.hpp"
+#include "mesh/generate.hpp"
 #include "tools/commands.hpp"
 
 namespace cellproj {
@@ -21,7 +21,8 @@ std::vector<std::string> write_series(Mesh m, const std::string& out, int steps,
   if (!pvd && !is_series_path(out))
     throw InputError("--steps: -o must be a .pvd collection or a file pattern with one %d (mesh_%04d.vtu)");
   const std::string pattern =
-      pvd ? (std::filesystem::path(out).parent_path() / (std::filesystem::path(out).stem().string() + "_%04d.vtu")).string()
+      pvd ? (std::filesystem::path(out).parent_path() / (std::filesystem::path(out).stem().string() + "_%04d.vtu"))
+                .string()
           : out;
   check_file_pattern(pattern);  // given to printf: one %d and no other %
   const std::vector<double> base = m.fields.at(0).values;

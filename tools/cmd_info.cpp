@@ -7,12 +7,12 @@
 
 #include <nlohmann/json.hpp>
 
-#include "grid/cell_order.hpp"
-#include "grid/overlaps.hpp"
-#include "grid/read_mesh.hpp"
-#include "grid/time_series.hpp"
-#include "grid/topology.hpp"
-#include "scene/partition_index.hpp"
+#include "io/read_mesh.hpp"
+#include "io/series_files.hpp"
+#include "mesh/cell_order.hpp"
+#include "mesh/overlaps.hpp"
+#include "mesh/topology.hpp"
+#include "partition/partition_index.hpp"
 #include "scene/prepare.hpp"
 #include "tools/commands.hpp"
 #include "tools/mesh_options.hpp"
@@ -87,10 +87,11 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
 
 void print_text(const nlohmann::json& j) {
   if (const auto& s = j["series"]; !s.is_null())
-    std::printf("%s: a time series of %lld key frames, times %s to %s (render --time T or --animate); the "
-                "first key frame:\n",
-                s["source"].get<std::string>().c_str(), s["key_frames"].get<long long>(), s["times"].front().dump().c_str(),
-                s["times"].back().dump().c_str());
+    std::printf(
+        "%s: a time series of %lld key frames, times %s to %s (render --time T or --animate); the "
+        "first key frame:\n",
+        s["source"].get<std::string>().c_str(), s["key_frames"].get<long long>(), s["times"].front().dump().c_str(),
+        s["times"].back().dump().c_str());
   std::printf("%s\n", j["file"].get<std::string>().c_str());
   std::printf("  points %lld, cells %lld:", j["points"].get<long long>(), j["cells"].get<long long>());
   for (const auto& [k, v] : j["cells_by_type"].items())
@@ -172,29 +173,38 @@ int partition_info(const InfoArgs& a) {
   for (int b = 0; b < static_cast<int>(index.bricks.size()); ++b) {
     const BrickEntry& e = index.bricks[b];
     const KdBox& box = index.tree.nodes[index.tree.leaf_of[b]].box;
-    bricks.push_back({{"file", e.file}, {"cells", e.cells}, {"points", e.points}, {"cost", e.cost},
-                      {"lo", {box.lo.x, box.lo.y, box.lo.z}}, {"hi", {box.hi.x, box.hi.y, box.hi.z}}});
+    bricks.push_back({{"file", e.file},
+                      {"cells", e.cells},
+                      {"points", e.points},
+                      {"cost", e.cost},
+                      {"lo", {box.lo.x, box.lo.y, box.lo.z}},
+                      {"hi", {box.hi.x, box.hi.y, box.hi.z}}});
     hi = std::max(hi, e.cost), sum += e.cost, cells += e.cells;
   }
   for (const FieldRange& f : index.fields) fields[f.name] = {f.min, f.max};
-  const nlohmann::json j = {{"partition", index.path},   {"source", index.source}, {"source_cells", index.cells},
-                            {"brick_cells", cells},      {"cost_model", index.cost_model},
+  const nlohmann::json j = {{"partition", index.path},
+                            {"source", index.source},
+                            {"source_cells", index.cells},
+                            {"brick_cells", cells},
+                            {"cost_model", index.cost_model},
                             {"cost_imbalance", sum > 0 ? hi * index.bricks.size() / sum : 1.0},
-                            {"fields", fields},          {"bricks", bricks}};
+                            {"fields", fields},
+                            {"bricks", bricks}};
   if (a.json) {
     std::printf("%s\n", j.dump().c_str());
     return kExitOk;
   }
-  std::printf("%s\n  partition of %s: %lld cells into %zu bricks (%lld cells once cut), cost model %s, cost max/mean %.3f\n",
-              index.path.c_str(), index.source.c_str(), static_cast<long long>(index.cells), index.bricks.size(),
-              static_cast<long long>(cells), index.cost_model.c_str(), j["cost_imbalance"].get<double>());
+  std::printf(
+      "%s\n  partition of %s: %lld cells into %zu bricks (%lld cells once cut), cost model %s, cost max/mean %.3f\n",
+      index.path.c_str(), index.source.c_str(), static_cast<long long>(index.cells), index.bricks.size(),
+      static_cast<long long>(cells), index.cost_model.c_str(), j["cost_imbalance"].get<double>());
   for (const FieldRange& f : index.fields) std::printf("  field %-28s [%.17g, %.17g]\n", f.name.c_str(), f.min, f.max);
   for (const auto& b : bricks)
     std::printf("  %-16s %9lld cells  cost %.4g  box [%g, %g] x [%g, %g] x [%g, %g]\n",
                 b["file"].get<std::string>().empty() ? "(no cells)" : b["file"].get<std::string>().c_str(),
-                static_cast<long long>(b["cells"].get<std::int64_t>()), b["cost"].get<double>(), b["lo"][0].get<double>(),
-                b["hi"][0].get<double>(), b["lo"][1].get<double>(), b["hi"][1].get<double>(), b["lo"][2].get<double>(),
-                b["hi"][2].get<double>());
+                static_cast<long long>(b["cells"].get<std::int64_t>()), b["cost"].get<double>(),
+                b["lo"][0].get<double>(), b["hi"][0].get<double>(), b["lo"][1].get<double>(), b["hi"][1].get<double>(),
+                b["lo"][2].get<double>(), b["hi"][2].get<double>());
   return kExitOk;
 }
 

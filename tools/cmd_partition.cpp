@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "scene/partition_index.hpp"
+#include "partition/partition_index.hpp"
 #include "tools/commands.hpp"
 #include "tools/memory_budget.hpp"
 #include "tools/mesh_options.hpp"

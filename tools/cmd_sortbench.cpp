@@ -12,9 +12,9 @@
 #include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
-#include "grid/read_mesh.hpp"
+#include "io/read_mesh.hpp"
 #include "raycast/order_oracle.hpp"
-#include "scene/names.hpp"
+#include "render/names.hpp"
 #include "scene/prepare.hpp"
 #include "scene/scene_file.hpp"
 #include "tools/commands.hpp"

@@ -12,7 +12,7 @@
 
 int main(int argc, char** argv) {
   using namespace cellproj;
-  keep_frame_arrays_in_heap();  // a frame's arrays of a few MB reused, not mapped anew (base/huge_pages.hpp)
+  keep_frame_arrays_in_heap();         // a frame's arrays of a few MB reused, not mapped anew (base/huge_pages.hpp)
   const MpiSession mpi(&argc, &argv);  // MPI only when launched by mpirun
   // Under mpirun every rank meets the same error (agree() makes them one): rank 0 reports it.
   const bool report_errors = Communicator::world().rank == 0;
@@ -37,13 +37,13 @@ int main(int argc, char** argv) {
     if (app.got_subcommand("partition")) return partition();
     return generate();
   } catch (const UsageError& e) {
-    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", printable(e.what()).c_str());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", cli_words(e.what()).c_str());
     return kExitUsage;
   } catch (const InputError& e) {
-    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", printable(e.what()).c_str());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", cli_words(e.what()).c_str());
     return kExitInput;
   } catch (const ResourceError& e) {
-    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", printable(e.what()).c_str());
+    if (report_errors) std::fprintf(stderr, "cellproj: error: %s\n", cli_words(e.what()).c_str());
     return kExitInternal;
   } catch (const std::bad_alloc&) {
     std::string command;
@@ -59,7 +59,7 @@ int main(int argc, char** argv) {
                    printable(where(e.path1().string(), "cannot be used (" + e.code().message() + ")")).c_str());
     return kExitInput;
   } catch (const std::exception& e) {
-    if (report_errors) std::fprintf(stderr, "cellproj: internal error: %s\n", printable(e.what()).c_str());
+    if (report_errors) std::fprintf(stderr, "cellproj: internal error: %s\n", cli_words(e.what()).c_str());
     return kExitInternal;
   }
 }

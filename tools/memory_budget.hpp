@@ -6,15 +6,15 @@
 #include <string>
 
 #include "base/bytes.hpp"
-#include "grid/header_counts.hpp"
-#include "grid/isolated_read.hpp"  // available_memory_bytes
+#include "io/header_counts.hpp"
+#include "io/isolated_read.hpp"  // available_memory_bytes
 
 namespace cellproj {
 
 // Throws InputError, prefixed with `source`, when `need` bytes exceed the limit: `max_memory_gib`
 // when positive, else the memory available now. `what` names the work ("rendering 512x512 ..."),
 // `remedy` what the user can do about it.
-void refuse_beyond_memory(std::uint64_t need, double max_memory_gib, const std::string& what,
-                          const std::string& source, const std::string& remedy = "use a smaller --size or mesh");
+void refuse_beyond_memory(std::uint64_t need, double max_memory_gib, const std::string& what, const std::string& source,
+                          const std::string& remedy = "use a smaller --size or mesh");
 
 }  // namespace cellproj

@@ -5,7 +5,7 @@
 
 #include <CLI/CLI.hpp>
 
-#include "grid/read_mesh.hpp"
+#include "io/read_mesh.hpp"
 #include "optics/colormaps.hpp"
 #include "scene/quick_scene.hpp"
 

@@ -11,7 +11,7 @@
 #include <string>
 #include <thread>
 
-#include "grid/read_mesh.hpp"
+#include "io/read_mesh.hpp"
 
 namespace cellproj {
 
@@ -52,7 +52,7 @@ class ProgressBar {
 
 // load_mesh, with "reading FILE ... 3 s" ticking on a terminal once it takes over a second (a
 // reader gives no fraction done). The ticker writes with write(2), never through stdio's locks,
-// since the read forks (grid/isolated_read.hpp); off a terminal no thread is started.
+// since the read forks (io/isolated_read.hpp); off a terminal no thread is started.
 inline LoadedMesh read_with_progress(const std::string& path, const ReadOptions& options) {
   if (isatty(STDERR_FILENO) != 1) return load_mesh(path, options);
   std::mutex m;

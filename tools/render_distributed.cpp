@@ -9,12 +9,14 @@
 #include <nlohmann/json.hpp>
 
 #include "distributed/brick_renderer.hpp"
+#include "render/names.hpp"
 #include "render/volume.hpp"
 #include "scene/camera_json.hpp"
-#include "scene/names.hpp"
 #include "scene/prepare.hpp"
+#include "scene/report_json.hpp"
 #include "tools/commands.hpp"
 #include "tools/frame_output.hpp"
+#include "tools/terminal_text.hpp"
 #include "tools/timing.hpp"
 
 namespace cellproj {
@@ -26,8 +28,9 @@ bool is_distributed(const RenderArgs& a, const Communicator& world) {
 void check_distributed(const RenderArgs& a, const RenderSettings& settings) {
   usage([&] { check_distributable(settings); });
   if (!a.progressive.empty() || a.time || !a.animate.empty())
-    throw UsageError("a distributed render (mpirun, or a partition index) renders one mesh: --progressive, --time and "
-                     "--animate do not go with it yet");
+    throw UsageError(
+        "a distributed render (mpirun, or a partition index) renders one mesh: --progressive, --time and "
+        "--animate do not go with it yet");
 }
 
 int render_distributed(const RenderArgs& a, const Input& input, const RenderSettings& settings,
@@ -37,7 +40,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
   if (world.rank == 0)
-    for (const auto& w : prepared.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
+    for (const auto& w : prepared.warnings) warn(w);
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   tbb::task_arena arena(threads);
   RankStats stats;
@@ -49,9 +52,9 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   Image first;
   arena.execute([&] {
     // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.
-    const BrickRenderer bricks =
-        input.partition ? BrickRenderer(world, *input.partition, prepared.field, scene.reader)
-                        : BrickRenderer(world, prepared.loaded.mesh, prepared.field, "projected");
+    const BrickRenderer bricks = input.partition
+                                     ? BrickRenderer(world, *input.partition, prepared.field, scene.reader)
+                                     : BrickRenderer(world, prepared.loaded.mesh, prepared.field, "projected");
     // Frames as a single process makes them: a turntable with --orbit, else a degree a frame.
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
@@ -62,7 +65,8 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
       if (paths.sequence) {
         char what[160];
         std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %d rank%s, %.3f s", f + 1, a.frames, scene.width,
-                      scene.height, a.options.method.c_str(), world.size, world.size > 1 ? "s" : "", frame_times.back());
+                      scene.height, option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "",
+                      frame_times.back());
         write_outputs(image, scene.background, a.legend ? &legend : nullptr, paths.png_of(f), paths.npy_of(f), what);
       } else if (f == 0) {
         first = std::move(image);
@@ -71,11 +75,11 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   });
   const std::vector<double> all = gather_to_root(world, stats.values());
   if (world.rank != 0) return kExitOk;
-  for (const auto& w : report.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
+  for (const auto& w : report.warnings) warn(w);
   if (!paths.sequence) {
     char what[160];
     std::snprintf(what, sizeof what, "%dx%d, %s, %d rank%s, %.3f s per frame", scene.width, scene.height,
-                  a.options.method.c_str(), world.size, world.size > 1 ? "s" : "", median(frame_times));
+                  option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "", median(frame_times));
     write_outputs(first, scene.background, a.legend ? &legend : nullptr, paths.png, paths.npy, what);
   }
   if (a.stats) {
@@ -91,7 +95,8 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
       if (render > slowest) slowest = render, slowest_rank = r;
       ranks.push_back(j);
     }
-    nlohmann::json s = {{"method", a.options.method},
+    nlohmann::json s = {{"method", option_text(a.options, "method")},
+                        {"settings", settings_json(settings)},
                         {"mesh", scene.mesh},
                         {"field", prepared.field},
                         {"width", scene.width},

@@ -71,7 +71,7 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     times = !a.animate.empty() ? usage([&] { return animation_times(a.animate); })
                                : std::vector<double>(a.frames, a.time ? *a.time : listed.frames.front().time);
     for (double t : {times.front(), times.back()}) locate(listed, t);  // in range, before any read
-    player = std::make_unique<SeriesPlayer>(std::move(listed), scene.field, scene.reader);
+    player = std::make_unique<SeriesPlayer>(std::move(listed), scene.field, key_frame_reader(scene.reader));
   }
   // A partition index: each rank reads its bricks later; the scene is prepared from the whole mesh's extent.
   std::optional<PartitionIndex> partition;
@@ -103,8 +103,9 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   }
   apply_view_and_clip(a, scene);
   if (!scene.clip.empty() && partition)
-    throw UsageError("clipping planes do not go with a partition index yet: clip the mesh in memory (mpirun with the "
-                     "mesh itself) or before partitioning it");
+    throw UsageError(
+        "clipping planes do not go with a partition index yet: clip the mesh in memory (mpirun with the "
+        "mesh itself) or before partitioning it");
   PreparedScene prepared = prepare_scene(scene, std::move(loaded));
   ClipReport clipped;
   if (!scene.clip.empty() && !player) {  // after the scene is prepared: colours and framing are the whole mesh's
@@ -118,8 +119,8 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   const MeshView cells = player ? player->view(first) : prepared.loaded.mesh.view();
   refuse_beyond_memory(renderer.estimate_bytes(size_of(cells), size), a.max_memory_gib,
                        "rendering " + size_text + " of " + std::to_string(cells.n_cells) + " cells", a.input);
-  return {std::move(scene), std::move(prepared), std::move(player), std::move(first), std::move(times), clipped,
-          std::move(partition)};
+  return {std::move(scene), std::move(prepared), std::move(player), std::move(first), std::move(times),
+          clipped,          std::move(partition)};
 }
 
 }  // namespace cellproj

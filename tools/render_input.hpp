@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "grid/clip.hpp"
-#include "grid/read_mesh.hpp"
-#include "grid/time_series.hpp"
+#include "io/read_mesh.hpp"
+#include "io/series_files.hpp"
+#include "mesh/clip.hpp"
+#include "partition/partition_index.hpp"
 #include "render/renderer.hpp"
+#include "render/settings_table.hpp"
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
-#include "scene/partition_index.hpp"
-#include "scene/render_options.hpp"
 #include "scene/scene_file.hpp"
 
 namespace cellproj {
@@ -41,10 +41,10 @@ struct RenderArgs {
 struct Input {
   Scene scene;
   PreparedScene prepared;
-  std::unique_ptr<SeriesPlayer> player;  // a time series: its frames (prepared.loaded has no cells then)
-  SeriesFrame first;                     // the series' first frame
-  std::vector<double> times;             // the series' frame times
-  ClipReport clipped;                    // what --clip (or the scene's planes) did to the mesh
+  std::unique_ptr<SeriesPlayer> player;     // a time series: its frames (prepared.loaded has no cells then)
+  SeriesFrame first;                        // the series' first frame
+  std::vector<double> times;                // the series' frame times
+  ClipReport clipped;                       // what --clip (or the scene's planes) did to the mesh
   std::optional<PartitionIndex> partition;  // a partitioned mesh: prepared.loaded is its extent (no cells)
 };
 

@@ -4,36 +4,37 @@
 #include <chrono>
 #include <cstdio>
 
-#include <nlohmann/json.hpp>
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
+#include <nlohmann/json.hpp>
 
 #include "base/error.hpp"
+#include "render/names.hpp"
 #include "render/volume_set.hpp"
 #include "scene/camera_json.hpp"
-#include "scene/names.hpp"
 #include "scene/prepare.hpp"
+#include "scene/report_json.hpp"
 #include "scene/volume_scene.hpp"
 #include "tools/commands.hpp"
 #include "tools/frame_output.hpp"
 #include "tools/memory_budget.hpp"
 #include "tools/progress.hpp"
+#include "tools/terminal_text.hpp"
 #include "tools/timing.hpp"
 
 namespace cellproj {
 
 void check_volume_scene(const RenderArgs& a, const Scene& scene) {
   const std::string what = a.input + " has " + std::to_string(scene.volumes.size()) + " volumes";
-  const auto given = [&](const char* name) {
-    return std::find(a.options.given.begin(), a.options.given.end(), name) != a.options.given.end();
-  };
-  if (a.options.method != "exact")
-    throw UsageError("--method " + a.options.method + " draws one mesh; " + what +
+  const auto given = [&](const char* name) { return option_given(a.options, name); };
+  const std::string method = option_text(a.options, "method");
+  if (method != "exact")
+    throw UsageError("--method " + method + " draws one mesh; " + what +
                      ", drawn together by --method exact (the default for such a scene): cells of overlapping "
                      "meshes cannot be ordered as whole cells");
   if (given("iso")) throw UsageError("--iso: " + what + ": give each volume's iso-surfaces in its \"iso\" list");
-  if (given("interpolation") && a.options.interpolation != "canonical-tets")
-    throw UsageError("--interpolation " + a.options.interpolation + ": " + what +
+  if (given("interpolation") && option_text(a.options, "interpolation") != "canonical-tets")
+    throw UsageError("--interpolation " + option_text(a.options, "interpolation") + ": " + what +
                      ", whose fields are drawn linear in each canonical tetrahedron (canonical-tets)");
   if (!a.field.empty()) throw UsageError("--field: " + what + ": give each volume's \"field\" in the scene");
   if (!a.look_given.empty() || a.legend)
@@ -66,7 +67,7 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
   refuse_beyond_memory(mesh_bytes + estimate_volumes_bytes(sizes, size), a.max_memory_gib,
                        "reading " + std::to_string(scene.volumes.size()) + " volumes and rendering " + size_text,
                        a.input);
-  const bool volume_given = std::find(a.options.given.begin(), a.options.given.end(), "volume") != a.options.given.end();
+  const bool volume_given = option_given(a.options, "volume");
   const VolumeScene volumes(
       scene,
       [&](const SceneVolume& v) {
@@ -75,7 +76,7 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
         return read_with_progress(v.mesh, reader);
       },
       volume_given ? std::optional<bool>(settings.iso.volume) : std::nullopt);
-  for (const auto& w : volumes.warnings()) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
+  for (const auto& w : volumes.warnings()) warn(w);
   const PreparedVolumes& prepared = volumes.prepared();
   std::int64_t cells = 0;
   for (const VolumeEntry& e : volumes.entries()) cells += e.volume->mesh().n_cells;
@@ -106,7 +107,7 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
         first = std::move(img);
     }
   });
-  for (const auto& w : report.warnings) std::fprintf(stderr, "cellproj: warning: %s\n", w.c_str());
+  for (const auto& w : report.warnings) warn(w);
   const double frame_seconds = median(frame_times);
   if (!paths.sequence) {
     char what[128];
@@ -122,11 +123,17 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
                         {"cells", prepared.volumes[k].loaded.mesh.n_cells()},
                         {"clip_cells_cut", volumes.clipped()[k].cut},
                         {"clip_cells_dropped", volumes.clipped()[k].dropped}});
-    nlohmann::json s = {{"method", "exact"},           {"meshes", meshes},
-                        {"cells", cells},              {"width", scene.width},
-                        {"height", scene.height},      {"threads", threads},
-                        {"frames", a.frames},          {"load_seconds", load_seconds},
-                        {"frame_seconds", frame_seconds}, {"render_seconds", render_seconds / a.frames}};
+    nlohmann::json s = {{"method", "exact"},
+                        {"meshes", meshes},
+                        {"cells", cells},
+                        {"width", scene.width},
+                        {"height", scene.height},
+                        {"threads", threads},
+                        {"frames", a.frames},
+                        {"load_seconds", load_seconds},
+                        {"frame_seconds", frame_seconds},
+                        {"render_seconds", render_seconds / a.frames},
+                        {"settings", settings_json(settings)}};
     s.update(report_json(report));
     std::fprintf(stderr, "%s\n", s.dump().c_str());
   }

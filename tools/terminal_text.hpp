@@ -1,8 +1,10 @@
 #pragma once
-// Text for the terminal: an error message may quote bytes of a garbled file (a reader's "unknown
-// keyword" of binary data), which a terminal should not be sent raw.
+// Text for the terminal: the library's words for its settings spelled as options, and no raw
+// bytes of a garbled file (a reader's "unknown keyword" of binary data) sent to a terminal.
 #include <cstdio>
 #include <string>
+
+#include "render/settings_table.hpp"
 
 namespace cellproj {
 
@@ -27,6 +29,14 @@ inline std::string printable(const std::string& s) {
     i += n;
   }
   return out;
+}
+
+// A library message as the command line says it: setting 'table-size' as --table-size, printable.
+inline std::string cli_words(const std::string& message) { return printable(spell_settings(message, "--", "")); }
+
+// "cellproj: warning: ..." on stderr.
+inline void warn(const std::string& warning) {
+  std::fprintf(stderr, "cellproj: warning: %s\n", cli_words(warning).c_str());
 }
 
 }  // namespace cellproj

@@ -18,11 +18,12 @@ class Font {
  public:
   Font(const std::string& path, int pixels) {
     if (path.empty())
-      throw InputError("--legend: no font was found when cellproj was built; install fonts-dejavu-core and rebuild");
-    if (FT_Init_FreeType(&library_)) throw InputError("--legend: FreeType could not start");
+      throw InputError(
+          "setting 'legend': no font was found when cellproj was built; install fonts-dejavu-core and rebuild");
+    if (FT_Init_FreeType(&library_)) throw InputError("setting 'legend': FreeType could not start");
     if (FT_New_Face(library_, path.c_str(), 0, &face_)) {
       FT_Done_FreeType(library_);
-      throw InputError(where(path, "--legend: FreeType cannot load this font"));
+      throw InputError(where(path, "setting 'legend': FreeType cannot load this font"));
     }
     FT_Set_Pixel_Sizes(face_, 0, static_cast<FT_UInt>(pixels));
   }

@@ -6,7 +6,7 @@
 #include <vector>
 
 #include "base/huge_pages.hpp"
-#include "grid/geometry.hpp"
+#include "base/recentred_points.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {

@@ -38,7 +38,7 @@ struct Listed {
 };
 
 // Front to back; at (nearly) equal distance a leaving face comes first, so that a ray through an
-// edge where two faces meet, or a seam whose two sides are not bit-identical (grid/seams.cpp glues
+// edge where two faces meet, or a seam whose two sides are not bit-identical (mesh/seams.cpp glues
 // the others), still reads as "leave one cell, enter the next".
 bool in_front(const Listed& a, const Listed& b) {
   const double tol = 1e-9 * std::max(std::abs(a.key), std::abs(b.key));

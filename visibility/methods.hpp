@@ -23,7 +23,7 @@ enum class GapMethod : std::uint8_t {
 
 // Which cells other than tetrahedra are split into their canonical tetrahedra before sorting.
 enum class Tetrahedralize {
-  problem,  // per view, only the cells a ray may cross more than twice (grid/face_split; the default)
+  problem,  // per view, only the cells a ray may cross more than twice (mesh/face_split; the default)
   all,      // every cell that is not a tetrahedron, once per mesh
   none,     // never: whole cells even where a ray crosses one twice (order and picture may be wrong there)
 };

@@ -11,7 +11,7 @@
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
 
-#include "grid/tetrahedralize.hpp"
+#include "mesh/tetrahedralize.hpp"
 #include "view/raster.hpp"
 #include "visibility/prepared.hpp"
 
@@ -73,7 +73,7 @@ double area(const Polygon& p, glm::dvec2& centroid) {
   return 0.5 * a;
 }
 
-// A cell's surface as triangles (grid/tetrahedralize: quads split by the diagonal from their
+// A cell's surface as triangles (mesh/tetrahedralize: quads split by the diagonal from their
 // lowest id, as the rasterizers, the A-buffer and the exact renderer see a warped face).
 struct CellSurface {
   int count = 0;

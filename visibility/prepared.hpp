@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "base/huge_pages.hpp"
-#include "grid/geometry.hpp"
+#include "mesh/geometry.hpp"
 #include "visibility/sort.hpp"
 
 namespace cellproj {
@@ -76,7 +76,7 @@ struct Relations {
 // ahead[c] is set when the cell across c's k-th face comes after c; in[c] counts the cells that
 // must come before c. A face seen exactly edge-on makes no relation.
 struct FaceOrder {
-  FrameBuffer<std::uint8_t> ahead;  // fresh every view (base/huge_pages.hpp)
+  FrameBuffer<std::uint8_t> ahead;   // fresh every view (base/huge_pages.hpp)
   FrameBuffer<std::uint8_t> behind;  // bit k: the cell across face k comes before (kept when asked: ViewRelations)
   FrameBuffer<std::int32_t> in;
   Relations split;  // from a cell with a split quad to the tetrahedra across it (no bit on that side)

@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "base/huge_pages.hpp"
-#include "grid/geometry.hpp"
-#include "grid/mesh.hpp"
-#include "grid/topology.hpp"
+#include "mesh/geometry.hpp"
+#include "mesh/mesh.hpp"
+#include "mesh/topology.hpp"
 #include "view/camera.hpp"
 #include "visibility/methods.hpp"
 
@@ -43,6 +43,12 @@ struct SortStats {
   std::vector<std::pair<std::string, double>> phase_seconds;  // in the order they ran
   double seconds = 0.0;                                       // the whole sort
 };
+// Each counter the report shows, with its key (render/report.hpp): f(key, value).
+template <class F>
+void each_counter(const SortStats& s, F&& f) {
+  f("face_relations", s.face_relations), f("gap_relations", s.gap_relations), f("gap_pair_tests", s.gap_pair_tests);
+  f("abuffer_runs", s.abuffer_runs), f("cycles", static_cast<std::int64_t>(s.cycles.size()));
+}
 
 struct SortResult {
   std::vector<std::int64_t> order;  // every cell once, back to front (empty when relations_only)
@@ -77,7 +83,7 @@ class VisibilitySorter {
   // The mesh's arrays and the topology must outlive the sorter. The hull report
   // (boundary_convexity) decides what `automatic` runs, and which boundary faces can bound a gap.
   // `points` (recentre(mesh)) may be shared with other users of the same points; made when null.
-  // A mesh made by splitting cells of another (grid/face_split) may name that mesh's sorter
+  // A mesh made by splitting cells of another (mesh/face_split) may name that mesh's sorter
   // (`whole`, sharing `points`) and each cell's parent there: the face planes between cells that
   // stayed whole are copied from it instead of computed again.
   VisibilitySorter(const MeshView& mesh, const FaceTopology& topology, const HullReport& hull,

@@ -16,8 +16,8 @@
 
 #include "base/error.hpp"
 #include "base/timing.hpp"
-#include "grid/cell_type.hpp"
-#include "grid/tetrahedralize.hpp"
+#include "mesh/cell_type.hpp"
+#include "mesh/tetrahedralize.hpp"
 #include "visibility/image_faces.hpp"
 
 namespace cellproj {

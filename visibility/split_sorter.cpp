@@ -4,7 +4,7 @@
 
 #include <glm/geometric.hpp>
 
-#include "grid/split_topology.hpp"
+#include "mesh/split_topology.hpp"
 
 namespace cellproj {
 
@@ -73,7 +73,7 @@ std::shared_ptr<const SortableMesh> SplittingSorter::split_for(const std::vector
     if (last_ && last_->problem == problem) return last_;
     whole = base_, hull = hull_, first_split = !last_;
   }
-  // Each split patches the unsplit mesh's topology and sorter (grid/split_topology), made once,
+  // Each split patches the unsplit mesh's topology and sorter (mesh/split_topology), made once,
   // when a second split is needed: a single view pays for its own split only, as from scratch.
   if (!whole && !first_split) whole = base_mesh();
   auto s = sortable_mesh(mesh_, &problem, points_, hull, whole.get());

@@ -1,6 +1,6 @@
 #pragma once
 // Sorting a mixed mesh whose quadrilateral faces may be warped (MWSC sections 3 and 4): per view
-// the problem cells (grid/face_split) are split into their canonical tetrahedra and the resulting
+// the problem cells (mesh/face_split) are split into their canonical tetrahedra and the resulting
 // mesh is sorted, so that the cycles and wrong orders made by folded faces do not arise.
 // Visibility cycles that still involve whole cells split those cells too, and the view is sorted
 // once more.
@@ -10,8 +10,8 @@
 #include <string>
 #include <vector>
 
-#include "grid/face_split.hpp"
-#include "grid/topology.hpp"
+#include "mesh/face_split.hpp"
+#include "mesh/topology.hpp"
 #include "visibility/methods.hpp"
 #include "visibility/sort.hpp"
 
@@ -70,7 +70,7 @@ class SplittingSorter {
 // Prepares a mesh for sorting: topology, convexity, sorter (and the split, when `which` is given);
 // `points` are the mesh's recentred points and `hull` its boundary's convex hull when the caller
 // has them (every split of the mesh shares both). A split given the prepared unsplit mesh `whole`
-// patches its topology (grid/split_topology) and copies the face planes of the cells left whole
+// patches its topology (mesh/split_topology) and copies the face planes of the cells left whole
 // from it, and shares its hull.
 std::shared_ptr<SortableMesh> sortable_mesh(const MeshView& mesh, const std::vector<char>* which,
                                             std::shared_ptr<const RecentredPoints> points = nullptr,

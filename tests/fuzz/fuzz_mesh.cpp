@@ -16,8 +16,8 @@
 
 #include "base/error.hpp"
 #include "fuzz_folder.hpp"
-#include "grid/read_mesh.hpp"
-#include "grid/topology.hpp"
+#include "io/read_mesh.hpp"
+#include "mesh/topology.hpp"
 
 namespace {
 

@@ -10,8 +10,8 @@
 
 #include "base/error.hpp"
 #include "fuzz_folder.hpp"
-#include "grid/generate.hpp"
-#include "grid/write_mesh.hpp"
+#include "io/write_mesh.hpp"
+#include "mesh/generate.hpp"
 #include "scene/prepare.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/volume_scene.hpp"

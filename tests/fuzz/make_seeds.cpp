@@ -11,8 +11,8 @@
 #include <string>
 #include <vector>
 
-#include "grid/generate.hpp"
-#include "grid/write_mesh.hpp"
+#include "io/write_mesh.hpp"
+#include "mesh/generate.hpp"
 #include "tests/legacy_samples.hpp"
 
 namespace fs = std::filesystem;

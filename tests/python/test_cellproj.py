@@ -106,9 +106,9 @@ def test_dtypes_taken_as_they_are_and_those_converted():
     (lambda: tet(types=(42,)), "unsupported cell types"),
     (lambda: tet(scalars=np.zeros(3)), "field 'scalars' has 3 values for 4 points"),
     (lambda: tet(points=np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, np.nan]])), "non-finite coordinate"),
-    (lambda: cellproj.render(tet(), sort="bogus"), "unknown sort 'bogus'"),
-    (lambda: cellproj.render(tet(), method="exact", sort="mpvo"), "--sort does not apply to --method exact"),
-    (lambda: cellproj.render(tet(), colour="red"), "unknown render option 'colour'"),
+    (lambda: cellproj.render(tet(), sort="bogus"), "sort=: unknown sort 'bogus'"),
+    (lambda: cellproj.render(tet(), method="exact", sort="mpvo"), "sort= does not apply to method= exact, which reads method=, .*interpolation="),
+    (lambda: cellproj.render(tet(), colour="red"), "'colour' is not a render setting \\(known: method=, .*table_size="),
     (lambda: cellproj.render(tet(), size=(0, 8)), "size: expected"),
     (lambda: cellproj.read("/nonexistent/mesh.vtu"), "mesh.vtu: no such file"),
     (lambda: cellproj.TransferFunction(extinction=[(0, -1)], color=[(0, 1, 1, 1)]), "must be finite and >= 0"),
@@ -197,7 +197,7 @@ def test_a_scenes_iso_list_is_what_exact_draws_from_python_and_the_cli(tmp_path)
     same = cellproj.render_scene(str(plain), size=(48, 40), method="exact", iso=["0.3:0.3,0.5,1,0.35", "0.6"],
                                  iso_mode="oit4", volume="off")
     assert np.array_equal(image, same)
-    with pytest.warns(UserWarning, match="iso-surfaces are drawn by --method exact"):
+    with pytest.warns(UserWarning, match="iso-surfaces are drawn by method= exact"):
         cellproj.render_scene(str(scene), size=(16, 16))
 
 

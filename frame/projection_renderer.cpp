@@ -1,0 +1,370 @@
+#include "frame/projection_renderer.hpp"
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <optional>
+
+#include <tbb/blocked_range.h>
+#include <tbb/enumerable_thread_specific.h>
+#include <tbb/parallel_for.h>
+#include <tbb/parallel_invoke.h>
+
+#include "base/error.hpp"
+#include "base/timing.hpp"
+#include "composite/ordered_pipeline.hpp"
+#include "composite/tiled_compositor.hpp"
+#include "frame/cell_passes.hpp"
+#include "frame/gl_frame.hpp"
+#include "frame/splat_stencil.hpp"
+#include "frame/tile_orders.hpp"
+#include "mesh/geometry.hpp"
+#include "raycast/cell_ray_tracer.hpp"
+#include "splat/splat.hpp"
+#include "view/screen.hpp"
+
+namespace cellproj {
+namespace {
+
+struct FrameCounters {
+  ProjectionCounters projection;
+  SplatCounters splat;
+  void add(const FrameCounters& o) { projection.add(o.projection), splat.add(o.splat); }
+};
+
+// The small cells' splats of the frame, and the stencil of the cells drawn by their polygons over
+// the tiles the splats reach (the tracer's cells are the mesh's; a split cell is drawn when any of
+// its parts is).
+ProjectionSplats frame_splats(const SortableMesh& view_mesh, const std::vector<std::uint8_t>& small,
+                              const SplatContext& frame, const CellRayTracer& tracer, std::int64_t mesh_cells,
+                              SplatCounters& counters) {
+  const MeshView& cells = view_mesh.cells;
+  ProjectionSplats out;
+  out.rays = &frame.rays;
+  out.index.assign(static_cast<std::size_t>(cells.n_cells), -1);
+  std::vector<std::int64_t> listed;
+  std::vector<std::uint8_t> drawn(static_cast<std::size_t>(mesh_cells), 0);
+  for (std::int64_t c = 0; c < cells.n_cells; ++c)
+    if (small[static_cast<std::size_t>(c)])
+      out.index[static_cast<std::size_t>(c)] = static_cast<std::int32_t>(listed.size()), listed.push_back(c);
+    else
+      drawn[static_cast<std::size_t>(view_mesh.parent(c))] = 1;
+  out.footprint.resize(listed.size());
+  std::vector<PixelBox> boxes(listed.size());
+  tbb::enumerable_thread_specific<SplatCounters> counts;
+  tbb::parallel_for(tbb::blocked_range<std::size_t>(0, listed.size(), 1024),
+                    [&](const tbb::blocked_range<std::size_t>& r) {
+                      SplatCounters& n = counts.local();
+                      for (std::size_t k = r.begin(); k < r.end(); ++k) {
+                        const std::int64_t c = listed[k];
+                        out.footprint[k] = cell_splat(frame, cells.cell(c), cells.type(c), n);
+                        boxes[k] = out.footprint[k].pixels(frame.rays.width(), frame.rays.height());
+                      }
+                    });
+  for (const SplatCounters& n : counts) counters.add(n);
+  out.stencil = SplatStencil(tracer, frame.rays.camera(), frame.rays.width(), frame.rays.height(), boxes, drawn);
+  return out;
+}
+
+// The cells of the order as a source of the ordered pipeline; the small ones splatted in their
+// place (or skipped), the others projected.
+struct OrderedCells {
+  using Scratch = CellScratch;
+  using Counters = FrameCounters;
+  const CellFragments& project;
+  const MeshView& cells;
+  const std::vector<std::int64_t>& order;
+  const std::vector<std::uint8_t>& small;  // per cell: drawn by its splat (or not at all)
+  SmallCells mode;
+  const ProjectionSplats& splats;
+  OpaqueMask* opaque = nullptr;         // early ray termination: composited front to back, tiles only
+  std::uint8_t* drew = nullptr;         // per cell, tiles only: set once it adds a fragment (count_small_after)
+  const std::uint8_t* clear = nullptr;  // per cell, tiles only: not drawn (transparent, kept in the tiles' orders)
+  void fragments(std::size_t k, FragmentBands& out, Scratch& s, Counters& c) const {
+    const std::int64_t cell = order[k];
+    if (mode != SmallCells::draw && small[static_cast<std::size_t>(cell)]) {
+      if (mode == SmallCells::splat) splats.append(cell, out, c.splat);
+      return;
+    }
+    project.project(cells.cell(cell), cells.type(cell), out, s, c.projection);
+  }
+  void composite(std::size_t k, Image& image, Scratch& s, Counters& c) const {
+    project.project(cells.cell(order[k]), cells.type(order[k]), image, s, c.projection);
+    ++c.projection.direct_cells;
+  }
+  // composite_in_tiles' look-ahead (its items keyed by cell), in the order a cell's data is
+  // reached: its offset and type, then its point ids, then its points. (The image's pixels under
+  // them were tried as a fourth stage: slower, bench/results/prefetch.txt.)
+  void prefetch(std::size_t key, int stage) const {
+    const auto cell = static_cast<std::int64_t>(key);
+    if (stage == 0) return __builtin_prefetch(&cells.offsets[cell]), __builtin_prefetch(&cells.types[cell]);
+    if (stage == 1) return __builtin_prefetch(cells.cell(cell));
+    project.prefetch_points(cells.cell(cell), cells.cell_size(cell));
+  }
+  // A tile's rows of a cell (composite_in_tiles, keyed by cell; never with splats): the cell counted
+  // by its first tile, its pixels by each.
+  void composite(std::size_t key, Image& image, RowRange rows, bool first, Scratch& s, Counters& c) const {
+    const auto cell = static_cast<std::int64_t>(key);
+    if (mode == SmallCells::skip && small[static_cast<std::size_t>(cell)]) return;
+    if (clear && clear[cell]) return;
+    const std::int64_t* ids = cells.cell(cell);
+    const CellType type = cells.type(cell);
+    ProjectionCounters pixels;
+    ProjectionCounters& into = first ? c.projection : pixels;
+    const std::int64_t before = into.fragments;
+    if (!opaque)
+      project.project(ids, type, image, rows, s, into);
+    else if (project.hidden_by(ids, type, rows, *opaque))
+      ++into.hidden_cells;
+    else
+      project.project_under(ids, type, image, rows, *opaque, s, into);
+    if (drew && into.fragments != before) __atomic_store_n(&drew[cell], std::uint8_t{1}, __ATOMIC_RELAXED);
+    if (!first) c.projection.add_pixels(pixels);
+  }
+};
+// The opacity table of pt-table: extinction up to the transfer function's largest, lengths up to
+// the longest segment a ray can have in one cell.
+OpacityTable opacity_table(const TransferFunction& tf, int size, double max_diameter) {
+  double kmax = 0.0;
+  for (const auto& p : tf.extinction_points()) kmax = std::max(kmax, p.kappa);
+  return OpacityTable(size, kmax, max_diameter);
+}
+
+// The order without the cells whose scalar range has extinction 0 throughout: they add nothing to
+// any ray (emission is C kappa, absorption kappa), so the picture is the same bits without them.
+// Per cell, whether it is such a cell (empty when the transfer function has no transparent range).
+std::vector<std::uint8_t> transparent_cells(const MeshView& cells, const double* scalar, const TransferFunction& tf) {
+  if (!tf.has_transparent_range()) return {};
+  std::vector<std::uint8_t> clear(static_cast<std::size_t>(cells.n_cells), 0);
+  tbb::parallel_for(std::int64_t(0), cells.n_cells, [&](std::int64_t c) {
+    const std::int64_t* id = cells.cell(c);
+    double lo = scalar[id[0]], hi = lo;
+    for (int k = 1; k < cells.cell_size(c); ++k) lo = std::min(lo, scalar[id[k]]), hi = std::max(hi, scalar[id[k]]);
+    clear[static_cast<std::size_t>(c)] = tf.transparent_over(lo, hi);
+  });
+  return clear;
+}
+
+std::vector<std::int64_t> without_transparent(const std::vector<std::int64_t>& order, const MeshView& cells,
+                                              const double* scalar, const TransferFunction& tf) {
+  const std::vector<std::uint8_t> clear = transparent_cells(cells, scalar, tf);
+  if (clear.empty()) return order;
+  std::vector<std::int64_t> kept;
+  kept.reserve(order.size());
+  for (std::int64_t c : order)
+    if (!clear[static_cast<std::size_t>(c)]) kept.push_back(c);
+  return kept;
+}
+
+}  // namespace
+
+void check_options(const ProjectionOptions& o) {
+  check_built(o.backend);
+  OpacityTable::check_size(o.table_size);
+  const SmallCells small = resolve(o.splat, o.backend);
+  if (o.early_termination &&
+      (is_opengl(o.backend) || o.compositing != Compositing::tiles || small == SmallCells::splat))
+    throw InputError(
+        "setting 'early-termination' on composites image tiles front to back: it needs the software back end, "
+        "setting 'compositing' tiles and no splats (setting 'small-cells' draw or skip)");
+  if (is_opengl(o.backend) && o.whole_cells == WholeCells::layers)  // never the default: the user asked
+    throw InputError(
+        "setting 'whole-cells' layers needs setting 'backend' software (the OpenGL back ends draw polygons)");
+  if (is_opengl(o.backend) && !traits(o.method).opengl) {
+    std::string drawable;
+    for (const MethodTraits& t : kProjectionMethods)
+      if (t.opengl) drawable += (drawable.empty() ? "" : " and ") + std::string(t.name);
+    throw InputError(std::string("the OpenGL back ends draw ") + drawable + " only, not " + name_of(o.method) +
+                     " (per-pixel integrals need the software back end)");
+  }
+}
+
+ProjectionRenderer::ProjectionRenderer(const MeshView& mesh, Tetrahedralize mode)
+    : local_(mesh), mesh_(local_.view()), sorter_(mesh_, mode) {
+  const RecentredPoints& pts = sorter_.points();
+  for (std::int64_t c = 0; c < mesh.n_cells; ++c) {
+    const std::int64_t* id = mesh.cell(c);
+    const int n = mesh.cell_size(c);
+    for (int a = 0; a < n; ++a)
+      for (int b = a + 1; b < n; ++b) max_diameter_ = std::max(max_diameter_, glm::distance(pts(id[a]), pts(id[b])));
+  }
+}
+
+ProjectionRenderer::~ProjectionRenderer() = default;
+
+const CellRayTracer& ProjectionRenderer::tracer() const {
+  std::lock_guard<std::mutex> lock(tracer_mutex_);
+  if (!tracer_) tracer_ = std::make_unique<CellRayTracer>(mesh_);
+  return *tracer_;
+}
+
+bool ProjectionRenderer::convex_boundary() const { return sorter_.base().hull.convex; }
+
+Image ProjectionRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,
+                                 int height, const ProjectionOptions& options, ProjectionStats* stats) const {
+  check_options(options);
+  const auto start = std::chrono::steady_clock::now();
+  ProjectionStats st;
+  const RecentredPoints& points = sorter_.points();
+
+  auto t = std::chrono::steady_clock::now();
+  const PixelRays rays(recentred(camera, points.centre), width, height);  // as the A-buffer's
+  const ScreenPoints screen = project_points(points, scalar, rays);
+  st.phase_seconds.emplace_back("project points", seconds_since(t));
+
+  st.small_cells = resolve(options.splat, options.backend);
+  st.splat_threshold = threshold_or(options.splat, kDefaultPixelThreshold);
+  const bool software = !is_opengl(options.backend);
+  const bool by_tiles = options.compositing == Compositing::tiles && st.small_cells != SmallCells::splat;
+  // Where nothing reads which cells are small before they are drawn (the default: tiles drawing
+  // every cell, a threshold of a pixel centre), they are counted after: a cell that added a
+  // fragment covers a centre, only the others are tested.
+  const bool count_after = by_tiles && st.small_cells == SmallCells::draw && st.splat_threshold <= 1.0;
+  // The passes over the cells that need no order: which are small, which rows each reaches.
+  std::vector<std::uint8_t> small;
+  FrameBuffer<RowRange> reach;
+  const MeshView* passed = nullptr;  // the cells they ran on
+  double small_seconds = 0;
+  const auto cell_passes = [&](const MeshView& of) {
+    const auto t_small = std::chrono::steady_clock::now();  // (the sort beside it does not touch st.splat)
+    if (count_after)
+      cell_reach(of, screen, rays, reach);
+    else
+      small = small_cells(of, screen, rays, st.splat_threshold, st.splat, by_tiles ? &reach : nullptr);
+    small_seconds = seconds_since(t_small), passed = &of;
+  };
+
+  SortView sort_view{camera, width, height};
+  sort_view.gaps = options.gaps;
+  ViewOrder view;
+  std::vector<std::int64_t> visible;  // the order without the transparent cells (cull_transparent)
+  std::vector<std::uint8_t> clear;    // or, with the tiles' own orders, those cells flagged
+  // Each tile orders its own cells where the face relations are the whole order (frame/tile_orders.hpp);
+  // automatically only where no view can make a visibility cycle, which tiles could order apart.
+  ViewRelations relations;
+  const bool tile_orders =
+      software && by_tiles &&
+      (options.tile_orders == TileOrders::on ||
+       (options.tile_orders == TileOrders::automatic &&
+        tbb::this_task_arena::max_concurrency() >= kTileOrdersFromThreads && sorter_.base().sorter->acyclic()));
+  double sort_seconds = 0;
+  const auto sort = [&] {
+    const auto t_sort = std::chrono::steady_clock::now();  // (on one thread the passes may run first)
+    view = sorter_.sort(options.sort, sort_view, tile_orders ? &relations : nullptr);
+    if (options.cull_transparent && view.sorted.relations_only)
+      clear = transparent_cells(view.mesh->cells, scalar, tf);
+    else if (options.cull_transparent)
+      visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
+    sort_seconds = seconds_since(t_sort);
+  };
+  // Where the cells sorted are those of the base mesh whatever the view (every mode but problem,
+  // which splits cells per view), the passes run beside the sort, whose serial part (the
+  // topological order) would leave the other threads idle.
+  if (software && sorter_.mode() != Tetrahedralize::problem) {
+    const MeshView& base = sorter_.base().cells;
+    tbb::parallel_invoke(sort, [&] { cell_passes(base); });
+  } else {
+    sort();
+  }
+  if (software && passed != &view.mesh->cells)
+    cell_passes(view.mesh->cells);  // (after the sort; or the view split cells)
+  const int rows =
+      options.tile_rows > 0 ? options.tile_rows : tile_rows(height, tbb::this_task_arena::max_concurrency());
+  std::optional<TileBins> tile_bins;  // the cells of each tile in the tile's own order
+  double tile_seconds = 0;
+  if (view.sorted.relations_only) {
+    t = std::chrono::steady_clock::now();
+    const MeshView& base = view.mesh->cells;
+    tile_bins =
+        bin_to_tiles(static_cast<std::size_t>(base.n_cells), height, rows, [&](std::size_t c) { return reach[c]; });
+    if (!order_tiles(*tile_bins, relations, base.n_cells, reach, height, rows)) {  // a cycle: the whole mesh sorted
+      tile_bins.reset(), clear.clear();
+      const auto t_sort = std::chrono::steady_clock::now();
+      view = sorter_.sort(options.sort, sort_view);
+      if (options.cull_transparent) visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
+      sort_seconds += seconds_since(t_sort);
+      if (passed != &view.mesh->cells) cell_passes(view.mesh->cells);
+    }
+    tile_seconds = seconds_since(t);
+  }
+  const MeshView& cells = view.mesh->cells;
+  const std::vector<std::int64_t>& order = options.cull_transparent ? visible : view.sorted.order;
+  st.tile_orders = tile_bins.has_value();
+  st.culled_transparent = tile_bins ? std::count(clear.begin(), clear.end(), std::uint8_t{1})
+                                    : static_cast<std::int64_t>(view.sorted.order.size() - order.size());
+  st.cell_numbering_spread = local_.spread(), st.cells_renumbered = local_.renumbered();
+  st.tetrahedralize = sorter_.mode();
+  st.cells = cells.n_cells;
+  st.tets = std::count(cells.types, cells.types + cells.n_cells, static_cast<std::uint8_t>(CellType::Tetra));
+  st.problem_cells = view.problem_cells;
+  st.cells_split = view.mesh->split.cells_split;
+  st.cycle_splits = view.cycle_splits;
+  st.phase_seconds.emplace_back("sort", sort_seconds);
+  if (software) st.phase_seconds.emplace_back("small cells", small_seconds);       // (beside the sort, or after it)
+  if (st.tile_orders) st.phase_seconds.emplace_back("tile orders", tile_seconds);  // (binning included)
+
+  const MethodTraits& method = traits(options.method);
+  std::optional<OpacityTable> table;
+  if (method.opacity_table) table.emplace(opacity_table(tf, options.table_size, max_diameter_));
+  PointOptics optics;
+  if (method.point_optics) optics = point_optics(scalar, mesh_.n_points, tf);
+  const CellFragments project(screen, rays, points, tf, options.method, table ? &*table : nullptr, &optics,
+                              options.whole_cells);
+
+  t = std::chrono::steady_clock::now();
+  Image image;
+  if (is_opengl(options.backend)) {
+    image = draw_with_opengl(project, cells, order, table ? &*table : nullptr, width, height, options, st);
+  } else {
+    image = Image(width, height);
+    ProjectionSplats splats;
+    if (st.small_cells == SmallCells::splat && st.splat.small_cells > 0) {  // no stencil without splats
+      const auto t_tracer = std::chrono::steady_clock::now();
+      const CellRayTracer& stencil_tracer = tracer();  // prepared on the first frame that splats
+      st.phase_seconds.emplace_back("stencil tracer", seconds_since(t_tracer));
+      const auto t_splats = std::chrono::steady_clock::now();
+      const SplatContext frame{points, scalar, tf, rays, options.splat.prefilter};
+      splats = frame_splats(*view.mesh, small, frame, stencil_tracer, mesh_.n_cells, st.splat);
+      st.splat_stencil_tiles = splats.stencil.tiles_traced();
+      st.phase_seconds.emplace_back("splats and stencil", seconds_since(t_splats));
+    }
+    t = std::chrono::steady_clock::now();
+    std::optional<OpaqueMask> opaque;
+    if (options.early_termination) opaque.emplace(width, height);
+    FrameBuffer<std::uint8_t> drew;
+    if (count_after) drew.assign(static_cast<std::size_t>(cells.n_cells), 0);
+    OrderedCells source{project, cells, order, small, st.small_cells, splats, opaque ? &*opaque : nullptr};
+    if (count_after) source.drew = drew.data();
+    if (!clear.empty()) source.clear = clear.data();
+    FrameCounters counters;
+    if (by_tiles) {
+      std::size_t visits = tile_bins ? tile_bins->items.size() : 0;
+      if (tile_bins)
+        counters = composite_bins(image, *tile_bins, rows, source, opaque.has_value());
+      else
+        counters = composite_in_tiles(
+            image, order.size(), [&](std::size_t k) { return reach[static_cast<std::size_t>(order[k])]; }, rows, source,
+            &visits, opaque.has_value(), [&](std::size_t k) { return static_cast<std::size_t>(order[k]); });
+      st.tiles = (height + rows - 1) / rows;
+      st.tile_visits = static_cast<std::int64_t>(visits);
+      if (count_after) count_small_after(cells, screen, rays, st.splat_threshold, drew.data(), st.splat);
+    } else {
+      const std::vector<float> footprint = cell_footprints(cells, screen, rays);
+      PipelineLimits limits;
+      limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
+      counters = composite_in_order(
+          image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
+          source, &st.blend_seconds);
+    }
+    st.counters = counters.projection;
+    st.splat.add(counters.splat);
+  }
+  st.phase_seconds.emplace_back("project and composite", seconds_since(t));
+  st.sort = std::move(view.sorted.stats);
+  st.seconds = seconds_since(start);
+  if (stats) *stats = std::move(st);
+  return image;
+}
+
+}  // namespace cellproj

@@ -1,0 +1,41 @@
+#pragma once
+// Reading meshes: the format is chosen by extension (overridable), every reader goes through the
+// real library for its format, and every failure is an InputError naming the file.
+#include <string>
+#include <vector>
+
+#include "mesh/mesh.hpp"
+#include "mesh/validate.hpp"
+
+namespace cellproj {
+
+struct ReadOptions {
+  std::string format;  // "" = by extension; else one of known_formats()
+  std::string q_file;  // PLOT3D solution; default: the grid's name with "xyz" replaced by "q"
+  std::string zone;    // CGNS: read this zone only (default: all zones)
+  int time_step = 0;   // Exodus II: which time step's fields
+  // Read in a child process (io/isolated_read.hpp), so that a reader's crash on a malformed file
+  // is an InputError; its memory is bounded by max_memory_gib (0: the memory available now).
+  bool isolate = true;
+  double max_memory_gib = 0;
+};
+
+// The format names accepted in ReadOptions::format, with the extensions that select them.
+std::vector<std::pair<std::string, std::string>> known_formats();
+std::string format_for(const std::string& path);       // by extension; throws InputError if unknown
+std::string lower_extension(const std::string& path);  // ".vtu" of "A.VTU": the extension in lower case
+
+// Reads the file as stored (no validation). A trailing ".gz" is decompressed first.
+Mesh read_mesh(const std::string& path, const ReadOptions& options = {});
+
+// read_mesh, then validate (errors throw) and re-orient inverted cells.
+LoadedMesh load_mesh(const std::string& path, const ReadOptions& options = {});
+
+// One reader per file family (io/read_*.cpp); `path` is the file to open, `name` the one to
+// report in messages.
+Mesh read_vtk_family(const std::string& path, const std::string& format, const ReadOptions& options);
+Mesh read_tetgen(const std::string& path);
+Mesh read_off(const std::string& path);
+Mesh read_point_cloud(const std::string& path);
+
+}  // namespace cellproj
