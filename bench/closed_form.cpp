@@ -6,11 +6,11 @@
 // (a in [1e-3, 16], |b| <= 0.03 (1 + a), 17 digits), for comparing the two versions' values.
 // With `--accuracy`: the largest relative error of the weights against long double quadrature
 // (64 pieces of 5-point Gauss-Legendre) over 300k segments of small cells (a <= 0.5, |b| <= 0.01).
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
-#include <algorithm>
 #include <random>
 #include <vector>
 #include "optics/linear_segment.hpp"
@@ -56,17 +56,27 @@ int main(int argc, char** argv) {
     std::printf("small cells: largest relative error front %.2g, back %.2g\n", worst[0], worst[1]);
     return 0;
   }
-  struct P { double L, k0, k1; };
+  struct P {
+    double L, k0, k1;
+  };
   for (int regime = 0; regime < 4; ++regime) {
     std::vector<P> ps(1000000);
     for (auto& p : ps) {
-      double a = regime == 0 ? 0.002 + 0.05 * U(rng) : regime == 1 ? 0.05 + 0.5 * U(rng) : regime == 2 ? 0.5 + 3 * U(rng) : 0.01 + 0.3 * U(rng);
+      double a = regime == 0   ? 0.002 + 0.05 * U(rng)
+                 : regime == 1 ? 0.05 + 0.5 * U(rng)
+                 : regime == 2 ? 0.5 + 3 * U(rng)
+                               : 0.01 + 0.3 * U(rng);
       double rel = regime == 3 ? 0.5 * U(rng) : 0.02 * (U(rng) - 0.5);  // k1/k0 - 1
-      p.L = 0.03; p.k0 = a / p.L; p.k1 = p.k0 * (1 + rel);
+      p.L = 0.03;
+      p.k0 = a / p.L;
+      p.k1 = p.k0 * (1 + rel);
     }
     double sink = 0;
     auto t = std::chrono::steady_clock::now();
-    for (const auto& p : ps) { auto w = linear_segment_weights(p.L, p.k0, p.k1); sink += w.front + w.back; }
+    for (const auto& p : ps) {
+      auto w = linear_segment_weights(p.L, p.k0, p.k1);
+      sink += w.front + w.back;
+    }
     double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t).count();
     std::printf("regime %d: %.1f ns per call (%g)\n", regime, s * 1e9 / ps.size(), sink);
   }

@@ -26,7 +26,8 @@ ScreenBox join(const ScreenBox& a, const ScreenBox& b) {
 std::vector<float> pack(const Image& image, const ScreenBox& b) {
   std::vector<float> data(b.empty() ? 0 : static_cast<std::size_t>(b.width()) * b.height() * 4);
   for (int j = b.y0; j < b.y1; ++j)
-    std::copy(image.pixel(b.x0, j), image.pixel(b.x1, j), data.data() + static_cast<std::size_t>(j - b.y0) * b.width() * 4);
+    std::copy(image.pixel(b.x0, j), image.pixel(b.x1, j),
+              data.data() + static_cast<std::size_t>(j - b.y0) * b.width() * 4);
   return data;
 }
 
@@ -91,7 +92,8 @@ TrafficStats composite_binary_swap(const Communicator& comm, Image& image, Scree
   const auto t0 = std::chrono::steady_clock::now();
   const int P = comm.size;
   if (static_cast<int>(back_to_front.size()) != P) throw InternalError("binary swap: the order must list every rank");
-  const int pos = static_cast<int>(std::find(back_to_front.begin(), back_to_front.end(), comm.rank) - back_to_front.begin());
+  const int pos =
+      static_cast<int>(std::find(back_to_front.begin(), back_to_front.end(), comm.rank) - back_to_front.begin());
   int P2 = 1;
   while (2 * P2 <= P) P2 *= 2;
   const int extra = P - P2;

@@ -11,6 +11,7 @@
 #include <tbb/parallel_for.h>
 #include <tbb/parallel_invoke.h>
 
+#include "base/check.hpp"
 #include "base/error.hpp"
 #include "base/timing.hpp"
 #include "composite/ordered_pipeline.hpp"
@@ -157,6 +158,15 @@ std::vector<std::int64_t> without_transparent(const std::vector<std::int64_t>& o
   return kept;
 }
 
+// Whether `order` holds each of the n cells once (a visibility order's first invariant).
+bool is_permutation_of(const std::vector<std::int64_t>& order, std::int64_t n) {
+  if (static_cast<std::int64_t>(order.size()) != n) return false;
+  std::vector<std::uint8_t> seen(static_cast<std::size_t>(n), 0);
+  for (const std::int64_t c : order)
+    if (c < 0 || c >= n || seen[static_cast<std::size_t>(c)]++) return false;
+  return true;
+}
+
 }  // namespace
 
 void check_options(const ProjectionOptions& o) {
@@ -289,6 +299,8 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
     tile_seconds = seconds_since(t);
   }
   const MeshView& cells = view.mesh->cells;
+  CELLPROJ_DCHECK(tile_bins || is_permutation_of(view.sorted.order, cells.n_cells),
+                  "the visibility order does not hold every cell once");
   const std::vector<std::int64_t>& order = options.cull_transparent ? visible : view.sorted.order;
   st.tile_orders = tile_bins.has_value();
   st.culled_transparent = tile_bins ? std::count(clear.begin(), clear.end(), std::uint8_t{1})

@@ -88,10 +88,11 @@ SegmentLight integrate_overlap_reference(double length, const MediumSegment* med
   // The fractions of the length where any medium's scalar crosses a breakpoint of its function.
   std::vector<double> cuts{0.0, 1.0};
   for (std::size_t i = 0; i < n; ++i)
-    for_each_linear_piece(*media[i].tf, media[i].s0, media[i].s1, [&, f = 0.0](const TransferFunction::Ends&, double fraction) mutable {
-      f += fraction;
-      if (f > 0.0 && f < 1.0) cuts.push_back(f);
-    });
+    for_each_linear_piece(*media[i].tf, media[i].s0, media[i].s1,
+                          [&, f = 0.0](const TransferFunction::Ends&, double fraction) mutable {
+                            f += fraction;
+                            if (f > 0.0 && f < 1.0) cuts.push_back(f);
+                          });
   std::sort(cuts.begin(), cuts.end());
   cuts.erase(std::unique(cuts.begin(), cuts.end()), cuts.end());
   std::vector<LinearMedium> pieces(n);

@@ -26,7 +26,7 @@ template <int S>
     hi = ((inv < 0) & (cross < hi)) ? cross : hi;
     hi = ((inv == 0) & (g < 0)) ? zero - 1.0 : hi;
   }
-  const auto none = !(lo <= hi);  // (NaN: none)
+  const auto none = !(lo <= hi);                       // (NaN: none)
   lo = none ? zero : lo, hi = none ? zero - 1.0 : hi;  // (0 <= lo <= hi < width, or none: no overflow below)
   for (int k = 0; k < 4; ++k) b[k] = static_cast<int>(std::ceil(lo[k])), e[k] = static_cast<int>(std::floor(hi[k]));
 }

@@ -258,9 +258,8 @@ CELLPROJ_FAN_SEGMENTS(segments_4_orthographic, 4, false)
 // fan_planes for an outline of S corners (compile-time: the four-at-a-time steps unroll and
 // stay in registers).
 template <int S>
-[[gnu::always_inline]] inline void planes_of(const ProjectedTet& pt, double x0, double y0, double turn,
-                                             int quantities, const double* thick,
-                                             const double (*hull)[kFanQuantities], FanPlanes& f) {
+[[gnu::always_inline]] inline void planes_of(const ProjectedTet& pt, double x0, double y0, double turn, int quantities,
+                                             const double* thick, const double (*hull)[kFanQuantities], FanPlanes& f) {
   const double sign = turn > 0 ? 1.0 : -1.0;
   f.sectors = S, f.quantities = quantities;
   for (int k = 0; k < S; ++k) f.spoke[k] = edge_plane(pt.thick, pt.hull[k], x0, y0, sign);
@@ -304,15 +303,14 @@ template <int S>
     Lanes c, px, py;
     planes(thick4 * ia, load(qa_of) * ia, load(qb_of) * ia, c, px, py);
     std::memcpy(q.c, &c, sizeof c), std::memcpy(q.gx, &px, sizeof px), std::memcpy(q.gy, &py, sizeof py);
-    for (int m = 4; m < quantities; ++m)
-      planes(thick[m] * ia, qa_of[m] * ia, qb_of[m] * ia, q.c[m], q.gx[m], q.gy[m]);
+    for (int m = 4; m < quantities; ++m) planes(thick[m] * ia, qa_of[m] * ia, qb_of[m] * ia, q.c[m], q.gx[m], q.gy[m]);
   }
 }
 
-#define CELLPROJ_FAN_PLANES(name, S)                                                                            \
-  CELLPROJ_AVX2_CLONES void name(const ProjectedTet& pt, double x0, double y0, double turn, int quantities,     \
-                                 const double* thick, const double (*hull)[kFanQuantities], FanPlanes& f) {     \
-    planes_of<S>(pt, x0, y0, turn, quantities, thick, hull, f);                                                 \
+#define CELLPROJ_FAN_PLANES(name, S)                                                                        \
+  CELLPROJ_AVX2_CLONES void name(const ProjectedTet& pt, double x0, double y0, double turn, int quantities, \
+                                 const double* thick, const double(*hull)[kFanQuantities], FanPlanes& f) {  \
+    planes_of<S>(pt, x0, y0, turn, quantities, thick, hull, f);                                             \
   }
 CELLPROJ_FAN_PLANES(planes_3, 3)
 CELLPROJ_FAN_PLANES(planes_4, 4)

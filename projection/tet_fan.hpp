@@ -38,11 +38,11 @@ struct FanPlanes {
   // pt-linear: the four quantities opacity and colour become the pixel's opacity clamped to
   // [0, 1] and its colour clamped to >= 0 times it (premultiplied).
   bool linear_opacity = false;
-  Plane outline[4];      // edge hull[a] -> hull[a + 1], positive inside
-  double inv_gx[4];      // 1 / outline[a].gx (0 for a flat edge: the row is all in or all out)
-  Plane spoke[4];        // edge thick -> hull[k], positive on triangle k's side
-  double left_out[4];    // -1e300 for a triangle of no area to rounding (never chosen), else 0
-  QuantityPlanes q[4];   // zero for a triangle left out
+  Plane outline[4];     // edge hull[a] -> hull[a + 1], positive inside
+  double inv_gx[4];     // 1 / outline[a].gx (0 for a flat edge: the row is all in or all out)
+  Plane spoke[4];       // edge thick -> hull[k], positive on triangle k's side
+  double left_out[4];   // -1e300 for a triangle of no area to rounding (never chosen), else 0
+  QuantityPlanes q[4];  // zero for a triangle left out
 };
 
 // The planes of the fan of pt whose box's first pixel centre is (x0, y0); quantity m has value
@@ -73,8 +73,8 @@ void fan_pixels(const FanPlanes& f, int row0, int rows, int width, FanPixels& ou
 // of those values. Returns the number of fragments composited, those adding nothing (opacity and
 // colour 0, which leave the image as it was) not counted.
 // `lanes`: `pairs`, two pixels at a time, each one's four quantities in half of a vector, where
-// the processor has AVX-512 (else `quantities`; pt-linear's and the exact rungs' fans); `quantities`, one pixel at a time with its four
-// quantities in a vector, where the processor has AVX2 (else `pixels`); `pixels`, four pixels at a
+// the processor has AVX-512 (else `quantities`; pt-linear's and the exact rungs' fans); `quantities`, one pixel at a
+// time with its four quantities in a vector, where the processor has AVX2 (else `pixels`); `pixels`, four pixels at a
 // time (portable). The same bits.
 enum class FanLanes { pairs, quantities, pixels };
 std::int64_t fan_composite_over(const FanPlanes& f, Image& image, int i0, int j0, int row0, int rows, int width,
@@ -99,7 +99,7 @@ void fan_segments(const FanPlanes& f, const FanSegments& at, SegmentBatch& out, 
 // times it; the same bits as fan_pixels' values through the table and composite/fragment.hpp's
 // over(). Returns the fragments composited, those adding nothing not counted. `lanes` as
 // fan_composite_over's, `pairs` as `quantities` (the same bits either way).
-std::int64_t fan_composite_table(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0,
-                                 int row0, int rows, int width, FanLanes lanes = FanLanes::quantities);
+std::int64_t fan_composite_table(const FanPlanes& f, const OpacityTable& table, Image& image, int i0, int j0, int row0,
+                                 int rows, int width, FanLanes lanes = FanLanes::quantities);
 
 }  // namespace cellproj

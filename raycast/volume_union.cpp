@@ -10,10 +10,10 @@
 #include <tuple>
 #include <vector>
 
-#include <glm/common.hpp>
-#include <glm/geometric.hpp>
 #include <tbb/enumerable_thread_specific.h>
 #include <tbb/parallel_for.h>
+#include <glm/common.hpp>
+#include <glm/geometric.hpp>
 
 #include "base/error.hpp"
 #include "base/timing.hpp"
@@ -28,7 +28,7 @@ constexpr double kInf = std::numeric_limits<double>::infinity();
 // One surface met along a ray: where, which, and the light it adds there.
 struct SurfaceHit {
   double t;
-  int surface;        // over all parts, part by part
+  int surface;  // over all parts, part by part
   int part;
   std::uint32_t tet;  // its tetrahedron: the order a rasterizer would be sent the surfaces' polygons
   double alpha;
@@ -197,7 +197,8 @@ Image render_volume_union(const std::vector<VolumePart>& parts, IsoMode mode, Is
   for (std::size_t v = 0; v < parts.size(); ++v) {
     const VolumePart& part = parts[v];
     if (!part.tracer || !part.tf || (!part.scalar && part.n_points > 0))
-      throw std::invalid_argument("render_volume_union: part " + std::to_string(v) + " lacks its tracer, field or transfer function");
+      throw std::invalid_argument("render_volume_union: part " + std::to_string(v) +
+                                  " lacks its tracer, field or transfer function");
     if (part.surfaces.empty()) continue;
     const auto [lo, hi] = std::minmax_element(part.scalar, part.scalar + part.n_points);
     gradients[v] = part.tracer->point_gradients(part.scalar);
@@ -207,12 +208,14 @@ Image render_volume_union(const std::vector<VolumePart>& parts, IsoMode mode, Is
       fit_error = std::max(fit_error, err);
       exponents += (exponents.empty() ? "" : ",") + std::to_string(p);
       surfaces.push_back({s.value, iso_tolerance(s.value, *lo, *hi), s.opacity, p,
-                          s.color_given ? s.color : glm::clamp(part.tf->color(s.value), 0.0, 1.0), static_cast<int>(v)});
+                          s.color_given ? s.color : glm::clamp(part.tf->color(s.value), 0.0, 1.0),
+                          static_cast<int>(v)});
     }
   }
 
   std::vector<std::unique_ptr<CellRayTracer::View>> views;
-  for (const VolumePart& part : parts) views.push_back(std::make_unique<CellRayTracer::View>(*part.tracer, camera, width, height));
+  for (const VolumePart& part : parts)
+    views.push_back(std::make_unique<CellRayTracer::View>(*part.tracer, camera, width, height));
   constexpr int kTile = CellRayTracer::View::kTile;
   struct Scratch {
     std::vector<std::vector<std::vector<RaySegment>>> lists;  // per part, per pixel of the tile

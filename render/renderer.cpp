@@ -2,6 +2,7 @@
 
 #include <chrono>
 
+#include "base/check.hpp"
 #include "base/error.hpp"
 #include "base/timing.hpp"
 #include "frame/projection_renderer.hpp"
@@ -58,8 +59,8 @@ class ProjectionMode final : public Renderer {
   std::string name() const override { return name_of(options_.method); }
   void prepare(const Volume& volume) const override { volume.projection(mode_); }
 
-  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
-               ImageSize size, RenderReport* report, const Progress&) const override {
+  Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+              ImageSize size, RenderReport* report, const Progress&) const override {
     volume.check(field);
     const ProjectionRenderer& renderer =
         timed_preparation(volume, report, [&]() -> const ProjectionRenderer& { return volume.projection(mode_); });
@@ -155,8 +156,8 @@ class ExactMode final : public Renderer {
   std::string name() const override { return "exact"; }
   void prepare(const Volume& volume) const override { volume.exact(); }
 
-  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
-               ImageSize size, RenderReport* report, const Progress& progress) const override {
+  Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+              ImageSize size, RenderReport* report, const Progress& progress) const override {
     const ExactRenderer& renderer = checked_exact(volume, field, report);
     if (!iso_.surfaces.empty()) return render_surfaces(renderer, field, tf, camera, size, report, progress);
     ExactStats st;
@@ -212,8 +213,8 @@ class ReductionMode final : public Renderer {
   }
   void prepare(const Volume& volume) const override { volume.exact(); }
 
-  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
-               ImageSize size, RenderReport* report, const Progress& progress) const override {
+  Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+              ImageSize size, RenderReport* report, const Progress& progress) const override {
     const ExactRenderer& renderer = checked_exact(volume, field, report);
     ReductionStats st;
     Image image =
@@ -242,8 +243,8 @@ class LayersMode final : public Renderer {
   std::string name() const override { return "layers"; }
   void prepare(const Volume& volume) const override { volume.exact(); }
 
-  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
-               ImageSize size, RenderReport* report, const Progress& progress) const override {
+  Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+              ImageSize size, RenderReport* report, const Progress& progress) const override {
     const ExactRenderer& renderer = checked_exact(volume, field, report);
     LayerStats st;
     Image image = render_layers(renderer.tracer(), field.values, field.size, tf, camera, size.width, size.height,
@@ -303,8 +304,8 @@ class SlicingMode final : public Renderer {
   std::string name() const override { return "slicing"; }
   void prepare(const Volume& volume) const override { volume.slicing(mode_); }
 
-  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
-               ImageSize size, RenderReport* report, const Progress&) const override {
+  Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+              ImageSize size, RenderReport* report, const Progress&) const override {
     Image image;
     render_levels(volume, field, tf, camera, size, {options_.slices},
                   [&](std::size_t, int, Image&& i, RenderReport&& r) {
@@ -324,6 +325,7 @@ class SlicingMode final : public Renderer {
         timed_preparation(volume, &first, [&]() -> const SliceRenderer& { return volume.slicing(mode_); });
     renderer.render_levels(field.values, tf, camera, size.width, size.height, options_, levels,
                            [&](std::size_t level, int slices, Image&& image, const SlicingStats& st) {
+                             CELLPROJ_DCHECK(finite_pixels(image), "slicing made a pixel that is not finite");
                              RenderReport r;
                              if (level == 0) r.prepare_seconds = first.prepare_seconds;
                              fill(r, st, options_);
@@ -348,6 +350,13 @@ class SlicingMode final : public Renderer {
 };
 
 }  // namespace
+
+Image Renderer::render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+                       ImageSize size, RenderReport* report, const Progress& progress) const {
+  Image image = frame(volume, field, tf, camera, size, report, progress);
+  CELLPROJ_DCHECK(finite_pixels(image), name() + " made a pixel that is not finite");
+  return image;
+}
 
 void render_progressive(const Volume& volume, const Field& field, const TransferFunction& tf,
                         const RenderSettings& settings, const Camera& camera, ImageSize size,

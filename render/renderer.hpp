@@ -33,10 +33,15 @@ class Renderer {
   // Makes the volume's preparation for this renderer now (render() makes it when missing).
   virtual void prepare(const Volume& volume) const = 0;
   // One frame of `field` (Volume::check'ed). Threads: those of the calling task arena.
-  virtual Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
-                       ImageSize size, RenderReport* report = nullptr, const Progress& progress = {}) const = 0;
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+               ImageSize size, RenderReport* report = nullptr, const Progress& progress = {}) const;
   // Bytes a frame needs at most (images, per-point and per-tetrahedron arrays, buffers): generous.
   virtual std::uint64_t estimate_bytes(const VolumeSize& volume, ImageSize size) const = 0;
+
+ private:
+  // The frame itself; render() checks what every renderer owes (a finite image, CELLPROJ_DCHECK).
+  virtual Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+                      ImageSize size, RenderReport* report, const Progress& progress) const = 0;
 };
 
 // The renderer for `settings`, checked once (InputError for settings that do not go together).

@@ -19,8 +19,9 @@ VolumeScene::VolumeScene(const Scene& scene, const std::function<LoadedMesh(cons
                                                            "planes; it is left out"));
   }
   if (kept == 0)
-    throw InputError(where(scene.source, "nothing of the volumes is on the kept side of the clipping planes (each "
-                                         "keeps the side its normal points away from)"));
+    throw InputError(where(scene.source,
+                           "nothing of the volumes is on the kept side of the clipping planes (each "
+                           "keeps the side its normal points away from)"));
   volumes_.reserve(kept);  // entries_ point into it
   for (std::size_t k = 0; k < prepared_.volumes.size(); ++k) {
     const PreparedScene& p = prepared_.volumes[k];

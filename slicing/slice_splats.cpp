@@ -28,8 +28,7 @@ SliceSplats::SliceSplats(const SliceCells& cells, const std::vector<double>& vol
   std::vector<int> plane(small_cells_.size(), 0);  // 0: no splat
   tbb::enumerable_thread_specific<SplatCounters> counts;
   tbb::parallel_for(
-      tbb::blocked_range<std::size_t>(0, small_cells_.size(), 1024),
-      [&](const tbb::blocked_range<std::size_t>& r) {
+      tbb::blocked_range<std::size_t>(0, small_cells_.size(), 1024), [&](const tbb::blocked_range<std::size_t>& r) {
         SplatCounters& n = counts.local();
         for (std::size_t k = r.begin(); k < r.end(); ++k) {
           const std::int64_t c = small_cells_[k];

@@ -96,7 +96,8 @@ TEST(OrderedPipeline, BandsAndDirectItemsBlendInOrderForAnyThreadCount) {
   for (int k = 0; k < 3000; ++k) {
     const int x = pos(rng), y = pos(rng);
     const float a = 0.3f * u(rng);
-    items.push_back({x, y, std::min(120, x + size(rng)), std::min(100, y + size(rng)), {a * u(rng), a * u(rng), a * u(rng), a}});
+    items.push_back(
+        {x, y, std::min(120, x + size(rng)), std::min(100, y + size(rng)), {a * u(rng), a * u(rng), a * u(rng), a}});
   }
   Image serial(120, 100);
   for (const auto& r : items)

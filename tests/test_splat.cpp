@@ -48,8 +48,8 @@ CellMoments moments_of(const Mesh& m) {
 }
 
 // The splat of a one-cell mesh's cell in the image of `camera` (fragments, counters).
-Fragments splat_of(const Mesh& m, const TransferFunction& tf, const Camera& camera, int size,
-                               SplatCounters& counters, double prefilter = 0.7) {
+Fragments splat_of(const Mesh& m, const TransferFunction& tf, const Camera& camera, int size, SplatCounters& counters,
+                   double prefilter = 0.7) {
   const MeshView v = m.view();
   const RecentredPoints pts = recentre(v);
   const PixelRays rays(recentred(camera, pts.centre), size, size);
@@ -219,7 +219,7 @@ TEST(Splat, TheRuleCountsThePixelCentresTheHullCovers) {
   const ScreenVertex on[][4] = {
       {{1.5, 1.5, 1, 0}, {3.5, 1.5, 1, 0}, {1.5, 3.5, 1, 0}, {2.5, 2.5, 1, 0}},  // centres on every edge
       {{2.5, 2.0, 1, 0}, {3.0, 2.5, 1, 0}, {2.5, 3.0, 1, 0}, {2.0, 2.5, 1, 0}},  // the diamond around centre (2.5, 2.5)
-      {{2.5, 2.5, 1, 0}, {2.6, 2.5, 1, 0}, {2.5, 2.6, 1, 0}, {2.55, 2.55, 1, 0}},  // a corner on a centre
+      {{2.5, 2.5, 1, 0}, {2.6, 2.5, 1, 0}, {2.5, 2.6, 1, 0}, {2.55, 2.55, 1, 0}},         // a corner on a centre
       {{1.0, 1.0, 1, 0}, {9.0, 1.0, 1, 0}, {1.0, 1.0 + 1e-13, 1, 0}, {5.0, 1.0, 1, 0}}};  // a sliver
   for (const auto& cell : on) {
     const ScreenVertex* q[4] = {&cell[0], &cell[1], &cell[2], &cell[3]};

@@ -7,8 +7,8 @@
 
 namespace cellproj {
 
-void refuse_beyond_memory(std::uint64_t need, double max_memory_gib, const std::string& what,
-                          const std::string& source, const std::string& remedy) {
+void refuse_beyond_memory(std::uint64_t need, double max_memory_gib, const std::string& what, const std::string& source,
+                          const std::string& remedy) {
   const std::uint64_t limit =
       max_memory_gib > 0 ? static_cast<std::uint64_t>(max_memory_gib * double(1ull << 30)) : available_memory_bytes();
   if (limit == 0 || need <= limit) return;

@@ -96,7 +96,7 @@ class PixelRays {
   Camera camera_;
   int width_, height_;
   glm::dvec3 forward_, right_, up_;
-  double half_w_, half_h_;  // orthographic: world half extents; perspective: tangents of the half angles
+  double half_w_, half_h_;       // orthographic: world half extents; perspective: tangents of the half angles
   std::vector<double> u2_, v2_;  // perspective: u^2 per column and v^2 per row of length_per_depth
 };
 

@@ -109,6 +109,10 @@ Image difference_image(const Image& a, const Image& b, double scale) {
   return d;
 }
 
+bool finite_pixels(const Image& image) {
+  return std::all_of(image.rgba.begin(), image.rgba.end(), [](float v) { return std::isfinite(v); });
+}
+
 ImageDifference compare(const Image& a, const Image& b) {
   check_same_size(a, b);
   ImageDifference d;

@@ -48,6 +48,9 @@ struct ImageDifference {
   double max_abs = 0.0;  // largest channel difference
 };
 ImageDifference compare(const Image& a, const Image& b);
+// Whether every channel of every pixel is finite: what every renderer's output must be
+// (CELLPROJ_DCHECK in render/renderer.cpp).
+bool finite_pixels(const Image& image);
 // The image box-filtered down by k in each direction: each pixel the mean of a k x k block (the
 // anti-aliased reference of an image rendered at k times the resolution). Throws InputError
 // unless k >= 1 divides both sides.

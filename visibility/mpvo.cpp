@@ -26,7 +26,8 @@ using K = CGAL::Exact_predicates_inexact_constructions_kernel;
 
 // The viewpoint nearly in shared face f's plane (perspective): CGAL's exact orientation decides
 // for a triangle; a quad, which may be warped, keeps the sign of s. Out of line: it is rare.
-[[gnu::noinline]] int side_near_plane(const VisibilitySorter::Prepared& p, const ViewFrame& v, std::size_t f, double s) {
+[[gnu::noinline]] int side_near_plane(const VisibilitySorter::Prepared& p, const ViewFrame& v, std::size_t f,
+                                      double s) {
   std::int64_t t[3];
   if (!p.face_triangle(f, t)) return s > 0 ? 1 : s < 0 ? -1 : 0;
   auto P = [&](std::int64_t i) {
