@@ -17,6 +17,7 @@
 #include "composite/ordered_pipeline.hpp"
 #include "composite/tiled_compositor.hpp"
 #include "frame/cell_passes.hpp"
+#include "frame/frame_plan.hpp"
 #include "frame/gl_frame.hpp"
 #include "frame/splat_stencil.hpp"
 #include "frame/tile_orders.hpp"
@@ -211,111 +212,182 @@ const CellRayTracer& ProjectionRenderer::tracer() const {
 
 bool ProjectionRenderer::convex_boundary() const { return sorter_.base().hull.convex; }
 
+namespace {
+
+// A frame's cells in visibility order (or, with the tiles' own orders, binned to the tiles and
+// ordered there), and what the passes that need no order found about them.
+struct FrameOrder {
+  ViewOrder view;
+  std::vector<std::int64_t> visible;  // the order without the transparent cells (cull_transparent)
+  std::vector<std::uint8_t> clear;    // or, with the tiles' own orders, those cells flagged
+  ViewRelations relations;            // the tiles' own orders: the face relations, no order
+  std::optional<TileBins> tile_bins;  // the cells of each tile in the tile's own order
+  std::vector<std::uint8_t> small;    // per cell: small (splatted or skipped)
+  FrameBuffer<RowRange> reach;        // per cell: the image rows it reaches (tiles)
+  const MeshView* passed = nullptr;   // the cells the passes ran on
+  double sort_seconds = 0, small_seconds = 0, tile_seconds = 0;
+};
+
+// Everything a frame's order is made from.
+struct OrderInputs {
+  const FramePlan& plan;
+  const ProjectionOptions& options;
+  const SplittingSorter& sorter;
+  SortView sort_view;
+  const ScreenPoints& screen;
+  const PixelRays& rays;
+  const double* scalar;
+  const TransferFunction& tf;
+};
+
+// The passes over `cells` that need no order: which are small (or, counted after, only the rows
+// each reaches).
+void cell_passes(const OrderInputs& in, const MeshView& cells, FrameOrder& f, SplatCounters& counted) {
+  const auto t = std::chrono::steady_clock::now();
+  if (in.plan.count_small_after)
+    cell_reach(cells, in.screen, in.rays, f.reach);
+  else
+    f.small =
+        small_cells(cells, in.screen, in.rays, in.plan.splat_threshold, counted, in.plan.by_tiles ? &f.reach : nullptr);
+  f.small_seconds = seconds_since(t), f.passed = &cells;
+}
+
+// The sort of the whole mesh (relations only, with the tiles' own orders), the transparent cells
+// culled or flagged.
+void sort_cells(const OrderInputs& in, FrameOrder& f, bool relations_only) {
+  const auto t = std::chrono::steady_clock::now();
+  f.view = in.sorter.sort(in.options.sort, in.sort_view, relations_only ? &f.relations : nullptr);
+  const MeshView& cells = f.view.mesh->cells;
+  if (in.options.cull_transparent && f.view.sorted.relations_only)
+    f.clear = transparent_cells(cells, in.scalar, in.tf);
+  else if (in.options.cull_transparent)
+    f.visible = without_transparent(f.view.sorted.order, cells, in.scalar, in.tf);
+  f.sort_seconds += seconds_since(t);
+}
+
+// The frame's order: the sort with the passes beside it where the plan allows (the sort's serial
+// part, the topological order, would leave the other threads idle), else after it; with the
+// tiles' own orders, the tiles ordered, and the whole mesh sorted after all if a tile meets a
+// visibility cycle.
+FrameOrder order_frame(const OrderInputs& in, SplatCounters& counted) {
+  FrameOrder f;
+  const FramePlan& plan = in.plan;
+  if (plan.passes_beside_sort)
+    tbb::parallel_invoke([&] { sort_cells(in, f, plan.tile_orders); },
+                         [&] { cell_passes(in, in.sorter.base().cells, f, counted); });
+  else
+    sort_cells(in, f, plan.tile_orders);
+  if (plan.software && f.passed != &f.view.mesh->cells) cell_passes(in, f.view.mesh->cells, f, counted);
+  if (!f.view.sorted.relations_only) return f;
+  const auto t = std::chrono::steady_clock::now();
+  const MeshView& base = f.view.mesh->cells;
+  const int height = in.rays.height();
+  f.tile_bins = bin_to_tiles(static_cast<std::size_t>(base.n_cells), height, plan.tile_rows,
+                             [&](std::size_t c) { return f.reach[c]; });
+  if (!order_tiles(*f.tile_bins, f.relations, base.n_cells, f.reach, height, plan.tile_rows)) {
+    f.tile_bins.reset(), f.clear.clear();  // a cycle: the whole mesh sorted
+    sort_cells(in, f, false);
+    if (f.passed != &f.view.mesh->cells) cell_passes(in, f.view.mesh->cells, f, counted);
+  }
+  f.tile_seconds = seconds_since(t);
+  return f;
+}
+
+// The software back end: the small cells' splats and their stencil, then every cell composited
+// in order, by image tiles or by the ordered stream.
+Image draw_in_software(const FramePlan& plan, const FrameOrder& f, const std::vector<std::int64_t>& order,
+                       const CellFragments& project, const ScreenPoints& screen, const SplatContext& frame,
+                       const std::function<const CellRayTracer&()>& stencil_tracer, std::int64_t mesh_cells,
+                       const ProjectionOptions& options, ProjectionStats& st) {
+  const MeshView& cells = f.view.mesh->cells;
+  const PixelRays& rays = frame.rays;
+  Image image(rays.width(), rays.height());
+  ProjectionSplats splats;
+  if (plan.small_cells == SmallCells::splat && st.splat.small_cells > 0) {  // no stencil without splats
+    const auto t_tracer = std::chrono::steady_clock::now();
+    const CellRayTracer& tracer = stencil_tracer();  // prepared on the first frame that splats
+    st.phase_seconds.emplace_back("stencil tracer", seconds_since(t_tracer));
+    const auto t_splats = std::chrono::steady_clock::now();
+    splats = frame_splats(*f.view.mesh, f.small, frame, tracer, mesh_cells, st.splat);
+    st.splat_stencil_tiles = splats.stencil.tiles_traced();
+    st.phase_seconds.emplace_back("splats and stencil", seconds_since(t_splats));
+  }
+  const auto t = std::chrono::steady_clock::now();
+  std::optional<OpaqueMask> opaque;
+  if (options.early_termination) opaque.emplace(rays.width(), rays.height());
+  FrameBuffer<std::uint8_t> drew;
+  if (plan.count_small_after) drew.assign(static_cast<std::size_t>(cells.n_cells), 0);
+  OrderedCells source{project, cells, order, f.small, plan.small_cells, splats, opaque ? &*opaque : nullptr};
+  if (plan.count_small_after) source.drew = drew.data();
+  if (!f.clear.empty()) source.clear = f.clear.data();
+  FrameCounters counters;
+  if (plan.by_tiles) {
+    std::size_t visits = f.tile_bins ? f.tile_bins->items.size() : 0;
+    if (f.tile_bins)
+      counters = composite_bins(image, *f.tile_bins, plan.tile_rows, source, opaque.has_value());
+    else
+      counters = composite_in_tiles(
+          image, order.size(), [&](std::size_t k) { return f.reach[static_cast<std::size_t>(order[k])]; },
+          plan.tile_rows, source, &visits, opaque.has_value(),
+          [&](std::size_t k) { return static_cast<std::size_t>(order[k]); });
+    st.tiles = (rays.height() + plan.tile_rows - 1) / plan.tile_rows;
+    st.tile_visits = static_cast<std::int64_t>(visits);
+    if (plan.count_small_after) count_small_after(cells, screen, rays, plan.splat_threshold, drew.data(), st.splat);
+  } else {
+    const std::vector<float> footprint = cell_footprints(cells, screen, rays);
+    PipelineLimits limits;
+    limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
+    counters = composite_in_order(
+        image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
+        source, &st.blend_seconds);
+  }
+  st.counters = counters.projection;
+  st.splat.add(counters.splat);
+  st.phase_seconds.emplace_back("project and composite", seconds_since(t));
+  return image;
+}
+
+}  // namespace
+
 Image ProjectionRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,
                                  int height, const ProjectionOptions& options, ProjectionStats* stats) const {
   check_options(options);
   const auto start = std::chrono::steady_clock::now();
+  const FramePlan plan = plan_frame(options, sorter_.mode(), height, tbb::this_task_arena::max_concurrency(),
+                                    [this] { return sorter_.base().sorter->acyclic(); });
   ProjectionStats st;
+  st.small_cells = plan.small_cells, st.splat_threshold = plan.splat_threshold;
   const RecentredPoints& points = sorter_.points();
 
+  // The points on screen (MWSC section 2), the rays as the A-buffer's.
   auto t = std::chrono::steady_clock::now();
-  const PixelRays rays(recentred(camera, points.centre), width, height);  // as the A-buffer's
+  const PixelRays rays(recentred(camera, points.centre), width, height);
   const ScreenPoints screen = project_points(points, scalar, rays);
   st.phase_seconds.emplace_back("project points", seconds_since(t));
 
-  st.small_cells = resolve(options.splat, options.backend);
-  st.splat_threshold = threshold_or(options.splat, kDefaultPixelThreshold);
-  const bool software = !is_opengl(options.backend);
-  const bool by_tiles = options.compositing == Compositing::tiles && st.small_cells != SmallCells::splat;
-  // Where nothing reads which cells are small before they are drawn (the default: tiles drawing
-  // every cell, a threshold of a pixel centre), they are counted after: a cell that added a
-  // fragment covers a centre, only the others are tested.
-  const bool count_after = by_tiles && st.small_cells == SmallCells::draw && st.splat_threshold <= 1.0;
-  // The passes over the cells that need no order: which are small, which rows each reaches.
-  std::vector<std::uint8_t> small;
-  FrameBuffer<RowRange> reach;
-  const MeshView* passed = nullptr;  // the cells they ran on
-  double small_seconds = 0;
-  const auto cell_passes = [&](const MeshView& of) {
-    const auto t_small = std::chrono::steady_clock::now();  // (the sort beside it does not touch st.splat)
-    if (count_after)
-      cell_reach(of, screen, rays, reach);
-    else
-      small = small_cells(of, screen, rays, st.splat_threshold, st.splat, by_tiles ? &reach : nullptr);
-    small_seconds = seconds_since(t_small), passed = &of;
-  };
-
+  // The cells in visibility order (MWSC section 3).
   SortView sort_view{camera, width, height};
   sort_view.gaps = options.gaps;
-  ViewOrder view;
-  std::vector<std::int64_t> visible;  // the order without the transparent cells (cull_transparent)
-  std::vector<std::uint8_t> clear;    // or, with the tiles' own orders, those cells flagged
-  // Each tile orders its own cells where the face relations are the whole order (frame/tile_orders.hpp);
-  // automatically only where no view can make a visibility cycle, which tiles could order apart.
-  ViewRelations relations;
-  const bool tile_orders =
-      software && by_tiles &&
-      (options.tile_orders == TileOrders::on ||
-       (options.tile_orders == TileOrders::automatic &&
-        tbb::this_task_arena::max_concurrency() >= kTileOrdersFromThreads && sorter_.base().sorter->acyclic()));
-  double sort_seconds = 0;
-  const auto sort = [&] {
-    const auto t_sort = std::chrono::steady_clock::now();  // (on one thread the passes may run first)
-    view = sorter_.sort(options.sort, sort_view, tile_orders ? &relations : nullptr);
-    if (options.cull_transparent && view.sorted.relations_only)
-      clear = transparent_cells(view.mesh->cells, scalar, tf);
-    else if (options.cull_transparent)
-      visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
-    sort_seconds = seconds_since(t_sort);
-  };
-  // Where the cells sorted are those of the base mesh whatever the view (every mode but problem,
-  // which splits cells per view), the passes run beside the sort, whose serial part (the
-  // topological order) would leave the other threads idle.
-  if (software && sorter_.mode() != Tetrahedralize::problem) {
-    const MeshView& base = sorter_.base().cells;
-    tbb::parallel_invoke(sort, [&] { cell_passes(base); });
-  } else {
-    sort();
-  }
-  if (software && passed != &view.mesh->cells)
-    cell_passes(view.mesh->cells);  // (after the sort; or the view split cells)
-  const int rows =
-      options.tile_rows > 0 ? options.tile_rows : tile_rows(height, tbb::this_task_arena::max_concurrency());
-  std::optional<TileBins> tile_bins;  // the cells of each tile in the tile's own order
-  double tile_seconds = 0;
-  if (view.sorted.relations_only) {
-    t = std::chrono::steady_clock::now();
-    const MeshView& base = view.mesh->cells;
-    tile_bins =
-        bin_to_tiles(static_cast<std::size_t>(base.n_cells), height, rows, [&](std::size_t c) { return reach[c]; });
-    if (!order_tiles(*tile_bins, relations, base.n_cells, reach, height, rows)) {  // a cycle: the whole mesh sorted
-      tile_bins.reset(), clear.clear();
-      const auto t_sort = std::chrono::steady_clock::now();
-      view = sorter_.sort(options.sort, sort_view);
-      if (options.cull_transparent) visible = without_transparent(view.sorted.order, view.mesh->cells, scalar, tf);
-      sort_seconds += seconds_since(t_sort);
-      if (passed != &view.mesh->cells) cell_passes(view.mesh->cells);
-    }
-    tile_seconds = seconds_since(t);
-  }
-  const MeshView& cells = view.mesh->cells;
-  CELLPROJ_DCHECK(tile_bins || is_permutation_of(view.sorted.order, cells.n_cells),
+  FrameOrder f = order_frame({plan, options, sorter_, sort_view, screen, rays, scalar, tf}, st.splat);
+  const MeshView& cells = f.view.mesh->cells;
+  CELLPROJ_DCHECK(f.tile_bins || is_permutation_of(f.view.sorted.order, cells.n_cells),
                   "the visibility order does not hold every cell once");
-  const std::vector<std::int64_t>& order = options.cull_transparent ? visible : view.sorted.order;
-  st.tile_orders = tile_bins.has_value();
-  st.culled_transparent = tile_bins ? std::count(clear.begin(), clear.end(), std::uint8_t{1})
-                                    : static_cast<std::int64_t>(view.sorted.order.size() - order.size());
+  const std::vector<std::int64_t>& order = options.cull_transparent ? f.visible : f.view.sorted.order;
+  st.tile_orders = f.tile_bins.has_value();
+  st.culled_transparent = f.tile_bins ? std::count(f.clear.begin(), f.clear.end(), std::uint8_t{1})
+                                      : static_cast<std::int64_t>(f.view.sorted.order.size() - order.size());
   st.cell_numbering_spread = local_.spread(), st.cells_renumbered = local_.renumbered();
   st.tetrahedralize = sorter_.mode();
   st.cells = cells.n_cells;
   st.tets = std::count(cells.types, cells.types + cells.n_cells, static_cast<std::uint8_t>(CellType::Tetra));
-  st.problem_cells = view.problem_cells;
-  st.cells_split = view.mesh->split.cells_split;
-  st.cycle_splits = view.cycle_splits;
-  st.phase_seconds.emplace_back("sort", sort_seconds);
-  if (software) st.phase_seconds.emplace_back("small cells", small_seconds);       // (beside the sort, or after it)
-  if (st.tile_orders) st.phase_seconds.emplace_back("tile orders", tile_seconds);  // (binning included)
+  st.problem_cells = f.view.problem_cells;
+  st.cells_split = f.view.mesh->split.cells_split;
+  st.cycle_splits = f.view.cycle_splits;
+  st.phase_seconds.emplace_back("sort", f.sort_seconds);
+  if (plan.software) st.phase_seconds.emplace_back("small cells", f.small_seconds);  // (beside the sort, or after it)
+  if (st.tile_orders) st.phase_seconds.emplace_back("tile orders", f.tile_seconds);  // (binning included)
 
+  // Each cell's light (MWSC section 2 and the per-pixel methods): the method's tables.
   const MethodTraits& method = traits(options.method);
   std::optional<OpacityTable> table;
   if (method.opacity_table) table.emplace(opacity_table(tf, options.table_size, max_diameter_));
@@ -324,56 +396,19 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   const CellFragments project(screen, rays, points, tf, options.method, table ? &*table : nullptr, &optics,
                               options.whole_cells);
 
-  t = std::chrono::steady_clock::now();
+  // The cells drawn and composited in order (MWSC section 7).
   Image image;
-  if (is_opengl(options.backend)) {
-    image = draw_with_opengl(project, cells, order, table ? &*table : nullptr, width, height, options, st);
+  if (plan.software) {
+    const SplatContext frame{points, scalar, tf, rays, options.splat.prefilter};
+    image = draw_in_software(
+        plan, f, order, project, screen, frame, [this]() -> const CellRayTracer& { return tracer(); }, mesh_.n_cells,
+        options, st);
   } else {
-    image = Image(width, height);
-    ProjectionSplats splats;
-    if (st.small_cells == SmallCells::splat && st.splat.small_cells > 0) {  // no stencil without splats
-      const auto t_tracer = std::chrono::steady_clock::now();
-      const CellRayTracer& stencil_tracer = tracer();  // prepared on the first frame that splats
-      st.phase_seconds.emplace_back("stencil tracer", seconds_since(t_tracer));
-      const auto t_splats = std::chrono::steady_clock::now();
-      const SplatContext frame{points, scalar, tf, rays, options.splat.prefilter};
-      splats = frame_splats(*view.mesh, small, frame, stencil_tracer, mesh_.n_cells, st.splat);
-      st.splat_stencil_tiles = splats.stencil.tiles_traced();
-      st.phase_seconds.emplace_back("splats and stencil", seconds_since(t_splats));
-    }
     t = std::chrono::steady_clock::now();
-    std::optional<OpaqueMask> opaque;
-    if (options.early_termination) opaque.emplace(width, height);
-    FrameBuffer<std::uint8_t> drew;
-    if (count_after) drew.assign(static_cast<std::size_t>(cells.n_cells), 0);
-    OrderedCells source{project, cells, order, small, st.small_cells, splats, opaque ? &*opaque : nullptr};
-    if (count_after) source.drew = drew.data();
-    if (!clear.empty()) source.clear = clear.data();
-    FrameCounters counters;
-    if (by_tiles) {
-      std::size_t visits = tile_bins ? tile_bins->items.size() : 0;
-      if (tile_bins)
-        counters = composite_bins(image, *tile_bins, rows, source, opaque.has_value());
-      else
-        counters = composite_in_tiles(
-            image, order.size(), [&](std::size_t k) { return reach[static_cast<std::size_t>(order[k])]; }, rows, source,
-            &visits, opaque.has_value(), [&](std::size_t k) { return static_cast<std::size_t>(order[k]); });
-      st.tiles = (height + rows - 1) / rows;
-      st.tile_visits = static_cast<std::int64_t>(visits);
-      if (count_after) count_small_after(cells, screen, rays, st.splat_threshold, drew.data(), st.splat);
-    } else {
-      const std::vector<float> footprint = cell_footprints(cells, screen, rays);
-      PipelineLimits limits;
-      limits.batch_items = static_cast<std::size_t>(std::max(options.batch_cells, 0));
-      counters = composite_in_order(
-          image, order.size(), [&](std::size_t k) { return footprint[static_cast<std::size_t>(order[k])]; }, limits,
-          source, &st.blend_seconds);
-    }
-    st.counters = counters.projection;
-    st.splat.add(counters.splat);
+    image = draw_with_opengl(project, cells, order, table ? &*table : nullptr, width, height, options, st);
+    st.phase_seconds.emplace_back("project and composite", seconds_since(t));
   }
-  st.phase_seconds.emplace_back("project and composite", seconds_since(t));
-  st.sort = std::move(view.sorted.stats);
+  st.sort = std::move(f.view.sorted.stats);
   st.seconds = seconds_since(start);
   if (stats) *stats = std::move(st);
   return image;

@@ -26,6 +26,7 @@
 #include "scene/report_json.hpp"
 #include "scene/scene_file.hpp"
 #include "tools/commands.hpp"
+#include "tools/frame_loops.hpp"
 #include "tools/frame_output.hpp"
 #include "tools/memory_budget.hpp"
 #include "tools/mesh_options.hpp"
@@ -38,6 +39,52 @@
 
 namespace cellproj {
 namespace {
+
+// --stats: one JSON line on stderr (docs/cli.md lists the keys).
+void print_stats(const FrameJob& job, const FrameLoop& run, double load_seconds, int threads) {
+  const RenderArgs& a = job.args;
+  const Input& input = job.input;
+  const Scene& scene = input.scene;
+  const PreparedScene& prepared = input.prepared;
+  const std::vector<double>& frame_times = run.frame_times;
+  nlohmann::json s = {{"method", job.renderer.name()},
+                      {"mesh", scene.mesh},
+                      {"field", prepared.field},
+                      {"cells", input.player ? input.player->cells().n_cells() : prepared.loaded.mesh.n_cells()},
+                      {"width", scene.width},
+                      {"height", scene.height},
+                      {"threads", threads},
+                      {"frames", a.frames},
+                      {"load_seconds", load_seconds},
+                      {"frame_seconds", median(frame_times)},
+                      {"min_frame_seconds", *std::min_element(frame_times.begin(), frame_times.end())},
+                      {"max_frame_seconds", *std::max_element(frame_times.begin(), frame_times.end())},
+                      {"prepare_seconds", run.prepare_seconds},
+                      {"render_seconds", run.render_seconds / a.frames}};
+  s["settings"] = settings_json(job.settings);
+  s.update(report_json(run.report));  // the last frame's
+  if (!scene.clip.empty()) {
+    const ClipReport& c = input.player ? run.series_clipped : input.clipped;
+    s.update({{"clip_planes", scene.clip.size()},
+              {"clip_cells_whole", c.kept_whole},
+              {"clip_cells_cut", c.cut},
+              {"clip_cells_dropped", c.dropped},
+              {"clip_tetrahedra", c.tetrahedra}});
+  }
+  if (input.player) {  // how much of making the frames the background thread hid behind the renders
+    const SeriesPlayer& p = *input.player;
+    s.update({{"key_frames", p.series().frames.size()},
+              {"key_frames_read", p.key_frames_read()},
+              {"key_frame_read_seconds", p.read_seconds()},
+              {"points_move", p.points_move()},
+              {"volumes", run.playback.volumes},
+              {"prefetch", !a.no_prefetch},
+              {"series_make_seconds", run.playback.make_seconds},
+              {"series_wait_seconds", run.playback.wait_seconds},
+              {"peak_rss_mib", peak_rss_mib()}});
+  }
+  std::fprintf(stderr, "%s\n", s.dump().c_str());
+}
 
 int run_render(const RenderArgs& given) {
   const auto t_load = std::chrono::steady_clock::now();
@@ -95,142 +142,24 @@ int run_render(const RenderArgs& given) {
   const PreparedScene& prepared = input.prepared;
   for (const auto& w : prepared.warnings) warn(w);
   const double load_seconds = seconds_since(t_load);
-  const Mesh& mesh = prepared.loaded.mesh;
-  const ImageSize size{scene.width, scene.height};
-  const ColorBar legend = color_bar(prepared, scene.background);
-  const auto write = [&](const Image& img, const std::string& png, const std::string& npy, const std::string& what) {
-    write_outputs(img, scene.background, a.legend ? &legend : nullptr, png, npy, what);
-  };
-  const auto frame_what = [&](int f, double seconds) {
-    char what[128];
-    std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %.3f s", f + 1, a.frames, scene.width, scene.height,
-                  method.c_str(), seconds);
-    return std::string(what);
-  };
 
+  const FrameJob job{a, input, *renderer, settings, paths, color_bar(prepared, scene.background)};
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
-  tbb::task_arena arena(threads);
-  Image first;
-  std::vector<double> frame_times;
-  double prepare_seconds = 0.0, render_seconds = 0.0;
-  RenderReport report;
-  PlaybackStats playback;
-  ClipReport series_clipped;  // a time series is clipped as it plays
-  arena.execute([&] {
-    // --orbit D: a turntable of D degrees over the frames; without it a playback (--animate) keeps
-    // its camera, and a timing run (--frames) turns a degree per frame.
-    const auto degrees = [&](int f) { return a.orbit != 0.0 ? f * a.orbit / a.frames : a.animate.empty() ? f : 0.0; };
-    if (input.player) {  // a time series: frame f at times[f], the next one made while f renders
-      auto t_frame = std::chrono::steady_clock::now();
-      std::unique_ptr<ProgressBar> bar;
-      playback = play_series(
-          *input.player, input.first, input.times, !a.no_prefetch, *renderer, prepared.tf,
-          [&](int f) { return orbit(prepared.camera, degrees(f)); }, size,
-          [&](int f, Image&& img, const RenderReport& r) {
-            report = r;
-            render_seconds += r.seconds;
-            frame_times.push_back(seconds_since(t_frame));
-            t_frame = std::chrono::steady_clock::now();
-            char what[64];
-            std::snprintf(what, sizeof what, ", time %g", input.times[f]);
-            if (paths.sequence)
-              write(img, paths.png_of(f), paths.npy_of(f), frame_what(f, r.seconds) + what);
-            else if (f == 0)
-              first = std::move(img);
-          },
-          [&](int f) -> Progress {
-            bar = std::make_unique<ProgressBar>(
-                a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering");
-            return [&bar](double d) { (*bar)(d); };
-          },
-          scene.clip, &series_clipped);
-      return;
-    }
-    const Volume volume(mesh.view(), {/*trusted: load_mesh validated it*/ true});
-    const Field field = field_of(mesh, prepared.field);
-    const auto t_prep = std::chrono::steady_clock::now();
-    renderer->prepare(volume);
-    prepare_seconds = seconds_since(t_prep);
-    if (!levels.empty()) {  // each level written as soon as it is done, for the interactive user
-      render_progressive(volume, field, prepared.tf, settings, prepared.camera, size, levels,
-                         [&](std::size_t, int slices, const Image& img, const RenderReport& r) {
-                           char what[96];
-                           std::snprintf(what, sizeof what, "%dx%d, slicing, %d slices, %.3f s", scene.width,
-                                         scene.height, slices, r.seconds);
-                           write(img, level_path(paths.png, slices), level_path(paths.npy, slices), what);
-                           if (a.stats) {
-                             nlohmann::json j = {{"method", method}, {"level_slices", slices}};
-                             j.update(report_json(r));
-                             std::fprintf(stderr, "%s\n", j.dump().c_str());
-                           }
-                           report = r;
-                         });
-      return;
-    }
-    for (int f = 0; f < a.frames; ++f) {
-      const auto t_frame = std::chrono::steady_clock::now();
-      ProgressBar bar(a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering");
-      report = {};
-      Image img = renderer->render(volume, field, prepared.tf, orbit(prepared.camera, degrees(f)), size, &report,
-                                   [&](double d) { bar(d); });
-      render_seconds += report.seconds;
-      frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own
-      if (paths.sequence)
-        write(img, paths.png_of(f), paths.npy_of(f), frame_what(f, report.seconds));
-      else if (f == 0)
-        first = std::move(img);
-    }
+  FrameLoop run;
+  tbb::task_arena(threads).execute([&] {
+    run = input.player ? play_series_frames(job) : !levels.empty() ? progressive_levels(job, levels) : mesh_frames(job);
   });
-  for (const auto& w : report.warnings) warn(w);  // the last frame's
+  for (const auto& w : run.report.warnings) warn(w);  // the last frame's
   if (!levels.empty()) return kExitOk;
 
-  const double frame_seconds = median(frame_times);
   if (!paths.sequence) {
     char what[128];
     std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, method.c_str(),
-                  frame_seconds);
-    write(first, paths.png, paths.npy, what);
+                  median(run.frame_times));
+    job.write(run.first, paths.png, paths.npy, what);
   }
 
-  if (a.stats) {
-    nlohmann::json s = {{"method", method},
-                        {"mesh", scene.mesh},
-                        {"field", prepared.field},
-                        {"cells", input.player ? input.player->cells().n_cells() : mesh.n_cells()},
-                        {"width", scene.width},
-                        {"height", scene.height},
-                        {"threads", threads},
-                        {"frames", a.frames},
-                        {"load_seconds", load_seconds},
-                        {"frame_seconds", frame_seconds},
-                        {"min_frame_seconds", *std::min_element(frame_times.begin(), frame_times.end())},
-                        {"max_frame_seconds", *std::max_element(frame_times.begin(), frame_times.end())},
-                        {"prepare_seconds", prepare_seconds},
-                        {"render_seconds", render_seconds / a.frames}};
-    s["settings"] = settings_json(settings);
-    s.update(report_json(report));  // the last frame's
-    if (!scene.clip.empty()) {
-      const ClipReport& c = input.player ? series_clipped : input.clipped;
-      s.update({{"clip_planes", scene.clip.size()},
-                {"clip_cells_whole", c.kept_whole},
-                {"clip_cells_cut", c.cut},
-                {"clip_cells_dropped", c.dropped},
-                {"clip_tetrahedra", c.tetrahedra}});
-    }
-    if (input.player) {  // how much of making the frames the background thread hid behind the renders
-      const SeriesPlayer& p = *input.player;
-      s.update({{"key_frames", p.series().frames.size()},
-                {"key_frames_read", p.key_frames_read()},
-                {"key_frame_read_seconds", p.read_seconds()},
-                {"points_move", p.points_move()},
-                {"volumes", playback.volumes},
-                {"prefetch", !a.no_prefetch},
-                {"series_make_seconds", playback.make_seconds},
-                {"series_wait_seconds", playback.wait_seconds},
-                {"peak_rss_mib", peak_rss_mib()}});
-    }
-    std::fprintf(stderr, "%s\n", s.dump().c_str());
-  }
+  if (a.stats) print_stats(job, run, load_seconds, threads);
   return kExitOk;
 }
 

@@ -1,0 +1,130 @@
+#include "tools/frame_loops.hpp"
+
+#include <chrono>
+#include <cstdio>
+#include <memory>
+
+#include <nlohmann/json.hpp>
+
+#include "render/volume.hpp"
+#include "scene/camera_json.hpp"
+#include "scene/report_json.hpp"
+#include "tools/progress.hpp"
+#include "tools/timing.hpp"
+
+namespace cellproj {
+namespace {
+
+std::string bar_label(const RenderArgs& a, int f) {
+  return a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering";
+}
+
+// The mesh as a volume, prepared for the renderer (its time measured apart from the frames').
+struct PreparedVolume {
+  Volume volume;
+  Field field;
+  double seconds = 0.0;
+};
+std::unique_ptr<PreparedVolume> prepared_volume(const FrameJob& job) {
+  const Mesh& mesh = job.input.prepared.loaded.mesh;
+  auto v = std::unique_ptr<PreparedVolume>(new PreparedVolume{
+      Volume(mesh.view(), {/*trusted: load_mesh validated it*/ true}), field_of(mesh, job.input.prepared.field)});
+  const auto t = std::chrono::steady_clock::now();
+  job.renderer.prepare(v->volume);
+  v->seconds = seconds_since(t);
+  return v;
+}
+
+}  // namespace
+
+void FrameJob::write(const Image& image, const std::string& png, const std::string& npy,
+                     const std::string& what) const {
+  write_outputs(image, input.scene.background, args.legend ? &legend : nullptr, png, npy, what);
+}
+
+std::string FrameJob::frame_what(int f, double seconds) const {
+  char what[128];
+  std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %.3f s", f + 1, args.frames, input.scene.width,
+                input.scene.height, renderer.name().c_str(), seconds);
+  return what;
+}
+
+double FrameJob::degrees(int f) const {
+  return args.orbit != 0.0 ? f * args.orbit / args.frames : args.animate.empty() ? f : 0.0;
+}
+
+FrameLoop play_series_frames(const FrameJob& job) {
+  const Input& in = job.input;
+  const ImageSize size{in.scene.width, in.scene.height};
+  FrameLoop out;
+  auto t_frame = std::chrono::steady_clock::now();
+  std::unique_ptr<ProgressBar> bar;
+  // Frame f at times[f], the next one made on a background thread while f renders.
+  out.playback = play_series(
+      *in.player, in.first, in.times, !job.args.no_prefetch, job.renderer, in.prepared.tf,
+      [&](int f) { return orbit(in.prepared.camera, job.degrees(f)); }, size,
+      [&](int f, Image&& img, const RenderReport& r) {
+        out.report = r;
+        out.render_seconds += r.seconds;
+        out.frame_times.push_back(seconds_since(t_frame));
+        t_frame = std::chrono::steady_clock::now();
+        char time[64];
+        std::snprintf(time, sizeof time, ", time %g", in.times[f]);
+        if (job.paths.sequence)
+          job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, r.seconds) + time);
+        else if (f == 0)
+          out.first = std::move(img);
+      },
+      [&](int f) -> Progress {
+        bar = std::make_unique<ProgressBar>(bar_label(job.args, f));
+        return [&bar](double d) { (*bar)(d); };
+      },
+      in.scene.clip, &out.series_clipped);
+  return out;
+}
+
+FrameLoop progressive_levels(const FrameJob& job, const std::vector<int>& levels) {
+  const Input& in = job.input;
+  const std::unique_ptr<PreparedVolume> v = prepared_volume(job);
+  FrameLoop out;
+  out.prepare_seconds = v->seconds;
+  // Each level written as soon as it is done, for the interactive user.
+  render_progressive(v->volume, v->field, in.prepared.tf, job.settings, in.prepared.camera,
+                     {in.scene.width, in.scene.height}, levels,
+                     [&](std::size_t, int slices, const Image& img, const RenderReport& r) {
+                       char what[96];
+                       std::snprintf(what, sizeof what, "%dx%d, slicing, %d slices, %.3f s", in.scene.width,
+                                     in.scene.height, slices, r.seconds);
+                       job.write(img, level_path(job.paths.png, slices), level_path(job.paths.npy, slices), what);
+                       if (job.args.stats) {
+                         nlohmann::json j = {{"method", job.renderer.name()}, {"level_slices", slices}};
+                         j.update(report_json(r));
+                         std::fprintf(stderr, "%s\n", j.dump().c_str());
+                       }
+                       out.report = r;
+                     });
+  return out;
+}
+
+FrameLoop mesh_frames(const FrameJob& job) {
+  const Input& in = job.input;
+  const std::unique_ptr<PreparedVolume> v = prepared_volume(job);
+  FrameLoop out;
+  out.prepare_seconds = v->seconds;
+  for (int f = 0; f < job.args.frames; ++f) {
+    const auto t_frame = std::chrono::steady_clock::now();
+    ProgressBar bar(bar_label(job.args, f));
+    out.report = {};
+    Image img = job.renderer.render(v->volume, v->field, in.prepared.tf, orbit(in.prepared.camera, job.degrees(f)),
+                                    {in.scene.width, in.scene.height}, &out.report, [&](double d) { bar(d); });
+    out.render_seconds += out.report.seconds;
+    out.frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own
+    if (job.paths.sequence)
+      job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, out.report.seconds));
+    else if (f == 0)
+      out.first = std::move(img);
+  }
+  return out;
+}
+
+}  // namespace cellproj
