@@ -53,6 +53,93 @@ void gl_corners(const PlanePolygons& plane, const TransferFunction& tf, const Pi
 }
 #endif
 
+// InputError unless the levels are plane counts the image allows, increasing.
+void check_levels(const std::vector<int>& levels, int width, int height) {
+  if (levels.empty()) throw InputError("progressive slicing: no levels given");
+  for (std::size_t l = 0; l < levels.size(); ++l) {
+    check_slices(levels[l], width, height);
+    if (l > 0 && levels[l] <= levels[l - 1])
+      throw InputError("progressive slicing: the levels must increase (" + std::to_string(levels[l - 1]) + " then " +
+                       std::to_string(levels[l]) + ")");
+  }
+}
+
+// The frame's points for every level: screen attributes, and heights along the family's normal.
+FramePoints frame_points(const RecentredPoints& points, const PixelRays& rays, const double* scalar,
+                         const glm::dvec3& normal) {
+  FramePoints out;
+  out.perspective = rays.perspective();
+  out.near = 1e-9 * std::max(points.half_diagonal, 1e-300);
+  const std::size_t n = points.xyz.size() / 3;
+  out.screen.resize(n), out.height.resize(n);
+  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t p) {
+    glm::dvec4& a = out.screen[p];
+    rays.project_homogeneous(points(static_cast<std::int64_t>(p)), a.x, a.y, a.z);
+    a.w = scalar ? scalar[p] : 0.0;
+  });
+  tbb::parallel_for(std::size_t{0}, n,
+                    [&](std::size_t p) { out.height[p] = glm::dot(points(static_cast<std::int64_t>(p)), normal); });
+  return out;
+}
+
+// The software back end's ray lengths between a stack's planes and, for the preintegrated
+// integral, its table over the field's range [s_lo, s_hi].
+struct LevelTables {
+  PixelLengths lengths;
+  std::unique_ptr<PreintegratedTable> table;
+};
+LevelTables level_tables(const PixelRays& rays, const SlicePlanes& planes, const SlicingOptions& options,
+                         const TransferFunction& tf, double s_lo, double s_hi, int visible, SlicingStats& st) {
+  LevelTables out;
+  if (is_opengl(options.backend)) return out;
+  PixelLengths& lengths = out.lengths;
+  lengths = pixel_lengths(rays, planes.normal(), planes.spacing());
+  st.rays_along_planes = lengths.along;
+  if (options.integral != SliceIntegral::preintegrated || visible == 0) return out;
+  out.table = std::make_unique<PreintegratedTable>(tf, s_lo, s_hi, lengths.lo, lengths.hi, options.table_size);
+  st.table_layers = out.table->layers();
+  if (out.table->layers() > 1) {
+    lengths.layer.resize(lengths.length.size());
+    for (std::size_t k = 0; k < lengths.length.size(); ++k)
+      lengths.layer[k] = static_cast<float>(out.table->layer_of(lengths.length[k]));
+  }
+  return out;
+}
+
+// The polygons of a level's planes kept for the next level, by plane, within kReuseBytes.
+struct KeptPlanes {
+  std::vector<std::optional<SlicePolygons>> planes;
+  int count = 0;  // the planes of the level that made them
+  std::size_t bytes = 0;
+};
+
+// Planes first.. of this level (`count` planes) that coincide with a plane of the previous level
+// keep its polygons: those are not cut again (wanted 0).
+void reuse_kept(const KeptPlanes& previous, int count, int first, std::vector<PlanePolygons>& plane,
+                std::vector<char>& wanted, SlicingStats& st) {
+  if (previous.planes.empty()) return;
+  for (std::size_t k = 0; k < plane.size(); ++k) {
+    const std::int64_t coarse = static_cast<std::int64_t>(first + static_cast<int>(k)) * previous.count;
+    if (coarse % count != 0) continue;
+    const std::size_t pj = static_cast<std::size_t>(coarse / count);
+    if (pj < previous.planes.size() && previous.planes[pj]) {
+      plane[k].kept = &*previous.planes[pj], wanted[k] = 0;
+      ++st.planes_reused;
+    }
+  }
+}
+
+// Keeps the polygons of planes first.. for the next level, while the budget lasts.
+void keep(const std::vector<PlanePolygons>& plane, int first, KeptPlanes& kept) {
+  for (std::size_t k = 0; k < plane.size(); ++k) {
+    SlicePolygons p;
+    plane[k].for_each([&](const SlicePolygons& part) { p.append(part); });
+    if (kept.bytes + p.bytes() > kReuseBytes) return;
+    kept.bytes += p.bytes();
+    kept.planes[static_cast<std::size_t>(first) + k] = std::move(p);
+  }
+}
+
 }  // namespace
 
 SliceRenderer::SliceRenderer(const MeshView& mesh, Tetrahedralize mode)
@@ -81,40 +168,21 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
                                   int height, const SlicingOptions& options, const std::vector<int>& levels,
                                   const SliceLevelDone& done) const {
   check_options(options);
-  if (levels.empty()) throw InputError("progressive slicing: no levels given");
-  for (std::size_t l = 0; l < levels.size(); ++l) {
-    check_slices(levels[l], width, height);
-    if (l > 0 && levels[l] <= levels[l - 1])
-      throw InputError("progressive slicing: the levels must increase (" + std::to_string(levels[l - 1]) + " then " +
-                       std::to_string(levels[l]) + ")");
-  }
+  check_levels(levels, width, height);
   const PixelRays rays(recentred(camera, points_.centre), width, height);
 
-  // The frame's points, for every level: screen attributes (and heights, per level's family).
-  FramePoints points;
-  points.perspective = rays.perspective();
-  points.near = 1e-9 * std::max(points_.half_diagonal, 1e-300);
-  const std::size_t n = static_cast<std::size_t>(mesh_.n_points);
-  points.screen.resize(n), points.height.resize(n);
-  tbb::parallel_for(std::size_t{0}, n, [&](std::size_t p) {
-    glm::dvec4& a = points.screen[p];
-    rays.project_homogeneous(points_(static_cast<std::int64_t>(p)), a.x, a.y, a.z);
-    a.w = scalar ? scalar[p] : 0.0;
-  });
-  double s_lo = 0.0, s_hi = 0.0;
-  if (n > 0 && scalar) {
-    const auto [lo, hi] = std::minmax_element(scalar, scalar + n);
-    s_lo = *lo, s_hi = *hi;
-  }
-
   // What every level shares: the family (the plane count changes neither its normal nor its
-  // extent), the points' heights along the normal, and for the software back end the boundary
-  // crossings and the slices' images (OpenGL takes each corner's values itself).
+  // extent), the points on screen and their heights along the normal, the field's range, and for
+  // the software back end the boundary crossings and the slices' images (OpenGL takes each
+  // corner's values itself).
   const bool software = !is_opengl(options.backend);
   const SliceAxis axis = options.axis == SliceAxis::automatic ? automatic_axis(points_, rays) : options.axis;
-  const glm::dvec3 normal = slice_normal(axis, rays);
-  tbb::parallel_for(std::size_t{0}, n,
-                    [&](std::size_t p) { points.height[p] = glm::dot(points_(static_cast<std::int64_t>(p)), normal); });
+  const FramePoints points = frame_points(points_, rays, scalar, slice_normal(axis, rays));
+  double s_lo = 0.0, s_hi = 0.0;
+  if (mesh_.n_points > 0 && scalar) {
+    const auto [lo, hi] = std::minmax_element(scalar, scalar + mesh_.n_points);
+    s_lo = *lo, s_hi = *hi;
+  }
   auto t = std::chrono::steady_clock::now();
   std::optional<BoundaryCrossings> crossings;
   if (software) crossings.emplace(boundary_, points, width, height);
@@ -126,14 +194,13 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
   SliceImage behind;  // the last plane of the previous chunk
   for (SliceImage& s : slice) s.s.assign(pixels, kEmpty);
   behind.s.assign(pixels, kEmpty);
-
-  std::vector<std::optional<SlicePolygons>> previous;  // the last level's polygons by plane, where kept
-  int previous_count = 0;
-  std::vector<char> previous_skip;  // the cells the last level did not cut
+  std::vector<SplatLayer> layer(static_cast<std::size_t>(chunk));
   const SmallCells small_mode = resolve(options.splat, options.backend);
   const double threshold = threshold_or(options.splat, kDefaultVolumeThreshold);
   const SplatContext splat_frame{points_, scalar, tf, rays, options.splat.prefilter};
-  std::vector<SplatLayer> layer(static_cast<std::size_t>(chunk));
+
+  KeptPlanes previous;              // the last level's polygons by plane, where kept
+  std::vector<char> previous_skip;  // the cells the last level did not cut
   for (std::size_t level = 0; level < levels.size(); ++level) {
     const auto t_frame = std::chrono::steady_clock::now();
     SlicingStats st;
@@ -151,24 +218,11 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     if (skip) sweep.drop(*skip);
     st.cells_between_planes = sweep.between_planes();
     // Polygons kept from the last level hold the cells it cut: only the same cells may reuse them.
-    if (skip ? *skip != previous_skip : !previous_skip.empty()) previous.clear();
+    if (skip ? *skip != previous_skip : !previous_skip.empty()) previous.planes.clear();
     previous_skip = skip ? *skip : std::vector<char>();
 
-    // The software back end's ray lengths between planes and preintegrated table.
     t = std::chrono::steady_clock::now();
-    PixelLengths lengths;
-    if (software) lengths = pixel_lengths(rays, planes.normal(), planes.spacing());
-    st.rays_along_planes = lengths.along;
-    std::unique_ptr<PreintegratedTable> table;
-    if (software && options.integral == SliceIntegral::preintegrated && visible > 0) {
-      table = std::make_unique<PreintegratedTable>(tf, s_lo, s_hi, lengths.lo, lengths.hi, options.table_size);
-      st.table_layers = table->layers();
-      if (table->layers() > 1) {
-        lengths.layer.resize(lengths.length.size());
-        for (std::size_t k = 0; k < lengths.length.size(); ++k)
-          lengths.layer[k] = static_cast<float>(table->layer_of(lengths.length[k]));
-      }
-    }
+    const LevelTables tables = level_tables(rays, planes, options, tf, s_lo, s_hi, visible, st);
     st.phase_seconds.push_back({"table", seconds_since(t)});
 
     Image image(width, height);
@@ -185,27 +239,18 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
     st.phase_seconds.push_back({"boundary", level == 0 ? boundary_seconds : 0.0});
     behind.clear(width);
     behind.height = planes.height(0);  // the back end of the mesh: no plane covers it
-    const bool keep = level + 1 < levels.size();
-    std::vector<std::optional<SlicePolygons>> kept(keep ? static_cast<std::size_t>(visible) + 1 : 0);
-    std::size_t kept_bytes = 0;
+    KeptPlanes kept;
+    kept.count = count;
+    if (level + 1 < levels.size()) kept.planes.resize(static_cast<std::size_t>(visible) + 1);
     double cut_s = 0.0, scan_s = 0.0, comp_s = 0.0;
     CutBlocks blocks;
     for (int first = 1; first <= visible; first += chunk) {
       const int end = std::min(visible + 1, first + chunk);
       const std::size_t here = static_cast<std::size_t>(end - first);
-      // Planes of the previous level that coincide with these keep their polygons.
       std::vector<char> wanted(here, 1);
       std::vector<PlanePolygons> plane(here);
-      for (std::size_t k = 0; k < here; ++k) {
-        plane[k].blocks = &blocks, plane[k].index = k;
-        const std::int64_t coarse = static_cast<std::int64_t>(first + static_cast<int>(k)) * previous_count;
-        if (previous.empty() || coarse % count != 0) continue;
-        const std::size_t pj = static_cast<std::size_t>(coarse / count);
-        if (pj < previous.size() && previous[pj]) {
-          plane[k].kept = &*previous[pj], wanted[k] = 0;
-          ++st.planes_reused;
-        }
-      }
+      for (std::size_t k = 0; k < here; ++k) plane[k].blocks = &blocks, plane[k].index = k;
+      reuse_kept(previous, count, first, plane, wanted, st);
       t = std::chrono::steady_clock::now();
       cut_planes(cells_, points, planes, sweep, sweep.advance(first, end), first, end, wanted, blocks);
       cut_s += seconds_since(t);
@@ -250,24 +295,17 @@ void SliceRenderer::render_levels(const double* scalar, const TransferFunction& 
           layers.push_back(layer[k].empty() ? nullptr : &layer[k]);
         }
       }
-      const Compositor compositor{tf, options, lengths, table.get(), *crossings, planes.eye_height(), width, height};
+      const Compositor compositor{tf,    options, tables.lengths, tables.table.get(), *crossings, planes.eye_height(),
+                                  width, height};
       compositor(image, behind, in_order, layers, end == visible + 1 ? planes.front_end() : kNoHeight);
       comp_s += seconds_since(t);
       std::swap(behind, slice[here - 1]);
-
-      for (std::size_t k = 0; k < here && keep; ++k) {  // for the next level, within the budget
-        SlicePolygons p;
-        plane[k].for_each([&](const SlicePolygons& part) { p.append(part); });
-        if (kept_bytes + p.bytes() > kReuseBytes) break;
-        kept_bytes += p.bytes();
-        kept[static_cast<std::size_t>(first) + k] = std::move(p);
-      }
+      if (!kept.planes.empty()) keep(plane, first, kept);  // for the next level
     }
 #ifdef CELLPROJ_HAVE_OPENGL
     if (gl) image = gl->finish(), st.polygons = gl_counts.polygons, st.clipped_polygons = gl_counts.clipped_polygons;
 #endif
     previous = std::move(kept);
-    previous_count = count;
     st.phase_seconds.push_back({"cut", cut_s});
     st.phase_seconds.push_back({"scan convert", scan_s});
     st.phase_seconds.push_back({"composite", comp_s});
