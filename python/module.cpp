@@ -35,10 +35,21 @@ namespace {
 std::string python_words(const std::string& message) { return spell_settings(message, "", "=", '_'); }
 
 // The keyword arguments as render options (method=, sort=, table_size=, ...).
+// The render settings as keywords, for docstrings: one line each, from the settings table.
+std::string keywords_doc() {
+  std::string doc = "\n\nRender settings (keywords; the command line's options of the same names):\n";
+  for (const SettingRow& row : render_settings()) {
+    std::string name = row.name;
+    std::replace(name.begin(), name.end(), '-', '_');
+    doc += "  " + name + "=: " + python_words(setting_help(row)) + "\n";
+  }
+  return doc;
+}
+
+// `method` empty: not given (a scene's, or the default).
 RenderOptions options_from(const std::string& method, const py::kwargs& kwargs) {
   RenderOptions o;
-  set_option(o, "method", method);
-  o.given.clear();  // the method itself is always "given"
+  if (!method.empty()) set_option(o, "method", method);
   for (const auto& [key, value] : kwargs) {
     if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {  // a repeatable option: iso=[...]
       for (const auto& item : value) set_option(o, py::str(key), py::str(item));
@@ -113,6 +124,13 @@ Camera make_camera(const std::vector<double>& eye, const std::vector<double>& ta
 }  // namespace
 
 PYBIND11_MODULE(_cellproj, m) {
+  static const std::string render_doc =
+      "Renders to a premultiplied float32 (H, W, 4) array; size=(width, height)." + keywords_doc();
+  static const std::string render_scene_doc =
+      "Renders a scene file as `cellproj render SCENE` does (the same array as its --npy); time=T for a time series, "
+      "as --time T; method and the other settings default to the scene's \"render\" block, else as the CLI's "
+      "(pt-breakpoints, or exact for a scene of several volumes)." +
+      keywords_doc();
   m.doc() = "cellproj: direct volume rendering of unstructured and curvilinear grids (docs/python.md)";
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<ResourceError> resource_error(m, "ResourceError", PyExc_RuntimeError);
@@ -254,9 +272,7 @@ PYBIND11_MODULE(_cellproj, m) {
       },
       py::arg("mesh"), py::arg("tf") = py::none(), py::arg("camera") = py::none(),
       py::arg("size") = std::pair<int, int>{512, 512}, py::arg("field") = "", py::arg("method") = "pt-breakpoints",
-      py::arg("threads") = 0,
-      "Renders to a premultiplied float32 (H, W, 4) array; size=(width, height); other keywords are the CLI's render "
-      "options (sort=, slices=, table_size=, ...)");
+      py::arg("threads") = 0, render_doc.c_str());
 
   m.def(
       "render_scene",
@@ -265,8 +281,11 @@ PYBIND11_MODULE(_cellproj, m) {
          const py::kwargs& kwargs) {
         Scene scene = load_scene(path);
         // Several volumes are drawn by the exact renderer, its default there (render/volume_set.hpp).
-        RenderOptions options =
-            options_from(method.empty() ? scene.volumes.size() > 1 ? "exact" : "pt-breakpoints" : method, kwargs);
+        RenderOptions options = options_from(method, kwargs);
+        if (scene.volumes.size() > 1 && !option_given(options, "method")) {  // the exact renderer's scene
+          set_option(options, "method", "exact");
+          options.given.pop_back();  // a default, not the caller's word
+        }
         for (const std::string& w : apply_scene_options(scene, options))
           PyErr_WarnEx(PyExc_UserWarning, python_words(w).c_str(), 1);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings_from(options));
@@ -343,9 +362,7 @@ PYBIND11_MODULE(_cellproj, m) {
                                      image_size, threads));
       },
       py::arg("path"), py::arg("size") = py::none(), py::arg("field") = "", py::arg("view") = "",
-      py::arg("method") = "", py::arg("threads") = 0, py::arg("time") = py::none(),
-      "Renders a scene file as `cellproj render SCENE` does (the same array as its --npy); time=T for a time "
-      "series, as --time T; method defaults as the CLI's: pt-breakpoints, or exact for a scene of several volumes");
+      py::arg("method") = "", py::arg("threads") = 0, py::arg("time") = py::none(), render_scene_doc.c_str());
 
   m.def(
       "write_png",

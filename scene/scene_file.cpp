@@ -59,24 +59,43 @@ int positive_int(const nlohmann::json& v, const std::string& at, int max, int mi
 
 }  // namespace
 
-std::vector<std::string> apply_scene_options(const Scene& scene, RenderOptions& options) {
-  const std::string method = option_text(options, "method");
-  const auto& defaults = method == "layers"  ? scene.layer_options
-                         : method == "exact" ? scene.iso_options
-                                             : std::vector<std::pair<std::string, std::string>>{};
+namespace {
+
+// Sets each of `defaults` that `options` was not given, as a default (not the user's word).
+void set_defaults(const std::vector<std::pair<std::string, std::string>>& defaults, RenderOptions& options) {
   for (const auto& [name, value] : defaults)
     if (!option_given(options, name)) {
       set_option(options, name, value);
       const std::string canonical = find_setting(name)->name;  // set_option knew it
-      options.given.erase(
-          std::find(options.given.begin(), options.given.end(), canonical));  // a default, not the user's word
+      options.given.erase(std::find(options.given.begin(), options.given.end(), canonical));
     }
+}
+
+}  // namespace
+
+std::vector<std::string> apply_scene_options(const Scene& scene, RenderOptions& options) {
   std::vector<std::string> warnings;
+  set_defaults(scene.render_options, options);
+  const std::string method = option_text(options, "method");
+  set_defaults(method == "layers"  ? scene.layer_options
+               : method == "exact" ? scene.iso_options
+                                   : std::vector<std::pair<std::string, std::string>>{},
+               options);
   const bool has_iso =
       std::any_of(scene.iso_options.begin(), scene.iso_options.end(), [](const auto& o) { return o.first == "iso"; });
   if (has_iso && method != "exact")
     warnings.push_back(where(scene.source, "its iso-surfaces are drawn by setting 'method' exact; setting 'method' " +
                                                method + " draws the volume alone"));
+  // A scene's render setting the method does not read is left out, and said (the command line's
+  // method may differ from the scene's).
+  try {
+    const RenderSettings settings = settings_from(options);
+    for (const auto& [name, value] : scene.render_options)
+      if (!find_setting(name)->reads(settings))
+        warnings.push_back(
+            where(scene.source, "render." + name + " does not apply to setting 'method' " + method + ": left out"));
+  } catch (const InputError&) {  // the front end reports the settings' error where it reads them
+  }
   return warnings;
 }
 
@@ -249,6 +268,33 @@ std::string resolved(const nlohmann::json& v, const std::string& at, const std::
   return p.is_relative() ? (fs::path(base_dir) / p).lexically_normal().string() : p.string();
 }
 
+// {"method": "pt-table", "table_size": 64, "cull_transparent": false}: render settings by their
+// names in the table (render/settings_table.hpp), each checked now so that a bad one names the
+// scene. Iso-surfaces and layers have blocks of their own.
+std::vector<std::pair<std::string, std::string>> render_options_from_json(const nlohmann::json& r,
+                                                                          const std::string& at) {
+  if (!r.is_object()) throw InputError(at + ": expected an object of render settings, e.g. {\"method\": \"exact\"}");
+  std::vector<std::pair<std::string, std::string>> out;
+  RenderOptions check;
+  for (const auto& [key, v] : r.items()) {
+    const std::string here = at + "." + key;
+    const SettingRow* row = find_setting(key);
+    if (row && row->repeatable) throw InputError(here + ": give iso-surfaces in the scene's \"iso\" list");
+    const std::string value = v.is_string()    ? v.get<std::string>()
+                              : v.is_boolean() ? std::string(v.get<bool>() ? "on" : "off")
+                              : v.is_number()
+                                  ? number_text(v, here)
+                                  : throw InputError(here + ": expected a string, number or boolean, got " + v.dump());
+    try {
+      set_option(check, key, value);
+    } catch (const InputError& e) {
+      throw InputError(here + ": " + e.what());
+    }
+    out.emplace_back(key, value);
+  }
+  return out;
+}
+
 // One entry of "volumes": {"mesh", "reader", "field", "transfer_function", "iso", "volume"}.
 SceneVolume volume_from_json(const nlohmann::json& v, const std::string& at, const std::string& base_dir) {
   SceneVolume out;
@@ -273,8 +319,8 @@ SceneVolume volume_from_json(const nlohmann::json& v, const std::string& at, con
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
   only_keys(j, path,
-            {"mesh", "reader", "field", "transfer_function", "camera", "image", "layers", "clip", "iso", "iso_mode",
-             "iso_opacity", "volume", "volumes"});
+            {"mesh", "reader", "field", "transfer_function", "camera", "image", "render", "layers", "clip", "iso",
+             "iso_mode", "iso_opacity", "volume", "volumes"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
@@ -327,6 +373,7 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
                 }
                 s.clip.push_back(plane);
               });
+  if (j.contains("render")) s.render_options = render_options_from_json(j["render"], path + ": render");
   if (j.contains("layers")) s.layer_options = layer_options_from_json(j["layers"], path + ": layers");
   for (auto& o : iso_options_from_json(j, path)) s.iso_options.push_back(std::move(o));
   if (j.contains("image")) {

@@ -45,6 +45,10 @@ struct Scene {
   // The "iso" list with "iso_mode", "iso_opacity", "volume", as options: what method exact draws
   // besides the volume unless the command line says otherwise.
   std::vector<std::pair<std::string, std::string>> iso_options;
+  // The "render" block: any render setting of the table (render/settings_table.hpp) by name, as
+  // text ("method" -> "pt-table", "table_size" -> "64"): what the scene renders with unless the
+  // command line says otherwise.
+  std::vector<std::pair<std::string, std::string>> render_options;
   std::vector<ClipPlane> clip;  // the mesh clipped by these planes before any method draws it
   // A "volumes" list: the volumes drawn together (mesh, reader, field and transfer_function above
   // are then the first one's, and iso_options holds the list's iso_mode and iso_opacity only).
@@ -56,9 +60,9 @@ Scene load_scene(const std::string& path);
 // The same from a parsed scene: `source` names it in messages, relative paths are taken from `base_dir`.
 Scene scene_from_json(const nlohmann::json& j, const std::string& source, const std::string& base_dir);
 
-// The scene's render options (its "layers" block for method layers, its "iso" list for exact) as
-// defaults of `options`: those the options do not give already, not marked as given. Returns the
-// warnings, such as iso-surfaces a method does not draw.
+// The scene's render options (its "render" block, then its "layers" block for method layers and
+// its "iso" list for exact) as defaults of `options`: those the options do not give already, not marked as given.
+// Returns the warnings, such as iso-surfaces a method does not draw.
 std::vector<std::string> apply_scene_options(const Scene& scene, RenderOptions& options);
 
 // "x,y,z,nx,ny,nz": a clipping plane through (x, y, z) with normal (nx, ny, nz); InputError naming setting 'clip'.

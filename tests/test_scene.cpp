@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "io/read_mesh.hpp"
 #include "io/write_mesh.hpp"
+#include "render/settings_table.hpp"
 #include "scene/prepare.hpp"
 #include "scene/scene_file.hpp"
 #include "test_util.hpp"
@@ -98,3 +99,42 @@ TEST(Scene, AScenePathTheFileSystemCannotLookUpIsAnInputError) {
   EXPECT_NE(what.find(path + ": cannot be looked up (File name too long)"), std::string::npos) << what;
 }
 }  // namespace cellproj
+
+// A scene's "render" block: any setting of the table, by name, what the scene renders with unless
+// the command line says otherwise.
+TEST(Scene, TheRenderBlockSetsAnySettingAsADefault) {
+  test::TempDir dir;
+  write_vtu(make_box(2, 2, 2, glm::dvec3(0), glm::dvec3(1), true), dir.file("m.vtu"));
+  auto write = [&](const std::string& render) {
+    std::ofstream(dir.file("s.json"))
+        << R"({"mesh": "m.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "render": )" +
+               render + "}";
+    return dir.file("s.json");
+  };
+  const Scene s = load_scene(write(R"({"method": "pt-table", "table_size": 64, "cull_transparent": false})"));
+  RenderOptions o;
+  EXPECT_TRUE(apply_scene_options(s, o).empty());
+  EXPECT_TRUE(o.given.empty());  // the scene's defaults, not the user's words
+  RenderSettings r = settings_from(o);
+  EXPECT_EQ(r.projection.method, ProjectionMethod::pt_table);
+  EXPECT_EQ(r.projection.table_size, 64);
+  EXPECT_FALSE(r.projection.cull_transparent);
+
+  RenderOptions cli;  // the command line wins, and a scene setting the method does not read is said
+  set_option(cli, "method", "exact");
+  const std::vector<std::string> warnings = apply_scene_options(s, cli);
+  ASSERT_EQ(warnings.size(), 2u);  // the block's keys in JSON's order
+  EXPECT_NE(warnings[0].find("render.cull_transparent does not apply to setting 'method' exact"), std::string::npos);
+  EXPECT_NE(warnings[1].find("render.table_size does not apply to setting 'method' exact"), std::string::npos);
+  EXPECT_EQ(settings_from(cli).mode, RenderMode::exact);
+  EXPECT_NO_THROW(refuse_unused(settings_from(cli), cli.given));
+
+  const auto refused = [&](const std::string& render) { return test::input_error([&] { load_scene(write(render)); }); };
+  EXPECT_NE(refused(R"({"colour": "red"})").find("render.colour: 'colour' is not a render setting"), std::string::npos);
+  EXPECT_NE(refused(R"({"table_size": 1})").find("render.table_size: setting 'table-size': expected an integer"),
+            std::string::npos);
+  EXPECT_NE(refused(R"({"iso": 0.5})").find("render.iso: give iso-surfaces in the scene's \"iso\" list"),
+            std::string::npos);
+  EXPECT_NE(refused(R"({"slices": [1, 2]})").find("expected a string, number or boolean"), std::string::npos);
+  EXPECT_NE(refused(R"("exact")").find("expected an object of render settings"), std::string::npos);
+}

@@ -48,6 +48,22 @@ def test_render_scene_with_options_equals_the_cli(tmp_path, method, options, cli
     assert np.array_equal(image, cli(tmp_path, DEFAULT_SCENE, "--size", "96x96", "--method", method, *cli_options))
 
 
+def test_a_scenes_render_block_is_the_clis_options(tmp_path):
+    import json
+    scene = json.load(open(DEFAULT_SCENE))
+    scene["mesh"] = DEFAULT_MESH
+    scene["render"] = {"method": "slicing", "slices": 48, "slice_axis": "view"}
+    path = tmp_path / "render_block.json"
+    path.write_text(json.dumps(scene))
+    flags = ["--size", "64x48", "--method", "slicing", "--slices", "48", "--slice-axis", "view"]
+    image = cellproj.render_scene(str(path), size=(64, 48))
+    assert np.array_equal(image, cli(tmp_path, DEFAULT_SCENE, *flags))
+    assert np.array_equal(image, cli(tmp_path, str(path), "--size", "64x48"))
+    # A keyword wins over the scene's setting, as a flag does.
+    assert np.array_equal(cellproj.render_scene(str(path), size=(64, 48), slices=20),
+                          cli(tmp_path, str(path), "--size", "64x48", "--slices", "20"))
+
+
 def test_render_of_a_mesh_equals_the_cli_without_a_scene(tmp_path, mixed):
     mesh = cellproj.read(mixed)
     camera = cellproj.Camera.framing(mesh, "+y", aspect=128 / 96)
