@@ -27,6 +27,8 @@ void check_distributable(const RenderSettings& settings) {
                     : settings.mode == RenderMode::layers  ? "counts crossings along each whole ray"
                     : !settings.iso.surfaces.empty() && settings.iso.mode != IsoMode::ordered
                         ? "blends iso-surfaces out of depth order (use setting 'iso-mode' ordered)"
+                    : settings.ssaa > 1
+                        ? "is anti-aliased (setting 'ssaa'), which the bricks' composite does not do yet"
                         : nullptr;
   if (why)
     throw InputError(std::string("a distributed render composites the bricks' pictures in depth order, and this "

@@ -349,7 +349,56 @@ class SlicingMode final : public Renderer {
   Tetrahedralize mode_;
 };
 
+// Anti-aliasing (RenderSettings::ssaa): the frame of the renderer it wraps, drawn n times larger on
+// each side, each pixel the mean of its n x n samples (a box filter over the pixel's square; the
+// same weights for colour and opacity, premultiplied).
+class Supersampled final : public Renderer {
+ public:
+  Supersampled(std::unique_ptr<Renderer> inner, int n) : inner_(std::move(inner)), n_(n) {}
+  std::string name() const override { return inner_->name(); }
+  void prepare(const Volume& volume) const override { inner_->prepare(volume); }
+  std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
+    const std::uint64_t pixels = static_cast<std::uint64_t>(size.width) * static_cast<std::uint64_t>(size.height);
+    return inner_->estimate_bytes(v, {size.width * n_, size.height * n_}) + pixels * 16;
+  }
+
+ private:
+  Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+              ImageSize size, RenderReport* report, const Progress& progress) const override {
+    const Image samples = inner_->render(volume, field, tf, camera, supersampled_size(size, n_), report, progress);
+    if (report) report->add("ssaa", std::int64_t{n_});
+    return downsample(samples, n_);
+  }
+
+  std::unique_ptr<Renderer> inner_;
+  int n_;
+};
+
+// The renderer of the settings' mode, not supersampled.
+std::unique_ptr<Renderer> mode_renderer(const RenderSettings& s) {
+  switch (s.mode) {
+    case RenderMode::projection: return std::make_unique<ProjectionMode>(s.projection, s.tetrahedralize);
+    case RenderMode::exact: return std::make_unique<ExactMode>(s.interpolation, s.iso);
+    case RenderMode::slicing: return std::make_unique<SlicingMode>(s.slicing, s.tetrahedralize);
+    case RenderMode::reduction: return std::make_unique<ReductionMode>(s.reduction);
+    case RenderMode::layers: return std::make_unique<LayersMode>(s.layers);
+  }
+  throw InputError("unknown render mode " + std::to_string(static_cast<int>(s.mode)));
+}
+
 }  // namespace
+
+ImageSize supersampled_size(ImageSize size, int ssaa) {
+  if (ssaa < 1 || ssaa > kMaxSsaa)
+    throw InputError("setting 'ssaa': expected an integer in [1, " + std::to_string(kMaxSsaa) + "], got " +
+                     std::to_string(ssaa));
+  if (size.width > kMaxSupersampledSide / ssaa || size.height > kMaxSupersampledSide / ssaa)
+    throw InputError("setting 'ssaa' " + std::to_string(ssaa) + " draws a " + std::to_string(size.width) + "x" +
+                     std::to_string(size.height) + " image " + std::to_string(ssaa) +
+                     " times larger on each side, beyond the " + std::to_string(kMaxSupersampledSide) +
+                     " pixels a side a frame may have: lower it or the image size");
+  return {size.width * ssaa, size.height * ssaa};
+}
 
 Image Renderer::render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                        ImageSize size, RenderReport* report, const Progress& progress) const {
@@ -363,10 +412,13 @@ void render_progressive(const Volume& volume, const Field& field, const Transfer
                         const std::vector<int>& levels, const LevelDone& done) {
   if (settings.mode != RenderMode::slicing)
     throw InputError("progressive refinement is a slicing feature: use setting 'method' slicing");
+  const int n = settings.ssaa;
   SlicingMode(settings.slicing, settings.tetrahedralize)
-      .render_levels(volume, field, tf, camera, size, levels,
+      .render_levels(volume, field, tf, camera, supersampled_size(size, n), levels,
                      [&](std::size_t level, int slices, Image&& image, RenderReport&& report) {
-                       done(level, slices, image, report);
+                       if (n == 1) return done(level, slices, image, report);
+                       report.add("ssaa", std::int64_t{n});
+                       done(level, slices, downsample(image, n), report);
                      });
 }
 
@@ -377,14 +429,10 @@ VolumeSize size_of(const MeshView& mesh) {
 }
 
 std::unique_ptr<Renderer> make_renderer(const RenderSettings& s) {
-  switch (s.mode) {
-    case RenderMode::projection: return std::make_unique<ProjectionMode>(s.projection, s.tetrahedralize);
-    case RenderMode::exact: return std::make_unique<ExactMode>(s.interpolation, s.iso);
-    case RenderMode::slicing: return std::make_unique<SlicingMode>(s.slicing, s.tetrahedralize);
-    case RenderMode::reduction: return std::make_unique<ReductionMode>(s.reduction);
-    case RenderMode::layers: return std::make_unique<LayersMode>(s.layers);
-  }
-  throw InputError("unknown render mode " + std::to_string(static_cast<int>(s.mode)));
+  supersampled_size({1, 1}, s.ssaa);  // the factor checked now
+  std::unique_ptr<Renderer> renderer = mode_renderer(s);
+  if (s.ssaa == 1) return renderer;
+  return std::make_unique<Supersampled>(std::move(renderer), s.ssaa);
 }
 
 Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const RenderSettings& settings,

@@ -44,11 +44,21 @@ class Renderer {
                       ImageSize size, RenderReport* report, const Progress& progress) const = 0;
 };
 
+// The largest anti-aliasing factor (RenderSettings::ssaa), and the largest side of the image it
+// renders (the image's side times ssaa).
+inline constexpr int kMaxSsaa = 16;
+inline constexpr int kMaxSupersampledSide = 65536;
+
+// The size a frame of `size` is drawn at for anti-aliasing by `ssaa` (each side ssaa times
+// longer); InputError naming the setting beyond kMaxSupersampledSide.
+ImageSize supersampled_size(ImageSize size, int ssaa);
+
 // The renderer for `settings`, checked once (InputError for settings that do not go together).
 std::unique_ptr<Renderer> make_renderer(const RenderSettings& settings);
 
 // Progressive refinement (slicing): the frame at each plane count of `levels` (increasing), each
-// handed to done(level index, slices, image, report) as soon as it is composited; a level reuses
+// handed to done(level index, slices, image, report) as soon as it is composited (supersampled
+// by settings.ssaa as any frame); a level reuses
 // the polygons of the previous one's planes where they coincide. InputError unless settings.mode is
 // slicing.
 using LevelDone = std::function<void(std::size_t level, int slices, const Image&, const RenderReport&)>;

@@ -28,6 +28,9 @@ struct RenderSettings {
   RayReduction reduction = RayReduction::maximum;                      // reduction: which value of each ray
   LayerOptions layers;                                                 // layers: iso-value, layers, silhouettes
   IsoOptions iso;                                                      // exact: iso-surfaces with the volume
+  // Anti-aliasing: each pixel the mean of ssaa x ssaa samples (a box filter), every method
+  // rendering the image ssaa times larger on each side (render/renderer.cpp, Supersampled).
+  int ssaa = 1;
 };
 
 struct ImageSize {

@@ -279,6 +279,12 @@ const std::vector<SettingRow> kRows = {
      },
      [](const RenderSettings& s) { return std::to_string(s.projection.table_size); },
      [] { return std::string("an integer in [2, 8192]"); }},
+    {"ssaa",
+     "Anti-aliasing: each pixel the mean of N x N samples (box filter), for every method; the frame's work and "
+     "memory grow N-squared-fold (docs/accuracy.md, Anti-aliasing)",
+     false, always, [](RenderSettings& s, const std::string& t) { s.ssaa = int_in(t, 1, kMaxSsaa); },
+     [](const RenderSettings& s) { return std::to_string(s.ssaa); },
+     [] { return "an integer in [1, " + std::to_string(kMaxSsaa) + "]"; }},
     {"interpolation", "exact: the field inside hexahedra, wedges and pyramids", false, exact,
      [](RenderSettings& s, const std::string& t) { s.interpolation = parse_cell_interpolation(t); },
      [](const RenderSettings& s) { return std::string(name_of(s.interpolation)); }, cell_interpolation_names},

@@ -34,8 +34,10 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
   }
   if (report && prepared_after != prepared_before) report->prepare_seconds += seconds_since(t_prepare);
   IsoStats st;
-  Image image = render_volume_union(parts, settings.iso.mode, settings.iso.opacity, camera, size.width, size.height,
+  const ImageSize drawn = supersampled_size(size, settings.ssaa);
+  Image image = render_volume_union(parts, settings.iso.mode, settings.iso.opacity, camera, drawn.width, drawn.height,
                                     &st, progress);
+  if (settings.ssaa > 1) image = downsample(image, settings.ssaa);
   if (report) {
     report->seconds = st.seconds;
     report->phase_seconds = {{"trace, merge and integrate the volumes", st.seconds}};
@@ -46,6 +48,7 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
     report->add("iso_opacity", settings.iso.opacity);
     report->add_counters(st);
     report->add("overlap_pieces", st.overlap_pieces);
+    if (settings.ssaa > 1) report->add("ssaa", std::int64_t{settings.ssaa});
     if (settings.iso.opacity == IsoOpacity::spectrum_fit) {
       report->add("spectrum_fit_max_error", st.fit_max_error);
       report->add("spectrum_fit_exponents", st.fit_exponents);
@@ -54,9 +57,10 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
   return image;
 }
 
-std::uint64_t estimate_volumes_bytes(const std::vector<VolumeSize>& volumes, ImageSize size) {
+std::uint64_t estimate_volumes_bytes(const std::vector<VolumeSize>& volumes, ImageSize size, int ssaa) {
   RenderSettings settings;
   settings.mode = RenderMode::exact;
+  settings.ssaa = ssaa;
   const auto exact = make_renderer(settings);
   std::uint64_t bytes = 0;
   for (const VolumeSize& v : volumes) bytes += exact->estimate_bytes(v, size);

@@ -28,6 +28,6 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
                      ImageSize size, RenderReport* report = nullptr, const Progress& progress = {});
 
 // Bytes render_volumes needs at most for volumes of these sizes (as Renderer::estimate_bytes).
-std::uint64_t estimate_volumes_bytes(const std::vector<VolumeSize>& volumes, ImageSize size);
+std::uint64_t estimate_volumes_bytes(const std::vector<VolumeSize>& volumes, ImageSize size, int ssaa = 1);
 
 }  // namespace cellproj

@@ -92,6 +92,8 @@ else  # a build without OSMesa says so, before it reads the mesh
   expect 3 "OpenGL back ends were not built" -- render "$tmp/ok.json" --method pt-table --backend opengl
 fi
 expect 2 "table-size" -- render "$tmp/ok.json" --method pt-table --table-size 1
+expect 2 "--ssaa: expected an integer in \[1, 16\], got 0" -- render "$tmp/ok.json" --ssaa 0
+expect 1 "rendering 8192x8192 needs about .* GiB" -- render "$tmp/ok.json" --ssaa 16 --size 8192x8192  # the supersampled frame counted
 expect 2 "--compositing: expected tiles or stream, got 'fast'" -- render "$tmp/ok.json" --compositing fast
 expect 2 "--tile-rows: expected an integer in \[0, 65536\]" -- render "$tmp/ok.json" --tile-rows -3
 expect 2 "--early-termination: expected on or off, got 'maybe'" -- render "$tmp/ok.json" --early-termination maybe

@@ -64,7 +64,7 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
       sizes.push_back({h.points, h.cells, h.cells});
     }
   const std::string size_text = std::to_string(scene.width) + "x" + std::to_string(scene.height);
-  refuse_beyond_memory(mesh_bytes + estimate_volumes_bytes(sizes, size), a.max_memory_gib,
+  refuse_beyond_memory(mesh_bytes + estimate_volumes_bytes(sizes, size, settings.ssaa), a.max_memory_gib,
                        "reading " + std::to_string(scene.volumes.size()) + " volumes and rendering " + size_text,
                        a.input);
   const bool volume_given = option_given(a.options, "volume");
