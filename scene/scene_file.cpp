@@ -280,11 +280,11 @@ std::vector<std::pair<std::string, std::string>> render_options_from_json(const 
     const std::string here = at + "." + key;
     const SettingRow* row = find_setting(key);
     if (row && row->repeatable) throw InputError(here + ": give iso-surfaces in the scene's \"iso\" list");
+    if (!v.is_string() && !v.is_boolean() && !v.is_number())
+      throw InputError(here + ": expected a string, number or boolean, got " + v.dump());
     const std::string value = v.is_string()    ? v.get<std::string>()
                               : v.is_boolean() ? std::string(v.get<bool>() ? "on" : "off")
-                              : v.is_number()
-                                  ? number_text(v, here)
-                                  : throw InputError(here + ": expected a string, number or boolean, got " + v.dump());
+                                               : number_text(v, here);
     try {
       set_option(check, key, value);
     } catch (const InputError& e) {

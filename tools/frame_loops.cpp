@@ -21,19 +21,17 @@ std::string bar_label(const RenderArgs& a, int f) {
 
 // The mesh as a volume, prepared for the renderer (its time measured apart from the frames').
 struct PreparedVolume {
-  Volume volume;
-  Field field;
+  explicit PreparedVolume(const FrameJob& job)
+      : volume(job.input.prepared.loaded.mesh.view(), {/*trusted: load_mesh validated it*/ true}),
+        field(field_of(job.input.prepared.loaded.mesh, job.input.prepared.field)) {
+    const auto t = std::chrono::steady_clock::now();
+    job.renderer.prepare(volume);
+    seconds = seconds_since(t);
+  }
+  const Volume volume;
+  const Field field;
   double seconds = 0.0;
 };
-std::unique_ptr<PreparedVolume> prepared_volume(const FrameJob& job) {
-  const Mesh& mesh = job.input.prepared.loaded.mesh;
-  auto v = std::unique_ptr<PreparedVolume>(new PreparedVolume{
-      Volume(mesh.view(), {/*trusted: load_mesh validated it*/ true}), field_of(mesh, job.input.prepared.field)});
-  const auto t = std::chrono::steady_clock::now();
-  job.renderer.prepare(v->volume);
-  v->seconds = seconds_since(t);
-  return v;
-}
 
 }  // namespace
 
@@ -85,11 +83,11 @@ FrameLoop play_series_frames(const FrameJob& job) {
 
 FrameLoop progressive_levels(const FrameJob& job, const std::vector<int>& levels) {
   const Input& in = job.input;
-  const std::unique_ptr<PreparedVolume> v = prepared_volume(job);
+  const PreparedVolume v(job);
   FrameLoop out;
-  out.prepare_seconds = v->seconds;
+  out.prepare_seconds = v.seconds;
   // Each level written as soon as it is done, for the interactive user.
-  render_progressive(v->volume, v->field, in.prepared.tf, job.settings, in.prepared.camera,
+  render_progressive(v.volume, v.field, in.prepared.tf, job.settings, in.prepared.camera,
                      {in.scene.width, in.scene.height}, levels,
                      [&](std::size_t, int slices, const Image& img, const RenderReport& r) {
                        char what[96];
@@ -108,14 +106,14 @@ FrameLoop progressive_levels(const FrameJob& job, const std::vector<int>& levels
 
 FrameLoop mesh_frames(const FrameJob& job) {
   const Input& in = job.input;
-  const std::unique_ptr<PreparedVolume> v = prepared_volume(job);
+  const PreparedVolume v(job);
   FrameLoop out;
-  out.prepare_seconds = v->seconds;
+  out.prepare_seconds = v.seconds;
   for (int f = 0; f < job.args.frames; ++f) {
     const auto t_frame = std::chrono::steady_clock::now();
     ProgressBar bar(bar_label(job.args, f));
     out.report = {};
-    Image img = job.renderer.render(v->volume, v->field, in.prepared.tf, orbit(in.prepared.camera, job.degrees(f)),
+    Image img = job.renderer.render(v.volume, v.field, in.prepared.tf, orbit(in.prepared.camera, job.degrees(f)),
                                     {in.scene.width, in.scene.height}, &out.report, [&](double d) { bar(d); });
     out.render_seconds += out.report.seconds;
     out.frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own
