@@ -391,8 +391,8 @@ bool option_given(const RenderOptions& o, const std::string& name) {
 RenderSettings settings_from(const RenderOptions& o) {
   RenderSettings s;
   for (const SettingRow& row : kRows)
-    for (const auto& [name, text] : o.words)
-      if (name == row.name) named(row.name, [&] { row.set(s, text); });
+    for (const std::pair<std::string, std::string>& word : o.words)  // (no lambda captures a structured binding)
+      if (word.first == row.name) named(row.name, [&] { row.set(s, word.second); });
   finish_layers(s);
   check(s.iso);
   return s;

@@ -190,7 +190,6 @@ Action add_render(CLI::App& app) {
   // The render settings, one option a row of the table (render/settings_table.hpp): --NAME is
   // setting NAME, its help the row's with its choices and default.
   auto texts = std::make_shared<std::map<std::string, std::vector<std::string>>>();
-  std::vector<std::pair<std::string, CLI::Option*>> settings;
   for (const SettingRow& row : render_settings()) {
     std::vector<std::string>& text = (*texts)[row.name];
     CLI::Option* option = cmd->add_option("--" + std::string(row.name), text, setting_help(row))->type_name("TEXT");
@@ -198,7 +197,6 @@ Action add_render(CLI::App& app) {
       option->allow_extra_args(false);
     else
       option->expected(1);
-    settings.emplace_back(row.name, option);
   }
   cmd->add_option("--progressive", args->progressive,
                   "slicing: render at each of these plane counts in turn, e.g. 16,64,256, writing OUT-16.png, "
@@ -227,9 +225,9 @@ Action add_render(CLI::App& app) {
                 "(to measure what the thread hides)");
   add_max_memory_option(*cmd, args->max_memory_gib, "Refuse renders");
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
-  return [args, texts, settings, look] {
-    for (const auto& [name, option] : settings)  // in the table's order, each use of a repeatable one
-      for (const std::string& text : (*texts)[name]) usage([&] { set_option(args->options, name, text); });
+  return [args, texts, look] {
+    for (const SettingRow& row : render_settings())  // in the table's order, each use of a repeatable one
+      for (const std::string& text : (*texts)[row.name]) usage([&] { set_option(args->options, row.name, text); });
     for (CLI::Option* option : look)
       if (option->count() > 0) args->look_given.push_back(option->get_name().substr(2));
     return run_render(*args);
