@@ -64,6 +64,10 @@ cp_status cp_camera_create(const double eye[3], const double target[3], const do
 /* An orthographic camera framing the mesh from a named view: "+x", "-x", "+y", "-y", "+z", "-z",
  * "iso", or "" (the scene files' default); aspect = width / height. */
 cp_status cp_camera_frame(const cp_mesh* mesh, const char* view, double aspect, cp_camera** camera);
+/* Moves the camera as ParaView moves it, by the move's name: "azimuth", "elevation", "roll"
+   (degrees), "zoom", "dolly" (factors), "focus" ("x,y,z"), "perspective" ("" or an angle),
+   "parallel" (""); the same names and meanings as cellproj render's options. */
+cp_status cp_camera_move(cp_camera* camera, const char* move, const char* value);
 void cp_camera_release(cp_camera* camera);
 
 /* A renderer for a method of the command line ("pt-breakpoints", "pt-linear", "exact", "slicing"). */

@@ -17,6 +17,7 @@
 #include "render/settings_table.hpp"
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
+#include "view/camera_moves.hpp"
 
 using namespace cellproj;
 
@@ -180,6 +181,17 @@ cp_status cp_camera_create(const double eye[3], const double target[3], const do
     (perspective ? c.fov_y : c.height) = size_or_fov;
     check_camera(c, "cp_camera_create");
     *camera = new cp_camera{c};
+  });
+}
+
+cp_status cp_camera_move(cp_camera* camera, const char* move, const char* value) {
+  CP_NEED("cp_camera_move", camera);
+  CP_NEED("cp_camera_move", move);
+  CP_NEED("cp_camera_move", value);
+  return guarded([&] {
+    CameraMoves m;
+    set_camera_move(m, move, value);
+    camera->camera = moved(camera->camera, m);  // kept only when the moved camera is valid
   });
 }
 

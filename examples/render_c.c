@@ -33,6 +33,8 @@ int main(int argc, char** argv) {
   CHECK(cp_transfer_function_create_colormap("viridis", 0.0, 1.5, extinction, 2, &tf));
   cp_camera* camera = NULL;
   CHECK(cp_camera_frame(mesh, "iso", 1.0, &camera));
+  CHECK(cp_camera_move(camera, "azimuth", "20")); /* ParaView's camera moves, by name */
+  CHECK(cp_camera_move(camera, "zoom", "1.2"));
 
   cp_renderer *exact = NULL, *projection = NULL;
   CHECK(cp_renderer_create("exact", &exact));
@@ -64,6 +66,8 @@ int main(int argc, char** argv) {
     ++failures, fprintf(stderr, "render_c: an out-of-range id gave '%s'\n", cp_last_error());
   if (cp_renderer_set(exact, "sort", "mpvo") != CP_ERROR_INPUT || !strstr(cp_last_error(), "does not apply"))
     ++failures, fprintf(stderr, "render_c: an unused option gave '%s'\n", cp_last_error());
+  if (cp_camera_move(camera, "zoom", "-2") != CP_ERROR_INPUT || !strstr(cp_last_error(), "setting 'zoom'"))
+    ++failures, fprintf(stderr, "render_c: a negative zoom gave '%s'\n", cp_last_error());
   if (cp_mesh_set_field(mesh, "short", temperature, 7) != CP_ERROR_INPUT)
     ++failures, fprintf(stderr, "render_c: a short field was taken\n");
   if (cp_render(projection, mesh, "pressure", tf, camera, 8, 8, &image) != CP_ERROR_INPUT ||

@@ -46,11 +46,38 @@ std::string keywords_doc() {
   return doc;
 }
 
+// A camera move's value as its text: numbers, a point (x, y, z), True for a switch.
+std::string move_text(const py::handle& value) {
+  if (py::isinstance<py::bool_>(value)) return "";
+  if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
+    std::string text;
+    for (const auto& x : value) text += (text.empty() ? "" : ",") + std::string(py::str(x));
+    return text;
+  }
+  return py::str(value);
+}
+
+bool is_camera_move(const std::string& name) {
+  for (const CameraMoveRow& row : camera_moves())
+    if (name == row.name) return true;
+  return false;
+}
+
+// The camera moves among the keywords (azimuth=30, zoom=2, ...), added to `moves`; False skips a switch.
+void add_camera_moves(const py::kwargs& kwargs, CameraMoves& moves) {
+  for (const auto& [key, value] : kwargs) {
+    const std::string name = py::str(key);
+    if (!is_camera_move(name) || (py::isinstance<py::bool_>(value) && !value.cast<bool>())) continue;
+    set_camera_move(moves, name, move_text(value));
+  }
+}
+
 // `method` empty: not given (a scene's, or the default).
 RenderOptions options_from(const std::string& method, const py::kwargs& kwargs) {
   RenderOptions o;
   if (!method.empty()) set_option(o, "method", method);
   for (const auto& [key, value] : kwargs) {
+    if (is_camera_move(py::str(key))) continue;                                 // camera_moves_from's
     if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {  // a repeatable option: iso=[...]
       for (const auto& item : value) set_option(o, py::str(key), py::str(item));
     } else {
@@ -246,7 +273,20 @@ PYBIND11_MODULE(_cellproj, m) {
           },
           py::arg("mesh"), py::arg("view") = "", py::arg("aspect") = 1.0,
           "An orthographic camera framing the mesh from a named view (+x, -x, +y, -y, +z, -z, iso; '' the default)")
-      .def("orbit", &orbit, py::arg("degrees"), "The camera turned about its up axis through the target")
+      .def(
+          "orbit", [](const Camera& c, double degrees) { return orbit(c, degrees); }, py::arg("degrees"),
+          "The camera turned about its up axis through the target")
+      .def(
+          "moved",
+          [](const Camera& c, const py::kwargs& moves) {
+            CameraMoves m;
+            add_camera_moves(moves, m);
+            for (const auto& [key, value] : moves)
+              if (!is_camera_move(py::str(key))) set_camera_move(m, py::str(key), "");  // names the unknown one
+            return moved(c, m);
+          },
+          "The camera moved as ParaView moves it: moved(azimuth=30, elevation=20, roll=0, zoom=2, dolly=1.5, "
+          "focus=(x, y, z), perspective=40 or True, parallel=True); angles in degrees")
       .def_property_readonly("eye", [](const Camera& c) { return py::make_tuple(c.eye.x, c.eye.y, c.eye.z); })
       .def_property_readonly("target",
                              [](const Camera& c) { return py::make_tuple(c.target.x, c.target.y, c.target.z); })
@@ -268,6 +308,9 @@ PYBIND11_MODULE(_cellproj, m) {
           const auto [lo, hi] = bounds(mesh.view());
           camera = view_camera("", lo, hi, double(image_size.width) / image_size.height);
         }
+        CameraMoves moves;
+        add_camera_moves(kwargs, moves);
+        camera = moved(*camera, moves);
         return to_numpy(render_frame(*renderer, mesh.volume(), f, *tf, *camera, image_size, threads));
       },
       py::arg("mesh"), py::arg("tf") = py::none(), py::arg("camera") = py::none(),
@@ -294,10 +337,11 @@ PYBIND11_MODULE(_cellproj, m) {
         const ImageSize image_size = size_from({scene.width, scene.height});
         if (!field.empty()) scene.field = field;
         if (!view.empty()) {
-          scene.camera.reset();
+          scene.camera.reset(), scene.camera_moves = {};
           scene.view = view;
         }
-        if (scene.volumes.size() > 1) {  // as `cellproj render` of such a scene
+        add_camera_moves(kwargs, scene.camera_moves);  // after the scene's own, as the CLI's
+        if (scene.volumes.size() > 1) {                // as `cellproj render` of such a scene
           if (!field.empty())
             throw InputError(path + " has several volumes: give each volume's \"field\" in the scene");
           if (time) throw InputError(path + " has several volumes: time series take one mesh");

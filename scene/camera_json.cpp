@@ -63,16 +63,26 @@ nlohmann::json camera_to_json(const Camera& c) {
   return j;
 }
 
-Camera orbit(const Camera& c, double degrees) {
-  if (degrees == 0.0) return c;  // bit for bit: target + (eye - target) need not round back to eye
-  const glm::dvec3 axis = glm::normalize(c.up);
-  const double a = degrees * kPi / 180.0;
-  const glm::dvec3 v = c.eye - c.target;  // Rodrigues' rotation about the up axis
-  const glm::dvec3 r =
-      v * std::cos(a) + glm::cross(axis, v) * std::sin(a) + axis * glm::dot(axis, v) * (1 - std::cos(a));
-  Camera out = c;
-  out.eye = c.target + r;
-  return out;
+CameraMoves camera_moves_from_json(const nlohmann::json& j, const std::string& at) {
+  if (!j.is_object()) throw InputError(at + ": expected an object of camera moves, e.g. {\"azimuth\": 30}");
+  CameraMoves moves;
+  for (const auto& [key, v] : j.items()) {
+    const std::string here = at + "." + key;
+    if (key == "focus") {  // a point, as the camera's other points
+      moves.focus = vec3(v, here);
+      continue;
+    }
+    const bool flag = key == "perspective" || key == "parallel";
+    if (flag && v.is_boolean() && !v.get<bool>()) continue;  // false asks for nothing
+    if (!v.is_number() && !(flag && v.is_boolean()))
+      throw InputError(here + ": expected a number" + (flag ? " or true" : "") + ", got " + v.dump());
+    try {
+      set_camera_move(moves, key, v.is_boolean() ? std::string("on") : v.dump());
+    } catch (const InputError& e) {
+      throw InputError(here + ": " + e.what());
+    }
+  }
+  return moves;
 }
 
 }  // namespace cellproj

@@ -5,6 +5,7 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include "view/camera.hpp"
+#include "view/camera_moves.hpp"
 
 namespace cellproj {
 
@@ -15,8 +16,9 @@ Camera camera_from_json(const nlohmann::json& j, const std::string& source);
 // The camera as camera_from_json reads it (doubles printed so that they read back bit for bit).
 nlohmann::json camera_to_json(const Camera& camera);
 
-// The camera turned by `degrees` about the up axis through the target (frame f of --frames: f degrees).
-Camera orbit(const Camera& camera, double degrees);
+// {"azimuth": 30, "zoom": 2, "focus": [x, y, z], "perspective": 40 or true, "parallel": true}: the
+// scene's camera moves (view/camera_moves.hpp), each by the move's name; InputError naming the key.
+CameraMoves camera_moves_from_json(const nlohmann::json& j, const std::string& at);
 
 // [x, y, z] from JSON; InputError "AT: expected [x, y, z], got ..." otherwise.
 glm::dvec3 vec3(const nlohmann::json& j, const std::string& at);

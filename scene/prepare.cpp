@@ -80,6 +80,19 @@ LoadedMesh first_key_frame(SeriesPlayer& player) {
   return loaded;
 }
 
+namespace {
+
+// The scene's camera with its moves made, an error naming the scene.
+Camera moved_camera(const Scene& s, const Camera& base) {
+  try {
+    return moved(base, s.camera_moves);
+  } catch (const InputError& e) {
+    throw InputError(where(s.source, e.what()));
+  }
+}
+
+}  // namespace
+
 PreparedVolumes prepare_volumes(const Scene& s, const std::function<LoadedMesh(const SceneVolume&)>& read) {
   std::vector<LoadedMesh> loaded;
   glm::dvec3 lo(std::numeric_limits<double>::max()), hi(-std::numeric_limits<double>::max());
@@ -89,14 +102,15 @@ PreparedVolumes prepare_volumes(const Scene& s, const std::function<LoadedMesh(c
     lo = glm::min(lo, blo), hi = glm::max(hi, bhi);
   }
   PreparedVolumes out;
-  out.camera = s.camera ? *s.camera : view_camera(s.view, lo, hi, double(s.width) / s.height);
-  check_camera(out.camera, where(s.source, "the camera framing the volumes' bounds"));
+  const Camera base = s.camera ? *s.camera : view_camera(s.view, lo, hi, double(s.width) / s.height);
+  check_camera(base, where(s.source, "the camera framing the volumes' bounds"));
+  out.camera = moved_camera(s, base), out.turn_axis = base.up;
   for (std::size_t k = 0; k < s.volumes.size(); ++k) {
     const SceneVolume& v = s.volumes[k];
     Scene one = s;  // the volume as a scene of its own, seen by the common camera
     one.volumes.clear();
     one.mesh = v.mesh, one.reader = v.reader, one.field = v.field, one.transfer_function = v.transfer_function;
-    one.camera = out.camera;
+    one.camera = out.camera, one.camera_moves = {};
     one.source = s.source + ": volumes[" + std::to_string(k) + "]";
     out.volumes.push_back(prepare_scene(one, std::move(loaded[k])));
     for (std::string& w : out.volumes.back().warnings) out.warnings.push_back(std::move(w));
@@ -116,8 +130,9 @@ PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {
   TransferFunction tf = transfer_function_from_json(s.transfer_function, s.source, s.base_dir, *lo, *hi);
   PreparedScene p{std::move(loaded), field, *lo, *hi, std::move(tf), Camera{}, {}};
   const auto [blo, bhi] = bounds(p.loaded.mesh);
-  p.camera = s.camera ? *s.camera : view_camera(s.view, blo, bhi, double(s.width) / s.height);
-  check_camera(p.camera, where(s.source, "the camera framing " + s.mesh + "'s bounds"));
+  const Camera base = s.camera ? *s.camera : view_camera(s.view, blo, bhi, double(s.width) / s.height);
+  check_camera(base, where(s.source, "the camera framing " + s.mesh + "'s bounds"));
+  p.camera = moved_camera(s, base), p.turn_axis = base.up;
   p.warnings = p.loaded.report.warnings(s.mesh);
   if (const std::string w = view_warning(p.camera, blo, bhi, s.width, s.height); !w.empty())
     p.warnings.push_back(where(s.source, w));

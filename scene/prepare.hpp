@@ -19,7 +19,10 @@ struct PreparedScene {
   std::string field;
   double field_min = 0, field_max = 0;
   TransferFunction tf;
-  Camera camera;
+  Camera camera;  // the scene's (or the framing of its view), its camera moves made
+  // What a turntable turns about (view/camera_moves.hpp, orbit): the view's up before the moves,
+  // so that a camera tilted by an elevation turns about the world's vertical.
+  glm::dvec3 turn_axis{0.0, 1.0, 0.0};
   std::vector<std::string> warnings;  // mesh defects and what reading did, for stderr
 };
 
@@ -33,6 +36,7 @@ PreparedScene prepare_scene(const Scene& scene, LoadedMesh loaded);
 struct PreparedVolumes {
   std::vector<PreparedScene> volumes;  // in the scene's order; each one's camera is `camera`
   Camera camera;
+  glm::dvec3 turn_axis{0.0, 1.0, 0.0};  // as PreparedScene's
   std::vector<std::string> warnings;
 };
 PreparedVolumes prepare_volumes(const Scene& scene, const std::function<LoadedMesh(const SceneVolume&)>& read);

@@ -319,8 +319,8 @@ SceneVolume volume_from_json(const nlohmann::json& v, const std::string& at, con
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
   only_keys(j, path,
-            {"mesh", "reader", "field", "transfer_function", "camera", "image", "render", "layers", "clip", "iso",
-             "iso_mode", "iso_opacity", "volume", "volumes"});
+            {"mesh", "reader", "field", "transfer_function", "camera", "camera_moves", "image", "render", "layers",
+             "clip", "iso", "iso_mode", "iso_opacity", "volume", "volumes"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
@@ -359,6 +359,7 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
     throw InputError(where(path, "missing \"transfer_function\""));
   if (j.contains("transfer_function")) s.transfer_function = j["transfer_function"];
   if (j.contains("camera")) s.camera = camera_from_json(j["camera"], path);
+  if (j.contains("camera_moves")) s.camera_moves = camera_moves_from_json(j["camera_moves"], path + ": camera_moves");
   each_object(j, "clip", path, "{\"point\": [x, y, z], \"normal\": [x, y, z]}", {"point", "normal"},
               [&](const nlohmann::json& p, const std::string& at) {
                 ClipPlane plane;

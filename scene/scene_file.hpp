@@ -35,6 +35,7 @@ struct Scene {
   std::string field;                 // empty: the mesh's only field
   nlohmann::json transfer_function;  // parsed once the field's range is known
   std::optional<Camera> camera;      // absent: frame the mesh from `view`
+  CameraMoves camera_moves;          // the "camera_moves" block: turns, zoom, focus... applied to the camera
   std::string view;                  // a named view (scene/quick_scene.hpp); empty: the default framing
   int width = 512, height = 512;
   glm::dvec3 background{0.0};

@@ -36,6 +36,7 @@
 #include "tools/render_volumes.hpp"
 #include "tools/terminal_text.hpp"
 #include "tools/timing.hpp"
+#include "view/camera_moves.hpp"
 
 namespace cellproj {
 namespace {
@@ -183,6 +184,17 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--view", args->view,
                   "Frame the mesh from a named view, replacing the scene's camera: " + view_names() +
                       " (ParaView's: +x looks along +x)");
+  // The camera moves, one option a row of their table (view/camera_moves.hpp), made in its order
+  // on the scene's camera or --view's.
+  std::vector<std::pair<const CameraMoveRow*, CLI::Option*>> moves;
+  for (const CameraMoveRow& row : camera_moves()) {
+    const std::string name = "--" + std::string(row.name), value = row.value;
+    CLI::Option* option = value.empty() ? cmd->add_flag(name, row.help) : cmd->add_option(name, row.help);
+    if (value.empty()) option->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+    if (value == "[DEG]") option->expected(0, 1);
+    if (!value.empty()) option->type_name(value);
+    moves.emplace_back(&row, option);
+  }
   cmd->add_option("--background", args->background, "Background colour: R,G,B in [0, 1], #rrggbb, black or white");
   cmd->add_flag("--legend", args->legend, "Draw the colour legend (field name and range) on the PNG");
   cmd->add_option("--orbit", args->orbit,
@@ -225,7 +237,15 @@ Action add_render(CLI::App& app) {
                 "(to measure what the thread hides)");
   add_max_memory_option(*cmd, args->max_memory_gib, "Refuse renders");
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
-  return [args, texts, look] {
+  return [args, texts, look, moves] {
+    for (const auto& [row, option] : moves) {
+      if (option->count() == 0) continue;
+      const std::vector<std::string> given = option->results();
+      if (*row->value == '\0' || given.empty())  // a switch, or --perspective alone
+        args->camera_moves.emplace_back(row->name, "");
+      else
+        for (const std::string& text : given) args->camera_moves.emplace_back(row->name, text);
+    }
     for (const SettingRow& row : render_settings())  // in the table's order, each use of a repeatable one
       for (const std::string& text : (*texts)[row.name]) usage([&] { set_option(args->options, row.name, text); });
     for (CLI::Option* option : look)

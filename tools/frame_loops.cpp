@@ -60,7 +60,7 @@ FrameLoop play_series_frames(const FrameJob& job) {
   // Frame f at times[f], the next one made on a background thread while f renders.
   out.playback = play_series(
       *in.player, in.first, in.times, !job.args.no_prefetch, job.renderer, in.prepared.tf,
-      [&](int f) { return orbit(in.prepared.camera, job.degrees(f)); }, size,
+      [&](int f) { return orbit(in.prepared.camera, job.degrees(f), in.prepared.turn_axis); }, size,
       [&](int f, Image&& img, const RenderReport& r) {
         out.report = r;
         out.render_seconds += r.seconds;
@@ -113,7 +113,8 @@ FrameLoop mesh_frames(const FrameJob& job) {
     const auto t_frame = std::chrono::steady_clock::now();
     ProgressBar bar(bar_label(job.args, f));
     out.report = {};
-    Image img = job.renderer.render(v.volume, v.field, in.prepared.tf, orbit(in.prepared.camera, job.degrees(f)),
+    Image img = job.renderer.render(v.volume, v.field, in.prepared.tf,
+                                    orbit(in.prepared.camera, job.degrees(f), in.prepared.turn_axis),
                                     {in.scene.width, in.scene.height}, &out.report, [&](double d) { bar(d); });
     out.render_seconds += out.report.seconds;
     out.frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own

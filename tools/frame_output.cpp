@@ -58,8 +58,16 @@ FramePaths frame_paths(const std::string& png, const std::string& npy, const std
 }
 
 void make_output_folders(const FramePaths& paths) {
-  for (const std::string& out : {paths.png, paths.npy})
-    if (!out.empty()) create_folders(std::filesystem::path(out).parent_path().string());
+  for (const std::string& out : {paths.png, paths.npy}) {
+    if (out.empty()) continue;
+    const std::string dir = std::filesystem::path(out).parent_path().string();
+    if (paths.sequence)
+      create_folders(dir);  // a frame pattern makes its folder
+    else if (!dir.empty() && !path_is_folder(dir))
+      throw InputError(where(dir, path_exists(dir)
+                                      ? "is not a folder: " + out + " cannot be written"
+                                      : "no such folder for " + out + " (only a --frames pattern makes its folder)"));
+  }
 }
 
 }  // namespace cellproj

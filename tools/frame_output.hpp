@@ -40,7 +40,8 @@ bool is_frame_pattern(const std::string& path, const char* option);
 // The outputs of a render of `frames` frames: -o and --npy as given (by default INPUT's name with
 // .png), patterns checked (a bad one is a usage error).
 FramePaths frame_paths(const std::string& png, const std::string& npy, const std::string& input, int frames);
-// Their folders made where missing; InputError naming one that cannot be (bad output, exit 1).
+// A frame pattern's folders made where missing; a single output's folder must exist. InputError
+// naming the folder otherwise (bad output, exit 1).
 void make_output_folders(const FramePaths& paths);
 
 }  // namespace cellproj

@@ -58,7 +58,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
     // Frames as a single process makes them: a turntable with --orbit, else a degree a frame.
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
-      const Camera camera = orbit(prepared.camera, a.orbit != 0.0 ? f * a.orbit / a.frames : f);
+      const Camera camera = orbit(prepared.camera, a.orbit != 0.0 ? f * a.orbit / a.frames : f, prepared.turn_axis);
       Image image = bricks.render(settings, prepared.tf, camera, {scene.width, scene.height}, &stats, &report);
       frame_times.push_back(seconds_since(t_frame));
       if (world.rank != 0) continue;

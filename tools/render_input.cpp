@@ -14,9 +14,10 @@ namespace cellproj {
 
 void apply_view_and_clip(const RenderArgs& a, Scene& scene) {
   if (!a.view.empty()) {
-    scene.camera.reset();
+    scene.camera.reset(), scene.camera_moves = {};
     scene.view = a.view;
   }
+  for (const auto& move : a.camera_moves) usage([&] { set_camera_move(scene.camera_moves, move.first, move.second); });
   if (!a.clip.empty()) {
     scene.clip.clear();
     for (const std::string& c : a.clip) scene.clip.push_back(usage([&] { return parse_clip_plane(c); }));

@@ -33,7 +33,10 @@ struct RenderArgs {
   std::optional<double> time;     // --time T: a series' frame at T
   std::vector<std::string> clip;  // --clip x,y,z,nx,ny,nz, repeatable: replaces the scene's planes
   std::string animate;            // --animate T0:T1:FRAMES
-  bool no_prefetch = false;       // make each frame of a series in turn, not on a background thread
+  // --azimuth, --zoom, ... (view/camera_moves.hpp) by name, in the moves table's order: made on the
+  // scene's camera (after its own moves) or on --view's.
+  std::vector<std::pair<std::string, std::string>> camera_moves;
+  bool no_prefetch = false;  // make each frame of a series in turn, not on a background thread
 };
 
 // The scene of the input: a scene file with the command line's overrides, or a mesh with the
@@ -48,7 +51,8 @@ struct Input {
   std::optional<PartitionIndex> partition;  // a partitioned mesh: prepared.loaded is its extent (no cells)
 };
 
-// --view (replacing the scene's camera) and --clip (replacing its planes; UsageError for a bad one).
+// --view (replacing the scene's camera and its moves), the camera moves (after the scene's), and
+// --clip (replacing its planes); UsageError for a bad one.
 void apply_view_and_clip(const RenderArgs& a, Scene& scene);
 
 // Reads the input once (a series: lists it and makes its first frame), refusing what would not fit

@@ -94,8 +94,8 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
       ProgressBar bar(a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering");
       report = {};
       const double degrees = a.orbit != 0.0 ? f * a.orbit / a.frames : f;
-      Image img = render_volumes(volumes.entries(), settings, orbit(prepared.camera, degrees), size, &report,
-                                 [&](double d) { bar(d); });
+      Image img = render_volumes(volumes.entries(), settings, orbit(prepared.camera, degrees, prepared.turn_axis), size,
+                                 &report, [&](double d) { bar(d); });
       render_seconds += report.seconds;
       frame_times.push_back(seconds_since(t_frame));
       char what[128];

@@ -64,6 +64,22 @@ def test_a_scenes_render_block_is_the_clis_options(tmp_path):
                           cli(tmp_path, str(path), "--size", "64x48", "--slices", "20"))
 
 
+def test_camera_moves_are_the_clis(tmp_path, mixed):
+    moves = {"azimuth": 40, "elevation": 25, "zoom": 1.6, "roll": -10}
+    flags = ["--azimuth", "40", "--elevation", "25", "--zoom", "1.6", "--roll", "-10"]
+    image = cellproj.render_scene(DEFAULT_SCENE, size=(64, 48), **moves)
+    assert np.array_equal(image, cli(tmp_path, DEFAULT_SCENE, "--size", "64x48", *flags))
+    mesh = cellproj.read(mixed)
+    framed = cellproj.Camera.framing(mesh, "+y", aspect=64 / 48)
+    by_keyword = cellproj.render(mesh, camera=framed, size=(64, 48), perspective=True, focus=(0.1, 0.2, 0.3))
+    by_method = cellproj.render(mesh, camera=framed.moved(perspective=True, focus=(0.1, 0.2, 0.3)), size=(64, 48))
+    assert np.array_equal(by_keyword, by_method)
+    assert np.array_equal(by_keyword, cli(tmp_path, mixed, "--size", "64x48", "--view", "+y", "--perspective",
+                                          "--focus", "0.1,0.2,0.3"))
+    with pytest.raises(cellproj.InputError, match="zoom=: expected a positive factor"):
+        cellproj.render(mesh, size=(8, 8), zoom=-1)
+
+
 def test_render_of_a_mesh_equals_the_cli_without_a_scene(tmp_path, mixed):
     mesh = cellproj.read(mixed)
     camera = cellproj.Camera.framing(mesh, "+y", aspect=128 / 96)
