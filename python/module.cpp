@@ -411,7 +411,15 @@ PYBIND11_MODULE(_cellproj, m) {
   m.def(
       "write_png",
       [](const py::array_t<float, py::array::c_style | py::array::forcecast>& image, const std::string& path,
-         const std::vector<double>& background) { write_png(from_numpy(image), vec(background, "background"), path); },
-      py::arg("image"), py::arg("path"), py::arg("background") = std::vector<double>{0, 0, 0},
-      "Writes a render's array as an 8-bit PNG over the background colour");
+         std::optional<std::vector<double>> background, int bits) {
+        const Image img = from_numpy(image);
+        if (bits != 8 && bits != 16) throw InputError("write_png: bits must be 8 or 16, got " + std::to_string(bits));
+        if (background && bits == 8) return write_png(img, vec(*background, "background"), path);
+        write_png(
+            to_display(img, background ? std::optional<glm::dvec3>(vec(*background, "background")) : std::nullopt),
+            bits, path);
+      },
+      py::arg("image"), py::arg("path"), py::arg("background") = std::vector<double>{0, 0, 0}, py::arg("bits") = 8,
+      "Writes a render's array as a PNG: over the background colour, or with background=None transparent "
+      "(straight alpha: colour un-premultiplied); bits=8 or 16 a sample");
 }

@@ -384,9 +384,12 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
     only_keys(im, at, {"width", "height", "background"});
     if (im.contains("width")) s.width = positive_int(im["width"], at + ".width", 16384);
     if (im.contains("height")) s.height = positive_int(im["height"], at + ".height", 16384);
-    if (im.contains("background")) {
+    if (im.contains("background") && im["background"] == "none") {
+      s.transparent = true;  // PNGs with straight alpha
+    } else if (im.contains("background")) {
       const auto& b = im["background"];
-      if (!b.is_array() || b.size() != 3) throw InputError(at + ".background: expected [r, g, b], got " + b.dump());
+      if (!b.is_array() || b.size() != 3)
+        throw InputError(at + ".background: expected [r, g, b] or \"none\", got " + b.dump());
       for (int k = 0; k < 3; ++k) {
         if (!b[k].is_number() || b[k].get<double>() < 0 || b[k].get<double>() > 1)
           throw InputError(at + ".background: components must be numbers in [0, 1], got " + b.dump());

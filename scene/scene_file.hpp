@@ -39,7 +39,8 @@ struct Scene {
   std::string view;                  // a named view (scene/quick_scene.hpp); empty: the default framing
   int width = 512, height = 512;
   glm::dvec3 background{0.0};
-  std::string base_dir;  // the scene file's folder
+  bool transparent = false;  // "background": "none": PNGs with straight alpha, no background
+  std::string base_dir;      // the scene file's folder
   // The "layers" block as render options by their command-line names ("iso" -> "0.5:1,0,0",
   // "layer" -> "1,2"): what method layers draws unless the command line says otherwise.
   std::vector<std::pair<std::string, std::string>> layer_options;

@@ -39,6 +39,9 @@ expect 2 "threads" -- render "$tmp/ok.json" --threads 0
 expect 0 "wrote .*ok.png" -- render "$tmp/ok.json" --size 32x24 -o "$tmp/ok.png" --npy "$tmp/ok.npy" --stats --frames 3
 grep -q '"frame_seconds"' "$tmp/err" && grep -q '"load_seconds"' "$tmp/err" && grep -q '"ns_per_fragment":[0-9]' "$tmp/err" ||
   { echo "FAIL: --stats JSON"; failed=$((failed+1)); }
+expect 0 "wrote .*clear.png" -- render "$tmp/ok.json" --size 32x24 -o "$tmp/clear.png" --background none --png-bits 16 --legend
+expect 2 "--png-bits: 12 not in \\{8,16\\}" -- render "$tmp/ok.json" --png-bits 12
+expect 2 "--background: expected R,G,B" -- render "$tmp/ok.json" --background clear
 for m in pt-linear pt-table pt-analytic pt-breakpoints exact; do
   expect 0 "wrote .*$m.png .*$m" -- render "$tmp/ok.json" --size 40x30 --method $m -o "$tmp/$m.png" --npy "$tmp/$m.npy" --stats
   grep -q "\"method\":\"$m\"" "$tmp/err" || { echo "FAIL: --stats names $m"; failed=$((failed+1)); }

@@ -7,6 +7,7 @@
 #include "optics/colormaps.hpp"
 #include "render/settings_table.hpp"
 #include "scene/quick_scene.hpp"
+#include "test_util.hpp"
 #include "view/color_bar.hpp"
 
 namespace cellproj {
@@ -85,6 +86,62 @@ TEST(ColorBar, DrawsTheColoursInOrderOnTheRightAndLeavesTheRestAlone) {
   EXPECT_GT(red, green);
   bar.font = "/nonexistent.ttf";
   EXPECT_THROW(draw_color_bar(img, bar), InputError);
+}
+
+// Pictures for slides and compositing tools: a transparent PNG (straight alpha) and 16-bit PNGs
+// read back equal the float image to their precision; a legend on a transparent picture is opaque.
+TEST(PngOutputs, TransparentAndSixteenBitPngsReadBackToTheirPrecision) {
+  test::TempDir dir;
+  Image img(5, 3);
+  const float values[][4] = {{0, 0, 0, 0},
+                             {0.2f, 0.1f, 0.05f, 0.25f},
+                             {0.5f, 0.4f, 0.3f, 0.6f},
+                             {0.9f, 0.8f, 0.7f, 1},
+                             {0.001f, 0, 0.002f, 0.003f}};
+  for (int j = 0; j < img.height; ++j)
+    for (int i = 0; i < img.width; ++i) std::copy(values[i], values[i] + 4, img.pixel(i, j));
+  const glm::dvec3 bg(0.1, 0.2, 0.3);
+  for (int bits : {8, 16}) {
+    const double step = 1.0 / ((1 << bits) - 1);
+    for (const bool transparent : {true, false}) {
+      const std::string path = dir.file("p" + std::to_string(bits) + (transparent ? "t" : "o") + ".png");
+      write_png(to_display(img, transparent ? std::nullopt : std::optional<glm::dvec3>(bg)), bits, path);
+      int read_bits = 0;
+      const DisplayImage back = read_png(path, &read_bits);
+      EXPECT_EQ(read_bits, bits);
+      ASSERT_EQ(back.width, img.width);
+      for (int i = 0; i < img.width; ++i) {
+        const float* c = img.pixel(i, 1);
+        const float* b = back.pixel(i, 1);
+        const double a = c[3];
+        EXPECT_NEAR(b[3], transparent ? a : 1.0, 0.5 * step + 1e-7) << bits << " " << i;
+        for (int k = 0; k < 3; ++k) {
+          const double straight = transparent ? (a > 0 ? c[k] / a : 0.0) : c[k] + (1 - a) * bg[k];
+          EXPECT_NEAR(b[k], straight, 0.5 * step + 1e-6) << bits << " " << i << " " << k;
+          // Premultiplied again, the picture is the render's to the PNG's precision.
+          if (transparent) EXPECT_NEAR(b[k] * b[3], c[k], step + 1e-6);
+        }
+      }
+    }
+  }
+  // The 8-bit picture over a background is the same bytes by either writer.
+  write_png(to_rgb8(img, bg), dir.file("rgb8.png"));
+  const DisplayImage a = read_png(dir.file("rgb8.png")), b = read_png(dir.file("p8o.png"));
+  EXPECT_EQ(a.rgba, b.rgba);
+
+  // A legend on a transparent picture: its bar is opaque, the picture around it stays clear.
+  if (default_font().empty()) GTEST_SKIP() << "no font";
+  DisplayImage clear = to_display(Image(200, 160), std::nullopt);
+  ColorBar bar;
+  bar.colors = {{1, 0, 0}, {0, 0, 1}};
+  bar.text = glm::dvec3(0.0);
+  bar.title = "T";
+  draw_color_bar(clear, bar);
+  int opaque = 0, clear_pixels = 0;
+  for (std::size_t p = 3; p < clear.rgba.size(); p += 4)
+    (clear.rgba[p] == 1.0f ? opaque : clear_pixels) += clear.rgba[p] == 1.0f || clear.rgba[p] == 0.0f;
+  EXPECT_GT(opaque, 200);          // the bar, at least
+  EXPECT_GT(clear_pixels, 20000);  // most of the picture
 }
 
 }  // namespace

@@ -144,7 +144,7 @@ int run_render(const RenderArgs& given) {
   for (const auto& w : prepared.warnings) warn(w);
   const double load_seconds = seconds_since(t_load);
 
-  const FrameJob job{a, input, *renderer, settings, paths, color_bar(prepared, scene.background)};
+  const FrameJob job{a, input, *renderer, settings, paths, color_bar(prepared, legend_page(scene))};
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   FrameLoop run;
   tbb::task_arena(threads).execute([&] {
@@ -195,7 +195,11 @@ Action add_render(CLI::App& app) {
     if (!value.empty()) option->type_name(value);
     moves.emplace_back(&row, option);
   }
-  cmd->add_option("--background", args->background, "Background colour: R,G,B in [0, 1], #rrggbb, black or white");
+  cmd->add_option("--background", args->background,
+                  "Background colour: R,G,B in [0, 1], #rrggbb, black or white; none: a transparent PNG (straight "
+                  "alpha) for slides and compositing tools");
+  cmd->add_option("--png-bits", args->png_bits, "Bits a sample of the PNG: 8 (default) or 16")
+      ->check(CLI::IsMember({8, 16}));
   cmd->add_flag("--legend", args->legend, "Draw the colour legend (field name and range) on the PNG");
   cmd->add_option("--orbit", args->orbit,
                   "Turn the camera this many degrees about its up axis over --frames N (a turntable: 360)");

@@ -37,7 +37,7 @@ struct PreparedVolume {
 
 void FrameJob::write(const Image& image, const std::string& png, const std::string& npy,
                      const std::string& what) const {
-  write_outputs(image, input.scene.background, args.legend ? &legend : nullptr, png, npy, what);
+  write_outputs(image, png_format(args, input.scene), args.legend ? &legend : nullptr, png, npy, what);
 }
 
 std::string FrameJob::frame_what(int f, double seconds) const {

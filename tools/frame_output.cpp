@@ -18,12 +18,17 @@ std::string level_path(const std::string& path, int slices) {
 
 // The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`;
 // the colour legend drawn on the PNG when given.
-void write_outputs(const Image& image, const glm::dvec3& background, const ColorBar* legend, const std::string& png,
+void write_outputs(const Image& image, const PngFormat& format, const ColorBar* legend, const std::string& png,
                    const std::string& npy, const std::string& what) {
-  if (!png.empty()) {
-    Rgb8Image rgb = to_rgb8(image, background);
+  if (!png.empty() && !format.transparent && format.bits == 8) {  // the common picture, straight to 8 bits
+    Rgb8Image rgb = to_rgb8(image, format.background);
     if (legend) draw_color_bar(rgb, *legend);
     write_png(rgb, png);
+  } else if (!png.empty()) {
+    DisplayImage display =
+        to_display(image, format.transparent ? std::nullopt : std::optional<glm::dvec3>(format.background));
+    if (legend) draw_color_bar(display, *legend);
+    write_png(display, format.bits, png);
   }
   if (!npy.empty()) write_npy(image, npy);
   for (const std::string& out : {png, npy})

@@ -15,9 +15,17 @@ namespace cellproj {
 // out.png -> out-64.png: where level `slices` of --progressive goes.
 std::string level_path(const std::string& path, int slices);
 
+// How a PNG is written: over the background, or transparent (straight alpha, --background none);
+// 8 or 16 bits a sample (--png-bits).
+struct PngFormat {
+  glm::dvec3 background{0.0};
+  bool transparent = false;
+  int bits = 8;
+};
+
 // The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`;
 // the colour legend drawn on the PNG when given.
-void write_outputs(const Image& image, const glm::dvec3& background, const ColorBar* legend, const std::string& png,
+void write_outputs(const Image& image, const PngFormat& format, const ColorBar* legend, const std::string& png,
                    const std::string& npy, const std::string& what);
 
 // Where the frames go: one PNG (and .npy), or with a printf pattern (frame_%04d.png) one per frame.

@@ -48,7 +48,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   std::vector<double> frame_times;
   const FramePaths paths = frame_paths(a.png, a.npy, a.input, a.frames);
   make_output_folders(paths);
-  const ColorBar legend = color_bar(prepared, scene.background);
+  const ColorBar legend = color_bar(prepared, legend_page(scene));
   Image first;
   arena.execute([&] {
     // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.
@@ -67,7 +67,8 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
         std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %d rank%s, %.3f s", f + 1, a.frames, scene.width,
                       scene.height, option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "",
                       frame_times.back());
-        write_outputs(image, scene.background, a.legend ? &legend : nullptr, paths.png_of(f), paths.npy_of(f), what);
+        write_outputs(image, png_format(a, scene), a.legend ? &legend : nullptr, paths.png_of(f), paths.npy_of(f),
+                      what);
       } else if (f == 0) {
         first = std::move(image);
       }
@@ -80,7 +81,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
     char what[160];
     std::snprintf(what, sizeof what, "%dx%d, %s, %d rank%s, %.3f s per frame", scene.width, scene.height,
                   option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "", median(frame_times));
-    write_outputs(first, scene.background, a.legend ? &legend : nullptr, paths.png, paths.npy, what);
+    write_outputs(first, png_format(a, scene), a.legend ? &legend : nullptr, paths.png, paths.npy, what);
   }
   if (a.stats) {
     constexpr std::size_t n = std::size(kRankStatNames);

@@ -32,8 +32,9 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   if (scene_file && !a.look_given.empty() && a.look_given != std::vector<std::string>{"colormap"})
     throw UsageError("--opacity and --depth make the extinction of a mesh rendered without a scene; " + a.input +
                      " is a scene file: edit its transfer_function");
-  std::optional<glm::dvec3> background;
-  if (!a.background.empty()) background = usage([&] { return parse_color(a.background, "--background"); });
+  std::optional<glm::dvec3> background;  // --background none: transparent
+  if (!a.background.empty() && a.background != "none")
+    background = usage([&] { return parse_color(a.background, "--background"); });
   if (!a.view.empty()) usage([&] { return view_camera(a.view, {0, 0, 0}, {1, 1, 1}, 1.0); });  // the name, now
 
   Scene scene;
@@ -52,7 +53,8 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   }
   if (width > 0) std::tie(scene.width, scene.height) = std::tie(width, height);
   scene.reader.max_memory_gib = a.max_memory_gib;
-  if (background) scene.background = *background;
+  if (background) scene.background = *background, scene.transparent = false;
+  if (a.background == "none") scene.transparent = true;
   if (settings.mode == RenderMode::slicing)
     for (int n : levels.empty() ? std::vector<int>{settings.slicing.slices} : levels)
       usage([&] { check_slices(n, scene.width, scene.height); });
@@ -98,9 +100,10 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     look.field = a.field;
     std::tie(look.width, look.height) = std::tie(scene.width, scene.height);
     const glm::dvec3 bg = scene.background;
+    const bool transparent = scene.transparent;
     scene = usage([&] { return scene_from_json(quick_scene(loaded, a.input, a.reader, look), a.input, ""); });
     scene.reader.max_memory_gib = a.max_memory_gib;
-    scene.background = bg;
+    scene.background = bg, scene.transparent = transparent;
   }
   apply_view_and_clip(a, scene);
   if (!scene.clip.empty() && partition)

@@ -16,6 +16,7 @@
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
 #include "scene/scene_file.hpp"
+#include "tools/frame_output.hpp"
 
 namespace cellproj {
 
@@ -26,6 +27,7 @@ struct RenderArgs {
   QuickLook look;                       // the same
   std::vector<std::string> look_given;  // --colormap, --opacity, --depth when given
   int threads = 0, frames = 1;
+  int png_bits = 8;    // --png-bits: 8 or 16 a sample
   double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
   bool legend = false;
   double max_memory_gib = 0.0;  // 0: the machine's available memory
@@ -50,6 +52,15 @@ struct Input {
   ClipReport clipped;                       // what --clip (or the scene's planes) did to the mesh
   std::optional<PartitionIndex> partition;  // a partitioned mesh: prepared.loaded is its extent (no cells)
 };
+
+// How the PNGs of `scene` are written: its background (or transparent) and --png-bits.
+inline PngFormat png_format(const RenderArgs& a, const Scene& scene) {
+  return {scene.background, scene.transparent, a.png_bits};
+}
+
+// What the legend's text is set against: the background, or for a transparent picture the light
+// page (a slide) it is likely laid on.
+inline glm::dvec3 legend_page(const Scene& scene) { return scene.transparent ? glm::dvec3(1.0) : scene.background; }
 
 // --view (replacing the scene's camera and its moves), the camera moves (after the scene's), and
 // --clip (replacing its planes); UsageError for a bad one.

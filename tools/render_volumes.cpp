@@ -47,7 +47,10 @@ void check_volume_scene(const RenderArgs& a, const Scene& scene) {
 int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& settings) {
   const auto t_load = std::chrono::steady_clock::now();
   if (!a.size.empty()) usage([&] { parse_size(a.size, scene.width, scene.height); });
-  if (!a.background.empty()) scene.background = usage([&] { return parse_color(a.background, "--background"); });
+  if (a.background == "none")
+    scene.transparent = true;
+  else if (!a.background.empty())
+    scene.background = usage([&] { return parse_color(a.background, "--background"); }), scene.transparent = false;
   if (!a.view.empty()) usage([&] { return view_camera(a.view, {0, 0, 0}, {1, 1, 1}, 1.0); });  // the name, now
   apply_view_and_clip(a, scene);
   const FramePaths paths = usage([&] { return frame_paths(a.png, a.npy, a.input, a.frames); });
@@ -102,7 +105,7 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
       std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %zu volumes, exact, %.3f s", f + 1, a.frames, scene.width,
                     scene.height, volumes.entries().size(), report.seconds);
       if (paths.sequence)
-        write_outputs(img, scene.background, nullptr, paths.png_of(f), paths.npy_of(f), what);
+        write_outputs(img, png_format(a, scene), nullptr, paths.png_of(f), paths.npy_of(f), what);
       else if (f == 0)
         first = std::move(img);
     }
@@ -113,7 +116,7 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
     char what[128];
     std::snprintf(what, sizeof what, "%dx%d, %zu volumes, exact, %.3f s per frame", scene.width, scene.height,
                   scene.volumes.size(), frame_seconds);
-    write_outputs(first, scene.background, nullptr, paths.png, paths.npy, what);
+    write_outputs(first, png_format(a, scene), nullptr, paths.png, paths.npy, what);
   }
   if (a.stats) {
     nlohmann::json meshes = nlohmann::json::array();

@@ -7,6 +7,7 @@
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
+#include <glm/common.hpp>
 
 #include "base/error.hpp"
 
@@ -14,6 +15,19 @@ namespace cellproj {
 namespace {
 
 // One FreeType face at one pixel size, released with it.
+// Colour c over pixel (x, y) with coverage a: in 8 bits, or (straight alpha) in floats, where the
+// pixel's opacity grows by the coverage.
+void blend(Rgb8Image& img, int x, int y, const glm::dvec3& c, double a) {
+  unsigned char* p = img.pixel(x, y);
+  for (int k = 0; k < 3; ++k) p[k] = static_cast<unsigned char>(std::lround(p[k] * (1 - a) + 255 * c[k] * a));
+}
+void blend(DisplayImage& img, int x, int y, const glm::dvec3& c, double a) {
+  float* p = img.pixel(x, y);
+  const double alpha = a + p[3] * (1 - a);
+  for (int k = 0; k < 3; ++k) p[k] = alpha > 0 ? static_cast<float>((c[k] * a + p[k] * p[3] * (1 - a)) / alpha) : 0.0f;
+  p[3] = static_cast<float>(alpha);
+}
+
 class Font {
  public:
   Font(const std::string& path, int pixels) {
@@ -42,7 +56,8 @@ class Font {
     return w;
   }
   // Blends `text` in `color` with its baseline at y, starting at x, by each glyph's coverage.
-  void draw(Rgb8Image& img, int x, int y, const std::string& text, const glm::dvec3& color) {
+  template <class Picture>
+  void draw(Picture& img, int x, int y, const std::string& text, const glm::dvec3& color) {
     for (unsigned char c : text) {
       if (FT_Load_Char(face_, c, FT_LOAD_RENDER)) continue;
       const FT_GlyphSlot g = face_->glyph;
@@ -50,10 +65,7 @@ class Font {
         for (unsigned q = 0; q < g->bitmap.width; ++q) {
           const int px = x + g->bitmap_left + static_cast<int>(q), py = y - g->bitmap_top + static_cast<int>(r);
           if (px < 0 || py < 0 || px >= img.width || py >= img.height) continue;
-          const double a = g->bitmap.buffer[r * g->bitmap.pitch + q] / 255.0;
-          unsigned char* p = img.pixel(px, py);
-          for (int k = 0; k < 3; ++k)
-            p[k] = static_cast<unsigned char>(std::lround(p[k] * (1 - a) + 255 * color[k] * a));
+          blend(img, px, py, color, g->bitmap.buffer[r * g->bitmap.pitch + q] / 255.0);
         }
       x += static_cast<int>(g->advance.x >> 6);
     }
@@ -64,11 +76,10 @@ class Font {
   FT_Face face_ = nullptr;
 };
 
-void fill(Rgb8Image& img, int x0, int y0, int x1, int y1, const glm::dvec3& c) {
+template <class Picture>
+void fill(Picture& img, int x0, int y0, int x1, int y1, const glm::dvec3& c) {
   for (int y = std::max(0, y0); y < std::min(img.height, y1); ++y)
-    for (int x = std::max(0, x0); x < std::min(img.width, x1); ++x)
-      for (int k = 0; k < 3; ++k)
-        img.pixel(x, y)[k] = static_cast<unsigned char>(std::lround(std::clamp(c[k], 0.0, 1.0) * 255));
+    for (int x = std::max(0, x0); x < std::min(img.width, x1); ++x) blend(img, x, y, glm::clamp(c, 0.0, 1.0), 1.0);
 }
 
 // v to 4 significant digits, with what is below a millionth of the range's span shown as 0.
@@ -94,7 +105,10 @@ glm::dvec3 text_color_for(const glm::dvec3& bg) {
   return glm::dvec3(luminance < 0.5 ? 1.0 : 0.0);
 }
 
-void draw_color_bar(Rgb8Image& img, const ColorBar& bar) {
+namespace {
+
+template <class Picture>
+void draw_bar(Picture& img, const ColorBar& bar) {
   if (bar.colors.empty()) return;
   const int pixels = std::clamp(img.height / 32, 9, 48);
   Font font(bar.font.empty() ? default_font() : bar.font, pixels);
@@ -123,5 +137,10 @@ void draw_color_bar(Rgb8Image& img, const ColorBar& bar) {
   const int title_w = font.width(bar.title);
   font.draw(img, std::max(0, std::min(x0, img.width - margin - title_w)), top - pixels / 2 - 2, bar.title, bar.text);
 }
+
+}  // namespace
+
+void draw_color_bar(Rgb8Image& image, const ColorBar& bar) { draw_bar(image, bar); }
+void draw_color_bar(DisplayImage& image, const ColorBar& bar) { draw_bar(image, bar); }
 
 }  // namespace cellproj

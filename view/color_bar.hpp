@@ -26,5 +26,6 @@ glm::dvec3 text_color_for(const glm::dvec3& background);
 // Draws the bar on the right of the image, 60% of its height, with the title above it and the
 // low, middle and high values beside it. Throws InputError when the font cannot be loaded.
 void draw_color_bar(Rgb8Image& image, const ColorBar& bar);
+void draw_color_bar(DisplayImage& image, const ColorBar& bar);  // opaque over a transparent picture
 
 }  // namespace cellproj

@@ -49,6 +49,105 @@ void write_png(const Rgb8Image& img, const std::string& path) {
   png_destroy_write_struct(&png, &info);
 }
 
+DisplayImage to_display(const Image& img, const std::optional<glm::dvec3>& bg) {
+  DisplayImage out{img.width, img.height, std::vector<float>(img.rgba.size())};
+  for (std::size_t p = 0; p < out.rgba.size() / 4; ++p) {
+    const float* c = img.rgba.data() + 4 * p;
+    float* o = out.rgba.data() + 4 * p;
+    const double a = std::clamp(static_cast<double>(c[3]), 0.0, 1.0);
+    for (int k = 0; k < 3; ++k)
+      o[k] = static_cast<float>(std::clamp(bg ? c[k] + (1.0 - a) * (*bg)[k] : a > 0.0 ? c[k] / a : 0.0, 0.0, 1.0));
+    o[3] = bg ? 1.0f : static_cast<float>(a);
+  }
+  return out;
+}
+
+namespace {
+
+// libpng's writer or reader on `path`, with its errors as InputErrors naming the file.
+struct PngFile {
+  std::unique_ptr<FILE, int (*)(FILE*)> file{nullptr, &std::fclose};
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  bool writing = true;
+  ~PngFile() {
+    if (writing)
+      png_destroy_write_struct(&png, &info);
+    else
+      png_destroy_read_struct(&png, &info, nullptr);
+  }
+};
+
+}  // namespace
+
+void write_png(const DisplayImage& img, int bits, const std::string& path) {
+  if (bits != 8 && bits != 16)
+    throw InputError(where(path, "a PNG has 8 or 16 bits a sample, not " + std::to_string(bits)));
+  bool opaque = true;
+  for (std::size_t a = 3; a < img.rgba.size() && opaque; a += 4) opaque = img.rgba[a] == 1.0f;
+  const int channels = opaque ? 3 : 4, bytes = bits / 8, max = (1 << bits) - 1;
+  std::vector<unsigned char> row(static_cast<std::size_t>(img.width) * channels * bytes);
+  PngFile f;
+  f.file.reset(std::fopen(path.c_str(), "wb"));
+  if (!f.file) throw InputError(where(path, "cannot open for writing"));
+  f.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  f.info = f.png ? png_create_info_struct(f.png) : nullptr;
+  if (!f.info) throw InputError(where(path, "libpng could not start"));
+  if (setjmp(png_jmpbuf(f.png))) throw InputError(where(path, "libpng failed while writing"));
+  png_init_io(f.png, f.file.get());
+  png_set_IHDR(f.png, f.info, img.width, img.height, bits, opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA,
+               PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+  png_write_info(f.png, f.info);
+  for (int j = 0; j < img.height; ++j) {
+    for (int i = 0; i < img.width; ++i)
+      for (int k = 0; k < channels; ++k) {
+        const long v = std::lround(std::clamp(static_cast<double>(img.pixel(i, j)[k]), 0.0, 1.0) * max);
+        unsigned char* out = row.data() + (static_cast<std::size_t>(i) * channels + k) * bytes;
+        if (bytes == 2)
+          out[0] = static_cast<unsigned char>(v >> 8), out[1] = static_cast<unsigned char>(v & 0xff);
+        else
+          out[0] = static_cast<unsigned char>(v);  // PNG's samples are big-endian
+      }
+    png_write_row(f.png, row.data());
+  }
+  png_write_end(f.png, nullptr);
+}
+
+DisplayImage read_png(const std::string& path, int* bits) {
+  PngFile f;
+  f.writing = false;
+  f.file.reset(std::fopen(path.c_str(), "rb"));
+  if (!f.file) throw InputError(where(path, "cannot open"));
+  f.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+  f.info = f.png ? png_create_info_struct(f.png) : nullptr;
+  if (!f.info) throw InputError(where(path, "libpng could not start"));
+  if (setjmp(png_jmpbuf(f.png))) throw InputError(where(path, "not a PNG libpng can read"));
+  png_init_io(f.png, f.file.get());
+  png_read_info(f.png, f.info);
+  png_set_expand(f.png);  // palettes and low-bit gray to 8 bits, tRNS to alpha
+  png_set_gray_to_rgb(f.png);
+  png_set_add_alpha(f.png, 0xffff, PNG_FILLER_AFTER);
+  png_read_update_info(f.png, f.info);
+  const int depth = png_get_bit_depth(f.png, f.info), bytes = depth / 8;
+  if (bits) *bits = depth;
+  const int width = static_cast<int>(png_get_image_width(f.png, f.info)),
+            height = static_cast<int>(png_get_image_height(f.png, f.info));
+  if (width < 1 || height < 1 || width > 65536 || height > 65536 || (depth != 8 && depth != 16))
+    throw InputError(where(path, "a PNG of an unexpected size or depth"));
+  DisplayImage out{width, height, std::vector<float>(static_cast<std::size_t>(width) * height * 4)};
+  std::vector<unsigned char> row(png_get_rowbytes(f.png, f.info));
+  const double max = (1 << depth) - 1;
+  for (int j = 0; j < height; ++j) {
+    png_read_row(f.png, row.data(), nullptr);
+    for (int i = 0; i < width * 4; ++i) {
+      const unsigned char* v = row.data() + static_cast<std::size_t>(i) * bytes;
+      out.rgba[static_cast<std::size_t>(j) * width * 4 + i] =
+          static_cast<float>((bytes == 2 ? (v[0] << 8 | v[1]) : v[0]) / max);
+    }
+  }
+  return out;
+}
+
 void write_npy(const Image& img, const std::string& path) {
   std::string header = "{'descr': '<f4', 'fortran_order': False, 'shape': (" + std::to_string(img.height) + ", " +
                        std::to_string(img.width) + ", 4), }";

@@ -1,6 +1,7 @@
 #pragma once
 // A float RGBA image (premultiplied, without background) and its output: PNG for people, .npy for
 // comparisons. Row 0 is the top row.
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -39,6 +40,24 @@ void write_png(const Rgb8Image& image, const std::string& path);
 inline void write_png(const Image& image, const glm::dvec3& background, const std::string& path) {
   write_png(to_rgb8(image, background), path);
 }
+// A picture for people before it is quantized: straight (not premultiplied) RGBA in [0, 1], row-major
+// from the top; composited over a background, its alpha is 1 everywhere.
+struct DisplayImage {
+  int width = 0, height = 0;
+  std::vector<float> rgba;  // 4 floats per pixel
+  float* pixel(int i, int j) { return rgba.data() + (static_cast<std::size_t>(j) * width + i) * 4; }
+  const float* pixel(int i, int j) const { return rgba.data() + (static_cast<std::size_t>(j) * width + i) * 4; }
+};
+// The render over `background`, or without one its colour un-premultiplied (colour / alpha where
+// alpha > 0, black where nothing was drawn), for slides and compositing tools.
+DisplayImage to_display(const Image& image, const std::optional<glm::dvec3>& background);
+// A PNG of `bits` (8 or 16) per sample: RGB when the picture is opaque everywhere, RGBA otherwise.
+// Throws InputError if unwritable.
+void write_png(const DisplayImage& image, int bits, const std::string& path);
+// A PNG read back (8 or 16 bits, gray, RGB or RGBA; for tests and tools), samples scaled to [0, 1];
+// InputError naming the file if it is not one.
+DisplayImage read_png(const std::string& path, int* bits = nullptr);
+
 // float32, shape (height, width, 4), little-endian, C order.
 void write_npy(const Image& image, const std::string& path);
 Image read_npy(const std::string& path);

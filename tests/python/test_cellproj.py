@@ -80,6 +80,21 @@ def test_camera_moves_are_the_clis(tmp_path, mixed):
         cellproj.render(mesh, size=(8, 8), zoom=-1)
 
 
+def test_write_png_transparent_and_16_bit(tmp_path):
+    image = cellproj.render_scene(DEFAULT_SCENE, size=(24, 16))
+    def ihdr(path):  # bit depth and colour type of a PNG's header chunk
+        data = path.read_bytes()
+        return data[24], data[25]
+    cellproj.write_png(image, str(tmp_path / "a.png"))
+    cellproj.write_png(image, str(tmp_path / "b.png"), background=None)
+    cellproj.write_png(image, str(tmp_path / "c.png"), background=(1, 1, 1), bits=16)
+    assert ihdr(tmp_path / "a.png") == (8, 2)   # RGB
+    assert ihdr(tmp_path / "b.png") == (8, 6)   # RGBA: straight alpha
+    assert ihdr(tmp_path / "c.png") == (16, 2)
+    with pytest.raises(cellproj.InputError, match="bits must be 8 or 16"):
+        cellproj.write_png(image, str(tmp_path / "d.png"), bits=12)
+
+
 def test_render_of_a_mesh_equals_the_cli_without_a_scene(tmp_path, mixed):
     mesh = cellproj.read(mixed)
     camera = cellproj.Camera.framing(mesh, "+y", aspect=128 / 96)
