@@ -27,26 +27,12 @@ Rgb8Image to_rgb8(const Image& img, const glm::dvec3& bg) {
 }
 
 void write_png(const Rgb8Image& img, const std::string& path) {
-  std::unique_ptr<FILE, int (*)(FILE*)> f(std::fopen(path.c_str(), "wb"), &std::fclose);
-  if (!f) throw InputError(where(path, "cannot open for writing"));
-  png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  png_infop info = png ? png_create_info_struct(png) : nullptr;
-  if (!info) {
-    png_destroy_write_struct(&png, nullptr);
-    throw InputError(where(path, "libpng could not start"));
+  DisplayImage display{img.width, img.height, std::vector<float>(static_cast<std::size_t>(img.width) * img.height * 4)};
+  for (std::size_t p = 0; p < display.rgba.size() / 4; ++p) {
+    for (int k = 0; k < 3; ++k) display.rgba[4 * p + k] = img.rgb[3 * p + k] / 255.0f;  // back to the same bytes
+    display.rgba[4 * p + 3] = 1.0f;
   }
-  if (setjmp(png_jmpbuf(png))) {
-    png_destroy_write_struct(&png, &info);
-    throw InputError(where(path, "libpng failed while writing"));
-  }
-  png_init_io(png, f.get());
-  png_set_IHDR(png, info, img.width, img.height, 8, PNG_COLOR_TYPE_RGB, PNG_INTERLACE_NONE,
-               PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
-  png_write_info(png, info);
-  for (int j = 0; j < img.height; ++j)
-    png_write_row(png, const_cast<png_bytep>(img.rgb.data() + static_cast<std::size_t>(j) * img.width * 3));
-  png_write_end(png, nullptr);
-  png_destroy_write_struct(&png, &info);
+  write_png(display, 8, path);
 }
 
 DisplayImage to_display(const Image& img, const std::optional<glm::dvec3>& bg) {
