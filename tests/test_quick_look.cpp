@@ -144,5 +144,32 @@ TEST(PngOutputs, TransparentAndSixteenBitPngsReadBackToTheirPrecision) {
   EXPECT_GT(clear_pixels, 20000);  // most of the picture
 }
 
+// The legend never covers the picture: it is drawn in a strip beside it, the picture's pixels kept.
+TEST(PngOutputs, TheLegendStandsBesideThePicture) {
+  if (default_font().empty()) GTEST_SKIP() << "no font";
+  Image img(120, 90);
+  for (std::size_t p = 0; p < img.rgba.size(); p += 4) img.rgba[p] = img.rgba[p + 3] = 0.5f + 0.4f * (p % 7) / 7;
+  ColorBar bar;
+  bar.colors = {{1, 0, 0}, {0, 0, 1}};
+  bar.title = "temperature";
+  const glm::dvec3 page(0.2, 0.3, 0.4);
+  const Rgb8Image picture = to_rgb8(img, page), with = beside_legend(picture, bar, page);
+  ASSERT_GT(with.width, picture.width);
+  EXPECT_EQ(with.height, picture.height);
+  int strip_changed = 0;
+  for (int j = 0; j < picture.height; ++j) {
+    EXPECT_TRUE(std::equal(picture.rgb.begin() + j * picture.width * 3,
+                           picture.rgb.begin() + (j + 1) * picture.width * 3, with.rgb.begin() + j * with.width * 3))
+        << "row " << j;
+    for (int i = picture.width; i < with.width; ++i)
+      strip_changed +=
+          const_cast<Rgb8Image&>(with).pixel(i, j)[0] != static_cast<unsigned char>(std::lround(0.2 * 255));
+  }
+  EXPECT_GT(strip_changed, 300);  // the bar and its text are in the strip
+  const DisplayImage clear = beside_legend(to_display(img, std::nullopt), bar, std::nullopt);
+  EXPECT_EQ(clear.width, with.width);
+  EXPECT_EQ(clear.pixel(clear.width - 1, 0)[3], 0.0f);  // the strip is clear where nothing is drawn
+}
+
 }  // namespace
 }  // namespace cellproj

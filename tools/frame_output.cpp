@@ -21,14 +21,13 @@ std::string level_path(const std::string& path, int slices) {
 void write_outputs(const Image& image, const PngFormat& format, const ColorBar* legend, const std::string& png,
                    const std::string& npy, const std::string& what) {
   if (!png.empty() && !format.transparent && format.bits == 8) {  // the common picture, straight to 8 bits
-    Rgb8Image rgb = to_rgb8(image, format.background);
-    if (legend) draw_color_bar(rgb, *legend);
-    write_png(rgb, png);
+    const Rgb8Image rgb = to_rgb8(image, format.background);
+    write_png(legend ? beside_legend(rgb, *legend, format.background) : rgb, png);
   } else if (!png.empty()) {
-    DisplayImage display =
-        to_display(image, format.transparent ? std::nullopt : std::optional<glm::dvec3>(format.background));
-    if (legend) draw_color_bar(display, *legend);
-    write_png(display, format.bits, png);
+    const std::optional<glm::dvec3> page =
+        format.transparent ? std::nullopt : std::optional<glm::dvec3>(format.background);
+    const DisplayImage display = to_display(image, page);
+    write_png(legend ? beside_legend(display, *legend, page) : display, format.bits, png);
   }
   if (!npy.empty()) write_npy(image, npy);
   for (const std::string& out : {png, npy})

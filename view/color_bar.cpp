@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <memory>
+#include <type_traits>
 
 #include <ft2build.h>
 #include FT_FREETYPE_H
@@ -40,6 +41,7 @@ class Font {
       throw InputError(where(path, "setting 'legend': FreeType cannot load this font"));
     }
     FT_Set_Pixel_Sizes(face_, 0, static_cast<FT_UInt>(pixels));
+    pixels_ = pixels;
   }
   ~Font() {
     FT_Done_Face(face_);
@@ -48,6 +50,7 @@ class Font {
   Font(const Font&) = delete;
   Font& operator=(const Font&) = delete;
 
+  int pixels() const { return pixels_; }
   int ascender() const { return static_cast<int>(face_->size->metrics.ascender >> 6); }
   int width(const std::string& text) {
     int w = 0;
@@ -74,6 +77,7 @@ class Font {
  private:
   FT_Library library_ = nullptr;
   FT_Face face_ = nullptr;
+  int pixels_ = 0;
 };
 
 template <class Picture>
@@ -107,17 +111,33 @@ glm::dvec3 text_color_for(const glm::dvec3& bg) {
 
 namespace {
 
+// Where a legend's parts go in a picture `height` pixels tall: text size, labels, widths.
+struct Layout {
+  int pixels, margin, bar_w, gap, label_w, title_w;
+  std::string labels[3];                                                               // low, middle, high
+  int width() const { return 2 * margin + std::max(bar_w + gap + label_w, title_w); }  // of a strip holding it
+};
+Layout layout(const ColorBar& bar, int height, Font& font) {
+  Layout l;
+  l.pixels = font.pixels();
+  const double span = bar.hi - bar.lo;
+  l.labels[0] = label(bar.lo, span), l.labels[1] = label(0.5 * (bar.lo + bar.hi), span),
+  l.labels[2] = label(bar.hi, span);
+  l.label_w = std::max({font.width(l.labels[0]), font.width(l.labels[1]), font.width(l.labels[2])});
+  l.margin = std::max(4, height / 40), l.bar_w = std::max(6, l.pixels), l.gap = std::max(3, l.pixels / 3);
+  l.title_w = font.width(bar.title);
+  return l;
+}
+int text_pixels(int height) { return std::clamp(height / 32, 9, 48); }
+
 template <class Picture>
 void draw_bar(Picture& img, const ColorBar& bar) {
   if (bar.colors.empty()) return;
-  const int pixels = std::clamp(img.height / 32, 9, 48);
-  Font font(bar.font.empty() ? default_font() : bar.font, pixels);
-  const double span = bar.hi - bar.lo;
-  const std::string lo = label(bar.lo, span), mid = label(0.5 * (bar.lo + bar.hi), span), hi = label(bar.hi, span);
-  const int label_w = std::max({font.width(lo), font.width(mid), font.width(hi)});
-  const int margin = std::max(4, img.width / 40), bar_w = std::max(6, pixels), gap = std::max(3, pixels / 3);
-  const int x1 = img.width - margin - label_w - gap, x0 = x1 - bar_w;
-  const int top = margin + 2 * pixels, bottom = top + static_cast<int>(0.6 * img.height);
+  Font font(bar.font.empty() ? default_font() : bar.font, text_pixels(img.height));
+  const Layout l = layout(bar, img.height, font);
+  const int pixels = l.pixels, gap = l.gap;
+  const int x1 = img.width - l.margin - l.label_w - gap, x0 = x1 - l.bar_w;
+  const int top = l.margin + 2 * pixels, bottom = top + static_cast<int>(0.6 * img.height);
   const int n = static_cast<int>(bar.colors.size());
   for (int y = top; y < bottom; ++y) {  // high values at the top
     const double t = 1.0 - (y - top + 0.5) / (bottom - top);
@@ -129,18 +149,58 @@ void draw_bar(Picture& img, const ColorBar& bar) {
   fill(img, x1, top, x1 + 1, bottom, bar.text);
   const int half = font.ascender() / 2;
   const int ys[3] = {bottom, (top + bottom) / 2, top};
-  const std::string* texts[3] = {&lo, &mid, &hi};
   for (int k = 0; k < 3; ++k) {
     fill(img, x1, ys[k], x1 + gap / 2 + 1, ys[k] + 1, bar.text);  // tick
-    font.draw(img, x1 + gap, ys[k] + half, *texts[k], bar.text);
+    font.draw(img, x1 + gap, ys[k] + half, l.labels[k], bar.text);
   }
-  const int title_w = font.width(bar.title);
-  font.draw(img, std::max(0, std::min(x0, img.width - margin - title_w)), top - pixels / 2 - 2, bar.title, bar.text);
+  font.draw(img, std::max(0, std::min(x0, img.width - l.margin - l.title_w)), top - pixels / 2 - 2, bar.title,
+            bar.text);
+}
+
+// The picture with a strip on its right, `page` (a pixel's worth of samples) throughout, wide
+// enough for the legend, which is drawn there.
+template <class Picture, class Sample>
+Picture beside(const Picture& picture, const ColorBar& bar, const std::vector<Sample>& page) {
+  Font font(bar.font.empty() ? default_font() : bar.font, text_pixels(picture.height));
+  const int strip = layout(bar, picture.height, font).width();
+  const std::size_t n = page.size();
+  Picture out;
+  out.width = picture.width + strip, out.height = picture.height;
+  auto& samples = [](Picture& p) -> std::vector<Sample>& {
+    if constexpr (std::is_same_v<Picture, Rgb8Image>)
+      return p.rgb;
+    else
+      return p.rgba;
+  }(out);
+  const auto& from = [](const Picture& p) -> const std::vector<Sample>& {
+    if constexpr (std::is_same_v<Picture, Rgb8Image>)
+      return p.rgb;
+    else
+      return p.rgba;
+  }(picture);
+  samples.resize(static_cast<std::size_t>(out.width) * out.height * n);
+  for (int j = 0; j < out.height; ++j) {
+    Sample* row = samples.data() + static_cast<std::size_t>(j) * out.width * n;
+    std::copy_n(from.data() + static_cast<std::size_t>(j) * picture.width * n, picture.width * n, row);
+    for (int i = picture.width; i < out.width; ++i) std::copy(page.begin(), page.end(), row + i * n);
+  }
+  draw_bar(out, bar);
+  return out;
 }
 
 }  // namespace
 
 void draw_color_bar(Rgb8Image& image, const ColorBar& bar) { draw_bar(image, bar); }
 void draw_color_bar(DisplayImage& image, const ColorBar& bar) { draw_bar(image, bar); }
+
+Rgb8Image beside_legend(const Rgb8Image& picture, const ColorBar& bar, const glm::dvec3& page) {
+  std::vector<unsigned char> p(3);
+  for (int k = 0; k < 3; ++k) p[k] = static_cast<unsigned char>(std::lround(std::clamp(page[k], 0.0, 1.0) * 255));
+  return beside(picture, bar, p);
+}
+DisplayImage beside_legend(const DisplayImage& picture, const ColorBar& bar, const std::optional<glm::dvec3>& page) {
+  const glm::dvec3 c = page ? glm::clamp(*page, 0.0, 1.0) : glm::dvec3(0.0);
+  return beside(picture, bar, std::vector<float>{float(c.r), float(c.g), float(c.b), page ? 1.0f : 0.0f});
+}
 
 }  // namespace cellproj

@@ -1,6 +1,7 @@
 #pragma once
 // A colour legend on the picture: the transfer function's colour bar with the field's name and
 // value range, its text set in a TrueType font through FreeType (Debian's fonts-dejavu-core).
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -27,5 +28,10 @@ glm::dvec3 text_color_for(const glm::dvec3& background);
 // low, middle and high values beside it. Throws InputError when the font cannot be loaded.
 void draw_color_bar(Rgb8Image& image, const ColorBar& bar);
 void draw_color_bar(DisplayImage& image, const ColorBar& bar);  // opaque over a transparent picture
+
+// The picture widened by a strip on its right that holds the legend, so that the legend never
+// covers the picture: the strip is the `page` colour (a DisplayImage's: clear without one).
+Rgb8Image beside_legend(const Rgb8Image& picture, const ColorBar& bar, const glm::dvec3& page);
+DisplayImage beside_legend(const DisplayImage& picture, const ColorBar& bar, const std::optional<glm::dvec3>& page);
 
 }  // namespace cellproj
