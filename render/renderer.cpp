@@ -365,9 +365,8 @@ class Supersampled final : public Renderer {
  private:
   Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
               ImageSize size, RenderReport* report, const Progress& progress) const override {
-    const Image samples = inner_->render(volume, field, tf, camera, supersampled_size(size, n_), report, progress);
-    if (report) report->add("ssaa", std::int64_t{n_});
-    return downsample(samples, n_);
+    return resolve_samples(inner_->render(volume, field, tf, camera, supersampled_size(size, n_), report, progress), n_,
+                           report);
   }
 
   std::unique_ptr<Renderer> inner_;
@@ -400,6 +399,12 @@ ImageSize supersampled_size(ImageSize size, int ssaa) {
   return {size.width * ssaa, size.height * ssaa};
 }
 
+Image resolve_samples(Image samples, int ssaa, RenderReport* report) {
+  if (ssaa == 1) return samples;
+  if (report) report->add("ssaa", std::int64_t{ssaa});
+  return downsample(samples, ssaa);
+}
+
 Image Renderer::render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                        ImageSize size, RenderReport* report, const Progress& progress) const {
   Image image = frame(volume, field, tf, camera, size, report, progress);
@@ -416,9 +421,8 @@ void render_progressive(const Volume& volume, const Field& field, const Transfer
   SlicingMode(settings.slicing, settings.tetrahedralize)
       .render_levels(volume, field, tf, camera, supersampled_size(size, n), levels,
                      [&](std::size_t level, int slices, Image&& image, RenderReport&& report) {
-                       if (n == 1) return done(level, slices, image, report);
-                       report.add("ssaa", std::int64_t{n});
-                       done(level, slices, downsample(image, n), report);
+                       const Image picture = resolve_samples(std::move(image), n, &report);
+                       done(level, slices, picture, report);
                      });
 }
 

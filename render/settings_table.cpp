@@ -8,6 +8,7 @@
 
 #include "base/error.hpp"
 #include "base/name_table.hpp"
+#include "base/whole_number.hpp"
 #include "render/names.hpp"
 
 namespace cellproj {
@@ -17,20 +18,9 @@ namespace {
 
 template <class T>
 T number_of(const std::string& text) {
-  std::size_t used = 0;
-  T value{};
-  try {
-    if constexpr (std::is_same_v<T, int>)
-      value = std::stoi(text, &used);
-    else
-      value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (text.empty() || used != text.size())
-    throw InputError(std::string("expected ") + (std::is_same_v<T, int> ? "an integer" : "a number") + ", got '" +
-                     text + "'");
-  return value;
+  if (const std::optional<T> v = whole_number<T>(text)) return *v;
+  throw InputError(std::string("expected ") + (std::is_same_v<T, int> ? "an integer" : "a number") + ", got '" + text +
+                   "'");
 }
 
 template <class T>

@@ -37,7 +37,7 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
   const ImageSize drawn = supersampled_size(size, settings.ssaa);
   Image image = render_volume_union(parts, settings.iso.mode, settings.iso.opacity, camera, drawn.width, drawn.height,
                                     &st, progress);
-  if (settings.ssaa > 1) image = downsample(image, settings.ssaa);
+
   if (report) {
     report->seconds = st.seconds;
     report->phase_seconds = {{"trace, merge and integrate the volumes", st.seconds}};
@@ -48,13 +48,13 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
     report->add("iso_opacity", settings.iso.opacity);
     report->add_counters(st);
     report->add("overlap_pieces", st.overlap_pieces);
-    if (settings.ssaa > 1) report->add("ssaa", std::int64_t{settings.ssaa});
+
     if (settings.iso.opacity == IsoOpacity::spectrum_fit) {
       report->add("spectrum_fit_max_error", st.fit_max_error);
       report->add("spectrum_fit_exponents", st.fit_exponents);
     }
   }
-  return image;
+  return resolve_samples(std::move(image), settings.ssaa, report);
 }
 
 std::uint64_t estimate_volumes_bytes(const std::vector<VolumeSize>& volumes, ImageSize size, int ssaa) {

@@ -8,12 +8,6 @@
 #include "base/error.hpp"
 
 namespace cellproj {
-namespace {
-
-constexpr double kPi = 3.14159265358979323846;
-
-}  // namespace
-
 glm::dvec3 vec3(const nlohmann::json& j, const std::string& at) {
   if (!j.is_array() || j.size() != 3 || !j[0].is_number() || !j[1].is_number() || !j[2].is_number())
     throw InputError(at + ": expected [x, y, z], got " + j.dump());

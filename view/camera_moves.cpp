@@ -5,6 +5,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
+#include "base/whole_number.hpp"
 
 namespace cellproj {
 namespace {
@@ -19,16 +20,9 @@ glm::dvec3 turned(const glm::dvec3& v, const glm::dvec3& k, double radians) {
 }
 
 double number(const std::string& text, const char* what) {
-  std::size_t used = 0;
-  double v = 0.0;
-  try {
-    v = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (text.empty() || used != text.size() || !std::isfinite(v))
-    throw InputError(std::string("expected ") + what + ", got '" + text + "'");
-  return v;
+  const std::optional<double> v = whole_number<double>(text);
+  if (!v || !std::isfinite(*v)) throw InputError(std::string("expected ") + what + ", got '" + text + "'");
+  return *v;
 }
 double positive(const std::string& text) {
   const double v = number(text, "a positive factor");

@@ -50,18 +50,34 @@ DisplayImage to_display(const Image& img, const std::optional<glm::dvec3>& bg) {
 
 namespace {
 
-// libpng's writer or reader on `path`, with its errors as InputErrors naming the file.
+// libpng's writer or reader on `path`, opened, with its errors as InputErrors naming the file.
+// (The caller sets libpng's error return, setjmp, in its own frame.)
 struct PngFile {
-  std::unique_ptr<FILE, int (*)(FILE*)> file{nullptr, &std::fclose};
-  png_structp png = nullptr;
-  png_infop info = nullptr;
-  bool writing = true;
-  ~PngFile() {
+  PngFile(const std::string& path, bool write) : writing(write) {
+    file.reset(std::fopen(path.c_str(), write ? "wb" : "rb"));
+    if (!file) throw InputError(where(path, write ? "cannot open for writing" : "cannot open"));
+    png = write ? png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr)
+                : png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    info = png ? png_create_info_struct(png) : nullptr;
+    if (!info) {
+      release();  // no destructor runs for a constructor that throws
+      throw InputError(where(path, "libpng could not start"));
+    }
+    png_init_io(png, file.get());
+  }
+  ~PngFile() { release(); }
+  void release() {
     if (writing)
       png_destroy_write_struct(&png, &info);
     else
       png_destroy_read_struct(&png, &info, nullptr);
   }
+  PngFile(const PngFile&) = delete;
+  PngFile& operator=(const PngFile&) = delete;
+  std::unique_ptr<FILE, int (*)(FILE*)> file{nullptr, &std::fclose};
+  png_structp png = nullptr;
+  png_infop info = nullptr;
+  bool writing;
 };
 
 }  // namespace
@@ -73,14 +89,8 @@ void write_png(const DisplayImage& img, int bits, const std::string& path) {
   for (std::size_t a = 3; a < img.rgba.size() && opaque; a += 4) opaque = img.rgba[a] == 1.0f;
   const int channels = opaque ? 3 : 4, bytes = bits / 8, max = (1 << bits) - 1;
   std::vector<unsigned char> row(static_cast<std::size_t>(img.width) * channels * bytes);
-  PngFile f;
-  f.file.reset(std::fopen(path.c_str(), "wb"));
-  if (!f.file) throw InputError(where(path, "cannot open for writing"));
-  f.png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  f.info = f.png ? png_create_info_struct(f.png) : nullptr;
-  if (!f.info) throw InputError(where(path, "libpng could not start"));
+  PngFile f(path, true);
   if (setjmp(png_jmpbuf(f.png))) throw InputError(where(path, "libpng failed while writing"));
-  png_init_io(f.png, f.file.get());
   png_set_IHDR(f.png, f.info, img.width, img.height, bits, opaque ? PNG_COLOR_TYPE_RGB : PNG_COLOR_TYPE_RGBA,
                PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
   png_write_info(f.png, f.info);
@@ -100,15 +110,8 @@ void write_png(const DisplayImage& img, int bits, const std::string& path) {
 }
 
 DisplayImage read_png(const std::string& path, int* bits) {
-  PngFile f;
-  f.writing = false;
-  f.file.reset(std::fopen(path.c_str(), "rb"));
-  if (!f.file) throw InputError(where(path, "cannot open"));
-  f.png = png_create_read_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
-  f.info = f.png ? png_create_info_struct(f.png) : nullptr;
-  if (!f.info) throw InputError(where(path, "libpng could not start"));
+  PngFile f(path, false);
   if (setjmp(png_jmpbuf(f.png))) throw InputError(where(path, "not a PNG libpng can read"));
-  png_init_io(f.png, f.file.get());
   png_read_info(f.png, f.info);
   png_set_expand(f.png);  // palettes and low-bit gray to 8 bits, tRNS to alpha
   png_set_gray_to_rgb(f.png);
