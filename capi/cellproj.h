@@ -46,6 +46,11 @@ cp_status cp_mesh_read(const char* path, cp_mesh** mesh);
 /* A point field: one finite value per point, not copied (must outlive its renders). A field of the
  * same name is replaced; a read mesh's fields are there already. */
 cp_status cp_mesh_set_field(cp_mesh* mesh, const char* name, const double* values, int64_t n_values);
+/* A vector or tensor field: n_components (1 to 9) finite values per point, interleaved (x y z x y
+ * z ...), not copied. cp_render picks a scalar of it by name: "V:x", "V_X", "V:magnitude", "V:2",
+ * "S:von_mises" for a 6- or 9-component tensor, or "V" alone for its magnitude. */
+cp_status cp_mesh_set_vector_field(cp_mesh* mesh, const char* name, const double* values, int64_t n_points,
+                                   int n_components);
 int64_t cp_mesh_cells(const cp_mesh* mesh);
 void cp_mesh_release(cp_mesh* mesh);
 
@@ -78,7 +83,8 @@ cp_status cp_renderer_set(cp_renderer* renderer, const char* option, const char*
 cp_status cp_renderer_set_threads(cp_renderer* renderer, int threads);
 void cp_renderer_release(cp_renderer* renderer);
 
-/* One picture of `field` ("" or NULL: the mesh's only field). */
+/* One picture of `field` ("" or NULL: the mesh's only field; a vector's component as
+ * cp_mesh_set_vector_field says). */
 cp_status cp_render(const cp_renderer* renderer, const cp_mesh* mesh, const char* field, const cp_transfer_function* tf,
                     const cp_camera* camera, int width, int height, cp_image** image);
 

@@ -13,6 +13,7 @@
 
 #include "base/error.hpp"
 #include "optics/colormaps.hpp"
+#include "render/field_set.hpp"
 #include "render/renderer.hpp"
 #include "render/settings_table.hpp"
 #include "scene/prepare.hpp"
@@ -22,9 +23,9 @@
 using namespace cellproj;
 
 struct cp_mesh {
-  std::shared_ptr<const Mesh> read;                                      // a reader's mesh, or null
-  std::optional<Volume> volume;                                          // committed once
-  std::map<std::string, std::pair<const double*, std::int64_t>> fields;  // name -> the caller's values
+  std::shared_ptr<const Mesh> read;  // a reader's mesh, or null
+  std::optional<Volume> volume;      // committed once
+  FieldSet fields;                   // the caller's values (or the read mesh's), by name
 };
 struct cp_transfer_function {
   TransferFunction tf;
@@ -114,8 +115,7 @@ cp_status cp_mesh_read(const char* path, cp_mesh** mesh) {
     auto m = std::make_unique<cp_mesh>();
     m->read = std::make_shared<const Mesh>(load_mesh(path).mesh);
     m->volume.emplace(m->read->view(), VolumeOptions{/*trusted: load_mesh validated it*/ true});
-    for (const PointField& f : m->read->fields)
-      m->fields[f.name] = {f.values.data(), static_cast<std::int64_t>(f.values.size())};
+    m->fields.add(*m->volume, *m->read);
     *mesh = m.release();
   });
 }
@@ -124,9 +124,19 @@ cp_status cp_mesh_set_field(cp_mesh* mesh, const char* name, const double* value
   CP_NEED("cp_mesh_set_field", mesh);
   CP_NEED("cp_mesh_set_field", name);
   CP_NEED("cp_mesh_set_field", values);
+  return guarded([&] { mesh->fields.set(*mesh->volume, name, values, n_values); });
+}
+
+cp_status cp_mesh_set_vector_field(cp_mesh* mesh, const char* name, const double* values, int64_t n_points,
+                                   int n_components) {
+  CP_NEED("cp_mesh_set_vector_field", mesh);
+  CP_NEED("cp_mesh_set_vector_field", name);
+  CP_NEED("cp_mesh_set_vector_field", values);
   return guarded([&] {
-    mesh->volume->check({values, n_values, name});
-    mesh->fields[name] = {values, n_values};
+    if (n_components < 1 || n_components > 9)
+      throw InputError(std::string("cp_mesh_set_vector_field: field '") + name +
+                       "': n_components must be 1 to 9, got " + std::to_string(n_components));
+    mesh->fields.set(*mesh->volume, name, values, n_points * n_components, n_components);
   });
 }
 
@@ -256,21 +266,12 @@ cp_status cp_render(const cp_renderer* renderer, const cp_mesh* mesh, const char
     if (width < 1 || height < 1 || width > 16384 || height > 16384)
       throw InputError("cp_render: image size must be 1 to 16384 pixels a side, got " + std::to_string(width) + "x" +
                        std::to_string(height));
-    const std::string name = field ? field : "";
-    std::string list;
-    const std::pair<const double*, std::int64_t>* values = nullptr;
-    for (const auto& [n, v] : mesh->fields) {
-      if (n == name || (name.empty() && mesh->fields.size() == 1)) values = &v;
-      list += (list.empty() ? "" : ", ") + n;
-    }
-    if (!values)
-      throw InputError(mesh->fields.empty() ? "cp_render: the mesh has no fields (cp_mesh_set_field)"
-                       : name.empty()       ? "cp_render: give the field, the mesh has several: " + list
-                                            : "cp_render: no field '" + name + "' (the fields are: " + list + ")");
+    if (mesh->fields.empty()) throw InputError("cp_render: the mesh has no fields (cp_mesh_set_field)");
+    const Field values = mesh->fields.scalar(field ? field : "", "cp_render");
     const std::unique_ptr<Renderer> r = make_renderer(settings_from(renderer->options));
     tbb::task_arena arena(renderer->threads > 0 ? renderer->threads : tbb::info::default_concurrency());
     Image img = arena.execute([&] {
-      return r->render(*mesh->volume, {values->first, values->second, name}, tf->tf, camera->camera, {width, height});
+      return r->render(*mesh->volume, values, tf->tf, camera->camera, {width, height});
     });
     *image = new cp_image{std::move(img)};
   });

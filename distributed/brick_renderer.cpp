@@ -7,6 +7,7 @@
 #include "composite/fragment.hpp"
 #include "composite/partial_image.hpp"
 #include "distributed/binary_swap.hpp"
+#include "mesh/field_choice.hpp"
 #include "partition/brick_order.hpp"
 
 namespace cellproj {
@@ -70,7 +71,7 @@ void BrickRenderer::load(const std::function<Mesh(int brick)>& make) {
     for (int b : bricks_under(tree_, subtree_)) {
       Mesh mesh = make(b);
       if (mesh.n_cells() == 0) continue;
-      field_of(mesh, field_);  // present, or an error naming the brick's file and the fields it has
+      select_field(mesh, field_);  // made from a vector if need be, or an error naming the brick's file and its fields
       auto brick = std::make_unique<Brick>();
       brick->mesh = std::move(mesh);
       brick->volume = std::make_unique<Volume>(brick->mesh.view(), VolumeOptions{true});

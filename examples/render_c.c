@@ -71,7 +71,7 @@ int main(int argc, char** argv) {
   if (cp_mesh_set_field(mesh, "short", temperature, 7) != CP_ERROR_INPUT)
     ++failures, fprintf(stderr, "render_c: a short field was taken\n");
   if (cp_render(projection, mesh, "pressure", tf, camera, 8, 8, &image) != CP_ERROR_INPUT ||
-      !strstr(cp_last_error(), "no field 'pressure'"))
+      !strstr(cp_last_error(), "no point field named 'pressure'"))
     ++failures, fprintf(stderr, "render_c: a missing field gave '%s'\n", cp_last_error());
   if (cp_render(projection, NULL, NULL, tf, camera, 8, 8, &image) != CP_ERROR_NULL)
     ++failures, fprintf(stderr, "render_c: a NULL mesh was not refused\n");

@@ -147,6 +147,7 @@ void write_mesh(PipeWriter& out, const Mesh& m) {
   for (const PointField& f : m.fields) {
     out.text(f.name);
     out.text(f.origin);
+    out.value<std::int32_t>(f.components);
     out.array(f.values);
   }
   out.value<std::uint64_t>(m.notes.size());
@@ -165,6 +166,7 @@ Mesh read_mesh_from(PipeReader& in) {
     PointField f;
     f.name = in.text();
     f.origin = in.text();
+    f.components = in.value<std::int32_t>();
     f.values = in.array<double>();
     m.fields.push_back(std::move(f));
   }

@@ -195,13 +195,9 @@ bool internal_array(const char* name) {
          n == "GlobalElementId" || n == "PedigreeElementId" || n == "ObjectId";
 }
 
-// Scalar value of tuple i: the value itself, or the magnitude of a multi-component array.
-double tuple_value(vtkDataArray* a, vtkIdType i) {
-  const int nc = a->GetNumberOfComponents();
-  if (nc == 1) return a->GetComponent(i, 0);
-  double s = 0;
-  for (int k = 0; k < nc; ++k) s += a->GetComponent(i, k) * a->GetComponent(i, k);
-  return std::sqrt(s);
+// Tuple i of `a` into out[0 .. components).
+void read_tuple(vtkDataArray* a, vtkIdType i, double* out) {
+  for (int k = 0; k < a->GetNumberOfComponents(); ++k) out[k] = a->GetComponent(i, k);
 }
 
 void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>& maps, Mesh& mesh) {
@@ -216,7 +212,6 @@ void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>
       vtkDataArray* a = vtkDataArray::SafeDownCast(fd->GetAbstractArray(i));
       if (!a || internal_array(a->GetName())) continue;
       std::string name = a->GetName();
-      if (a->GetNumberOfComponents() > 1) name += "_magnitude";
       if (cell && sources.count(name) && !sources[name].cell) name += "_cell";
       auto& s = sources[name];
       s.cell = cell;
@@ -234,15 +229,17 @@ void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>
       mesh.notes.push_back("field '" + name + "' dropped: not present in every block");
       continue;
     }
+    const int nc = s.per_leaf[0]->GetNumberOfComponents();
+    if (std::any_of(s.per_leaf.begin(), s.per_leaf.end(),
+                    [nc](vtkDataArray* a) { return a->GetNumberOfComponents() != nc; })) {
+      mesh.notes.push_back("field '" + name + "' dropped: its number of components differs between blocks");
+      continue;
+    }
     if (!s.cell) {
-      PointField& f =
-          mesh.add_field(name, s.per_leaf[0]->GetNumberOfComponents() > 1
-                                   ? "point data, magnitude of " +
-                                         std::to_string(s.per_leaf[0]->GetNumberOfComponents()) + " components"
-                                   : "point data");
+      PointField& f = mesh.add_field(name, "point data", nc);
       for (std::size_t b = 0; b < leaves.size(); ++b)
         for (std::size_t p = 0; p < maps[b].point.size(); ++p)
-          f.values[maps[b].point[p]] = tuple_value(s.per_leaf[b], static_cast<vtkIdType>(p));
+          read_tuple(s.per_leaf[b], static_cast<vtkIdType>(p), &f.values[maps[b].point[p] * nc]);
       continue;
     }
     if (volume.empty()) {  // cell volumes for the averaging weights
@@ -253,24 +250,27 @@ void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>
           volume[c] = std::abs(cell_signed_volume(view, c));
     }
     // Cell data to point data: each point takes the volume-weighted mean of the cells around it.
-    std::vector<double> sum(static_cast<std::size_t>(mesh.n_points()), 0.0), weight(sum), plain(sum), count(sum);
+    const std::size_t n = static_cast<std::size_t>(mesh.n_points());
+    std::vector<double> sum(n * nc, 0.0), plain(n * nc, 0.0), weight(n, 0.0), count(n, 0.0), v(nc);
     for (std::size_t b = 0; b < leaves.size(); ++b)
       for (std::size_t lc = 0; lc < maps[b].cell.size(); ++lc) {
         const std::int64_t c = maps[b].cell[lc];
         if (c < 0) continue;
-        const double v = tuple_value(s.per_leaf[b], static_cast<vtkIdType>(lc));
+        read_tuple(s.per_leaf[b], static_cast<vtkIdType>(lc), v.data());
         for (std::int64_t k = mesh.offsets[c]; k < mesh.offsets[c + 1]; ++k) {
           const std::int64_t p = mesh.connectivity[k];
           if (p < 0 || p >= mesh.n_points()) continue;  // validation reports it
-          sum[p] += volume[c] * v;
+          for (int i = 0; i < nc; ++i) sum[p * nc + i] += volume[c] * v[i], plain[p * nc + i] += v[i];
           weight[p] += volume[c];
-          plain[p] += v;
           count[p] += 1;
         }
       }
-    PointField& f = mesh.add_field(name, "cell data '" + s.array + "', volume-weighted average at points");
+    PointField& f = mesh.add_field(name, "cell data '" + s.array + "', volume-weighted average at points", nc);
     for (std::int64_t p = 0; p < mesh.n_points(); ++p)
-      f.values[p] = weight[p] > 0 ? sum[p] / weight[p] : count[p] > 0 ? plain[p] / count[p] : 0.0;
+      for (int i = 0; i < nc; ++i)
+        f.values[p * nc + i] = weight[p] > 0  ? sum[p * nc + i] / weight[p]
+                               : count[p] > 0 ? plain[p * nc + i] / count[p]
+                                              : 0.0;
     mesh.notes.push_back("cell field '" + s.array + "' converted to point field '" + name +
                          "' by volume-weighted averaging");
   }

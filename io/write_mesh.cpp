@@ -46,6 +46,7 @@ vtkSmartPointer<vtkUnstructuredGrid> to_vtk(const Mesh& mesh) {
   for (const auto& f : mesh.fields) {
     auto a = vtkSmartPointer<vtkDoubleArray>::New();
     a->SetName(f.name.c_str());
+    a->SetNumberOfComponents(f.components);
     a->SetNumberOfValues(static_cast<vtkIdType>(f.values.size()));
     for (std::size_t i = 0; i < f.values.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), f.values[i]);
     grid->GetPointData()->AddArray(a);
@@ -60,6 +61,15 @@ void check_writable(const std::string& path) {
   if (path_is_folder(path)) throw InputError(where(path, "is a folder, not a file to write"));
   std::ofstream probe(path, std::ios::binary | std::ios::app);
   if (!probe) throw InputError(where(path, "cannot be written (" + std::string(std::strerror(errno)) + ")"));
+}
+
+// The scalar field `name` of `mesh`, for a format with one value per point.
+const PointField& scalar_field(const Mesh& mesh, const std::string& name, const std::string& path) {
+  const PointField& f = mesh.field(name);
+  if (!f.scalar())
+    throw InputError(where(path, "this format holds one value per point; field '" + name + "' has " +
+                                     std::to_string(f.components) + " components (write a .vtu)"));
+  return f;
 }
 
 template <class Writer>
@@ -92,7 +102,7 @@ void write_exodus(const Mesh& mesh, const std::string& path) {
 }
 
 void write_tetgen(const Mesh& mesh, const std::string& field, const std::string& path) {
-  const PointField& f = mesh.field(field);
+  const PointField& f = scalar_field(mesh, field, path);
   const fs::path base = fs::path(path).replace_extension();
   check_writable(base.string() + ".node");
   std::ofstream node(base.string() + ".node"), ele(base.string() + ".ele");
@@ -126,7 +136,7 @@ void write_mesh(const Mesh& mesh, const std::string& path, bool binary) {
 }
 
 void write_off(const Mesh& mesh, const std::string& field, const std::string& path) {
-  const PointField& f = mesh.field(field);
+  const PointField& f = scalar_field(mesh, field, path);
   check_writable(path);
   std::ofstream out(path);
   out.precision(17);

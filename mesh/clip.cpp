@@ -67,7 +67,11 @@ class PlaneClipper {
     if (const auto it = edge_point_.find(key); it != edge_point_.end()) return it->second;
     const double t = distance_[a] / (distance_[a] - distance_[b]);  // in [0, 1): d(a) < 0 < d(b)
     const std::int64_t p = out_.add_point(view_.point(a) + t * (view_.point(b) - view_.point(a)));
-    for (PointField& f : out_.fields) f.values.push_back(f.values[a] + t * (f.values[b] - f.values[a]));
+    for (PointField& f : out_.fields)
+      for (int k = 0; k < f.components; ++k) {
+        const double va = f.values[a * f.components + k], vb = f.values[b * f.components + k];
+        f.values.push_back(va + t * (vb - va));
+      }
     if (sources_) {  // (1 - t) a + t b, over the original points
       auto mix = (*sources_)[a];
       for (auto& [q, w] : mix) w *= 1.0 - t;
@@ -138,16 +142,14 @@ Mesh compact(Mesh m, const Sources* sources, ClipWeights* weights) {
   Mesh out;
   out.source = m.source;
   out.notes = m.notes;
-  out.points.reserve(static_cast<std::size_t>(3 * next));
+  std::vector<std::int64_t> used;  // the points kept, in order
+  used.reserve(static_cast<std::size_t>(next));
   for (std::int64_t p = 0; p < m.n_points(); ++p)
-    if (index[p] >= 0) out.points.insert(out.points.end(), m.points.begin() + 3 * p, m.points.begin() + 3 * p + 3);
-  for (const PointField& f : m.fields) {
-    PointField g{f.name, {}, f.origin};
-    g.values.reserve(static_cast<std::size_t>(next));
-    for (std::int64_t p = 0; p < m.n_points(); ++p)
-      if (index[p] >= 0) g.values.push_back(f.values[p]);
-    out.fields.push_back(std::move(g));
-  }
+    if (index[p] >= 0) used.push_back(p);
+  out.points.reserve(static_cast<std::size_t>(3 * next));
+  for (std::int64_t p : used)
+    out.points.insert(out.points.end(), m.points.begin() + 3 * p, m.points.begin() + 3 * p + 3);
+  for (const PointField& f : m.fields) out.fields.push_back(gather(f, used));
   if (sources && weights) {
     *weights = ClipWeights{};
     for (std::int64_t p = 0; p < m.n_points(); ++p)

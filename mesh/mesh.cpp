@@ -5,6 +5,7 @@
 #include <tuple>
 
 #include "base/error.hpp"
+#include "mesh/field_choice.hpp"
 
 namespace cellproj {
 
@@ -28,15 +29,21 @@ const PointField* Mesh::find_field(const std::string& name) const {
 
 const PointField& Mesh::field(const std::string& name) const {
   if (const auto* f = find_field(name)) return *f;
-  std::string known;
-  for (const auto& f : fields) known += (known.empty() ? "" : ", ") + f.name;
   throw InputError(
-      where(source, "no point field named '" + name + "'; the fields are: " + (known.empty() ? "(none)" : known)));
+      where(source, "no point field named '" + name + "'; the fields are: " + field_list(field_shapes(*this))));
 }
 
-PointField& Mesh::add_field(std::string name, std::string origin) {
-  fields.push_back({std::move(name), std::vector<double>(static_cast<std::size_t>(n_points())), std::move(origin)});
+PointField& Mesh::add_field(std::string name, std::string origin, int components) {
+  fields.push_back({std::move(name), std::vector<double>(static_cast<std::size_t>(n_points() * components)),
+                    std::move(origin), components});
   return fields.back();
+}
+
+PointField gather(const PointField& f, const std::vector<std::int64_t>& points) {
+  PointField g{f.name, {}, f.origin, f.components};
+  g.values.reserve(points.size() * static_cast<std::size_t>(f.components));
+  for (std::int64_t p : points) g.append_tuple(f, p);
+  return g;
 }
 
 MeshView Mesh::view() const {
@@ -69,12 +76,13 @@ std::int64_t merge_coincident_points(Mesh& mesh) {
     if (keep_as[p] != p) continue;
     new_id[p] = kept;
     for (int k = 0; k < 3; ++k) mesh.points[3 * kept + k] = mesh.points[3 * p + k];
-    for (auto& f : mesh.fields) f.values[kept] = f.values[p];
+    for (auto& f : mesh.fields)
+      std::copy_n(f.values.begin() + p * f.components, f.components, f.values.begin() + kept * f.components);
     ++kept;
   }
   if (kept == n) return 0;
   mesh.points.resize(static_cast<std::size_t>(3 * kept));
-  for (auto& f : mesh.fields) f.values.resize(static_cast<std::size_t>(kept));
+  for (auto& f : mesh.fields) f.values.resize(static_cast<std::size_t>(kept * f.components));
   for (auto& id : mesh.connectivity) id = new_id[keep_as[id]];
   return n - kept;
 }

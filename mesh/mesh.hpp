@@ -1,7 +1,9 @@
 #pragma once
 // The mesh model: points, cells in flat arrays (connectivity, offsets, VTK type codes) and named
 // point fields. `MeshView` is the non-owning form every algorithm takes, so a solver can hand over
-// its own arrays without copying; `Mesh` owns its arrays (what the readers make).
+// its own arrays without copying; `Mesh` owns its arrays (what the readers make). A field holds one
+// value per point or a vector or tensor of `components` values per point; mesh/field_choice.hpp
+// picks the scalar a picture shows (a component, the magnitude, the von Mises stress).
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -63,9 +65,20 @@ struct MeshView {
 
 struct PointField {
   std::string name;
-  std::vector<double> values;  // one per point
+  std::vector<double> values;  // `components` per point, interleaved (x y z x y z ... for a vector)
   std::string origin;          // how it was made: "point data", "cell data, volume-weighted", ...
+  int components = 1;
+
+  bool scalar() const { return components == 1; }
+  const double* tuple(std::int64_t p) const { return values.data() + p * components; }
+  // Appends point p's tuple of `from` (a field with as many components).
+  void append_tuple(const PointField& from, std::int64_t p) {
+    values.insert(values.end(), from.tuple(p), from.tuple(p) + components);
+  }
 };
+
+// `f` with only the tuples of `points`, in that order (a sub-mesh's field).
+PointField gather(const PointField& f, const std::vector<std::int64_t>& points);
 
 class Mesh {
  public:
@@ -86,7 +99,7 @@ class Mesh {
   const PointField* find_field(const std::string& name) const;
   // The field, or an InputError that names the mesh and lists the fields that do exist.
   const PointField& field(const std::string& name) const;
-  PointField& add_field(std::string name, std::string origin);
+  PointField& add_field(std::string name, std::string origin, int components = 1);  // zeros
 
   MeshView view() const;
 };

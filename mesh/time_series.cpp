@@ -6,6 +6,7 @@
 
 #include "base/error.hpp"
 #include "base/timing.hpp"
+#include "mesh/field_choice.hpp"
 
 namespace cellproj {
 
@@ -45,13 +46,7 @@ const SeriesPlayer::Held& SeriesPlayer::hold(std::size_t index, std::size_t keep
   const std::string what =
       "key frame " + std::to_string(index) + " (time " + std::to_string(kf.time) + ") of " + series_.source;
   if (reads_ == 0) {
-    if (field_.empty()) {
-      if (m.fields.size() != 1)
-        throw InputError(
-            where(kf.path, "has " + std::to_string(m.fields.size()) +
-                               " point fields; name the one to play (setting 'field' or the scene's field)"));
-      field_ = m.fields.front().name;
-    }
+    field_ = choose_field(m, field_).name;  // the scalar every key frame gives (a vector's component, ...)
     first_report_ = loaded.report;
     cells_.source = series_.source;
     cells_.connectivity = std::move(m.connectivity);
@@ -72,9 +67,7 @@ const SeriesPlayer::Held& SeriesPlayer::hold(std::size_t index, std::size_t keep
     slot.points = std::make_shared<const std::vector<double>>(std::move(m.points));
     points_move_ = true;
   }
-  const PointField* f = m.find_field(field_);
-  if (!f) m.field(field_);  // throws, listing the fields
-  slot.field = std::move(m.find_field(field_)->values);
+  slot.field = std::move(select_field(m, field_).values);
   ++reads_;
   read_seconds_ += seconds_since(start);
   return slot;

@@ -196,12 +196,7 @@ Mesh extract_brick(const Mesh& mesh, const KdTree& tree, int brick, const std::v
     }
   sub.points.reserve(old_id.size() * 3);
   for (std::int64_t p : old_id) sub.points.insert(sub.points.end(), &mesh.points[3 * p], &mesh.points[3 * p] + 3);
-  for (const PointField& f : mesh.fields) {
-    PointField g{f.name, {}, f.origin};
-    g.values.reserve(old_id.size());
-    for (std::int64_t p : old_id) g.values.push_back(f.values[p]);
-    sub.fields.push_back(std::move(g));
-  }
+  for (const PointField& f : mesh.fields) sub.fields.push_back(gather(f, old_id));
   std::int64_t ids[8];  // the most points a cell type has (a hexahedron)
   for (std::int64_t c : cells) {
     for (int k = 0; k < view.cell_size(c); ++k) ids[k] = new_id[view.cell(c)[k]];

@@ -1,5 +1,7 @@
 #include "partition/partition_index.hpp"
 
+#include "mesh/field_choice.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -183,9 +185,10 @@ PartitionIndex partition_mesh(const Mesh& mesh, int bricks, const std::string& d
   index.cost_model = cost_model;
   const std::vector<double> costs = cell_costs(view, image_side, cost_model == "cells");
   index.tree = build_kd_tree(view, costs, bricks);
-  for (const PointField& f : mesh.fields) {
-    const auto [lo, hi] = std::minmax_element(f.values.begin(), f.values.end());
-    index.fields.push_back({f.name, f.values.empty() ? 0.0 : *lo, f.values.empty() ? 0.0 : *hi});
+  for (const PointField& f : mesh.fields) {  // a vector's range is its magnitude's
+    const std::vector<double> v = scalar_values(f, f.scalar() ? FieldChoice::kWhole : FieldChoice::kMagnitude);
+    const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
+    index.fields.push_back({f.name, v.empty() ? 0.0 : *lo, v.empty() ? 0.0 : *hi});
   }
   std::vector<std::vector<std::int64_t>> cells = cells_of_bricks(view, index.tree);
   PartitionReport total;

@@ -182,7 +182,15 @@ PYBIND11_MODULE(_cellproj, m) {
            "codes; scalars: one array (N,) or a dict name -> array")
       .def_property_readonly("n_points", [](const NumpyMesh& s) { return s.view().n_points; })
       .def_property_readonly("n_cells", [](const NumpyMesh& s) { return s.view().n_cells; })
-      .def_property_readonly("fields", &NumpyMesh::field_names)
+      .def_property_readonly(
+          "fields",
+          [](const NumpyMesh& s) {
+            py::dict d;
+            for (const FieldShape& f : s.field_shapes()) d[py::str(f.name)] = f.components;
+            return d;
+          },
+          "The fields, name -> components per point (1 for a scalar); field='V:x', 'V_X', 'V:magnitude' or "
+          "'S:von_mises' picks a scalar of a vector or tensor, 'V' alone its magnitude")
       .def_property_readonly("copies", &NumpyMesh::copies, "What was copied of the caller's arrays, and why")
       .def_property_readonly("bounds",
                              [](const NumpyMesh& s) {
@@ -195,7 +203,9 @@ PYBIND11_MODULE(_cellproj, m) {
           [](py::object self, const std::string& name) {
             return self.cast<const NumpyMesh&>().field_array(name, self);
           },
-          py::arg("name") = "", "A field's values, read-only, without a copy")
+          py::arg("name") = "",
+          "A field's values, read-only, without a copy: (N,) or (N, k) as stored, or the (N,) scalar a choice "
+          "such as 'V:x' makes")
       .def("add_field", &NumpyMesh::add_field, py::arg("name"), py::arg("values"))
       .def("__repr__", [](const NumpyMesh& s) {
         return "<cellproj.Mesh " + s.view().source + ": " + std::to_string(s.view().n_cells) + " cells, " +

@@ -105,42 +105,31 @@ NumpyMesh::NumpyMesh(py::array points, py::array connectivity, py::array offsets
 
 NumpyMesh::NumpyMesh(std::shared_ptr<const Mesh> read) : read_(std::move(read)) {
   volume_ = std::make_unique<Volume>(read_->view(), VolumeOptions{/*trusted: load_mesh validated it*/ true});
-  for (const PointField& f : read_->fields)
-    fields_.push_back({f.name, {}, f.values.data(), static_cast<std::int64_t>(f.values.size())});
+  fields_.add(*volume_, *read_);
 }
 
 void NumpyMesh::add_field(const std::string& name, py::array values) {
-  if (!values) throw InputError("field '" + name + "': expected an array of one value per point");
-  need_1d(values, ("field '" + name + "'").c_str());
-  py::array_t<double> v = as<double>(values, ("field '" + name + "'").c_str(), conversions_);
-  const Field f{v.data(), static_cast<std::int64_t>(v.size()), name};
-  volume_->check(f);  // one finite value per point
-  fields_.erase(std::remove_if(fields_.begin(), fields_.end(), [&](const NamedField& x) { return x.name == name; }),
-                fields_.end());
-  fields_.push_back({name, v, v.data(), f.size});
+  const std::string what = "field '" + name + "'";
+  if (!values) throw InputError(what + ": expected an array of one value per point");
+  if (values.ndim() != 1 && values.ndim() != 2)
+    throw InputError(what + ": expected shape (N,) or (N, k) for k components, got " + std::to_string(values.ndim()) +
+                     " dimensions");
+  const int components = values.ndim() == 2 ? static_cast<int>(values.shape(1)) : 1;
+  if (components < 1 || components > 9)
+    throw InputError(what + ": expected 1 to 9 components per point, got " + std::to_string(values.shape(1)));
+  py::array v = as<double>(values, what.c_str(), conversions_);
+  fields_.set(*volume_, name, static_cast<const double*>(v.data()), static_cast<std::int64_t>(v.size()), components);
+  arrays_[name] = v;
 }
 
-std::vector<std::string> NumpyMesh::field_names() const {
-  std::vector<std::string> names;
-  for (const auto& f : fields_) names.push_back(f.name);
-  return names;
-}
-
-Field NumpyMesh::field(const std::string& name) const {
-  std::string list;
-  for (const auto& f : fields_) {
-    if (f.name == name || (name.empty() && fields_.size() == 1)) return {f.data, f.size, f.name};
-    list += (list.empty() ? "" : ", ") + f.name;
-  }
-  const std::string& source = view().source;
-  if (fields_.empty()) throw InputError(where(source, "the mesh has no point fields (give scalars=)"));
-  if (name.empty()) throw InputError(where(source, "give field=: the mesh has several: " + list));
-  throw InputError(where(source, "no point field '" + name + "' (the fields are: " + list + ")"));
-}
-
-py::array NumpyMesh::field_array(const std::string& name, py::handle owner) const {
-  const Field f = field(name);
-  py::array a(py::dtype::of<double>(), {f.size}, {sizeof(double)}, f.values, owner);
+py::array NumpyMesh::field_array(const std::string& spec, py::handle owner) const {
+  const std::vector<FieldShape> shapes = fields_.shapes();
+  const auto stored = std::find_if(shapes.begin(), shapes.end(), [&](const FieldShape& f) { return f.name == spec; });
+  const int k = stored == shapes.end() ? 1 : stored->components;
+  const Field f = k == 1 ? field(spec) : fields_.stored(spec);
+  py::array a = k == 1 ? py::array(py::dtype::of<double>(), {f.size}, {sizeof(double)}, f.values, owner)
+                       : py::array(py::dtype::of<double>(), {f.size, py::ssize_t(k)},
+                                   {py::ssize_t(k * sizeof(double)), py::ssize_t(sizeof(double))}, f.values, owner);
   py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return a;
 }

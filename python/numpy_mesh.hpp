@@ -1,12 +1,14 @@
 #pragma once
 // A cellproj mesh behind the Python module: numpy arrays taken as they are where cellproj can read
 // them (kept alive here), or a mesh a reader made; committed once as a Volume.
+#include <map>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include <pybind11/numpy.h>
 
+#include "render/field_set.hpp"
 #include "render/volume.hpp"
 
 namespace cellproj::python {
@@ -24,22 +26,19 @@ class NumpyMesh {
 
   const Volume& volume() const { return *volume_; }
   const MeshView& view() const { return volume_->mesh(); }
-  std::vector<std::string> field_names() const;
-  Field field(const std::string& name) const;  // "" : the only one (InputError listing them otherwise)
-  py::array field_array(const std::string& name, py::handle owner) const;  // read-only, no copy
-  void add_field(const std::string& name, py::array values);
-  std::vector<std::string> copies() const;  // what the module and the volume copied
+  std::vector<FieldShape> field_shapes() const { return fields_.shapes(); }
+  // The scalar `spec` chooses (mesh/field_choice.hpp); "": the only field.
+  Field field(const std::string& spec) const { return fields_.scalar(spec, view().source); }
+  // Read-only, no copy: a field as it is stored ((N,) or (N, k)), or the scalar a spec chooses.
+  py::array field_array(const std::string& spec, py::handle owner) const;
+  void add_field(const std::string& name, py::array values);  // (N,) or (N, k)
+  std::vector<std::string> copies() const;                    // what the module and the volume copied
 
  private:
-  struct NamedField {
-    std::string name;
-    py::array_t<double> values;  // kept alive; empty for a read mesh's fields
-    const double* data;
-    std::int64_t size;
-  };
-  std::shared_ptr<const Mesh> read_;  // a reader's mesh, or null
-  std::vector<py::array> keep_;       // the arrays the volume reads
-  std::vector<NamedField> fields_;
+  std::shared_ptr<const Mesh> read_;         // a reader's mesh, or null
+  std::vector<py::array> keep_;              // the arrays the volume reads
+  std::map<std::string, py::array> arrays_;  // the caller's field arrays, kept alive
+  FieldSet fields_;
   std::vector<std::string> conversions_;
   std::unique_ptr<Volume> volume_;
 };

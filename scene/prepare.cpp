@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "base/error.hpp"
+#include "mesh/field_choice.hpp"
 #include "mesh/geometry.hpp"
 #include "mesh/validate.hpp"
 #include "scene/quick_scene.hpp"
@@ -30,15 +31,6 @@ ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
 }
 
 namespace {
-
-std::string pick_field(const Scene& s, const Mesh& m) {
-  if (!s.field.empty()) return m.field(s.field).name;  // throws, listing the fields
-  if (m.fields.size() == 1) return m.fields.front().name;
-  std::string list;
-  for (const auto& f : m.fields) list += (list.empty() ? "" : ", ") + f.name;
-  throw InputError(where(s.source, m.fields.empty() ? "the mesh " + s.mesh + " has no point fields to render"
-                                                    : "give \"field\": the mesh has several: " + list));
-}
 
 // What of the box [lo, hi] the camera sees, as a warning ("" when some of it is in view and none
 // of it behind an orthographic eye): a blank picture should not come without a word.
@@ -122,8 +114,9 @@ PreparedVolumes prepare_volumes(const Scene& s, const std::function<LoadedMesh(c
 PreparedScene prepare_scene(const Scene& s) { return prepare_scene(s, load_mesh(s.mesh, s.reader)); }
 
 PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {
-  const std::string field = pick_field(s, loaded.mesh);
-  const PointField& f = loaded.mesh.field(field);
+  std::string note;
+  const PointField& f = select_field(loaded.mesh, s.field, &note);
+  const std::string field = f.name;
   check_finite(s.mesh, f);
   const auto [lo, hi] = std::minmax_element(f.values.begin(), f.values.end());
   // A colour preset is stretched over the field's range unless the scene gives one.
@@ -134,6 +127,7 @@ PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {
   check_camera(base, where(s.source, "the camera framing " + s.mesh + "'s bounds"));
   p.camera = moved_camera(s, base), p.turn_axis = base.up;
   p.warnings = p.loaded.report.warnings(s.mesh);
+  if (!note.empty()) p.warnings.push_back(s.mesh + ": " + note);
   if (const std::string w = view_warning(p.camera, blo, bhi, s.width, s.height); !w.empty())
     p.warnings.push_back(where(s.source, w));
   for (const auto& n : p.loaded.mesh.notes) p.warnings.push_back(s.mesh + ": " + n);

@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
+#include "mesh/field_choice.hpp"
 #include "optics/colormaps.hpp"
 #include "scene/camera_json.hpp"
 #include "scene/prepare.hpp"
@@ -25,16 +26,6 @@ const NamedView kViews[] = {
     {"-y", {0, 1, 0}, {0, 0, 1}},  {"+z", {0, 0, -1}, {0, 1, 0}}, {"-z", {0, 0, 1}, {0, 1, 0}},
     {"iso", {1, 1, 1}, {0, 0, 1}},
 };
-
-std::string field_of(const LoadedMesh& loaded, const std::string& field) {
-  const Mesh& m = loaded.mesh;
-  if (!field.empty()) return m.field(field).name;  // throws, listing the fields
-  if (m.fields.size() == 1) return m.fields.front().name;
-  std::string list;
-  for (const auto& f : m.fields) list += (list.empty() ? "" : ", ") + f.name;
-  throw InputError(m.fields.empty() ? m.source + ": the mesh has no point fields to render"
-                                    : "setting 'field': " + m.source + " has several fields, give one of: " + list);
-}
 
 // [[s, kappa], ...] for look.opacity over [lo, hi], kappa such that kappa * diagonal is the depth.
 nlohmann::json extinction(const QuickLook& look, double lo, double hi, double diagonal) {
@@ -93,12 +84,12 @@ Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dve
   throw InputError("setting 'view': unknown view '" + view + "' (known: " + view_names() + ")");
 }
 
-nlohmann::json quick_scene(const LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
+nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
                            const QuickLook& look, const std::string& scene_dir) {
-  const std::string field = field_of(loaded, look.field);
-  const auto& values = loaded.mesh.field(field).values;
-  check_finite(mesh_path, loaded.mesh.field(field));
-  const auto [lo_it, hi_it] = std::minmax_element(values.begin(), values.end());
+  const FieldChoice choice = choose_field(loaded.mesh, look.field);
+  const PointField& f = select_field(loaded.mesh, choice.name);
+  check_finite(mesh_path, f);
+  const auto [lo_it, hi_it] = std::minmax_element(f.values.begin(), f.values.end());
   const double lo = *lo_it, hi = *hi_it;
   const auto [blo, bhi] = bounds(loaded.mesh);
   const Camera camera = view_camera(look.view, blo, bhi, double(look.width) / look.height);
@@ -108,8 +99,9 @@ nlohmann::json quick_scene(const LoadedMesh& loaded, const std::string& mesh_pat
     const std::string relative = fs::absolute(mesh_path).lexically_relative(fs::absolute(scene_dir)).string();
     if (!relative.empty() && relative.rfind("../..", 0) != 0) mesh = relative;
   }
+  // The field as the user spelt it (a vector alone, its magnitude, is said so when the scene is prepared).
   nlohmann::json scene = {{"mesh", mesh},
-                          {"field", field},
+                          {"field", look.field.empty() ? choice.field : look.field},
                           {"transfer_function", quick_transfer_function(look, lo, hi, glm::length(bhi - blo))},
                           {"camera", camera_to_json(camera)},
                           {"image", {{"width", look.width}, {"height", look.height}}}};

@@ -12,7 +12,7 @@
 namespace cellproj {
 
 struct QuickLook {
-  std::string field;                      // empty: the mesh's only field (InputError listing them otherwise)
+  std::string field;                      // as mesh/field_choice.hpp reads it; empty: the mesh's only field
   std::string colormap = "Cool to Warm";  // optics/colormaps.hpp
   // Extinction over the field's range: ramp (0 at the minimum, most at the maximum), reverse, flat,
   // or explicit points "S=K,S=K,..." (K the optical depth across the mesh's diagonal at S).
@@ -33,8 +33,8 @@ nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double 
 
 // The scene (as docs/scene.md) for `loaded`, read from `mesh_path` with `reader`, with the mesh's
 // path written relative to `scene_dir` (absolute when empty). InputError for a bad look, naming
-// the option.
-nlohmann::json quick_scene(const LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
+// the option. The field chosen from a vector or tensor is kept in the mesh (mesh/field_choice.hpp).
+nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
                            const QuickLook& look, const std::string& scene_dir = "");
 
 }  // namespace cellproj

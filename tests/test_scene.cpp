@@ -39,7 +39,8 @@ TEST(Scene, RelativeMeshPathAndErrorsNamingTheKey) {
   EXPECT_EQ(p.field, "b");
   EXPECT_DOUBLE_EQ(p.field_max, 1.0);
 
-  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", )" + tf + "}")).find("give \"field\": the mesh has several: a, b"),
+  EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", )" + tf + "}"))
+                .find("the mesh has several fields, choose one (setting 'field'): a, b"),
             std::string::npos);
   EXPECT_NE(scene_error(write(R"({"mesh": "m.vtu", "field": "c", )" + tf + "}")).find("the fields are: a, b"),
             std::string::npos);

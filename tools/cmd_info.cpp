@@ -10,6 +10,7 @@
 #include "io/read_mesh.hpp"
 #include "io/series_files.hpp"
 #include "mesh/cell_order.hpp"
+#include "mesh/field_choice.hpp"
 #include "mesh/overlaps.hpp"
 #include "mesh/topology.hpp"
 #include "partition/partition_index.hpp"
@@ -38,11 +39,14 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
   for (auto t : m.types) ++by_type[cell_name(static_cast<CellType>(t))];
   const auto [lo, hi] = bounds(m);
   nlohmann::json fields = nlohmann::json::object(), constant = nlohmann::json::array(),
-                 nonfinite = nlohmann::json::object();
+                 nonfinite = nlohmann::json::object(), components = nlohmann::json::object();
   for (const auto& f : m.fields) {
     double fmin = std::numeric_limits<double>::infinity(), fmax = -fmin;
     std::int64_t bad = 0;
-    for (double v : f.values) {
+    // A vector's or tensor's range is its magnitude's, as a picture of the field alone shows it.
+    const std::vector<double> values = scalar_values(f, f.scalar() ? FieldChoice::kWhole : FieldChoice::kMagnitude);
+    components[f.name] = f.components;
+    for (double v : values) {
       if (!std::isfinite(v)) {
         ++bad;
         continue;
@@ -50,8 +54,8 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
       fmin = std::min(fmin, v);
       fmax = std::max(fmax, v);
     }
-    fields[f.name] = bad == static_cast<std::int64_t>(f.values.size()) ? nlohmann::json::array({nullptr, nullptr})
-                                                                       : nlohmann::json::array({fmin, fmax});
+    fields[f.name] = bad == static_cast<std::int64_t>(values.size()) ? nlohmann::json::array({nullptr, nullptr})
+                                                                     : nlohmann::json::array({fmin, fmax});
     if (bad) nonfinite[f.name] = bad;
     if (fmin == fmax) constant.push_back(f.name);
   }
@@ -64,6 +68,7 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
           {"bounds", {lo.x, hi.x, lo.y, hi.y, lo.z, hi.z}},
           {"fields", fields},
           {"field_origins", origins},
+          {"field_components", components},
           {"constant_fields", constant},
           {"nonfinite_values", nonfinite},
           {"boundary_faces", static_cast<std::int64_t>(topo.boundary.size())},
@@ -100,9 +105,14 @@ void print_text(const nlohmann::json& j) {
   std::printf("\n  bounds x [%g, %g]  y [%g, %g]  z [%g, %g]\n", b[0].get<double>(), b[1].get<double>(),
               b[2].get<double>(), b[3].get<double>(), b[4].get<double>(), b[5].get<double>());
   std::printf("  fields:%s\n", j["fields"].empty() ? " (none)" : "");
-  for (const auto& [k, v] : j["fields"].items())
-    std::printf("    %-28s [%s, %s]  (%s)\n", k.c_str(), v[0].dump().c_str(), v[1].dump().c_str(),
-                j["field_origins"][k].get<std::string>().c_str());
+  for (const auto& [k, v] : j["fields"].items()) {
+    const int nc = j["field_components"][k].get<int>();
+    const std::string parts =
+        nc == 1 ? ""
+                : "; " + std::to_string(nc) + " components, pick " + component_words(nc) + "; range of the magnitude";
+    std::printf("    %-28s [%s, %s]  (%s%s)\n", k.c_str(), v[0].dump().c_str(), v[1].dump().c_str(),
+                j["field_origins"][k].get<std::string>().c_str(), parts.c_str());
+  }
   std::printf("  boundary faces %lld, shared faces %lld", j["boundary_faces"].get<long long>(),
               j["shared_faces"].get<long long>());
   if (j["seam_faces"].get<long long>())

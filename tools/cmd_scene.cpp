@@ -44,7 +44,7 @@ int run_scene(SceneArgs a) {
   std::optional<glm::dvec3> background;
   if (!a.background.empty()) background = usage([&] { return parse_color(a.background, "--background"); });
   if (!a.look.view.empty()) usage([&] { return view_camera(a.look.view, {0, 0, 0}, {1, 1, 1}, 1.0); });
-  const LoadedMesh loaded = read_with_progress(a.mesh, a.reader);
+  LoadedMesh loaded = read_with_progress(a.mesh, a.reader);
   const std::string dir = a.output.empty() ? std::filesystem::current_path().string()
                                            : std::filesystem::path(a.output).parent_path().string();
   nlohmann::json scene = usage([&] { return quick_scene(loaded, a.mesh, a.reader, a.look, dir.empty() ? "." : dir); });

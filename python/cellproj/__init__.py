@@ -19,7 +19,8 @@ _MESHIO_TYPES = {"tetra": 10, "hexahedron": 12, "wedge": 13, "pyramid": 14, "vox
 
 def from_meshio(mesh, field=None):
     """A cellproj.Mesh from a meshio.Mesh: its volume cell blocks and its point data (all fields,
-    or only `field`). Cell blocks of other kinds (triangles, lines) are left out."""
+    or only `field`), vectors and tensors with their components as cellproj.read gives them
+    (field="V:x" renders one). Cell blocks of other kinds (triangles, lines) are left out."""
     blocks = [b for b in mesh.cells if b.type in _MESHIO_TYPES]
     if not blocks:
         raise InputError("meshio mesh: no tetra, hexahedron, wedge or pyramid cells (has: %s)"
@@ -29,14 +30,16 @@ def from_meshio(mesh, field=None):
     offsets = _np.concatenate([[0], _np.cumsum(sizes)]).astype(_np.int64)
     types = _np.concatenate([_np.full(len(b.data), _MESHIO_TYPES[b.type], dtype=_np.uint8) for b in blocks])
     names = [field] if field else list(mesh.point_data)
-    scalars = {n: _np.asarray(mesh.point_data[n]).reshape(len(mesh.points), -1)[:, 0] for n in names}
+    scalars = {n: _np.asarray(mesh.point_data[n]).reshape(len(mesh.points), -1) for n in names}
+    scalars = {n: (v[:, 0] if v.shape[1] == 1 else v) for n, v in scalars.items()}
     return Mesh(_np.asarray(mesh.points, dtype=_np.float64), connectivity, offsets, types, scalars or None,
                 name="meshio mesh")
 
 
 def from_vtk(grid, field=None):
     """A cellproj.Mesh from a vtkUnstructuredGrid (VTK 9's arrays, through vtk.util.numpy_support):
-    its points, cells and point data (all scalar fields, or only `field`)."""
+    its points, cells and point data (all fields, or only `field`), vectors and tensors with their
+    components as cellproj.read gives them (field="V:x" renders one)."""
     from vtkmodules.util.numpy_support import vtk_to_numpy
     cells = grid.GetCells()
     connectivity = vtk_to_numpy(cells.GetConnectivityArray())
@@ -45,6 +48,6 @@ def from_vtk(grid, field=None):
     points = vtk_to_numpy(grid.GetPoints().GetData())
     data = grid.GetPointData()
     names = [field] if field else [data.GetArrayName(i) for i in range(data.GetNumberOfArrays())
-                                   if data.GetArray(i) is not None and data.GetArray(i).GetNumberOfComponents() == 1]
+                                   if data.GetArray(i) is not None]
     scalars = {n: vtk_to_numpy(data.GetArray(n)) for n in names}
     return Mesh(points, connectivity, offsets, types, scalars or None, name="vtkUnstructuredGrid")
