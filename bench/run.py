@@ -193,6 +193,31 @@ def measure(bench, name, scene, mesh, info, size, peers):
                   max_abs=e[1], violations="")
 
 
+def log_scale_rows(bench, name, scene_path, info, size):
+    """The field on a log scale (--log, docs/accuracy.md "Log scales"): the scene's field floored at
+    1e-3 of its largest value, its transfer function over three decades; each projection method and
+    slicing against exact on that log field."""
+    with open(scene_path) as f:
+        scene = json.load(f)
+    field = scene["field"]
+    hi = info["fields"][field][1]
+    floor, k = 1e-3 * hi, 6.0 / float(np.linalg.norm(np.array(info["bounds"][1::2]) - np.array(info["bounds"][0::2])))
+    scene.update({"log": True, "log_floor": floor, "transfer_function": {
+        "color_preset": {"name": "viridis"},
+        "extinction": [[floor, 0.05 * k], [10 * floor, 0.6 * k], [100 * floor, 2.0 * k], [hi, 0.8 * k]]}})
+    log_scene = os.path.join(os.path.dirname(scene_path), f"{name}_log.json")
+    with open(log_scene, "w") as f:
+        json.dump(scene, f)
+    cells, tag = info["cells"], f"{name}_{size}_log"
+    base = dict(mesh=name, cells=cells, width=size, height=size)
+    _, ref = bench.render(log_scene, tag + "_exact", "exact", size, 1, ["--interpolation", "canonical-tets"])
+    for method in METHODS:
+        st, npy = bench.render(log_scene, f"{tag}_{method}", method, size, bench.frames, ["--tetrahedralize", "all"])
+        e = error(npy, ref)
+        bench.add(**base, method=method + "-log", sort=st["sort"], **timing(st, cells), rmse=e[0], max_abs=e[1],
+                  violations="")
+
+
 def measure_speed(bench, name, scene, mesh, info, size, peers):
     """--speed-only: each projection method and VTK's projected tetrahedra, timed in the same run
     (no reference, so no error; the full run measures that)."""
@@ -412,6 +437,7 @@ def main():
     ap.add_argument("--speed-only", action="store_true",
                     help="each projection method against VTK's projected tetrahedra, time only, every mesh (~15 min)")
     ap.add_argument("--sweeps-only", action="store_true", help="only the table-size and thread sweeps (~3 min)")
+    ap.add_argument("--log-only", action="store_true", help="only the log-scale rows (tets-100k and mixed, 512², ~1 min)")
     a = ap.parse_args()
     if a.report:
         report(a.report)
@@ -427,6 +453,11 @@ def main():
     default_scene = os.path.join(ROOT, "scenes", "default.json")
     if a.sweeps_only:
         sweeps(bench, default_scene, [("default", default_scene), synthetic(bench, "box-tets", 26, "tets-100k")[:2]])
+        return
+    if a.log_only:
+        print(HEADER)
+        for name, scene, mesh, info in [synthetic(bench, "box-tets", 26, "tets-100k"), synthetic(bench, "mixed", 8, "mixed")]:
+            log_scale_rows(bench, name, scene, info, 512)
         return
     meshes = [synthetic(bench, "box-tets", 12, "tets-10k"), synthetic(bench, "box-tets", 26, "tets-100k"),
               synthetic(bench, "mixed", 8, "mixed"), synthetic(bench, "swirl", 16, "curvilinear")]
@@ -451,6 +482,9 @@ def main():
     for name, scene, mesh, info in meshes:
         for size in sizes:
             measure(bench, name, scene, mesh, info, size, not a.no_peers)
+    for name, scene, mesh, info in meshes:
+        if name in ("tets-100k", "mixed"):
+            log_scale_rows(bench, name, scene, info, sizes[0])
     with open(os.path.join(a.out, "results.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=COLUMNS)
         w.writeheader()

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
 
 #include "base/error.hpp"
 
@@ -52,10 +54,15 @@ std::string choice_name(const FieldShape& f, int component) {
 }
 
 FieldChoice whole(const FieldShape& f) {
-  if (f.components == 1) return {f.name, FieldChoice::kWhole, f.name, ""};
-  return {f.name, FieldChoice::kMagnitude, choice_name(f, FieldChoice::kMagnitude),
+  if (f.components == 1) return {f.name, FieldChoice::kWhole, f.name, "", false, {}, f.name};
+  return {f.name,
+          FieldChoice::kMagnitude,
+          choice_name(f, FieldChoice::kMagnitude),
           f.name + " has " + std::to_string(f.components) + " components: showing its magnitude (" + f.name +
-              ":C picks another, C one of " + component_words(f.components) + ")"};
+              ":C picks another, C one of " + component_words(f.components) + ")",
+          false,
+          {},
+          choice_name(f, FieldChoice::kMagnitude)};
 }
 
 }  // namespace
@@ -82,6 +89,32 @@ std::string field_list(const std::vector<FieldShape>& fields) {
   return list.empty() ? "(none)" : list;
 }
 
+bool log_scale_name(const std::string& name) {
+  return name.size() >= 7 && name.compare(0, 6, "log10(") == 0 && name.back() == ')';
+}
+
+std::string log_scale_scalar(const std::string& name, std::optional<double>* floor, const std::string& source) {
+  std::string inner = name.substr(6, name.size() - 7);
+  const std::size_t comma = inner.rfind(", ");
+  if (inner.rfind("max(", 0) != 0 || inner.back() != ')' || comma == std::string::npos) return inner;
+  const std::string number = inner.substr(comma + 2, inner.size() - comma - 3);
+  char* end = nullptr;
+  const double f = std::strtod(number.c_str(), &end);
+  if (end != number.c_str() + number.size() || number.empty())
+    throw InputError(where(source, "field '" + name + "': '" + number + "' is not a number"));
+  if (floor) *floor = f;
+  return inner.substr(4, comma - 4);
+}
+
+std::string log_spec(const std::string& spec, std::optional<double> floor) {
+  if (!floor) return "log10(" + spec + ")";
+  if (!(*floor > 0) || !std::isfinite(*floor))
+    throw InputError("setting 'log-floor': expected a positive number, got " + std::to_string(*floor));
+  char text[40];
+  std::snprintf(text, sizeof text, "%.17g", *floor);
+  return "log10(max(" + spec + ", " + text + "))";
+}
+
 FieldChoice choose_field(const std::vector<FieldShape>& fields, const std::string& spec, const std::string& source) {
   if (spec.empty()) {
     if (fields.size() == 1) return whole(fields.front());
@@ -91,6 +124,13 @@ FieldChoice choose_field(const std::vector<FieldShape>& fields, const std::strin
   }
   for (const FieldShape& f : fields)
     if (f.name == spec) return whole(f);
+  if (log_scale_name(spec)) {
+    std::optional<double> floor;
+    FieldChoice c = choose_field(fields, log_scale_scalar(spec, &floor, source), source);
+    c.log = true, c.floor = floor, c.scalar = c.name;
+    c.name = log_spec(c.name, floor);
+    return c;
+  }
   // NAME:word, or ParaView's NAME_Word: the longest field name that the spec starts with.
   const FieldShape* base = nullptr;
   for (const FieldShape& f : fields)
@@ -105,7 +145,7 @@ FieldChoice choose_field(const std::vector<FieldShape>& fields, const std::strin
       throw InputError(where(source, "field '" + spec + "': " + base->name + " has " +
                                          std::to_string(base->components) + " components; pick " +
                                          component_words(base->components)));
-    return {base->name, k, choice_name(*base, k), ""};
+    return {base->name, k, choice_name(*base, k), "", false, {}, choice_name(*base, k)};
   }
   const bool vectors = std::any_of(fields.begin(), fields.end(), [](const FieldShape& f) { return f.components > 1; });
   throw InputError(where(source, "no point field named '" + spec + "'; the fields are: " + field_list(fields) +
@@ -146,15 +186,40 @@ std::vector<double> scalar_values(const double* tuples, std::int64_t n, int comp
   return out;
 }
 
+std::vector<double> choice_values(const double* tuples, std::int64_t n, int components, const FieldChoice& choice,
+                                  const std::string& source) {
+  std::vector<double> v = scalar_values(tuples, n, components, choice.component);
+  if (!choice.log) return v;
+  if (choice.floor) {
+    for (double& x : v) x = std::log10(std::max(x, *choice.floor));
+    return v;
+  }
+  std::int64_t bad = 0, smallest = -1;
+  for (std::int64_t p = 0; p < n; ++p)
+    if (!(v[p] > 0)) {
+      ++bad;
+      if (smallest < 0 || v[p] < v[smallest]) smallest = p;
+    }
+  if (bad)
+    throw InputError(where(source, "field '" + choice.scalar + "' on a log scale: " + std::to_string(bad) + " of " +
+                                       std::to_string(n) + " values are not above 0 (the smallest " +
+                                       std::to_string(v[smallest]) + ", at point " + std::to_string(smallest) +
+                                       "); give a floor below which values count as it (setting 'log-floor')"));
+  for (double& x : v) x = std::log10(x);
+  return v;
+}
+
 PointField& select_field(Mesh& mesh, const std::string& spec, std::string* note) {
   const FieldChoice c = choose_field(mesh, spec);
   if (note) *note = c.note;
   for (PointField& made : mesh.fields)
     if (made.name == c.name) return made;
   const PointField& from = mesh.field(c.field);
-  std::string origin =
-      from.origin + ", " + c.name.substr(c.field.size() + 1) + " of " + std::to_string(from.components) + " components";
-  std::vector<double> values = scalar_values(from, c.component);
+  std::string origin = from.origin;
+  if (!from.scalar()) origin += ", " + c.scalar + " of " + std::to_string(from.components) + " components";
+  if (c.log) origin += ", on a log scale";
+  const std::int64_t n = static_cast<std::int64_t>(from.values.size()) / from.components;
+  std::vector<double> values = choice_values(from.values.data(), n, from.components, c, mesh.source);
   mesh.fields.push_back({c.name, std::move(values), std::move(origin), 1});
   return mesh.fields.back();
 }

@@ -6,6 +6,9 @@
 #include <pybind11/stl.h>
 
 #include <algorithm>
+#include <cmath>
+
+#include <nlohmann/json.hpp>
 
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
@@ -121,13 +124,21 @@ glm::dvec3 vec(const std::vector<double>& v, const char* what) {
   return {v[0], v[1], v[2]};
 }
 
-// The transfer function `cellproj render MESH` gives the field (scene/quick_scene.hpp).
-TransferFunction default_tf(const NumpyMesh& mesh, const std::string& field, const QuickLook& look) {
-  const Field f = mesh.field(field);
-  const auto [lo, hi] = std::minmax_element(f.values, f.values + f.size);
+// The transfer function `cellproj render MESH` gives the field (scene/quick_scene.hpp): over its
+// range in the field's units, placed on a log axis when the field is on a log scale.
+TransferFunction default_tf(const NumpyMesh& mesh, const Field& f, const QuickLook& look) {
+  const auto [lo_at, hi_at] = std::minmax_element(f.values, f.values + f.size);
+  const bool log = log_scale_name(f.name);
+  const double lo = log ? std::pow(10.0, *lo_at) : *lo_at, hi = log ? std::pow(10.0, *hi_at) : *hi_at;
   const auto [blo, bhi] = bounds(mesh.view());
-  return transfer_function_from_json(quick_transfer_function(look, *lo, *hi, glm::length(bhi - blo)), "python", "", *lo,
-                                     *hi);
+  return transfer_function_from_json(quick_transfer_function(look, lo, hi, glm::length(bhi - blo)), "python", "", lo,
+                                     hi, log);
+}
+
+// The field `spec` of `mesh`, on a log scale when asked (mesh/field_choice.hpp).
+Field chosen_field(const NumpyMesh& mesh, const std::string& spec, bool log, std::optional<double> floor) {
+  if (floor && !log) throw InputError("setting 'log-floor' is the floor of a log scale: give setting 'log' too");
+  return mesh.field(log ? log_spec(spec, floor) : spec);
 }
 
 Camera make_camera(const std::vector<double>& eye, const std::vector<double>& target, const std::vector<double>& up,
@@ -152,7 +163,10 @@ Camera make_camera(const std::vector<double>& eye, const std::vector<double>& ta
 
 PYBIND11_MODULE(_cellproj, m) {
   static const std::string render_doc =
-      "Renders to a premultiplied float32 (H, W, 4) array; size=(width, height)." + keywords_doc();
+      "Renders to a premultiplied float32 (H, W, 4) array; size=(width, height); field='T', or of a vector 'V:x', "
+      "'V_X', 'V:magnitude', 'S:von_mises'; log=True: the field on a log scale (log10 at the points, interpolated; "
+      "log_floor=F counts values below F as F), the default transfer function over the log of its range." +
+      keywords_doc();
   static const std::string render_scene_doc =
       "Renders a scene file as `cellproj render SCENE` does (the same array as its --npy); time=T for a time series, "
       "as --time T; method and the other settings default to the scene's \"render\" block, else as the CLI's "
@@ -232,36 +246,36 @@ PYBIND11_MODULE(_cellproj, m) {
 
   py::class_<TransferFunction>(m, "TransferFunction",
                                "Colour and extinction as piecewise-linear functions of the field")
-      .def(py::init([](std::vector<std::array<double, 2>> extinction,
-                       std::optional<std::vector<std::array<double, 4>>> color,
-                       std::optional<std::string> colormap_name, std::optional<std::pair<double, double>> range) {
-             std::vector<ColorPoint> c;
-             if (color.has_value() == colormap_name.has_value())
-               throw InputError("TransferFunction: give exactly one of color=[(s, r, g, b), ...] and colormap=NAME");
-             if (color)
-               for (const auto& p : *color) c.push_back({p[0], {p[1], p[2], p[3]}});
-             else {
-               if (!range) throw InputError("TransferFunction: colormap= needs range=(lo, hi)");
-               c = colormap(*colormap_name, range->first, range->second);
-             }
-             std::vector<ExtinctionPoint> e;
-             for (const auto& p : extinction) e.push_back({p[0], p[1]});
-             return TransferFunction(std::move(c), std::move(e), "TransferFunction");
-           }),
-           py::kw_only(), py::arg("extinction"), py::arg("color") = py::none(), py::arg("colormap") = py::none(),
-           py::arg("range") = py::none())
+      .def(
+          py::init([](std::vector<std::array<double, 2>> extinction,
+                      std::optional<std::vector<std::array<double, 4>>> color, std::optional<std::string> colormap_name,
+                      std::optional<std::pair<double, double>> range, bool log) {
+            if (color.has_value() == colormap_name.has_value())
+              throw InputError("TransferFunction: give exactly one of color=[(s, r, g, b), ...] and colormap=NAME");
+            if (colormap_name && !range) throw InputError("TransferFunction: colormap= needs range=(lo, hi)");
+            // As a scene's transfer function (docs/scene.md), so that log= places the points as a scene's "log".
+            nlohmann::json j = {{"extinction", extinction}};
+            if (color) j["color"] = *color;
+            if (colormap_name) j["color_preset"] = {{"name", *colormap_name}, {"range", {range->first, range->second}}};
+            return transfer_function_from_json(j, "TransferFunction", "", 1.0, 1.0, log);
+          }),
+          py::kw_only(), py::arg("extinction"), py::arg("color") = py::none(), py::arg("colormap") = py::none(),
+          py::arg("range") = py::none(), py::arg("log") = false,
+          "extinction=[(s, kappa), ...] and color=[(s, r, g, b), ...] or colormap=NAME with range=(lo, hi); "
+          "log=True places the points (in the field's units) on a log scale, for render(..., log=True)")
       .def_static(
           "default",
           [](const NumpyMesh& mesh, const std::string& field, const std::string& colormap_name,
-             const std::string& opacity, double depth) {
+             const std::string& opacity, double depth, bool log, std::optional<double> log_floor) {
             QuickLook look;
             look.colormap = colormap_name;
             look.opacity = opacity;
             look.depth = depth;
-            return default_tf(mesh, field, look);
+            return default_tf(mesh, chosen_field(mesh, field, log, log_floor), look);
           },
           py::arg("mesh"), py::arg("field") = "", py::arg("colormap") = QuickLook{}.colormap,
-          py::arg("opacity") = QuickLook{}.opacity, py::arg("depth") = QuickLook{}.depth,
+          py::arg("opacity") = QuickLook{}.opacity, py::arg("depth") = QuickLook{}.depth, py::arg("log") = false,
+          py::arg("log_floor") = py::none(),
           "The transfer function `cellproj render MESH` uses: a colour map over the field's range and an extinction "
           "ramp of the given optical depth across the mesh")
       .def("color",
@@ -305,15 +319,15 @@ PYBIND11_MODULE(_cellproj, m) {
   m.def(
       "render",
       [](const NumpyMesh& mesh, std::optional<TransferFunction> tf, std::optional<Camera> camera,
-         std::pair<int, int> size, const std::string& field, const std::string& method, int threads,
-         const py::kwargs& kwargs) {
+         std::pair<int, int> size, const std::string& field, const std::string& method, int threads, bool log,
+         std::optional<double> log_floor, const py::kwargs& kwargs) {
         const RenderOptions options = options_from(method, kwargs);
         const RenderSettings settings = settings_from(options);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings);
         refuse_unused(settings, options.given);
         const ImageSize image_size = size_from(size);
-        const Field f = mesh.field(field);
-        if (!tf) tf = default_tf(mesh, f.name, QuickLook{});
+        const Field f = chosen_field(mesh, field, log, log_floor);
+        if (!tf) tf = default_tf(mesh, f, QuickLook{});
         if (!camera) {
           const auto [lo, hi] = bounds(mesh.view());
           camera = view_camera("", lo, hi, double(image_size.width) / image_size.height);
@@ -325,13 +339,13 @@ PYBIND11_MODULE(_cellproj, m) {
       },
       py::arg("mesh"), py::arg("tf") = py::none(), py::arg("camera") = py::none(),
       py::arg("size") = std::pair<int, int>{512, 512}, py::arg("field") = "", py::arg("method") = "pt-breakpoints",
-      py::arg("threads") = 0, render_doc.c_str());
+      py::arg("threads") = 0, py::arg("log") = false, py::arg("log_floor") = py::none(), render_doc.c_str());
 
   m.def(
       "render_scene",
       [](const std::string& path, std::optional<std::pair<int, int>> size, const std::string& field,
-         const std::string& view, const std::string& method, int threads, std::optional<double> time,
-         const py::kwargs& kwargs) {
+         const std::string& view, const std::string& method, int threads, std::optional<double> time, bool log,
+         std::optional<double> log_floor, const py::kwargs& kwargs) {
         Scene scene = load_scene(path);
         // Several volumes are drawn by the exact renderer, its default there (render/volume_set.hpp).
         RenderOptions options = options_from(method, kwargs);
@@ -346,6 +360,8 @@ PYBIND11_MODULE(_cellproj, m) {
         if (size) std::tie(scene.width, scene.height) = std::tie(size->first, size->second);
         const ImageSize image_size = size_from({scene.width, scene.height});
         if (!field.empty()) scene.field = field;
+        if (log) scene.log_scale = true;
+        if (log_floor) scene.log_floor = log_floor;
         if (!view.empty()) {
           scene.camera.reset(), scene.camera_moves = {};
           scene.view = view;
@@ -381,8 +397,9 @@ PYBIND11_MODULE(_cellproj, m) {
             const double t = time ? *time : series.frames.front().time;
             locate(series, t);
             auto player =
-                std::make_unique<SeriesPlayer>(std::move(series), scene.field, key_frame_reader(scene.reader));
-            PreparedScene prepared = prepare_scene(scene, first_key_frame(*player));
+                std::make_unique<SeriesPlayer>(std::move(series), scene_field(scene), key_frame_reader(scene.reader));
+            LoadedMesh first = first_key_frame(*player, scene);
+            PreparedScene prepared = prepare_scene(scene, std::move(first));
             SeriesFrame frame = player->frame_at(t);
             return Played{std::move(player), std::move(prepared), std::move(frame)};
           }();
@@ -416,7 +433,8 @@ PYBIND11_MODULE(_cellproj, m) {
                                      image_size, threads));
       },
       py::arg("path"), py::arg("size") = py::none(), py::arg("field") = "", py::arg("view") = "",
-      py::arg("method") = "", py::arg("threads") = 0, py::arg("time") = py::none(), render_scene_doc.c_str());
+      py::arg("method") = "", py::arg("threads") = 0, py::arg("time") = py::none(), py::arg("log") = false,
+      py::arg("log_floor") = py::none(), render_scene_doc.c_str());
 
   m.def(
       "write_png",

@@ -30,8 +30,7 @@ void FieldSet::set(const Volume& volume, const std::string& name, const double* 
                 fields_.end());
   fields_.push_back({name, values, m.n_points, components});
   std::lock_guard<std::mutex> lock(made_lock_);
-  for (auto it = made_.begin(); it != made_.end();)  // the choices made of the old field
-    it = it->first.compare(0, name.size() + 1, name + ":") == 0 ? made_.erase(it) : std::next(it);
+  made_.clear();  // the choices made of an old field among them
 }
 
 void FieldSet::add(const Volume& volume, const Mesh& mesh) {
@@ -55,11 +54,10 @@ Field FieldSet::scalar(const std::string& spec, const std::string& source, std::
   const FieldChoice c = choose_field(shapes(), spec, source);
   if (note) *note = c.note;
   const Entry& e = *std::find_if(fields_.begin(), fields_.end(), [&](const Entry& x) { return x.name == c.field; });
-  if (c.component == FieldChoice::kWhole) return {e.values, e.n_points, e.name};
+  if (c.component == FieldChoice::kWhole && !c.log) return {e.values, e.n_points, e.name};
   std::lock_guard<std::mutex> lock(made_lock_);
   auto it = made_.find(c.name);
-  if (it == made_.end())
-    it = made_.emplace(c.name, scalar_values(e.values, e.n_points, e.components, c.component)).first;
+  if (it == made_.end()) it = made_.emplace(c.name, choice_values(e.values, e.n_points, e.components, c, source)).first;
   return {it->second.data(), e.n_points, c.name};
 }
 

@@ -1,6 +1,7 @@
 #include "scene/prepare.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <glm/common.hpp>
 #include <limits>
@@ -22,7 +23,8 @@ ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
   ColorBar bar;
   bar.lo = p.field_min;
   bar.hi = p.field_max;
-  bar.title = p.field;
+  bar.log = p.log_scale;
+  bar.title = p.scalar.empty() ? p.field : p.scalar;
   bar.text = text_color_for(background);
   constexpr int kSamples = 256;
   for (int k = 0; k < kSamples; ++k)
@@ -62,8 +64,11 @@ std::string view_warning(const Camera& camera, const glm::dvec3& lo, const glm::
 
 }  // namespace
 
-LoadedMesh first_key_frame(SeriesPlayer& player) {
+std::string scene_field(const Scene& s) { return s.log_scale ? log_spec(s.field, s.log_floor) : s.field; }
+
+LoadedMesh first_key_frame(SeriesPlayer& player, Scene& scene) {
   const SeriesFrame frame = player.frame_at(player.series().frames.front().time);
+  scene.field = player.field_name(), scene.log_scale = false, scene.log_floor.reset();  // its log is in the name
   LoadedMesh loaded;
   loaded.mesh.source = player.series().source;
   loaded.mesh.points = *frame.points;
@@ -114,14 +119,23 @@ PreparedVolumes prepare_volumes(const Scene& s, const std::function<LoadedMesh(c
 PreparedScene prepare_scene(const Scene& s) { return prepare_scene(s, load_mesh(s.mesh, s.reader)); }
 
 PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {
-  std::string note;
-  const PointField& f = select_field(loaded.mesh, s.field, &note);
+  if (s.log_floor && !s.log_scale)
+    throw InputError(where(s.source, "setting 'log-floor' is the floor of a log scale: give setting 'log' too"));
+  const FieldChoice choice = choose_field(loaded.mesh, scene_field(s));
+  const std::string note = choice.note;
+  const PointField& f = select_field(loaded.mesh, choice.name);
   const std::string field = f.name;
+  const bool log_scale = log_scale_name(field);  // asked for, or a series' key frames played so
   check_finite(s.mesh, f);
-  const auto [lo, hi] = std::minmax_element(f.values.begin(), f.values.end());
-  // A colour preset is stretched over the field's range unless the scene gives one.
-  TransferFunction tf = transfer_function_from_json(s.transfer_function, s.source, s.base_dir, *lo, *hi);
-  PreparedScene p{std::move(loaded), field, *lo, *hi, std::move(tf), Camera{}, {}};
+  const auto [lo_at, hi_at] = std::minmax_element(f.values.begin(), f.values.end());
+  const double lo = *lo_at, hi = *hi_at;
+  // A colour preset is stretched over the field's range unless the scene gives one (in the field's
+  // units: on a log scale the range is 10^lo to 10^hi).
+  TransferFunction tf = log_scale ? transfer_function_from_json(s.transfer_function, s.source, s.base_dir,
+                                                                std::pow(10.0, lo), std::pow(10.0, hi), true)
+                                  : transfer_function_from_json(s.transfer_function, s.source, s.base_dir, lo, hi);
+  const std::string scalar = log_scale ? log_scale_scalar(field) : field;
+  PreparedScene p{std::move(loaded), field, lo, hi, log_scale, scalar, std::move(tf), Camera{}, {}};
   const auto [blo, bhi] = bounds(p.loaded.mesh);
   const Camera base = s.camera ? *s.camera : view_camera(s.view, blo, bhi, double(s.width) / s.height);
   check_camera(base, where(s.source, "the camera framing " + s.mesh + "'s bounds"));

@@ -16,8 +16,10 @@ namespace cellproj {
 
 struct PreparedScene {
   LoadedMesh loaded;
-  std::string field;
-  double field_min = 0, field_max = 0;
+  std::string field;                    // the scalar rendered, as mesh/field_choice.hpp names it
+  double field_min = 0, field_max = 0;  // its range (on a log scale, of the log10)
+  bool log_scale = false;               // the field is log10(scalar): the legend labels 10^value
+  std::string scalar;                   // the scalar before a log, for the legend ("p" of "log10(p)")
   TransferFunction tf;
   Camera camera;  // the scene's (or the framing of its view), its camera moves made
   // What a turntable turns about (view/camera_moves.hpp, orbit): the view's up before the moves,
@@ -27,6 +29,8 @@ struct PreparedScene {
 };
 
 PreparedScene prepare_scene(const Scene& scene);
+// The scene's field as mesh/field_choice.hpp reads it: its "field", on a log scale when it says so.
+std::string scene_field(const Scene& scene);
 // The same with the scene's mesh already read (as `cellproj render MESH` does, to make its scene).
 PreparedScene prepare_scene(const Scene& scene, LoadedMesh loaded);
 
@@ -43,8 +47,9 @@ PreparedVolumes prepare_volumes(const Scene& scene, const std::function<LoadedMe
 
 // A time series' first key frame as a mesh to prepare its scene from (colours and framing come from
 // it whatever the time rendered): its points and the player's field; the cells stay with the player,
-// which renders every frame (SeriesPlayer::view).
-LoadedMesh first_key_frame(SeriesPlayer& player);
+// which renders every frame (SeriesPlayer::view). The player plays scene_field(scene); the scene's
+// field becomes the scalar the player chose (on a log scale, its name says so).
+LoadedMesh first_key_frame(SeriesPlayer& player, Scene& scene);
 
 // The legend of the picture: the transfer function's colours over the field's range, the field's
 // name, text that reads on `background`.

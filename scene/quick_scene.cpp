@@ -86,11 +86,17 @@ Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dve
 
 nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
                            const QuickLook& look, const std::string& scene_dir) {
-  const FieldChoice choice = choose_field(loaded.mesh, look.field);
+  if (look.log_floor && !look.log)
+    throw InputError("setting 'log-floor' is the floor of a log scale: give setting 'log' too");
+  // The field as the user spelt it (a vector alone, its magnitude, is said so when the scene is prepared).
+  const std::string field = look.field.empty() ? choose_field(loaded.mesh, "").field : look.field;
+  const FieldChoice choice = choose_field(loaded.mesh, look.log ? log_spec(look.field, look.log_floor) : look.field);
   const PointField& f = select_field(loaded.mesh, choice.name);
   check_finite(mesh_path, f);
   const auto [lo_it, hi_it] = std::minmax_element(f.values.begin(), f.values.end());
-  const double lo = *lo_it, hi = *hi_it;
+  // The transfer function in the field's units (on a log scale placed at their logs when prepared).
+  const bool log = log_scale_name(f.name);  // asked for, or the name of a series' played log
+  const double lo = log ? std::pow(10.0, *lo_it) : *lo_it, hi = log ? std::pow(10.0, *hi_it) : *hi_it;
   const auto [blo, bhi] = bounds(loaded.mesh);
   const Camera camera = view_camera(look.view, blo, bhi, double(look.width) / look.height);
   namespace fs = std::filesystem;
@@ -99,12 +105,13 @@ nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, con
     const std::string relative = fs::absolute(mesh_path).lexically_relative(fs::absolute(scene_dir)).string();
     if (!relative.empty() && relative.rfind("../..", 0) != 0) mesh = relative;
   }
-  // The field as the user spelt it (a vector alone, its magnitude, is said so when the scene is prepared).
   nlohmann::json scene = {{"mesh", mesh},
-                          {"field", look.field.empty() ? choice.field : look.field},
+                          {"field", field},
                           {"transfer_function", quick_transfer_function(look, lo, hi, glm::length(bhi - blo))},
                           {"camera", camera_to_json(camera)},
                           {"image", {{"width", look.width}, {"height", look.height}}}};
+  if (look.log) scene["log"] = true;
+  if (look.log_floor) scene["log_floor"] = *look.log_floor;
   nlohmann::json r = nlohmann::json::object();
   if (!reader.format.empty()) r["format"] = reader.format;
   if (!reader.q_file.empty()) r["q_file"] = fs::absolute(reader.q_file).lexically_normal().string();

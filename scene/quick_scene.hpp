@@ -2,6 +2,7 @@
 // A scene made from a mesh alone, for `cellproj render MESH` and `cellproj scene MESH`: a field, a
 // built-in colour map over its range, an extinction ramp whose optical depth across the mesh is
 // given, and a camera framing the mesh from a named view.
+#include <optional>
 #include <string>
 
 #include <nlohmann/json.hpp>
@@ -12,7 +13,9 @@
 namespace cellproj {
 
 struct QuickLook {
-  std::string field;                      // as mesh/field_choice.hpp reads it; empty: the mesh's only field
+  std::string field;  // as mesh/field_choice.hpp reads it; empty: the mesh's only field
+  bool log = false;   // the field on a log scale (Scene::log_scale), the colour map over its log
+  std::optional<double> log_floor;
   std::string colormap = "Cool to Warm";  // optics/colormaps.hpp
   // Extinction over the field's range: ramp (0 at the minimum, most at the maximum), reverse, flat,
   // or explicit points "S=K,S=K,..." (K the optical depth across the mesh's diagonal at S).

@@ -319,8 +319,8 @@ SceneVolume volume_from_json(const nlohmann::json& v, const std::string& at, con
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
   only_keys(j, path,
-            {"mesh", "reader", "field", "transfer_function", "camera", "camera_moves", "image", "render", "layers",
-             "clip", "iso", "iso_mode", "iso_opacity", "volume", "volumes"});
+            {"mesh", "reader", "field", "log", "log_floor", "transfer_function", "camera", "camera_moves", "image",
+             "render", "layers", "clip", "iso", "iso_mode", "iso_opacity", "volume", "volumes"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
@@ -355,6 +355,16 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
   if (j.contains("mesh")) s.mesh = resolved(j["mesh"], path + ": mesh", s.base_dir);
   if (j.contains("reader")) s.reader = reader_from_json(j["reader"], path + ": reader", s.base_dir);
   if (j.contains("field")) s.field = text(j["field"], path + ": field");
+  if (j.contains("log")) {
+    if (!j["log"].is_boolean()) throw InputError(path + ": log: expected true or false, got " + j["log"].dump());
+    s.log_scale = j["log"].get<bool>();
+  }
+  if (j.contains("log_floor")) {
+    const nlohmann::json& f = j["log_floor"];
+    if (!f.is_number() || !(f.get<double>() > 0))
+      throw InputError(path + ": log_floor: expected a positive number, got " + f.dump());
+    s.log_floor = f.get<double>();
+  }
   if (!j.contains("transfer_function") && s.transfer_function.is_null())
     throw InputError(where(path, "missing \"transfer_function\""));
   if (j.contains("transfer_function")) s.transfer_function = j["transfer_function"];

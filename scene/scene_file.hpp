@@ -32,7 +32,12 @@ struct Scene {
   std::string source;  // the scene file, for messages
   std::string mesh;    // resolved against the scene file's folder
   ReadOptions reader;
-  std::string field;                 // empty: the mesh's only field
+  std::string field;  // empty: the mesh's only field
+  // The field on a log scale (mesh/field_choice.hpp: the log of the values at the points,
+  // interpolated), the transfer function's points still in the field's units; values not above 0
+  // are an error unless a floor is given.
+  bool log_scale = false;
+  std::optional<double> log_floor;
   nlohmann::json transfer_function;  // parsed once the field's range is known
   std::optional<Camera> camera;      // absent: frame the mesh from `view`
   CameraMoves camera_moves;          // the "camera_moves" block: turns, zoom, focus... applied to the camera

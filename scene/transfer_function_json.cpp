@@ -1,5 +1,6 @@
 #include "scene/transfer_function_json.hpp"
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -91,8 +92,20 @@ std::vector<ColorPoint> paraview_preset(const nlohmann::json& spec, const std::s
 
 }  // namespace
 
+namespace {
+
+// s placed on a log axis: its log10 (InputError at `at` unless s > 0).
+double on_log_axis(double s, const std::string& at) {
+  if (!(s > 0))
+    throw InputError(at + ": " + std::to_string(s) + " has no place on a log scale (values must be above 0)");
+  return std::log10(s);
+}
+
+}  // namespace
+
 TransferFunction transfer_function_from_json(const nlohmann::json& j, const std::string& source,
-                                             const std::string& base_dir, double field_min, double field_max) {
+                                             const std::string& base_dir, double field_min, double field_max,
+                                             bool log_axis) {
   const std::string key = source + ": transfer_function";
   if (!j.is_object()) throw InputError(key + ": expected an object with \"color\" and \"extinction\"");
   for (const auto& [k, v] : j.items())
@@ -101,16 +114,30 @@ TransferFunction transfer_function_from_json(const nlohmann::json& j, const std:
   if (j.contains("color") == j.contains("color_preset"))
     throw InputError(key + ": give exactly one of \"color\" and \"color_preset\"");
   if (!j.contains("extinction")) throw InputError(key + ": missing \"extinction\"");
-  std::vector<ColorPoint> color =
-      j.contains("color") ? color_points(j["color"], key + ".color")
-                          : paraview_preset(j["color_preset"], key + ".color_preset", base_dir, field_min, field_max);
+  // On a log axis a preset is spread evenly over the log of its range, explicit points placed at their logs.
+  if (log_axis) field_min = on_log_axis(field_min, key), field_max = on_log_axis(field_max, key);
+  std::vector<ColorPoint> color;
+  if (j.contains("color")) {
+    color = color_points(j["color"], key + ".color");
+    if (log_axis)
+      for (std::size_t i = 0; i < color.size(); ++i)
+        color[i].s = on_log_axis(color[i].s, key + ".color[" + std::to_string(i) + "]");
+  } else {
+    nlohmann::json preset = j["color_preset"];
+    if (log_axis && preset.is_object() && preset.contains("range") && preset["range"].is_array())
+      for (std::size_t i = 0; i < preset["range"].size(); ++i)
+        preset["range"][i] = on_log_axis(number(preset["range"][i], key + ".color_preset.range"),
+                                         key + ".color_preset.range[" + std::to_string(i) + "]");
+    color = paraview_preset(preset, key + ".color_preset", base_dir, field_min, field_max);
+  }
   const auto& e = j["extinction"];
   if (!e.is_array()) throw InputError(key + ".extinction: expected an array of [s, kappa]");
   std::vector<ExtinctionPoint> ext;
   for (std::size_t i = 0; i < e.size(); ++i) {
     const std::string at = key + ".extinction[" + std::to_string(i) + "]";
     if (!e[i].is_array() || e[i].size() != 2) throw InputError(at + ": expected [s, kappa], got " + e[i].dump());
-    ext.push_back({number(e[i][0], at), number(e[i][1], at)});
+    const double at_s = number(e[i][0], at);
+    ext.push_back({log_axis ? on_log_axis(at_s, at) : at_s, number(e[i][1], at)});
   }
   return TransferFunction(std::move(color), std::move(ext), key);
 }

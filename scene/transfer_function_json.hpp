@@ -13,8 +13,11 @@ namespace cellproj {
 //    "extinction": [[s, kappa], ...]}
 // A ParaView colour-map preset (an exported JSON array of maps with "Name" and "RGBPoints") has its
 // x range mapped onto `range` (default: `field_range`). Relative preset paths resolve against
-// `base_dir`. Errors (InputError) name `source` and the key.
+// `base_dir`. Errors (InputError) name `source` and the key. With `log_axis` the points are in the
+// field's units and placed at their log10 (a field on a log scale, mesh/field_choice.hpp), a
+// preset spread evenly over the log of its range, as ParaView's log-scale colour maps.
 TransferFunction transfer_function_from_json(const nlohmann::json& j, const std::string& source,
-                                             const std::string& base_dir, double field_min, double field_max);
+                                             const std::string& base_dir, double field_min, double field_max,
+                                             bool log_axis = false);
 
 }  // namespace cellproj

@@ -30,6 +30,14 @@ echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinc
 expect 1 "kappa.json: transfer_function: extinction\[0\]: kappa = -1.* must be finite and >= 0" -- render "$tmp/kappa.json"
 echo '{"mesh": "box.vtu", "field": "nope", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}}' > "$tmp/field.json"
 expect 1 "no point field named 'nope'; the fields are: scalar" -- render "$tmp/field.json"
+# The log scale: values not above 0 refused with their count, or floored; a floor alone is refused.
+expect 2 "field 'scalar' on a log scale: [0-9]+ of 125 values are not above 0 \\(the smallest 0.000000, at point 0\\); give a floor below which values count as it \\(--log-floor\\)" -- render "$tmp/box.vtu" --log -o "$tmp/log.png"
+expect 2 "--log-floor is the floor of a log scale: give --log too" -- render "$tmp/box.vtu" --log-floor 0.1 -o "$tmp/log.png"
+expect 0 "wrote .*log.png" -- render "$tmp/box.vtu" --log --log-floor 0.01 --legend --size 48x32 -o "$tmp/log.png"
+echo '{"mesh": "box.vtu", "log": true, "transfer_function": {"color": [[0.1, 1, 1, 1]], "extinction": [[0.1, 1]]}}' > "$tmp/log.json"
+expect 1 "box.vtu: field 'scalar' on a log scale: 8 of 125 values are not above 0" -- render "$tmp/log.json" -o "$tmp/log.png"
+expect 0 "wrote .*log.png" -- render "$tmp/log.json" --log-floor 0.01 -o "$tmp/log.png" --size 16x16
+expect 2 "field 'scalar:x': scalar is a scalar \\(one component\\)" -- render "$tmp/box.vtu" --field scalar:x -o "$tmp/x.png"
 echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}, "camera": {"up": [0, 0, 1]}}' > "$tmp/cam.json"
 expect 1 "cam.json: camera: up is parallel to the view direction" -- render "$tmp/cam.json"
 echo '{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 1, 1]], "extinction": [[0, 1]]}}' > "$tmp/ok.json"

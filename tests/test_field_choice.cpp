@@ -5,15 +5,19 @@
 #include <filesystem>
 
 #include <gtest/gtest.h>
+#include <nlohmann/json.hpp>
 
 #include "io/read_mesh.hpp"
 #include "io/write_mesh.hpp"
 #include "mesh/field_choice.hpp"
 #include "mesh/generate.hpp"
+#include "optics/colormaps.hpp"
 #include "render/field_set.hpp"
 #include "render/renderer.hpp"
+#include "render/settings.hpp"
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
+#include "scene/transfer_function_json.hpp"
 #include "test_util.hpp"
 
 using namespace cellproj;
@@ -155,4 +159,67 @@ TEST(FieldChoice, ASceneRendersAVectorsComponent) {
   EXPECT_EQ(p.field, "V:z");
   const std::vector<double> z = scalar_values(p.loaded.mesh.field("V"), 2);
   EXPECT_EQ(p.field_min, *std::min_element(z.begin(), z.end()));
+}
+
+// The log scale: log10 of the values at the points, interpolated; the transfer function's points in
+// the field's units placed at their logs.
+TEST(LogScale, TheFieldIsTheLogOfTheValuesAtThePoints) {
+  Mesh m = fields_box();
+  set_field(m, "q", [](const glm::dvec3& x) { return std::pow(10.0, 2 * x.x); });
+  const PointField& q = m.field("q");
+  const std::vector<double> values = q.values;
+  const PointField& lq = select_field(m, log_spec("q", {}));
+  EXPECT_EQ(lq.name, "log10(q)");
+  for (std::size_t p = 0; p < values.size(); ++p) ASSERT_EQ(lq.values[p], std::log10(values[p]));
+  // Not above 0: refused with the count and the smallest, or floored.
+  const std::string e = test::input_error([&] { select_field(m, log_spec("p", {})); });
+  EXPECT_NE(e.find("field 'p' on a log scale: "), std::string::npos) << e;
+  EXPECT_NE(e.find("values are not above 0 (the smallest -3"), std::string::npos) << e;
+  const PointField& floored = select_field(m, log_spec("p", 0.5));
+  EXPECT_EQ(floored.name, "log10(max(p, 0.5))");
+  EXPECT_EQ(*std::min_element(floored.values.begin(), floored.values.end()), std::log10(0.5));
+  EXPECT_NE(test::input_error([&] { log_spec("p", 0.0); }).find("setting 'log-floor'"), std::string::npos);
+  // A vector's component on a log scale, and the name read back.
+  EXPECT_EQ(choose_field(m, "log10(V_X)").name, "log10(V:x)");
+  EXPECT_EQ(log_scale_scalar("log10(max(V:x, 0.25))"), "V:x");
+}
+
+TEST(LogScale, TransferFunctionPointsArePlacedAtTheirLogs) {
+  const nlohmann::json j = {{"color_preset", {{"name", "viridis"}}}, {"extinction", {{1.0, 0.0}, {100.0, 2.0}}}};
+  const TransferFunction tf = transfer_function_from_json(j, "test", "", 1.0, 100.0, true);
+  EXPECT_DOUBLE_EQ(tf.extinction(1.0), 1.0);  // at 10: halfway between 1 and 100 on the log axis
+  const std::vector<ColorPoint> map = colormap("viridis", 0.0, 2.0);  // spread evenly over the logs
+  EXPECT_EQ(tf.color_points().front().s, 0.0);
+  EXPECT_EQ(tf.color_points().back().s, 2.0);
+  EXPECT_EQ(tf.color(1.0), TransferFunction(map, {{0, 0}}).color(1.0));
+  const nlohmann::json zero = {{"color_preset", {{"name", "viridis"}}}, {"extinction", {{0.0, 0.0}, {100.0, 2.0}}}};
+  EXPECT_NE(test::input_error([&] {
+              transfer_function_from_json(zero, "test", "", 1.0, 100.0, true);
+            }).find("extinction[0]: 0.000000 has no place on a log scale"),
+            std::string::npos);
+}
+
+// The exact integral holds on a log scale as for any field (the log is what is interpolated):
+// pt-breakpoints equals the exact renderer to 1e-6.
+TEST(LogScale, BreakpointsEqualTheExactRendererOnALogScale) {
+  Mesh m = make_box(5, 5, 5, glm::dvec3(-1), glm::dvec3(1), true);
+  set_field(m, "q", [](const glm::dvec3& x) { return std::pow(10.0, 1.5 * x.x + x.y * x.z + 0.5); });
+  const PointField& lq = select_field(m, log_spec("q", {}));
+  const auto [lo, hi] = std::minmax_element(lq.values.begin(), lq.values.end());
+  const nlohmann::json j = {{"color_preset", {{"name", "turbo"}}},
+                            {"extinction", {{0.01, 0.2}, {0.5, 3.0}, {3.0, 0.5}, {100.0, 2.5}}}};
+  const TransferFunction tf =
+      transfer_function_from_json(j, "test", "", std::pow(10.0, *lo), std::pow(10.0, *hi), true);
+  const Volume volume(m.view());
+  const Field f = field_of(m, lq.name);
+  RenderSettings exact;
+  exact.mode = RenderMode::exact;
+  const Camera camera = test::view_from({2.5, -2, 1.8}, Projection::Perspective);
+  const Image e = make_renderer(exact)->render(volume, f, tf, camera, {48, 48});
+  const Image b = make_renderer({})->render(volume, f, tf, camera, {48, 48});
+  double worst = 0, alpha = 0;
+  for (std::size_t i = 0; i < e.rgba.size(); ++i) worst = std::max(worst, double(std::abs(e.rgba[i] - b.rgba[i])));
+  for (std::size_t i = 3; i < e.rgba.size(); i += 4) alpha += e.rgba[i];
+  EXPECT_LT(worst, 1e-6);
+  EXPECT_GT(alpha / (e.rgba.size() / 4), 0.2);  // a picture, not an empty frame
 }

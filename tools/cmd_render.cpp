@@ -218,7 +218,10 @@ Action add_render(CLI::App& app) {
                   "slicing: render at each of these plane counts in turn, e.g. 16,64,256, writing OUT-16.png, "
                   "OUT-64.png, ... as each completes");
   cmd->add_option("--size", args->size, "Image size WxH, overriding the scene");
-  cmd->add_option("--field", args->field, "Point field to render, overriding the scene");
+  cmd->add_option("--field", args->field,
+                  "Point field to render, overriding the scene; of a vector or tensor one scalar: NAME:x (y, z, N, "
+                  "xx ... for a tensor), NAME_X, NAME:magnitude, NAME:von_mises (NAME alone: its magnitude)");
+  add_log_options(*cmd, args->log, args->log_floor);
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option(
          "--frames", args->frames,

@@ -70,7 +70,10 @@ Action add_scene(CLI::App& app) {
   cmd->add_option("mesh", args->mesh, "Mesh file (any format `info` reads)")->required();
   cmd->add_option("-o,--output", args->output,
                   "Scene file to write (default: print it); the mesh is named relative to it");
-  cmd->add_option("--field", args->look.field, "Point field to render (default: the mesh's only one)");
+  cmd->add_option(
+      "--field", args->look.field,
+      "Point field to render (default: the mesh's only one); of a vector NAME:x, NAME_X, NAME:magnitude, ...");
+  add_log_options(*cmd, args->look.log, args->look.log_floor);
   add_look_options(*cmd, args->look);
   cmd->add_option("--view", args->look.view, "Frame the mesh from a named view: " + view_names());
   cmd->add_option("--size", args->size, "Image size WxH (default 512x512)");

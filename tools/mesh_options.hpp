@@ -43,6 +43,16 @@ inline std::vector<CLI::Option*> add_look_options(CLI::App& cmd, QuickLook& look
                          "(default 20)")};
 }
 
+// The field on a log scale, and its floor (scene keys "log" and "log_floor").
+inline void add_log_options(CLI::App& cmd, bool& log, std::optional<double>& floor) {
+  cmd.add_flag("--log", log,
+               "The field on a log scale: log10 of its values at the points, interpolated (exact in every method); "
+               "the transfer function's points stay in the field's units, a colour map spreads over the log of the "
+               "range, the legend labels values");
+  cmd.add_option("--log-floor", floor,
+                 "With --log: values below this (> 0) count as it; without it, a value not above 0 is an error");
+}
+
 // True for a scene file (.json), false for a mesh (a partition index, partition.json, is a mesh).
 inline bool is_scene_file(const std::string& path) {
   const std::string ext = std::filesystem::path(path).extension().string();

@@ -40,7 +40,6 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   Scene scene;
   if (scene_file) {
     scene = given_scene ? std::move(*given_scene) : load_scene(a.input);
-    if (!a.field.empty()) scene.field = a.field;
     if (!a.look_given.empty()) {  // --colormap: the scene's colours replaced by the map over the field's range
       usage([&] { return colormap(a.look.colormap, 0, 1); });
       scene.transfer_function.erase("color");
@@ -51,6 +50,9 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     scene.mesh = a.input;
     scene.reader = a.reader;
   }
+  if (!a.field.empty()) scene.field = a.field;
+  if (a.log) scene.log_scale = true;
+  if (a.log_floor) scene.log_floor = a.log_floor;
   if (width > 0) std::tie(scene.width, scene.height) = std::tie(width, height);
   scene.reader.max_memory_gib = a.max_memory_gib;
   if (background) scene.background = *background, scene.transparent = false;
@@ -74,7 +76,7 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     times = !a.animate.empty() ? usage([&] { return animation_times(a.animate); })
                                : std::vector<double>(a.frames, a.time ? *a.time : listed.frames.front().time);
     for (double t : {times.front(), times.back()}) locate(listed, t);  // in range, before any read
-    player = std::make_unique<SeriesPlayer>(std::move(listed), scene.field, key_frame_reader(scene.reader));
+    player = std::make_unique<SeriesPlayer>(std::move(listed), scene_field(scene), key_frame_reader(scene.reader));
   }
   // A partition index: each rank reads its bricks later; the scene is prepared from the whole mesh's extent.
   std::optional<PartitionIndex> partition;
@@ -91,13 +93,18 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   // A series' colours and framing come from its first key frame whatever the time rendered, so that
   // --time T and --animate give the same picture at T.
   SeriesFrame first;
-  LoadedMesh loaded = player      ? first_key_frame(*player)
+  LoadedMesh loaded = player      ? first_key_frame(*player, scene)
                       : partition ? extent_mesh(*partition)
                                   : read_with_progress(scene.mesh, scene.reader);
   if (player) first = player->frame_at(times.front());
   if (!scene_file) {
     QuickLook look = a.look;
-    look.field = a.field;
+    if (player) {  // the scalar the player plays, its log in its name
+      look.field = scene.field;
+    } else {
+      look.field = a.field;
+      look.log = a.log, look.log_floor = a.log_floor;
+    }
     std::tie(look.width, look.height) = std::tie(scene.width, scene.height);
     const glm::dvec3 bg = scene.background;
     const bool transparent = scene.transparent;

@@ -120,9 +120,13 @@ struct Layout {
 Layout layout(const ColorBar& bar, int height, Font& font) {
   Layout l;
   l.pixels = font.pixels();
-  const double span = bar.hi - bar.lo;
-  l.labels[0] = label(bar.lo, span), l.labels[1] = label(0.5 * (bar.lo + bar.hi), span),
-  l.labels[2] = label(bar.hi, span);
+  if (bar.log) {  // the ends and the geometric middle, in the field's units
+    for (int k = 0; k < 3; ++k) l.labels[k] = label(std::pow(10.0, bar.lo + 0.5 * k * (bar.hi - bar.lo)), 0.0);
+  } else {
+    const double span = bar.hi - bar.lo;
+    l.labels[0] = label(bar.lo, span), l.labels[1] = label(0.5 * (bar.lo + bar.hi), span),
+    l.labels[2] = label(bar.hi, span);
+  }
   l.label_w = std::max({font.width(l.labels[0]), font.width(l.labels[1]), font.width(l.labels[2])});
   l.margin = std::max(4, height / 40), l.bar_w = std::max(6, l.pixels), l.gap = std::max(3, l.pixels / 3);
   l.title_w = font.width(bar.title);

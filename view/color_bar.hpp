@@ -14,6 +14,7 @@ namespace cellproj {
 struct ColorBar {
   std::vector<glm::dvec3> colors;  // from the low end of the range to the high end, evenly spaced
   double lo = 0, hi = 1;           // the values at the ends
+  bool log = false;                // lo and hi are log10 of the values: labels show 10^lo ... 10^hi
   std::string title;               // the field's name
   glm::dvec3 text{1.0};            // colour of text, ticks and outline
   std::string font;                // a .ttf/.otf file; empty: default_font()

@@ -157,6 +157,18 @@ def test_a_vectors_component_is_the_same_from_every_front_end(path):
         cellproj.render(read, tf, camera, size=(16, 16), field=vector + ":w")
 
 
+def test_a_log_scale_renders_as_the_cli_does(tmp_path, mixed):
+    mesh = cellproj.read(mixed)
+    assert np.array_equal(cellproj.render(mesh, size=(64, 48), log=True, log_floor=0.05),
+                          cli(tmp_path, mixed, "--size", "64x48", "--log", "--log-floor", "0.05"))
+    tf = cellproj.TransferFunction.default(mesh, log=True, log_floor=0.05)
+    assert tf.extinction(np.log10(0.05)) == 0.0  # the ramp starts at the floor, on the log axis
+    made = cellproj.TransferFunction(extinction=[(1, 0), (100, 2)], colormap="viridis", range=(1, 100), log=True)
+    assert made.extinction(1.0) == 1.0
+    with pytest.raises(cellproj.InputError, match="log_floor= is the floor of a log scale: give log= too"):
+        cellproj.render(mesh, size=(8, 8), log_floor=0.05)
+
+
 def test_vector_arrays_from_numpy():
     points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float)
     velocity = np.array([[3.0, 4.0, 0.0], [0, 0, 1], [1, 1, 1], [2, 0, 0]])
