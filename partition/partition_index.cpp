@@ -1,6 +1,8 @@
 #include "partition/partition_index.hpp"
 
 #include "mesh/field_choice.hpp"
+#include "optics/auto_opacity.hpp"
+#include "view/camera.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -90,8 +92,11 @@ PartitionIndex read_partition_index(const std::string& given) {
     index.source = j.at("source").get<std::string>();
     index.cells = j.at("cells").get<std::int64_t>();
     index.cost_model = j.value("cost_model", "projected");
-    for (const json& f : j.at("fields"))
+    for (const json& f : j.at("fields")) {
       index.fields.push_back({f.at("name").get<std::string>(), f.at("min").get<double>(), f.at("max").get<double>()});
+      for (const json& p : f.value("auto_extinction", json::array()))
+        index.fields.back().auto_extinction.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
+    }
     for (const json& b : j.at("bricks")) {
       BrickEntry e{b.at("file").get<std::string>(), b.at("cells").get<std::int64_t>(),
                    b.at("points").get<std::int64_t>(), b.at("cost").get<double>()};
@@ -149,7 +154,11 @@ void write_partition_index(const PartitionIndex& index, const std::string& path)
       j.update({{"axis", n.axis}, {"plane", n.plane}, {"children", {n.children[0], n.children[1]}}});
     tree.push_back(j);
   }
-  for (const FieldRange& f : index.fields) fields.push_back({{"name", f.name}, {"min", f.min}, {"max", f.max}});
+  for (const FieldRange& f : index.fields) {
+    json points = json::array();
+    for (const ExtinctionPoint& p : f.auto_extinction) points.push_back({p.s, p.kappa});
+    fields.push_back({{"name", f.name}, {"min", f.min}, {"max", f.max}, {"auto_extinction", points}});
+  }
   const json j = {{"cellproj_partition", 1},
                   {"source", index.source},
                   {"cells", index.cells},
@@ -188,7 +197,8 @@ PartitionIndex partition_mesh(const Mesh& mesh, int bricks, const std::string& d
   for (const PointField& f : mesh.fields) {  // a vector's range is its magnitude's
     const std::vector<double> v = scalar_values(f, f.scalar() ? FieldChoice::kWhole : FieldChoice::kMagnitude);
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
-    index.fields.push_back({f.name, v.empty() ? 0.0 : *lo, v.empty() ? 0.0 : *hi});
+    index.fields.push_back({f.name, v.empty() ? 0.0 : *lo, v.empty() ? 0.0 : *hi,
+                            auto_extinction(view, v.data(), kDefaultFrom, kDefaultUp)});
   }
   std::vector<std::vector<std::int64_t>> cells = cells_of_bricks(view, index.tree);
   PartitionReport total;

@@ -9,6 +9,7 @@
 
 #include "io/read_mesh.hpp"
 #include "mesh/clip.hpp"
+#include "optics/transfer_function.hpp"
 #include "partition/kd_partition.hpp"
 
 namespace cellproj {
@@ -22,6 +23,9 @@ struct BrickEntry {
 struct FieldRange {
   std::string name;
   double min = 0.0, max = 0.0;
+  // opacity auto's extinction for the field (a vector's magnitude), found from the whole mesh when
+  // it was partitioned (optics/auto_opacity.hpp), so that its bricks render the mesh's default look.
+  std::vector<ExtinctionPoint> auto_extinction;
 };
 
 struct PartitionIndex {

@@ -131,8 +131,9 @@ TransferFunction default_tf(const NumpyMesh& mesh, const Field& f, const QuickLo
   const bool log = log_scale_name(f.name);
   const double lo = log ? std::pow(10.0, *lo_at) : *lo_at, hi = log ? std::pow(10.0, *hi_at) : *hi_at;
   const auto [blo, bhi] = bounds(mesh.view());
-  return transfer_function_from_json(quick_transfer_function(look, lo, hi, glm::length(bhi - blo)), "python", "", lo,
-                                     hi, log);
+  const OpacityInput opacity{mesh.view(), f.values, log};
+  return transfer_function_from_json(quick_transfer_function(look, lo, hi, glm::length(bhi - blo), &opacity), "python",
+                                     "", lo, hi, log);
 }
 
 // The field `spec` of `mesh`, on a log scale when asked (mesh/field_choice.hpp).
@@ -276,8 +277,10 @@ PYBIND11_MODULE(_cellproj, m) {
           py::arg("mesh"), py::arg("field") = "", py::arg("colormap") = QuickLook{}.colormap,
           py::arg("opacity") = QuickLook{}.opacity, py::arg("depth") = QuickLook{}.depth, py::arg("log") = false,
           py::arg("log_floor") = py::none(),
-          "The transfer function `cellproj render MESH` uses: a colour map over the field's range and an extinction "
-          "ramp of the given optical depth across the mesh")
+          "The transfer function `cellproj render MESH` uses: a colour map over the field's range and the "
+          "extinction opacity= names: auto (faint at the field's background value, scaled so the mesh is neither "
+          "an opaque slab nor a haze), ramp, reverse, flat, sigmoid, geometric or 'S=DEPTH,...'; depth= fixes the "
+          "largest optical depth across the mesh's diagonal (0: auto's, or 20)")
       .def("color",
            [](const TransferFunction& tf, double s) {
              const glm::dvec3 c = tf.color(s);
@@ -327,11 +330,12 @@ PYBIND11_MODULE(_cellproj, m) {
         refuse_unused(settings, options.given);
         const ImageSize image_size = size_from(size);
         const Field f = chosen_field(mesh, field, log, log_floor);
-        if (!tf) tf = default_tf(mesh, f, QuickLook{});
+        const double aspect = double(image_size.width) / image_size.height;
         if (!camera) {
           const auto [lo, hi] = bounds(mesh.view());
-          camera = view_camera("", lo, hi, double(image_size.width) / image_size.height);
+          camera = view_camera("", lo, hi, aspect);
         }
+        if (!tf) tf = default_tf(mesh, f, QuickLook{});
         CameraMoves moves;
         add_camera_moves(kwargs, moves);
         camera = moved(*camera, moves);

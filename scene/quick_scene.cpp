@@ -8,6 +8,7 @@
 
 #include "base/error.hpp"
 #include "mesh/field_choice.hpp"
+#include "optics/auto_opacity.hpp"
 #include "optics/colormaps.hpp"
 #include "scene/camera_json.hpp"
 #include "scene/prepare.hpp"
@@ -27,14 +28,45 @@ const NamedView kViews[] = {
     {"iso", {1, 1, 1}, {0, 0, 1}},
 };
 
+// `auto`'s extinction over the field's values (on a log scale, their logs; the points returned in
+// the field's units): found before (a partition index's), or from the mesh; a given depth fixes
+// the largest.
+nlohmann::json auto_extinction(const QuickLook& look, const OpacityInput& in, double diagonal) {
+  std::vector<ExtinctionPoint> points;
+  if (in.known) {
+    points = *in.known;
+  } else if (in.mesh.n_cells > 0) {
+    points = auto_extinction(in.mesh, in.field, kDefaultFrom, kDefaultUp);
+  } else {
+    throw InputError("setting 'opacity': auto looks at the cells, and " + in.mesh.source +
+                     " has none here (a partition index keeps auto's extinction for its fields as they are, not on "
+                     "a log scale); give another opacity");
+  }
+  if (look.depth > 0) {  // the shape kept, the largest extinction given
+    double top = 0;
+    for (const ExtinctionPoint& p : points) top = std::max(top, p.kappa);
+    for (ExtinctionPoint& p : points) p.kappa *= top > 0 ? look.depth / (diagonal > 0 ? diagonal : 1.0) / top : 0.0;
+  }
+  nlohmann::json out = nlohmann::json::array();
+  for (const ExtinctionPoint& p : points) out.push_back({in.log ? std::pow(10.0, p.s) : p.s, p.kappa});
+  return out;
+}
+
 // [[s, kappa], ...] for look.opacity over [lo, hi], kappa such that kappa * diagonal is the depth.
-nlohmann::json extinction(const QuickLook& look, double lo, double hi, double diagonal) {
-  if (!(look.depth > 0) || !std::isfinite(look.depth))
+nlohmann::json extinction(const QuickLook& look, double lo, double hi, double diagonal, const OpacityInput* input) {
+  if (look.depth < 0 || !std::isfinite(look.depth))
     throw InputError("setting 'depth': expected a positive optical depth, got " + std::to_string(look.depth));
-  const double per_length = 1.0 / (diagonal > 0 ? diagonal : 1.0), k = look.depth * per_length;
-  if (look.opacity == "ramp") return {{lo, 0.0}, {hi, k}};
-  if (look.opacity == "reverse") return {{lo, k}, {hi, 0.0}};
-  if (look.opacity == "flat") return {{lo, k}, {hi, k}};
+  if (look.opacity == "auto") {
+    if (!input) throw InternalError("opacity auto needs the mesh and its field");
+    return auto_extinction(look, *input, diagonal);
+  }
+  const double per_length = 1.0 / (diagonal > 0 ? diagonal : 1.0),
+               k = (look.depth > 0 ? look.depth : 20.0) * per_length;
+  if (const std::vector<ExtinctionPoint> shape = opacity_shape(look.opacity, lo, hi); !shape.empty()) {
+    nlohmann::json points = nlohmann::json::array();
+    for (const ExtinctionPoint& p : shape) points.push_back({p.s, p.kappa * k});
+    return points;
+  }
   nlohmann::json points = nlohmann::json::array();
   std::size_t at = 0;
   const std::string& t = look.opacity;
@@ -50,25 +82,26 @@ nlohmann::json extinction(const QuickLook& look, double lo, double hi, double di
         throw std::invalid_argument("bad");
       points.push_back({s, depth * per_length});
     } catch (const std::exception&) {
-      throw InputError("setting 'opacity': expected ramp, reverse, flat or S=DEPTH,S=DEPTH,... (DEPTH >= 0), got '" +
-                       item + "' in '" + t + "'");
+      throw InputError("setting 'opacity': expected " + opacity_names() +
+                       " or S=DEPTH,S=DEPTH,... (DEPTH >= 0), got '" + item + "' in '" + t + "'");
     }
     at = comma + 1;
   }
-  if (points.empty()) throw InputError("setting 'opacity': empty; give ramp, reverse, flat or S=DEPTH,S=DEPTH,...");
+  if (points.empty()) throw InputError("setting 'opacity': empty; give " + opacity_names() + " or S=DEPTH,S=DEPTH,...");
   return points;
 }
 
 }  // namespace
 
-nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal) {
+nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal,
+                                       const OpacityInput* input) {
   try {
     colormap(look.colormap, lo, hi);
   } catch (const InputError& e) {
     throw InputError(std::string("setting 'colormap': ") + e.what());
   }
   return {{"color_preset", {{"name", look.colormap}, {"range", {lo, hi}}}},
-          {"extinction", extinction(look, lo, hi, diagonal)}};
+          {"extinction", extinction(look, lo, hi, diagonal, input)}};
 }
 
 std::string view_names() {
@@ -78,14 +111,15 @@ std::string view_names() {
 }
 
 Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dvec3& hi, double aspect) {
-  if (view.empty()) return frame_box(lo, hi, Projection::Orthographic, {0.6, 0.5, 1.0}, {0, 1, 0}, aspect);
+  if (view.empty()) return frame_box(lo, hi, Projection::Orthographic, kDefaultFrom, kDefaultUp, aspect);
   for (const NamedView& v : kViews)
     if (view == v.name) return frame_box(lo, hi, Projection::Orthographic, v.from, v.up, aspect);
   throw InputError("setting 'view': unknown view '" + view + "' (known: " + view_names() + ")");
 }
 
 nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
-                           const QuickLook& look, const std::string& scene_dir) {
+                           const QuickLook& look, const std::string& scene_dir,
+                           const std::vector<ExtinctionPoint>* known_auto) {
   if (look.log_floor && !look.log)
     throw InputError("setting 'log-floor' is the floor of a log scale: give setting 'log' too");
   // The field as the user spelt it (a vector alone, its magnitude, is said so when the scene is prepared).
@@ -99,17 +133,19 @@ nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, con
   const double lo = log ? std::pow(10.0, *lo_it) : *lo_it, hi = log ? std::pow(10.0, *hi_it) : *hi_it;
   const auto [blo, bhi] = bounds(loaded.mesh);
   const Camera camera = view_camera(look.view, blo, bhi, double(look.width) / look.height);
+  const OpacityInput opacity{loaded.mesh.view(), f.values.data(), log, known_auto};
   namespace fs = std::filesystem;
   std::string mesh = fs::absolute(mesh_path).lexically_normal().string();
   if (!scene_dir.empty()) {  // relative when the scene sits next to the mesh or near it, so the two can move together
     const std::string relative = fs::absolute(mesh_path).lexically_relative(fs::absolute(scene_dir)).string();
     if (!relative.empty() && relative.rfind("../..", 0) != 0) mesh = relative;
   }
-  nlohmann::json scene = {{"mesh", mesh},
-                          {"field", field},
-                          {"transfer_function", quick_transfer_function(look, lo, hi, glm::length(bhi - blo))},
-                          {"camera", camera_to_json(camera)},
-                          {"image", {{"width", look.width}, {"height", look.height}}}};
+  nlohmann::json scene = {
+      {"mesh", mesh},
+      {"field", field},
+      {"transfer_function", quick_transfer_function(look, lo, hi, glm::length(bhi - blo), &opacity)},
+      {"camera", camera_to_json(camera)},
+      {"image", {{"width", look.width}, {"height", look.height}}}};
   if (look.log) scene["log"] = true;
   if (look.log_floor) scene["log_floor"] = *look.log_floor;
   nlohmann::json r = nlohmann::json::object();

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/read_mesh.hpp"
+#include "optics/transfer_function.hpp"
 #include "view/camera.hpp"
 
 namespace cellproj {
@@ -17,11 +18,15 @@ struct QuickLook {
   bool log = false;   // the field on a log scale (Scene::log_scale), the colour map over its log
   std::optional<double> log_floor;
   std::string colormap = "Cool to Warm";  // optics/colormaps.hpp
-  // Extinction over the field's range: ramp (0 at the minimum, most at the maximum), reverse, flat,
-  // or explicit points "S=K,S=K,..." (K the optical depth across the mesh's diagonal at S).
-  std::string opacity = "ramp";
-  double depth = 20.0;  // optical depth across the mesh's diagonal where the extinction is largest
-  std::string view;     // +x, -x, +y, -y, +z, -z, iso; empty: the scene files' default framing
+  // Extinction over the field's range: auto (scene/auto_opacity.hpp: faint where the field holds its
+  // background value, the scale that leaves the picture neither opaque nor empty), a named shape
+  // (ramp: 0 at the minimum, most at the maximum; reverse, flat, sigmoid, geometric), or explicit
+  // points "S=K,S=K,..." (K the optical depth across the mesh's diagonal at S).
+  std::string opacity = "auto";
+  // Optical depth across the mesh's diagonal where the extinction is largest; 0: auto's own scale,
+  // 20 for the named shapes.
+  double depth = 0.0;
+  std::string view;  // +x, -x, +y, -y, +z, -z, iso; empty: the scene files' default framing
   int width = 512, height = 512;
 };
 
@@ -30,14 +35,27 @@ struct QuickLook {
 Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dvec3& hi, double aspect);
 std::string view_names();
 
-// The transfer function (as docs/scene.md) of `look` for a field ranging over [lo, hi] on a mesh
-// whose bounding box has this diagonal.
-nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal);
+// What opacity auto looks at (optics/auto_opacity.hpp): the mesh and the field's values at its
+// points (on a log scale, their logs), or its extinction found before (a partition index's).
+struct OpacityInput {
+  MeshView mesh;
+  const double* field = nullptr;
+  bool log = false;
+  const std::vector<ExtinctionPoint>* known = nullptr;
+};
+
+// The transfer function (as docs/scene.md) of `look` for a field ranging over [lo, hi] (in its
+// units) on a mesh whose bounding box has this diagonal; opacity auto needs `input`.
+nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal,
+                                       const OpacityInput* input = nullptr);
 
 // The scene (as docs/scene.md) for `loaded`, read from `mesh_path` with `reader`, with the mesh's
 // path written relative to `scene_dir` (absolute when empty). InputError for a bad look, naming
 // the option. The field chosen from a vector or tensor is kept in the mesh (mesh/field_choice.hpp).
+// `known_auto`: opacity auto's extinction found before, for a mesh whose cells are not at hand (a
+// partition index's extent).
 nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, const ReadOptions& reader,
-                           const QuickLook& look, const std::string& scene_dir = "");
+                           const QuickLook& look, const std::string& scene_dir = "",
+                           const std::vector<ExtinctionPoint>* known_auto = nullptr);
 
 }  // namespace cellproj

@@ -203,7 +203,7 @@ PY
 # scene `cellproj scene` writes renders the same bits as the mesh given directly.
 expect 2 "--view: unknown view 'up'" -- render "$tmp/box.vtu" --view up --size 32x24
 expect 2 "--colormap: unknown colour map 'nope'" -- render "$tmp/box.vtu" --colormap nope --size 32x24
-expect 2 "--opacity: expected ramp, reverse, flat" -- render "$tmp/box.vtu" --opacity 0.5=x --size 32x24
+expect 2 "--opacity: expected auto, ramp, reverse, flat, sigmoid, geometric or S=DEPTH" -- render "$tmp/box.vtu" --opacity 0.5=x --size 32x24
 expect 2 "--depth: expected a positive optical depth" -- render "$tmp/box.vtu" --depth -1 --size 32x24
 expect 2 "--background: expected R,G,B" -- render "$tmp/box.vtu" --background 2,0,0 --size 32x24
 expect 2 "is a scene file: edit its transfer_function" -- render "$tmp/ok.json" --opacity flat

@@ -154,7 +154,9 @@ TEST(FieldChoice, ASceneRendersAVectorsComponent) {
   Scene s;
   s.mesh = test::shared_data("exodus_disk_out_ref/disk_out_ref.ex2");
   s.field = "V_Z";
-  s.transfer_function = quick_transfer_function(QuickLook{}, 0.0, 1.0, 1.0);
+  QuickLook ramp;
+  ramp.opacity = "ramp";
+  s.transfer_function = quick_transfer_function(ramp, 0.0, 1.0, 1.0);
   const PreparedScene p = prepare_scene(s);
   EXPECT_EQ(p.field, "V:z");
   const std::vector<double> z = scalar_values(p.loaded.mesh.field("V"), 2);

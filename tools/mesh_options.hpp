@@ -36,11 +36,13 @@ inline std::vector<CLI::Option*> add_look_options(CLI::App& cmd, QuickLook& look
   return {cmd.add_option("--colormap", look.colormap,
                          "Built-in colour map over the field's range (default 'Cool to Warm'): " + colormap_names()),
           cmd.add_option("--opacity", look.opacity,
-                         "Extinction over the field's range: ramp (default), reverse, flat, or S=DEPTH,S=DEPTH,... "
-                         "(DEPTH: optical depth across the mesh's diagonal at field value S)"),
+                         "Extinction over the field's range: auto (default: faint where the field holds its background "
+                         "value, rising away from it; scaled so the picture is neither an opaque slab nor a haze), "
+                         "ramp, reverse, flat, sigmoid, geometric, or S=DEPTH,S=DEPTH,... (DEPTH: optical depth across "
+                         "the mesh's diagonal at field value S)"),
           cmd.add_option("--depth", look.depth,
-                         "ramp, reverse, flat: optical depth across the mesh's diagonal where extinction is largest "
-                         "(default 20)")};
+                         "Optical depth across the mesh's diagonal where extinction is largest (default: auto's own "
+                         "scale; 20 for the named shapes)")};
 }
 
 // The field on a log scale, and its floor (scene keys "log" and "log_floor").

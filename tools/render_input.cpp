@@ -1,5 +1,8 @@
 #include "tools/render_input.hpp"
 
+#include "mesh/field_choice.hpp"
+#include "optics/auto_opacity.hpp"
+
 #include <tuple>
 
 #include "base/error.hpp"
@@ -108,7 +111,23 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     std::tie(look.width, look.height) = std::tie(scene.width, scene.height);
     const glm::dvec3 bg = scene.background;
     const bool transparent = scene.transparent;
-    scene = usage([&] { return scene_from_json(quick_scene(loaded, a.input, a.reader, look), a.input, ""); });
+    scene = usage([&] {
+      // Opacity auto looks at the cells: a series' are the player's (with its first key frame's
+      // points and field), and a partition keeps auto's extinction for its bricks.
+      std::vector<ExtinctionPoint> played;
+      const std::vector<ExtinctionPoint>* known = nullptr;
+      if (player && look.opacity == "auto") {
+        MeshView cells = player->cells().view();
+        cells.points = PointArray(loaded.mesh.points.data()), cells.n_points = loaded.mesh.n_points();
+        played = auto_extinction(cells, loaded.mesh.fields.front().values.data(), kDefaultFrom, kDefaultUp);
+        known = &played;
+      }
+      if (partition && !look.log)
+        for (const FieldRange& f : partition->fields)
+          if (f.name == choose_field(loaded.mesh, look.field).field && !f.auto_extinction.empty())
+            known = &f.auto_extinction;
+      return scene_from_json(quick_scene(loaded, a.input, a.reader, look, "", known), a.input, "");
+    });
     scene.reader.max_memory_gib = a.max_memory_gib;
     scene.background = bg, scene.transparent = transparent;
   }

@@ -19,6 +19,10 @@ struct Camera {
   double fov_y = 30.0;  // perspective: full vertical angle in degrees
 };
 
+// The view a mesh is framed from when nothing names one (scene files, `cellproj render MESH`):
+// orthographic, the eye towards kDefaultFrom from the box's centre, kDefaultUp up.
+inline const glm::dvec3 kDefaultFrom{0.6, 0.5, 1.0}, kDefaultUp{0.0, 1.0, 0.0};
+
 // Throws InputError (prefixed with `source`) for eye == target, an up vector parallel to the view
 // direction or zero, a non-positive height, a field of view outside (0, 180), non-finite values.
 void check_camera(const Camera& camera, const std::string& source);

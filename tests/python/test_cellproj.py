@@ -161,7 +161,7 @@ def test_a_log_scale_renders_as_the_cli_does(tmp_path, mixed):
     mesh = cellproj.read(mixed)
     assert np.array_equal(cellproj.render(mesh, size=(64, 48), log=True, log_floor=0.05),
                           cli(tmp_path, mixed, "--size", "64x48", "--log", "--log-floor", "0.05"))
-    tf = cellproj.TransferFunction.default(mesh, log=True, log_floor=0.05)
+    tf = cellproj.TransferFunction.default(mesh, log=True, log_floor=0.05, opacity="ramp")
     assert tf.extinction(np.log10(0.05)) == 0.0  # the ramp starts at the floor, on the log axis
     made = cellproj.TransferFunction(extinction=[(1, 0), (100, 2)], colormap="viridis", range=(1, 100), log=True)
     assert made.extinction(1.0) == 1.0
