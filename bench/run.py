@@ -193,6 +193,18 @@ def measure(bench, name, scene, mesh, info, size, peers):
                   max_abs=e[1], violations="")
 
 
+def ladder_rows(bench, name, scene, info, size, what):
+    """Each projection method against exact (canonical tetrahedra) on `scene`, as rows METHOD-WHAT."""
+    cells, tag = info["cells"], f"{name}_{size}_{what}"
+    base = dict(mesh=name, cells=cells, width=size, height=size)
+    _, ref = bench.render(scene, tag + "_exact", "exact", size, 1, ["--interpolation", "canonical-tets"])
+    for method in METHODS:
+        st, npy = bench.render(scene, f"{tag}_{method}", method, size, bench.frames, ["--tetrahedralize", "all"])
+        e = error(npy, ref)
+        bench.add(**base, method=f"{method}-{what}", sort=st["sort"], **timing(st, cells), rmse=e[0], max_abs=e[1],
+                  violations="")
+
+
 def log_scale_rows(bench, name, scene_path, info, size):
     """The field on a log scale (--log, docs/accuracy.md "Log scales"): the scene's field floored at
     1e-3 of its largest value, its transfer function over three decades; each projection method and
@@ -208,14 +220,42 @@ def log_scale_rows(bench, name, scene_path, info, size):
     log_scene = os.path.join(os.path.dirname(scene_path), f"{name}_log.json")
     with open(log_scene, "w") as f:
         json.dump(scene, f)
-    cells, tag = info["cells"], f"{name}_{size}_log"
-    base = dict(mesh=name, cells=cells, width=size, height=size)
-    _, ref = bench.render(log_scene, tag + "_exact", "exact", size, 1, ["--interpolation", "canonical-tets"])
-    for method in METHODS:
-        st, npy = bench.render(log_scene, f"{tag}_{method}", method, size, bench.frames, ["--tetrahedralize", "all"])
-        e = error(npy, ref)
-        bench.add(**base, method=method + "-log", sort=st["sort"], **timing(st, cells), rmse=e[0], max_abs=e[1],
-                  violations="")
+    ladder_rows(bench, name, log_scene, info, size, "log")
+
+
+def cell_data_rows(bench, name, scene_path, mesh, info, size):
+    """Cell data (--cell-data cells, the default: each cell's value constant over it, docs/accuracy.md
+    "Cell data"): the mesh given a cell field, each cell the scene's transfer-function range sampled
+    by a smooth function at its centre; each projection method against exact."""
+    import vtk
+    from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(mesh)
+    reader.Update()
+    grid = reader.GetOutput()
+    centres = vtk.vtkCellCenters()
+    centres.SetInputData(grid)
+    centres.Update()
+    x = vtk_to_numpy(centres.GetOutput().GetPoints().GetData())
+    lo3, hi3 = np.array(info["bounds"][0::2]), np.array(info["bounds"][1::2])
+    u = (x - lo3) / np.maximum(hi3 - lo3, 1e-300)
+    with open(scene_path) as f:
+        scene = json.load(f)
+    lo, hi = info["fields"][scene["field"]]
+    values = lo + (hi - lo) * (0.5 + 0.5 * np.sin(5 * u[:, 0]) * np.cos(4 * u[:, 1] + 2 * u[:, 2]))
+    array = numpy_to_vtk(np.ascontiguousarray(values))
+    array.SetName("cells")
+    grid.GetCellData().AddArray(array)
+    cell_mesh = os.path.join(os.path.dirname(scene_path), f"{name}_cells.vtu")
+    writer = vtk.vtkXMLUnstructuredGridWriter()
+    writer.SetFileName(cell_mesh)
+    writer.SetInputData(grid)
+    writer.Write()
+    scene.update({"mesh": os.path.basename(cell_mesh), "field": "cells"})
+    cell_scene = os.path.join(os.path.dirname(scene_path), f"{name}_cells.json")
+    with open(cell_scene, "w") as f:
+        json.dump(scene, f)
+    ladder_rows(bench, name, cell_scene, info, size, "cells")
 
 
 def measure_speed(bench, name, scene, mesh, info, size, peers):
@@ -437,7 +477,8 @@ def main():
     ap.add_argument("--speed-only", action="store_true",
                     help="each projection method against VTK's projected tetrahedra, time only, every mesh (~15 min)")
     ap.add_argument("--sweeps-only", action="store_true", help="only the table-size and thread sweeps (~3 min)")
-    ap.add_argument("--log-only", action="store_true", help="only the log-scale rows (tets-100k and mixed, 512², ~1 min)")
+    ap.add_argument("--fields-only", action="store_true",
+                    help="only the log-scale and cell-data rows (tets-100k and mixed, 512², ~1 min)")
     a = ap.parse_args()
     if a.report:
         report(a.report)
@@ -454,10 +495,11 @@ def main():
     if a.sweeps_only:
         sweeps(bench, default_scene, [("default", default_scene), synthetic(bench, "box-tets", 26, "tets-100k")[:2]])
         return
-    if a.log_only:
+    if a.fields_only:
         print(HEADER)
         for name, scene, mesh, info in [synthetic(bench, "box-tets", 26, "tets-100k"), synthetic(bench, "mixed", 8, "mixed")]:
             log_scale_rows(bench, name, scene, info, 512)
+            cell_data_rows(bench, name, scene, mesh, info, 512)
         return
     meshes = [synthetic(bench, "box-tets", 12, "tets-10k"), synthetic(bench, "box-tets", 26, "tets-100k"),
               synthetic(bench, "mixed", 8, "mixed"), synthetic(bench, "swirl", 16, "curvilinear")]
@@ -485,6 +527,7 @@ def main():
     for name, scene, mesh, info in meshes:
         if name in ("tets-100k", "mixed"):
             log_scale_rows(bench, name, scene, info, sizes[0])
+            cell_data_rows(bench, name, scene, mesh, info, sizes[0])
     with open(os.path.join(a.out, "results.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=COLUMNS)
         w.writeheader()

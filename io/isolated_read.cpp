@@ -143,12 +143,14 @@ void write_mesh(PipeWriter& out, const Mesh& m) {
   out.array(m.connectivity);
   out.array(m.offsets);
   out.array(m.types);
-  out.value<std::uint64_t>(m.fields.size());
-  for (const PointField& f : m.fields) {
-    out.text(f.name);
-    out.text(f.origin);
-    out.value<std::int32_t>(f.components);
-    out.array(f.values);
+  for (const std::vector<PointField>* list : {&m.fields, &m.cell_fields}) {
+    out.value<std::uint64_t>(list->size());
+    for (const PointField& f : *list) {
+      out.text(f.name);
+      out.text(f.origin);
+      out.value<std::int32_t>(f.components);
+      out.array(f.values);
+    }
   }
   out.value<std::uint64_t>(m.notes.size());
   for (const std::string& n : m.notes) out.text(n);
@@ -161,14 +163,16 @@ Mesh read_mesh_from(PipeReader& in) {
   m.connectivity = in.array<std::int64_t>();
   m.offsets = in.array<std::int64_t>();
   m.types = in.array<std::uint8_t>();
-  const auto fields = in.value<std::uint64_t>();
-  for (std::uint64_t i = 0; in.ok && i < fields; ++i) {
-    PointField f;
-    f.name = in.text();
-    f.origin = in.text();
-    f.components = in.value<std::int32_t>();
-    f.values = in.array<double>();
-    m.fields.push_back(std::move(f));
+  for (std::vector<PointField>* list : {&m.fields, &m.cell_fields}) {
+    const auto fields = in.value<std::uint64_t>();
+    for (std::uint64_t i = 0; in.ok && i < fields; ++i) {
+      PointField f;
+      f.name = in.text();
+      f.origin = in.text();
+      f.components = in.value<std::int32_t>();
+      f.values = in.array<double>();
+      list->push_back(std::move(f));
+    }
   }
   const auto notes = in.value<std::uint64_t>();
   for (std::uint64_t i = 0; in.ok && i < notes; ++i) m.notes.push_back(in.text());

@@ -164,6 +164,8 @@ LoadedMesh load_mesh(const std::string& path, const ReadOptions& options) {
   LoadedMesh out{read_mesh(path, options), {}};
   out.report = validate(out.mesh.view());
   reorient_inverted(out.mesh, out.report);
+  if (options.cell_data)
+    apply_cell_data(out.mesh, *options.cell_data);  // after validation: it counts the file's points
   return out;
 }
 

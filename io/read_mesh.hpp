@@ -1,9 +1,11 @@
 #pragma once
 // Reading meshes: the format is chosen by extension (overridable), every reader goes through the
 // real library for its format, and every failure is an InputError naming the file.
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "mesh/cell_data.hpp"
 #include "mesh/mesh.hpp"
 #include "mesh/validate.hpp"
 
@@ -14,6 +16,9 @@ struct ReadOptions {
   std::string q_file;  // PLOT3D solution; default: the grid's name with "xyz" replaced by "q"
   std::string zone;    // CGNS: read this zone only (default: all zones)
   int time_step = 0;   // Exodus II: which time step's fields
+  // Cell data (mesh/cell_data.hpp): drawn constant over each cell (the default: a finite-volume
+  // solver's cells as it computed them) or averaged to the points; none: kept as cell fields (info).
+  std::optional<CellData> cell_data = CellData::cells;
   // Read in a child process (io/isolated_read.hpp), so that a reader's crash on a malformed file
   // is an InputError; its memory is bounded by max_memory_gib (0: the memory available now).
   bool isolate = true;

@@ -223,7 +223,6 @@ void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>
   for (std::size_t b = 0; b < leaves.size(); ++b) collect(leaves[b].data->GetPointData(), b, false);
   for (std::size_t b = 0; b < leaves.size(); ++b) collect(leaves[b].data->GetCellData(), b, true);
 
-  std::vector<double> volume;
   for (auto& [name, s] : sources) {
     if (std::find(s.per_leaf.begin(), s.per_leaf.end(), nullptr) != s.per_leaf.end()) {
       mesh.notes.push_back("field '" + name + "' dropped: not present in every block");
@@ -242,37 +241,14 @@ void assemble_fields(const std::vector<Leaf>& leaves, const std::vector<LeafMap>
           read_tuple(s.per_leaf[b], static_cast<vtkIdType>(p), &f.values[maps[b].point[p] * nc]);
       continue;
     }
-    if (volume.empty()) {  // cell volumes for the averaging weights
-      const MeshView view = mesh.view();
-      volume.resize(static_cast<std::size_t>(mesh.n_cells()), 0.0);
-      for (std::int64_t c = 0; c < mesh.n_cells(); ++c)
-        if (is_supported(mesh.types[c]) && view.cell_size(c) == cell_def(view.type(c)).vertices)
-          volume[c] = std::abs(cell_signed_volume(view, c));
-    }
-    // Cell data to point data: each point takes the volume-weighted mean of the cells around it.
-    const std::size_t n = static_cast<std::size_t>(mesh.n_points());
-    std::vector<double> sum(n * nc, 0.0), plain(n * nc, 0.0), weight(n, 0.0), count(n, 0.0), v(nc);
+    // Cell data kept per cell: mesh/cell_data.hpp draws it constant over each cell or averages it.
+    PointField f{name, std::vector<double>(static_cast<std::size_t>(mesh.n_cells() * nc), 0.0),
+                 "cell data '" + s.array + "'", nc};
     for (std::size_t b = 0; b < leaves.size(); ++b)
-      for (std::size_t lc = 0; lc < maps[b].cell.size(); ++lc) {
-        const std::int64_t c = maps[b].cell[lc];
-        if (c < 0) continue;
-        read_tuple(s.per_leaf[b], static_cast<vtkIdType>(lc), v.data());
-        for (std::int64_t k = mesh.offsets[c]; k < mesh.offsets[c + 1]; ++k) {
-          const std::int64_t p = mesh.connectivity[k];
-          if (p < 0 || p >= mesh.n_points()) continue;  // validation reports it
-          for (int i = 0; i < nc; ++i) sum[p * nc + i] += volume[c] * v[i], plain[p * nc + i] += v[i];
-          weight[p] += volume[c];
-          count[p] += 1;
-        }
-      }
-    PointField& f = mesh.add_field(name, "cell data '" + s.array + "', volume-weighted average at points", nc);
-    for (std::int64_t p = 0; p < mesh.n_points(); ++p)
-      for (int i = 0; i < nc; ++i)
-        f.values[p * nc + i] = weight[p] > 0  ? sum[p * nc + i] / weight[p]
-                               : count[p] > 0 ? plain[p * nc + i] / count[p]
-                                              : 0.0;
-    mesh.notes.push_back("cell field '" + s.array + "' converted to point field '" + name +
-                         "' by volume-weighted averaging");
+      for (std::size_t lc = 0; lc < maps[b].cell.size(); ++lc)
+        if (const std::int64_t c = maps[b].cell[lc]; c >= 0)
+          read_tuple(s.per_leaf[b], static_cast<vtkIdType>(lc), &f.values[c * nc]);
+    mesh.cell_fields.push_back(std::move(f));
   }
 }
 

@@ -7,6 +7,7 @@
 #include <fstream>
 
 #include <vtkCellArray.h>
+#include <vtkCellData.h>
 #include <vtkDoubleArray.h>
 #include <vtkExodusIIWriter.h>
 #include <vtkIdTypeArray.h>
@@ -43,14 +44,17 @@ vtkSmartPointer<vtkUnstructuredGrid> to_vtk(const Mesh& mesh) {
   auto grid = vtkSmartPointer<vtkUnstructuredGrid>::New();
   grid->SetPoints(points);
   grid->SetCells(types, cells);
-  for (const auto& f : mesh.fields) {
-    auto a = vtkSmartPointer<vtkDoubleArray>::New();
-    a->SetName(f.name.c_str());
-    a->SetNumberOfComponents(f.components);
-    a->SetNumberOfValues(static_cast<vtkIdType>(f.values.size()));
-    for (std::size_t i = 0; i < f.values.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), f.values[i]);
-    grid->GetPointData()->AddArray(a);
-  }
+  for (const auto* list : {&mesh.fields, &mesh.cell_fields})
+    for (const auto& f : *list) {
+      auto a = vtkSmartPointer<vtkDoubleArray>::New();
+      a->SetName(f.name.c_str());
+      a->SetNumberOfComponents(f.components);
+      a->SetNumberOfValues(static_cast<vtkIdType>(f.values.size()));
+      for (std::size_t i = 0; i < f.values.size(); ++i) a->SetValue(static_cast<vtkIdType>(i), f.values[i]);
+      vtkDataSetAttributes* data =
+          list == &mesh.fields ? static_cast<vtkDataSetAttributes*>(grid->GetPointData()) : grid->GetCellData();
+      data->AddArray(a);
+    }
   return grid;
 }
 

@@ -88,6 +88,9 @@ class Mesh {
   std::vector<std::int64_t> offsets{0};
   std::vector<std::uint8_t> types;
   std::vector<PointField> fields;
+  // Cell data as read, one tuple per cell (mesh/cell_data.hpp makes point fields of them; a loaded
+  // mesh has none left).
+  std::vector<PointField> cell_fields;
   std::vector<std::string> notes;  // what reading did to the data (conversions, skipped cells)
 
   std::int64_t n_points() const { return static_cast<std::int64_t>(points.size() / 3); }

@@ -230,8 +230,9 @@ PYBIND11_MODULE(_cellproj, m) {
   m.def(
       "read",
       [](const std::string& path, const std::string& format, const std::string& q_file, const std::string& zone,
-         int time_step) {
+         int time_step, const std::string& cell_data) {
         ReadOptions o;
+        o.cell_data = cell_data_from_name(cell_data);
         o.format = format;
         o.q_file = q_file;
         o.zone = zone;
@@ -243,7 +244,9 @@ PYBIND11_MODULE(_cellproj, m) {
         return std::make_unique<NumpyMesh>(std::move(mesh));
       },
       py::arg("path"), py::arg("format") = "", py::arg("q_file") = "", py::arg("zone") = "", py::arg("time_step") = 0,
-      "Reads and validates a mesh file (any format `cellproj info` reads)");
+      py::arg("cell_data") = "cells",
+      "Reads and validates a mesh file (any format `cellproj info` reads); cell_data='cells' draws cell data constant "
+      "over each cell (each cell its own points), 'points' averages it to the points");
 
   py::class_<TransferFunction>(m, "TransferFunction",
                                "Colour and extinction as piecewise-linear functions of the field")

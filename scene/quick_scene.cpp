@@ -153,6 +153,7 @@ nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, con
   if (!reader.q_file.empty()) r["q_file"] = fs::absolute(reader.q_file).lexically_normal().string();
   if (!reader.zone.empty()) r["zone"] = reader.zone;
   if (reader.time_step != 0) r["time_step"] = reader.time_step;
+  if (reader.cell_data && *reader.cell_data != CellData::cells) r["cell_data"] = cell_data_name(*reader.cell_data);
   if (!r.empty()) scene["reader"] = r;
   return scene;
 }

@@ -252,7 +252,7 @@ std::vector<std::pair<std::string, std::string>> iso_options_from_json(const nlo
 ReadOptions reader_from_json(const nlohmann::json& r, const std::string& at, const std::string& base_dir) {
   ReadOptions o;
   if (!r.is_object()) throw InputError(at + ": expected an object");
-  only_keys(r, at, {"format", "q_file", "zone", "time_step"});
+  only_keys(r, at, {"format", "q_file", "zone", "time_step", "cell_data"});
   if (r.contains("format")) o.format = text(r["format"], at + ".format");
   if (r.contains("q_file")) {
     fs::path q = text(r["q_file"], at + ".q_file");
@@ -260,6 +260,13 @@ ReadOptions reader_from_json(const nlohmann::json& r, const std::string& at, con
   }
   if (r.contains("zone")) o.zone = text(r["zone"], at + ".zone");
   if (r.contains("time_step")) o.time_step = positive_int(r["time_step"], at + ".time_step", 1 << 30, 0);
+  if (r.contains("cell_data")) {
+    try {
+      o.cell_data = cell_data_from_name(text(r["cell_data"], at + ".cell_data"));
+    } catch (const InputError& e) {
+      throw InputError(at + ".cell_data: " + e.what());
+    }
+  }
   return o;
 }
 

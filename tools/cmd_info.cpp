@@ -40,27 +40,31 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
   const auto [lo, hi] = bounds(m);
   nlohmann::json fields = nlohmann::json::object(), constant = nlohmann::json::array(),
                  nonfinite = nlohmann::json::object(), components = nlohmann::json::object();
-  for (const auto& f : m.fields) {
-    double fmin = std::numeric_limits<double>::infinity(), fmax = -fmin;
-    std::int64_t bad = 0;
-    // A vector's or tensor's range is its magnitude's, as a picture of the field alone shows it.
-    const std::vector<double> values = scalar_values(f, f.scalar() ? FieldChoice::kWhole : FieldChoice::kMagnitude);
-    components[f.name] = f.components;
-    for (double v : values) {
-      if (!std::isfinite(v)) {
-        ++bad;
-        continue;
+  nlohmann::json association = nlohmann::json::object();
+  for (const auto* list : {&m.fields, &m.cell_fields})
+    for (const auto& f : *list) {
+      association[f.name] = list == &m.fields ? "point" : "cell";
+      double fmin = std::numeric_limits<double>::infinity(), fmax = -fmin;
+      std::int64_t bad = 0;
+      // A vector's or tensor's range is its magnitude's, as a picture of the field alone shows it.
+      const std::vector<double> values = scalar_values(f, f.scalar() ? FieldChoice::kWhole : FieldChoice::kMagnitude);
+      components[f.name] = f.components;
+      for (double v : values) {
+        if (!std::isfinite(v)) {
+          ++bad;
+          continue;
+        }
+        fmin = std::min(fmin, v);
+        fmax = std::max(fmax, v);
       }
-      fmin = std::min(fmin, v);
-      fmax = std::max(fmax, v);
+      fields[f.name] = bad == static_cast<std::int64_t>(values.size()) ? nlohmann::json::array({nullptr, nullptr})
+                                                                       : nlohmann::json::array({fmin, fmax});
+      if (bad) nonfinite[f.name] = bad;
+      if (fmin == fmax) constant.push_back(f.name);
     }
-    fields[f.name] = bad == static_cast<std::int64_t>(values.size()) ? nlohmann::json::array({nullptr, nullptr})
-                                                                     : nlohmann::json::array({fmin, fmax});
-    if (bad) nonfinite[f.name] = bad;
-    if (fmin == fmax) constant.push_back(f.name);
-  }
   nlohmann::json origins = nlohmann::json::object();
-  for (const auto& f : m.fields) origins[f.name] = f.origin;
+  for (const auto* list : {&m.fields, &m.cell_fields})
+    for (const auto& f : *list) origins[f.name] = f.origin;
   return {{"file", m.source},
           {"points", m.n_points()},
           {"cells", m.n_cells()},
@@ -69,6 +73,7 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
           {"fields", fields},
           {"field_origins", origins},
           {"field_components", components},
+          {"field_association", association},
           {"constant_fields", constant},
           {"nonfinite_values", nonfinite},
           {"boundary_faces", static_cast<std::int64_t>(topo.boundary.size())},
@@ -110,8 +115,10 @@ void print_text(const nlohmann::json& j) {
     const std::string parts =
         nc == 1 ? ""
                 : "; " + std::to_string(nc) + " components, pick " + component_words(nc) + "; range of the magnitude";
-    std::printf("    %-28s [%s, %s]  (%s%s)\n", k.c_str(), v[0].dump().c_str(), v[1].dump().c_str(),
-                j["field_origins"][k].get<std::string>().c_str(), parts.c_str());
+    const std::string cells =
+        j["field_association"][k] == "cell" ? "; rendered constant over each cell, --cell-data points averages it" : "";
+    std::printf("    %-28s [%s, %s]  (%s%s%s)\n", k.c_str(), v[0].dump().c_str(), v[1].dump().c_str(),
+                j["field_origins"][k].get<std::string>().c_str(), parts.c_str(), cells.c_str());
   }
   std::printf("  boundary faces %lld, shared faces %lld", j["boundary_faces"].get<long long>(),
               j["shared_faces"].get<long long>());
@@ -251,6 +258,7 @@ Action add_info(CLI::App& app) {
   cmd->add_option("mesh", args->mesh,
                   "Mesh file (.vtu .pvtu .vts .vtk .exo/.ex2/.e .cgns[.gz] PLOT3D .node/.ele .off .xyzs .vtp)")
       ->required();
+  args->reader.cell_data.reset();  // cell data listed as it is, its counts the file's
   add_reader_options(*cmd, args->reader);
   add_max_memory_option(*cmd, args->reader.max_memory_gib, "Refuse meshes");
   cmd->add_flag("--json", args->json, "Print one JSON object instead of text");

@@ -244,7 +244,9 @@ Action add_render(CLI::App& app) {
                 "(to measure what the thread hides)");
   add_max_memory_option(*cmd, args->max_memory_gib, "Refuse renders");
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
-  return [args, texts, look, moves] {
+  CLI::Option* cell_data = cmd->get_option("--cell-data");
+  return [args, texts, look, moves, cell_data] {
+    args->cell_data_given = cell_data->count() > 0;
     for (const auto& [row, option] : moves) {
       if (option->count() == 0) continue;
       const std::vector<std::string> given = option->results();

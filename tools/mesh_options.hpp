@@ -29,6 +29,12 @@ inline void add_reader_options(CLI::App& cmd, ReadOptions& reader) {
   cmd.add_option("--zone", reader.zone, "CGNS: read only this zone");
   cmd.add_option("--time-step", reader.time_step, "Exodus II: time step of the fields (from 0)")
       ->check(CLI::Range(0, std::numeric_limits<int>::max()));
+  if (!reader.cell_data) return;  // a command that shows cell data as it is (info)
+  cmd.add_option_function<std::string>(
+         "--cell-data", [&reader](const std::string& mode) { reader.cell_data = cell_data_from_name(mode); },
+         "Cell data (a finite-volume solver's cell averages): cells (default) draws each cell's value constant over "
+         "the cell, exactly, in every method; points averages them to the points, volume-weighted")
+      ->check(CLI::IsMember({"cells", "points"}));
 }
 
 // The look of a mesh rendered without a scene; the options given are listed in `given`.

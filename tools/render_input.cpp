@@ -43,6 +43,7 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   Scene scene;
   if (scene_file) {
     scene = given_scene ? std::move(*given_scene) : load_scene(a.input);
+    if (a.cell_data_given) scene.reader.cell_data = a.reader.cell_data;
     if (!a.look_given.empty()) {  // --colormap: the scene's colours replaced by the map over the field's range
       usage([&] { return colormap(a.look.colormap, 0, 1); });
       scene.transfer_function.erase("color");

@@ -30,6 +30,7 @@ struct RenderArgs {
   int png_bits = 8;    // --png-bits: 8 or 16 a sample
   double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
   bool legend = false;
+  bool cell_data_given = false;     // --cell-data, over a scene's reader block
   bool log = false;                 // --log: the field on a log scale
   std::optional<double> log_floor;  // --log-floor
   double max_memory_gib = 0.0;      // 0: the machine's available memory
