@@ -69,6 +69,7 @@ Mesh cells_apart(const Mesh& mesh) {
   for (const PointField& f : mesh.cell_fields) {
     PointField g = gather(f, cell_of);
     g.origin += ", constant over each cell";
+    g.per_cell = true;
     out.fields.push_back(std::move(g));
   }
   return out;

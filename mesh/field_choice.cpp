@@ -220,7 +220,7 @@ PointField& select_field(Mesh& mesh, const std::string& spec, std::string* note)
   if (c.log) origin += ", on a log scale";
   const std::int64_t n = static_cast<std::int64_t>(from.values.size()) / from.components;
   std::vector<double> values = choice_values(from.values.data(), n, from.components, c, mesh.source);
-  mesh.fields.push_back({c.name, std::move(values), std::move(origin), 1});
+  mesh.fields.push_back({c.name, std::move(values), std::move(origin), 1, from.per_cell});
   return mesh.fields.back();
 }
 

@@ -40,7 +40,7 @@ PointField& Mesh::add_field(std::string name, std::string origin, int components
 }
 
 PointField gather(const PointField& f, const std::vector<std::int64_t>& points) {
-  PointField g{f.name, {}, f.origin, f.components};
+  PointField g{f.name, {}, f.origin, f.components, f.per_cell};
   g.values.reserve(points.size() * static_cast<std::size_t>(f.components));
   for (std::int64_t p : points) g.append_tuple(f, p);
   return g;

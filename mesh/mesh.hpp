@@ -68,6 +68,7 @@ struct PointField {
   std::vector<double> values;  // `components` per point, interleaved (x y z x y z ... for a vector)
   std::string origin;          // how it was made: "point data", "cell data, volume-weighted", ...
   int components = 1;
+  bool per_cell = false;  // cell data drawn constant over each cell (mesh/cell_data.hpp): no iso-value inside a cell
 
   bool scalar() const { return components == 1; }
   const double* tuple(std::int64_t p) const { return values.data() + p * components; }

@@ -228,6 +228,15 @@ PYBIND11_MODULE(_cellproj, m) {
       });
 
   m.def(
+      "_mesh_with_cell_data",
+      [](py::array points, py::array connectivity, py::array offsets, py::array types, const py::dict& point_fields,
+         const py::dict& cell_fields, const std::string& cell_data, const std::string& name) {
+        return std::make_unique<NumpyMesh>(python::mesh_with_cell_data(
+            points, connectivity, offsets, types, point_fields, cell_fields, cell_data_from_name(cell_data), name));
+      },
+      "from_vtk's and from_meshio's door for data with cell fields (a copy, validated as cellproj.read validates)");
+
+  m.def(
       "read",
       [](const std::string& path, const std::string& format, const std::string& q_file, const std::string& zone,
          int time_step, const std::string& cell_data) {

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "base/error.hpp"
+#include "mesh/validate.hpp"
 
 namespace cellproj::python {
 namespace {
@@ -138,6 +139,50 @@ std::vector<std::string> NumpyMesh::copies() const {
   std::vector<std::string> out = conversions_;
   for (const auto& c : volume_->copies()) out.push_back(c);
   return out;
+}
+
+namespace {
+
+// `a` (n,) or (n, k) as a field of n tuples, copied as float64.
+PointField field_of_array(const std::string& name, py::handle a, std::int64_t n, const char* per,
+                          const std::string& source) {
+  const auto v = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(a);
+  if (!v || (v.ndim() != 1 && v.ndim() != 2) || v.shape(0) != n)
+    throw InputError(where(source, "field '" + name + "': expected " + std::to_string(n) + " values, one per " + per +
+                                       " (or (" + std::to_string(n) + ", k) for k components)"));
+  const int k = v.ndim() == 2 ? static_cast<int>(v.shape(1)) : 1;
+  return {name, std::vector<double>(v.data(), v.data() + v.size()), std::string(per) + " data", k};
+}
+
+}  // namespace
+
+std::shared_ptr<const Mesh> mesh_with_cell_data(py::array points, py::array connectivity, py::array offsets,
+                                                py::array types, const py::dict& point_fields,
+                                                const py::dict& cell_fields, CellData cell_data, std::string source) {
+  const auto p = py::array_t<double, py::array::c_style | py::array::forcecast>::ensure(points);
+  const auto c = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(connectivity);
+  const auto o = py::array_t<std::int64_t, py::array::c_style | py::array::forcecast>::ensure(offsets);
+  const auto t = py::array_t<std::uint8_t, py::array::c_style | py::array::forcecast>::ensure(types);
+  if (!p || p.ndim() != 2 || p.shape(1) != 3) throw InputError(where(source, "points: expected shape (N, 3)"));
+  if (!c || !o || !t || c.ndim() != 1 || o.ndim() != 1 || t.ndim() != 1 || o.shape(0) != t.shape(0) + 1)
+    throw InputError(
+        where(source, "connectivity, offsets and types: expected 1-D arrays, offsets one longer than types"));
+  Mesh m;
+  m.source = std::move(source);
+  m.points.assign(p.data(), p.data() + p.size());
+  m.connectivity.assign(c.data(), c.data() + c.size());
+  m.offsets.assign(o.data(), o.data() + o.size());
+  m.types.assign(t.data(), t.data() + t.size());
+  if (m.offsets.front() != 0 || m.offsets.back() != static_cast<std::int64_t>(m.connectivity.size()))
+    throw InputError(where(m.source, "offsets: expected 0 first and the connectivity's length last"));
+  for (const auto& [name, a] : point_fields)
+    m.fields.push_back(field_of_array(py::str(name), a, m.n_points(), "point", m.source));
+  for (const auto& [name, a] : cell_fields)
+    m.cell_fields.push_back(field_of_array(py::str(name), a, m.n_cells(), "cell", m.source));
+  const ValidationReport report = validate(m.view());
+  reorient_inverted(m, report);
+  apply_cell_data(m, cell_data);
+  return std::make_shared<const Mesh>(std::move(m));
 }
 
 }  // namespace cellproj::python

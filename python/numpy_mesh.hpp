@@ -8,6 +8,7 @@
 
 #include <pybind11/numpy.h>
 
+#include "mesh/cell_data.hpp"
 #include "render/field_set.hpp"
 #include "render/volume.hpp"
 
@@ -42,5 +43,12 @@ class NumpyMesh {
   std::vector<std::string> conversions_;
   std::unique_ptr<Volume> volume_;
 };
+
+// A mesh copied from arrays as NumpyMesh takes them, with cell data (`cell_fields`: name -> (n,)
+// or (n, k) per cell) made point fields the `cell_data` way (mesh/cell_data.hpp), validated as a
+// read mesh is: what from_vtk and from_meshio hand over when the data has cell fields.
+std::shared_ptr<const Mesh> mesh_with_cell_data(py::array points, py::array connectivity, py::array offsets,
+                                                py::array types, const py::dict& point_fields,
+                                                const py::dict& cell_fields, CellData cell_data, std::string source);
 
 }  // namespace cellproj::python

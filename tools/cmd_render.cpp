@@ -142,6 +142,11 @@ int run_render(const RenderArgs& given) {
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
   for (const auto& w : prepared.warnings) warn(w);
+  if (const PointField* f = prepared.loaded.mesh.find_field(prepared.field);
+      f && f->per_cell && (!settings.iso.surfaces.empty() || settings.mode == RenderMode::layers))
+    warn(prepared.field +
+         " is cell data drawn constant over each cell: it takes an iso-value only on the faces between cells, where "
+         "no iso-surface is drawn; setting 'cell-data' points averages it to the points, whose iso-surfaces are");
   const double load_seconds = seconds_since(t_load);
 
   const FrameJob job{a, input, *renderer, settings, paths, color_bar(prepared, legend_page(scene))};

@@ -169,6 +169,54 @@ def test_a_log_scale_renders_as_the_cli_does(tmp_path, mixed):
         cellproj.render(mesh, size=(8, 8), log_floor=0.05)
 
 
+@pytest.mark.parametrize("mode", ["cells", "points"])
+def test_cell_data_is_the_same_from_every_front_end(tmp_path, mixed, mode):
+    """A cell field (and a point field of the same name, read back as NAME_cell for the cells) from
+    read, from_meshio and from_vtk: drawn constant over each cell (or averaged to the points) the
+    same way, to the same bits. (ASCII, which meshio reads.)"""
+    meshio = pytest.importorskip("meshio")
+    vtk = pytest.importorskip("vtkmodules.vtkIOXML")
+    from vtkmodules.util.numpy_support import numpy_to_vtk
+    from vtkmodules.vtkFiltersCore import vtkCellCenters
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(mixed)
+    reader.Update()
+    grid = reader.GetOutput()
+    centres = vtkCellCenters()
+    centres.SetInputData(grid)
+    centres.Update()
+    x = np.array([centres.GetOutput().GetPoint(i) for i in range(grid.GetNumberOfCells())])
+    for name, values in (("heat", np.sin(3 * x[:, 0]) + x[:, 2]), ("scalar", x[:, 1])):
+        array = numpy_to_vtk(np.ascontiguousarray(values))
+        array.SetName(name)
+        grid.GetCellData().AddArray(array)
+    path = str(tmp_path / "cells.vtu")
+    writer = vtk.vtkXMLUnstructuredGridWriter()
+    writer.SetInputData(grid)
+    writer.SetDataModeToAscii()
+    writer.SetFileName(path)
+    writer.Write()
+    read = cellproj.read(path, cell_data=mode)
+    assert set(read.fields) == {"scalar", "scalar_cell", "heat"}
+    assert read.n_points == (sum(grid.GetCell(c).GetNumberOfPoints() for c in range(grid.GetNumberOfCells()))
+                             if mode == "cells" else grid.GetNumberOfPoints())
+    reader = vtk.vtkXMLUnstructuredGridReader()
+    reader.SetFileName(path)
+    reader.Update()
+    doors = {"meshio": cellproj.from_meshio(meshio.read(path), cell_data=mode),
+             "vtk": cellproj.from_vtk(reader.GetOutput(), cell_data=mode)}
+    camera = cellproj.Camera.framing(read, "iso")
+    tf = cellproj.TransferFunction.default(read, field="heat")
+    image = cellproj.render(read, tf, camera, size=(64, 64), field="heat")
+    for door, mesh in doors.items():
+        assert mesh.fields == read.fields, door
+        # meshio groups cells by type: averaged to the points, the sums run in another order.
+        same = np.array_equal if mode == "cells" or door == "vtk" else lambda a, b: np.allclose(a, b, 0, 1e-12)
+        assert same(mesh.field("heat"), read.field("heat")), door
+        rendered = cellproj.render(mesh, tf, camera, size=(64, 64), field="heat")
+        assert np.array_equal(rendered, image) if same is np.array_equal else np.allclose(rendered, image, 0, 1e-6)
+
+
 def test_vector_arrays_from_numpy():
     points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float)
     velocity = np.array([[3.0, 4.0, 0.0], [0, 0, 1], [1, 1, 1], [2, 0, 0]])
