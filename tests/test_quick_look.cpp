@@ -90,6 +90,26 @@ TEST(ColorBar, DrawsTheColoursInOrderOnTheRightAndLeavesTheRestAlone) {
 
 // Pictures for slides and compositing tools: a transparent PNG (straight alpha) and 16-bit PNGs
 // read back equal the float image to their precision; a legend on a transparent picture is opaque.
+TEST(ColorBar, TicksAreTheEndsAndNiceValuesBetween) {
+  ColorBar bar;
+  bar.lo = 0.0, bar.hi = 1.0;
+  const auto texts = [](const std::vector<BarTick>& ticks) {
+    std::vector<std::string> out;
+    for (const BarTick& t : ticks) out.push_back(t.text);
+    return out;
+  };
+  EXPECT_EQ(texts(bar_ticks(bar, 4, 0.05)), (std::vector<std::string>{"0", "0.2", "0.4", "0.6", "0.8", "1"}));
+  bar.lo = 3.1, bar.hi = 97.0;  // the ends as they are, nice values between, none crowding an end
+  const std::vector<BarTick> ticks = bar_ticks(bar, 4, 0.1);
+  EXPECT_EQ(texts(ticks), (std::vector<std::string>{"3.1", "20", "40", "60", "80", "97"}));
+  EXPECT_NEAR(ticks[1].at, (20 - 3.1) / (97 - 3.1), 1e-12);
+  // A log bar (log10 of the values): the decades, labelled in the field's units.
+  bar.log = true, bar.lo = std::log10(3206.6), bar.hi = std::log10(8.1e6);
+  EXPECT_EQ(texts(bar_ticks(bar, 6, 0.05)), (std::vector<std::string>{"3207", "1e+04", "1e+05", "1e+06", "8.1e+06"}));
+  bar.lo = 0.0, bar.hi = std::log10(30.0);  // within two decades: 1, 2, 5 times them
+  EXPECT_EQ(texts(bar_ticks(bar, 6, 0.05)), (std::vector<std::string>{"1", "2", "5", "10", "20", "30"}));
+}
+
 TEST(PngOutputs, TransparentAndSixteenBitPngsReadBackToTheirPrecision) {
   test::TempDir dir;
   Image img(5, 3);

@@ -94,7 +94,40 @@ std::string label(double v, double span) {
   return text;
 }
 
+// 1, 2 or 5 times a power of ten: the nice step nearest above `raw` (Heckbert, "Nice numbers for
+// graph labels", Graphics Gems, 1990).
+double nice_step(double raw) {
+  const double decade = std::pow(10.0, std::floor(std::log10(raw))), f = raw / decade;
+  return (f <= 1.0 ? 1.0 : f <= 2.0 ? 2.0 : f <= 5.0 ? 5.0 : 10.0) * decade;
+}
+
 }  // namespace
+
+std::vector<BarTick> bar_ticks(const ColorBar& bar, int inner, double clearance) {
+  const double span = bar.hi - bar.lo;
+  const auto text = [&](double v) { return bar.log ? label(std::pow(10.0, v), 0.0) : label(v, span); };
+  std::vector<BarTick> ticks{{0.0, text(bar.lo)}};
+  if (!(span > 0)) return ticks;
+  std::vector<double> values;  // in the bar's units (log10 of the values on a log bar)
+  if (bar.log && span > 2.0) {
+    const double step = std::max(1.0, std::ceil(span / std::max(1, inner)));  // every n-th decade
+    for (double d = std::ceil(bar.lo / step) * step; d <= bar.hi; d += step) values.push_back(d);
+  } else if (bar.log) {  // within a decade or two: 1, 2 and 5 times the decades
+    for (double d = std::floor(bar.lo); d <= bar.hi; ++d)
+      for (double m : {1.0, 2.0, 5.0}) values.push_back(d + std::log10(m));
+  } else {
+    const double step = nice_step(span / std::max(1, inner + 1));
+    for (double v = std::ceil(bar.lo / step) * step; v <= bar.hi; v += step)
+      values.push_back(std::abs(v) < 1e-12 * step ? 0.0 : v);
+  }
+  for (double v : values) {
+    const double at = (v - bar.lo) / span;
+    if (at > clearance && at < 1.0 - clearance && static_cast<int>(ticks.size()) <= inner)
+      ticks.push_back({at, text(v)});
+  }
+  ticks.push_back({1.0, text(bar.hi)});
+  return ticks;
+}
 
 std::string default_font() {
 #ifdef CELLPROJ_DEFAULT_FONT
@@ -114,20 +147,18 @@ namespace {
 // Where a legend's parts go in a picture `height` pixels tall: text size, labels, widths.
 struct Layout {
   int pixels, margin, bar_w, gap, label_w, title_w;
-  std::string labels[3];                                                               // low, middle, high
+  std::vector<BarTick> ticks;                                                          // the ends and nice values
   int width() const { return 2 * margin + std::max(bar_w + gap + label_w, title_w); }  // of a strip holding it
 };
 Layout layout(const ColorBar& bar, int height, Font& font) {
   Layout l;
   l.pixels = font.pixels();
-  if (bar.log) {  // the ends and the geometric middle, in the field's units
-    for (int k = 0; k < 3; ++k) l.labels[k] = label(std::pow(10.0, bar.lo + 0.5 * k * (bar.hi - bar.lo)), 0.0);
-  } else {
-    const double span = bar.hi - bar.lo;
-    l.labels[0] = label(bar.lo, span), l.labels[1] = label(0.5 * (bar.lo + bar.hi), span),
-    l.labels[2] = label(bar.hi, span);
-  }
-  l.label_w = std::max({font.width(l.labels[0]), font.width(l.labels[1]), font.width(l.labels[2])});
+  // As many inner ticks as fit two and a half text lines apart, none nearer an end than a line and a half.
+  const double bar_pixels = 0.6 * height;
+  l.ticks = bar_ticks(bar, std::clamp(static_cast<int>(bar_pixels / (2.5 * l.pixels)) - 1, 0, 8),
+                      1.5 * l.pixels / std::max(1.0, bar_pixels));
+  l.label_w = 0;
+  for (const BarTick& t : l.ticks) l.label_w = std::max(l.label_w, font.width(t.text));
   l.margin = std::max(4, height / 40), l.bar_w = std::max(6, l.pixels), l.gap = std::max(3, l.pixels / 3);
   l.title_w = font.width(bar.title);
   return l;
@@ -152,10 +183,10 @@ void draw_bar(Picture& img, const ColorBar& bar) {
   fill(img, x0 - 1, top, x0, bottom, bar.text);
   fill(img, x1, top, x1 + 1, bottom, bar.text);
   const int half = font.ascender() / 2;
-  const int ys[3] = {bottom, (top + bottom) / 2, top};
-  for (int k = 0; k < 3; ++k) {
-    fill(img, x1, ys[k], x1 + gap / 2 + 1, ys[k] + 1, bar.text);  // tick
-    font.draw(img, x1 + gap, ys[k] + half, l.labels[k], bar.text);
+  for (const BarTick& t : l.ticks) {
+    const int y = bottom - static_cast<int>(std::lround(t.at * (bottom - top)));
+    fill(img, x1, y, x1 + gap / 2 + 1, y + 1, bar.text);  // tick
+    font.draw(img, x1 + gap, y + half, t.text, bar.text);
   }
   font.draw(img, std::max(0, std::min(x0, img.width - l.margin - l.title_w)), top - pixels / 2 - 2, bar.title,
             bar.text);

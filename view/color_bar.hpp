@@ -20,6 +20,16 @@ struct ColorBar {
   std::string font;                // a .ttf/.otf file; empty: default_font()
 };
 
+// A labelled tick of the bar: where along it (0 at the low end, 1 at the high end) and its text.
+struct BarTick {
+  double at;
+  std::string text;
+};
+// The ends of the range and, between them, at most `inner` values at nice steps (1, 2 or 5 times a
+// power of ten; on a log bar the decades, and 2 and 5 times them where few decades fit), none
+// closer to an end than `clearance` of the bar.
+std::vector<BarTick> bar_ticks(const ColorBar& bar, int inner, double clearance);
+
 // The font found when cellproj was built (DejaVu Sans), or "" when none was.
 std::string default_font();
 // A text colour that reads on `background`: white on dark, black on light.
