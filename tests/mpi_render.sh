@@ -91,6 +91,14 @@ mpi 4 render "$tmp/${m0}_3" --method exact --interpolation canonical-tets --thre
   --size 72x64 >/dev/null 2>&1
 same "$tmp/i.npy" "$tmp/s.npy" 1e-6 "4 ranks over 3 bricks"
 
+# Cell data drawn constant over each cell (each cell its own points, seams between them), over 3 ranks.
+"$exe" generate mixed -n 5 --cell-data -o "$tmp/cells.vtu" >/dev/null || fail "generate --cell-data"
+mpi 3 render "$tmp/cells.vtu" --method exact --interpolation canonical-tets --threads 1 --npy "$tmp/c3.npy" \
+  -o "$tmp/c3.png" --size 64x56 >/dev/null 2>&1 || fail "cell data over 3 ranks"
+"$exe" render "$tmp/cells.vtu" --method exact --interpolation canonical-tets --npy "$tmp/c1.npy" -o "$tmp/c1.png" \
+  --size 64x56 >/dev/null 2>&1
+same "$tmp/c3.npy" "$tmp/c1.npy" 1e-6 "cell data over 3 ranks"
+
 # A missing and a truncated brick: every rank exits non-zero, rank 0 names each failing rank and file.
 cp -r "$tmp/mixed_5" "$tmp/bad"
 rm "$tmp/bad/brick_0001.vtu"

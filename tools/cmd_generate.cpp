@@ -47,13 +47,30 @@ std::vector<std::string> write_series(Mesh m, const std::string& out, int steps,
   return files;
 }
 
+// The mesh's field as cell data: each cell the mean of its vertices' values (a finite-volume
+// solver's cell averages, for trying --cell-data).
+Mesh as_cell_data(Mesh m) {
+  for (const PointField& f : m.fields) {
+    PointField c{f.name, {}, "generated, the mean over each cell", f.components};
+    for (std::int64_t cell = 0; cell < m.n_cells(); ++cell)
+      for (int k = 0; k < f.components; ++k) {
+        double sum = 0;
+        for (std::int64_t i = m.offsets[cell]; i < m.offsets[cell + 1]; ++i) sum += f.tuple(m.connectivity[i])[k];
+        c.values.push_back(sum / static_cast<double>(m.offsets[cell + 1] - m.offsets[cell]));
+      }
+    m.cell_fields.push_back(std::move(c));
+  }
+  m.fields.clear();
+  return m;
+}
+
 }  // namespace
 
 Action add_generate(CLI::App& app) {
   struct Args {
     std::string kind, out;
     int n = 16, steps = 1;
-    bool binary = false;
+    bool binary = false, cell_data = false;
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd = app.add_subcommand("generate", "Write a synthetic mesh made by cellproj (" + generated_kinds() + ")");
@@ -64,12 +81,16 @@ Action add_generate(CLI::App& app) {
                   "Output mesh: .vtu, .vtk (legacy), .exo (Exodus II), or for tetrahedra .node (TetGen) or .off")
       ->required();
   cmd->add_flag("--binary", args->binary, ".vtk: binary instead of ASCII");
+  cmd->add_flag("--cell-data", args->cell_data,
+                "Write the field as cell data (each cell the mean of its vertices), as a finite-volume solver would");
   cmd->add_option("--steps", args->steps,
                   "Write a time series of this many key frames (times 0, 1, ...), the field times a wave travelling "
                   "along x: -o a .pvd (its files beside it) or a pattern such as out/mesh_%04d.vtu")
       ->check(CLI::Range(1, 100000));
   return [args] {
-    const Mesh m = usage([&] { return generate(args->kind, args->n); });  // an unknown kind: exit 2
+    Mesh m = usage([&] { return generate(args->kind, args->n); });  // an unknown kind: exit 2
+    if (args->cell_data && args->steps > 1) throw UsageError("--cell-data writes one mesh: give it without --steps");
+    if (args->cell_data) m = as_cell_data(std::move(m));
     if (args->steps > 1) {
       const std::vector<std::string> files = write_series(m, args->out, args->steps, args->binary);
       std::printf("wrote %s ... %s (%d key frames of %lld points, %lld cells)\n", files.front().c_str(),
