@@ -8,6 +8,7 @@
 #include "render/settings_table.hpp"
 #include "scene/quick_scene.hpp"
 #include "test_util.hpp"
+#include "view/caption.hpp"
 #include "view/color_bar.hpp"
 
 namespace cellproj {
@@ -108,6 +109,29 @@ TEST(ColorBar, TicksAreTheEndsAndNiceValuesBetween) {
   EXPECT_EQ(texts(bar_ticks(bar, 6, 0.05)), (std::vector<std::string>{"3207", "1e+04", "1e+05", "1e+06", "8.1e+06"}));
   bar.lo = 0.0, bar.hi = std::log10(30.0);  // within two decades: 1, 2, 5 times them
   EXPECT_EQ(texts(bar_ticks(bar, 6, 0.05)), (std::vector<std::string>{"1", "2", "5", "10", "20", "30"}));
+}
+
+TEST(Caption, StandsAboveThePictureAndLabelsTheTime) {
+  EXPECT_EQ(time_label("t = %.2f", 1.5), "t = 1.50");
+  EXPECT_EQ(time_label("%g s (100%%)", 0.25), "0.25 s (100%)");
+  for (const char* bad : {"%d", "%s", "t = %.2f %.2f", "%n", "no time", "%.2f%"})
+    EXPECT_NE(test::input_error([&] { time_label(bad, 1.0); }).find("setting 'time-format'"), std::string::npos) << bad;
+  if (default_font().empty()) GTEST_SKIP() << "no font";
+  Rgb8Image picture;
+  picture.width = 40, picture.height = 30;
+  picture.rgb.assign(40 * 30 * 3, 200);
+  const Caption caption{"Title", "t = 1.00", glm::dvec3(1.0), ""};
+  Rgb8Image out = above_caption(picture, caption, glm::dvec3(0.0));
+  const int strip = out.height - picture.height;
+  ASSERT_EQ(out.width, picture.width);
+  ASSERT_GT(strip, 0);
+  for (int j = 0; j < picture.height; ++j)  // the picture itself untouched, below the strip
+    for (int i = 0; i < picture.width; ++i) ASSERT_EQ(out.pixel(i, j + strip)[0], 200);
+  int lit = 0;  // and the text drawn in the strip
+  for (int j = 0; j < strip; ++j)
+    for (int i = 0; i < out.width; ++i) lit += out.pixel(i, j)[0] > 0;
+  EXPECT_GT(lit, 10);
+  EXPECT_EQ(above_caption(picture, Caption{}, glm::dvec3(0.0)).height, picture.height);  // nothing asked: as it was
 }
 
 TEST(PngOutputs, TransparentAndSixteenBitPngsReadBackToTheirPrecision) {

@@ -137,7 +137,11 @@ int run_render(const RenderArgs& given) {
   if (!std::isfinite(a.orbit))
     throw UsageError("--orbit: expected a finite angle in degrees, got " + std::to_string(a.orbit));
   if (a.orbit != 0.0 && a.frames < 2) throw UsageError("--orbit turns the camera over --frames N (N >= 2)");
+  if (a.time_label) usage([&] { return time_label(a.time_format, 0.0); });  // the format, before any file is read
   const Input input = load_input(a, *renderer, settings, levels, std::move(scene_read));
+  if (a.time_label && !input.player)
+    throw UsageError("--time-label labels a time series' frames, and " + a.input +
+                     " is not one (a .pvd, a numbered pattern, or an Exodus file with --time or --animate)");
   if (input.partition || world.size > 1) return render_distributed(a, input, settings, world);
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
@@ -162,7 +166,8 @@ int run_render(const RenderArgs& given) {
     char what[128];
     std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, method.c_str(),
                   median(run.frame_times));
-    job.write(run.first, paths.png, paths.npy, what);
+    job.write(run.first, paths.png, paths.npy, what,
+              input.player ? std::optional<double>(input.times.front()) : std::nullopt);
   }
 
   if (a.stats) print_stats(job, run, load_seconds, threads);
@@ -206,6 +211,11 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--png-bits", args->png_bits, "Bits a sample of the PNG: 8 (default) or 16")
       ->check(CLI::IsMember({8, 16}));
   cmd->add_flag("--legend", args->legend, "Draw the colour legend (field name and range) on the PNG");
+  cmd->add_option("--title", args->title, "A title above the picture, in a strip of its own (the PNG grows)");
+  cmd->add_flag("--time-label", args->time_label,
+                "A time series: label each frame with its time above the picture (\"t = 1.50\")");
+  cmd->add_option("--time-format", args->time_format,
+                  "With --time-label: printf's format of the time, one %f, %e or %g (default \"t = %.2f\")");
   cmd->add_option("--orbit", args->orbit,
                   "Turn the camera this many degrees about its up axis over --frames N (a turntable: 360)");
   // The render settings, one option a row of the table (render/settings_table.hpp): --NAME is
@@ -250,8 +260,10 @@ Action add_render(CLI::App& app) {
   add_max_memory_option(*cmd, args->max_memory_gib, "Refuse renders");
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
   CLI::Option* cell_data = cmd->get_option("--cell-data");
-  return [args, texts, look, moves, cell_data] {
+  CLI::Option* time_format = cmd->get_option("--time-format");
+  return [args, texts, look, moves, cell_data, time_format] {
     args->cell_data_given = cell_data->count() > 0;
+    if (time_format->count() > 0) args->time_label = true;
     for (const auto& [row, option] : moves) {
       if (option->count() == 0) continue;
       const std::vector<std::string> given = option->results();

@@ -35,9 +35,9 @@ struct PreparedVolume {
 
 }  // namespace
 
-void FrameJob::write(const Image& image, const std::string& png, const std::string& npy,
-                     const std::string& what) const {
-  write_outputs(image, png_format(args, input.scene), args.legend ? &legend : nullptr, png, npy, what);
+void FrameJob::write(const Image& image, const std::string& png, const std::string& npy, const std::string& what,
+                     std::optional<double> time) const {
+  write_outputs(image, png_format(args, input.scene), args.legend ? &legend : nullptr, png, npy, what, time);
 }
 
 std::string FrameJob::frame_what(int f, double seconds) const {
@@ -69,7 +69,7 @@ FrameLoop play_series_frames(const FrameJob& job) {
         char time[64];
         std::snprintf(time, sizeof time, ", time %g", in.times[f]);
         if (job.paths.sequence)
-          job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, r.seconds) + time);
+          job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, r.seconds) + time, in.times[f]);
         else if (f == 0)
           out.first = std::move(img);
       },

@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "view/caption.hpp"
 #include "view/color_bar.hpp"
 #include "view/image.hpp"
 
@@ -21,12 +22,15 @@ struct PngFormat {
   glm::dvec3 background{0.0};
   bool transparent = false;
   int bits = 8;
+  Caption caption;                         // its title (and text colour), above the picture
+  std::optional<std::string> time_format;  // a time series' frames labelled with their time so
 };
 
 // The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`;
-// the colour legend drawn on the PNG when given.
+// on the PNG the caption above the picture (labelled with `time` when the format says so) and the
+// colour legend beside it when given.
 void write_outputs(const Image& image, const PngFormat& format, const ColorBar* legend, const std::string& png,
-                   const std::string& npy, const std::string& what);
+                   const std::string& npy, const std::string& what, std::optional<double> time = std::nullopt);
 
 // Where the frames go: one PNG (and .npy), or with a printf pattern (frame_%04d.png) one per frame.
 struct FramePaths {

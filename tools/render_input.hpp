@@ -30,10 +30,13 @@ struct RenderArgs {
   int png_bits = 8;    // --png-bits: 8 or 16 a sample
   double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
   bool legend = false;
-  bool cell_data_given = false;     // --cell-data, over a scene's reader block
-  bool log = false;                 // --log: the field on a log scale
-  std::optional<double> log_floor;  // --log-floor
-  double max_memory_gib = 0.0;      // 0: the machine's available memory
+  bool cell_data_given = false;          // --cell-data, over a scene's reader block
+  std::string title;                     // --title, above the picture
+  bool time_label = false;               // --time-label: a series' frames labelled with their time
+  std::string time_format = "t = %.2f";  // --time-format
+  bool log = false;                      // --log: the field on a log scale
+  std::optional<double> log_floor;       // --log-floor
+  double max_memory_gib = 0.0;           // 0: the machine's available memory
   bool stats = false;
   std::optional<double> time;     // --time T: a series' frame at T
   std::vector<std::string> clip;  // --clip x,y,z,nx,ny,nz, repeatable: replaces the scene's planes
@@ -56,9 +59,13 @@ struct Input {
   std::optional<PartitionIndex> partition;  // a partitioned mesh: prepared.loaded is its extent (no cells)
 };
 
-// How the PNGs of `scene` are written: its background (or transparent) and --png-bits.
+// How the PNGs of `scene` are written: its background (or transparent), --png-bits, --title and
+// --time-label.
 inline PngFormat png_format(const RenderArgs& a, const Scene& scene) {
-  return {scene.background, scene.transparent, a.png_bits};
+  const glm::dvec3 page = scene.transparent ? glm::dvec3(1.0) : scene.background;  // legend_page's
+  PngFormat f{scene.background, scene.transparent, a.png_bits, {a.title, "", text_color_for(page), ""}, {}};
+  if (a.time_label) f.time_format = a.time_format;
+  return f;
 }
 
 // What the legend's text is set against: the background, or for a transparent picture the light

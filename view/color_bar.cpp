@@ -6,85 +6,13 @@
 #include <memory>
 #include <type_traits>
 
-#include <ft2build.h>
-#include FT_FREETYPE_H
 #include <glm/common.hpp>
 
 #include "base/error.hpp"
+#include "view/text.hpp"
 
 namespace cellproj {
 namespace {
-
-// One FreeType face at one pixel size, released with it.
-// Colour c over pixel (x, y) with coverage a: in 8 bits, or (straight alpha) in floats, where the
-// pixel's opacity grows by the coverage.
-void blend(Rgb8Image& img, int x, int y, const glm::dvec3& c, double a) {
-  unsigned char* p = img.pixel(x, y);
-  for (int k = 0; k < 3; ++k) p[k] = static_cast<unsigned char>(std::lround(p[k] * (1 - a) + 255 * c[k] * a));
-}
-void blend(DisplayImage& img, int x, int y, const glm::dvec3& c, double a) {
-  float* p = img.pixel(x, y);
-  const double alpha = a + p[3] * (1 - a);
-  for (int k = 0; k < 3; ++k) p[k] = alpha > 0 ? static_cast<float>((c[k] * a + p[k] * p[3] * (1 - a)) / alpha) : 0.0f;
-  p[3] = static_cast<float>(alpha);
-}
-
-class Font {
- public:
-  Font(const std::string& path, int pixels) {
-    if (path.empty())
-      throw InputError(
-          "setting 'legend': no font was found when cellproj was built; install fonts-dejavu-core and rebuild");
-    if (FT_Init_FreeType(&library_)) throw InputError("setting 'legend': FreeType could not start");
-    if (FT_New_Face(library_, path.c_str(), 0, &face_)) {
-      FT_Done_FreeType(library_);
-      throw InputError(where(path, "setting 'legend': FreeType cannot load this font"));
-    }
-    FT_Set_Pixel_Sizes(face_, 0, static_cast<FT_UInt>(pixels));
-    pixels_ = pixels;
-  }
-  ~Font() {
-    FT_Done_Face(face_);
-    FT_Done_FreeType(library_);
-  }
-  Font(const Font&) = delete;
-  Font& operator=(const Font&) = delete;
-
-  int pixels() const { return pixels_; }
-  int ascender() const { return static_cast<int>(face_->size->metrics.ascender >> 6); }
-  int width(const std::string& text) {
-    int w = 0;
-    for (unsigned char c : text)
-      if (!FT_Load_Char(face_, c, FT_LOAD_DEFAULT)) w += static_cast<int>(face_->glyph->advance.x >> 6);
-    return w;
-  }
-  // Blends `text` in `color` with its baseline at y, starting at x, by each glyph's coverage.
-  template <class Picture>
-  void draw(Picture& img, int x, int y, const std::string& text, const glm::dvec3& color) {
-    for (unsigned char c : text) {
-      if (FT_Load_Char(face_, c, FT_LOAD_RENDER)) continue;
-      const FT_GlyphSlot g = face_->glyph;
-      for (unsigned r = 0; r < g->bitmap.rows; ++r)
-        for (unsigned q = 0; q < g->bitmap.width; ++q) {
-          const int px = x + g->bitmap_left + static_cast<int>(q), py = y - g->bitmap_top + static_cast<int>(r);
-          if (px < 0 || py < 0 || px >= img.width || py >= img.height) continue;
-          blend(img, px, py, color, g->bitmap.buffer[r * g->bitmap.pitch + q] / 255.0);
-        }
-      x += static_cast<int>(g->advance.x >> 6);
-    }
-  }
-
- private:
-  FT_Library library_ = nullptr;
-  FT_Face face_ = nullptr;
-  int pixels_ = 0;
-};
-
-template <class Picture>
-void fill(Picture& img, int x0, int y0, int x1, int y1, const glm::dvec3& c) {
-  for (int y = std::max(0, y0); y < std::min(img.height, y1); ++y)
-    for (int x = std::max(0, x0); x < std::min(img.width, x1); ++x) blend(img, x, y, glm::clamp(c, 0.0, 1.0), 1.0);
-}
 
 // v to 4 significant digits, with what is below a millionth of the range's span shown as 0.
 std::string label(double v, double span) {
@@ -163,7 +91,6 @@ Layout layout(const ColorBar& bar, int height, Font& font) {
   l.title_w = font.width(bar.title);
   return l;
 }
-int text_pixels(int height) { return std::clamp(height / 32, 9, 48); }
 
 template <class Picture>
 void draw_bar(Picture& img, const ColorBar& bar) {
@@ -192,33 +119,12 @@ void draw_bar(Picture& img, const ColorBar& bar) {
             bar.text);
 }
 
-// The picture with a strip on its right, `page` (a pixel's worth of samples) throughout, wide
-// enough for the legend, which is drawn there.
+// The picture with a strip on its right, `page` throughout, wide enough for the legend, which is
+// drawn there.
 template <class Picture, class Sample>
 Picture beside(const Picture& picture, const ColorBar& bar, const std::vector<Sample>& page) {
   Font font(bar.font.empty() ? default_font() : bar.font, text_pixels(picture.height));
-  const int strip = layout(bar, picture.height, font).width();
-  const std::size_t n = page.size();
-  Picture out;
-  out.width = picture.width + strip, out.height = picture.height;
-  auto& samples = [](Picture& p) -> std::vector<Sample>& {
-    if constexpr (std::is_same_v<Picture, Rgb8Image>)
-      return p.rgb;
-    else
-      return p.rgba;
-  }(out);
-  const auto& from = [](const Picture& p) -> const std::vector<Sample>& {
-    if constexpr (std::is_same_v<Picture, Rgb8Image>)
-      return p.rgb;
-    else
-      return p.rgba;
-  }(picture);
-  samples.resize(static_cast<std::size_t>(out.width) * out.height * n);
-  for (int j = 0; j < out.height; ++j) {
-    Sample* row = samples.data() + static_cast<std::size_t>(j) * out.width * n;
-    std::copy_n(from.data() + static_cast<std::size_t>(j) * picture.width * n, picture.width * n, row);
-    for (int i = picture.width; i < out.width; ++i) std::copy(page.begin(), page.end(), row + i * n);
-  }
+  Picture out = grown(picture, layout(bar, picture.height, font).width(), 0, page);
   draw_bar(out, bar);
   return out;
 }
@@ -229,13 +135,10 @@ void draw_color_bar(Rgb8Image& image, const ColorBar& bar) { draw_bar(image, bar
 void draw_color_bar(DisplayImage& image, const ColorBar& bar) { draw_bar(image, bar); }
 
 Rgb8Image beside_legend(const Rgb8Image& picture, const ColorBar& bar, const glm::dvec3& page) {
-  std::vector<unsigned char> p(3);
-  for (int k = 0; k < 3; ++k) p[k] = static_cast<unsigned char>(std::lround(std::clamp(page[k], 0.0, 1.0) * 255));
-  return beside(picture, bar, p);
+  return beside(picture, bar, page_sample(page));
 }
 DisplayImage beside_legend(const DisplayImage& picture, const ColorBar& bar, const std::optional<glm::dvec3>& page) {
-  const glm::dvec3 c = page ? glm::clamp(*page, 0.0, 1.0) : glm::dvec3(0.0);
-  return beside(picture, bar, std::vector<float>{float(c.r), float(c.g), float(c.b), page ? 1.0f : 0.0f});
+  return beside(picture, bar, page_sample(page));
 }
 
 }  // namespace cellproj
