@@ -27,6 +27,7 @@
 #include "scene/scene_file.hpp"
 #include "scene/transfer_function_json.hpp"
 #include "scene/volume_scene.hpp"
+#include "view/figure.hpp"
 
 namespace py = pybind11;
 using namespace cellproj;
@@ -110,6 +111,15 @@ Image from_numpy(const py::array_t<float, py::array::c_style | py::array::forcec
   std::copy(a.data(), a.data() + a.size(), img.rgba.begin());
   return img;
 }
+
+// What write_png's legend shows: `tf`'s colours over the field's range [lo, hi] (in the field's
+// units, also on a log scale), titled.
+struct Legend {
+  TransferFunction tf;
+  double lo, hi;
+  std::string title;
+  bool log;
+};
 
 // Renders on `threads` workers (0: all cores) without the GIL.
 Image render_frame(const Renderer& renderer, const Volume& volume, const Field& field, const TransferFunction& tf,
@@ -301,6 +311,15 @@ PYBIND11_MODULE(_cellproj, m) {
       .def("extinction", &TransferFunction::extinction);
   m.def("colormaps", &colormap_list, "The built-in colour maps, by ParaView's names");
 
+  py::class_<Legend>(m, "Legend", "A colour legend for write_png: a transfer function's colours over a field's range")
+      .def(
+          py::init([](const TransferFunction& tf, std::pair<double, double> range, const std::string& title, bool log) {
+            return Legend{tf, range.first, range.second, title, log};
+          }),
+          py::arg("tf"), py::arg("range"), py::arg("title") = "", py::arg("log") = false,
+          "range=(lo, hi) in the field's units (mesh.field(name).min(), .max()); log=True for a transfer function "
+          "made for a log scale (labels the decades)");
+
   py::class_<Camera>(m, "Camera")
       .def(py::init(&make_camera), py::arg("eye"), py::arg("target"), py::arg("up") = std::vector<double>{0, 0, 1},
            py::arg("projection") = "perspective", py::arg("fov_y") = 30.0, py::arg("height") = 2.0)
@@ -455,15 +474,27 @@ PYBIND11_MODULE(_cellproj, m) {
   m.def(
       "write_png",
       [](const py::array_t<float, py::array::c_style | py::array::forcecast>& image, const std::string& path,
-         std::optional<std::vector<double>> background, int bits) {
-        const Image img = from_numpy(image);
-        if (bits != 8 && bits != 16) throw InputError("write_png: bits must be 8 or 16, got " + std::to_string(bits));
-        if (background && bits == 8) return write_png(img, vec(*background, "background"), path);
-        write_png(
-            to_display(img, background ? std::optional<glm::dvec3>(vec(*background, "background")) : std::nullopt),
-            bits, path);
+         std::optional<std::vector<double>> background, int bits, const std::string& title,
+         std::optional<Legend> legend) {
+        Figure figure;
+        figure.page = background ? std::optional<glm::dvec3>(vec(*background, "background")) : std::nullopt;
+        figure.bits = bits;
+        const glm::dvec3 page = figure.page ? *figure.page : glm::dvec3(1.0);  // a transparent figure's slide
+        figure.caption = {title, "", text_color_for(page), ""};
+        if (legend) {
+          const double lo = legend->log ? std::log10(legend->lo) : legend->lo;
+          const double hi = legend->log ? std::log10(legend->hi) : legend->hi;
+          if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi >= lo))
+            throw InputError("Legend: range must be finite and increasing" +
+                             std::string(legend->log ? ", above 0 on a log scale" : ""));
+          figure.legend = color_bar(legend->tf, lo, hi, legend->log, legend->title, page);
+        }
+        write_figure(from_numpy(image), figure, path);
       },
       py::arg("image"), py::arg("path"), py::arg("background") = std::vector<double>{0, 0, 0}, py::arg("bits") = 8,
+      py::arg("title") = "", py::arg("legend") = py::none(),
       "Writes a render's array as a PNG: over the background colour, or with background=None transparent "
-      "(straight alpha: colour un-premultiplied); bits=8 or 16 a sample");
+      "(straight alpha: colour un-premultiplied); bits=8 or 16 a sample; title= above the picture and "
+      "legend=cellproj.Legend(tf, range, title) beside it, in strips of their own (never over the data), as the "
+      "CLI's --title and --legend");
 }

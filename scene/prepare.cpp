@@ -19,17 +19,19 @@ std::pair<glm::dvec3, glm::dvec3> bounds(const MeshView& m) { return point_bound
 
 std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& m) { return bounds(m.view()); }
 
-ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
+ColorBar color_bar(const TransferFunction& tf, double lo, double hi, bool log, const std::string& title,
+                   const glm::dvec3& background) {
   ColorBar bar;
-  bar.lo = p.field_min;
-  bar.hi = p.field_max;
-  bar.log = p.log_scale;
-  bar.title = p.scalar.empty() ? p.field : p.scalar;
+  bar.lo = lo, bar.hi = hi, bar.log = log, bar.title = title;
   bar.text = text_color_for(background);
   constexpr int kSamples = 256;
   for (int k = 0; k < kSamples; ++k)
-    bar.colors.push_back(glm::clamp(p.tf.color(bar.lo + (k + 0.5) / kSamples * (bar.hi - bar.lo)), 0.0, 1.0));
+    bar.colors.push_back(glm::clamp(tf.color(lo + (k + 0.5) / kSamples * (hi - lo)), 0.0, 1.0));
   return bar;
+}
+
+ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
+  return color_bar(p.tf, p.field_min, p.field_max, p.log_scale, p.scalar.empty() ? p.field : p.scalar, background);
 }
 
 namespace {

@@ -54,6 +54,9 @@ LoadedMesh first_key_frame(SeriesPlayer& player, Scene& scene);
 // The legend of the picture: the transfer function's colours over the field's range, the field's
 // name, text that reads on `background`.
 ColorBar color_bar(const PreparedScene& scene, const glm::dvec3& background);
+// The same for `tf` over [lo, hi] (in its own units: on a log scale, log10 of the values).
+ColorBar color_bar(const TransferFunction& tf, double lo, double hi, bool log, const std::string& title,
+                   const glm::dvec3& background);
 
 // The box of the points, as {lo, hi}.
 std::pair<glm::dvec3, glm::dvec3> bounds(const Mesh& mesh);

@@ -20,16 +20,11 @@ std::string level_path(const std::string& path, int slices) {
 // the colour legend drawn on the PNG when given.
 void write_outputs(const Image& image, const PngFormat& format, const ColorBar* legend, const std::string& png,
                    const std::string& npy, const std::string& what, std::optional<double> time) {
-  Caption caption = format.caption;
-  if (time && format.time_format) caption.label = time_label(*format.time_format, *time);
-  if (!png.empty() && !format.transparent && format.bits == 8) {  // the common picture, straight to 8 bits
-    const Rgb8Image rgb = above_caption(to_rgb8(image, format.background), caption, format.background);
-    write_png(legend ? beside_legend(rgb, *legend, format.background) : rgb, png);
-  } else if (!png.empty()) {
-    const std::optional<glm::dvec3> page =
-        format.transparent ? std::nullopt : std::optional<glm::dvec3>(format.background);
-    const DisplayImage display = above_caption(to_display(image, page), caption, page);
-    write_png(legend ? beside_legend(display, *legend, page) : display, format.bits, png);
+  if (!png.empty()) {
+    Figure figure{format.transparent ? std::nullopt : std::optional<glm::dvec3>(format.background), format.bits,
+                  format.caption, legend ? std::optional<ColorBar>(*legend) : std::nullopt};
+    if (time && format.time_format) figure.caption.label = time_label(*format.time_format, *time);
+    write_figure(image, figure, png);
   }
   if (!npy.empty()) write_npy(image, npy);
   for (const std::string& out : {png, npy})

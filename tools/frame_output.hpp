@@ -9,6 +9,7 @@
 
 #include "view/caption.hpp"
 #include "view/color_bar.hpp"
+#include "view/figure.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {

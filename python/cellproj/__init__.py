@@ -7,10 +7,10 @@
 """
 import numpy as _np
 
-from ._cellproj import (Camera, InputError, Mesh, ResourceError, TransferFunction, _mesh_with_cell_data, colormaps,
-                        read, render, render_scene, write_png)
+from ._cellproj import (Camera, InputError, Legend, Mesh, ResourceError, TransferFunction, _mesh_with_cell_data,
+                        colormaps, read, render, render_scene, write_png)
 
-__all__ = ["Camera", "InputError", "Mesh", "ResourceError", "TransferFunction", "colormaps", "read", "render",
+__all__ = ["Camera", "InputError", "Legend", "Mesh", "ResourceError", "TransferFunction", "colormaps", "read", "render",
            "render_scene", "write_png", "from_meshio", "from_vtk"]
 
 # Arrays VTK's readers add that are not data (cellproj.read skips them too).

@@ -217,6 +217,22 @@ def test_cell_data_is_the_same_from_every_front_end(tmp_path, mixed, mode):
         assert np.array_equal(rendered, image) if same is np.array_equal else np.allclose(rendered, image, 0, 1e-6)
 
 
+def test_a_figure_from_python_is_the_clis(tmp_path, mixed):
+    """write_png's title and legend give the PNG the CLI's --title and --legend give, byte for byte."""
+    mesh = cellproj.read(mixed)
+    out = tmp_path / "cli.png"
+    subprocess.run([EXE, "render", mixed, "--size", "96x80", "--title", "A twisted box", "--legend", "-o", str(out)],
+                   check=True, capture_output=True)
+    values = mesh.field("scalar")
+    legend = cellproj.Legend(cellproj.TransferFunction.default(mesh), (values.min(), values.max()), "scalar")
+    cellproj.write_png(cellproj.render(mesh, size=(96, 80)), str(tmp_path / "py.png"), title="A twisted box",
+                       legend=legend)
+    assert (tmp_path / "py.png").read_bytes() == out.read_bytes()
+    with pytest.raises(cellproj.InputError, match="range must be finite and increasing"):
+        cellproj.write_png(cellproj.render(mesh, size=(8, 8)), str(tmp_path / "x.png"),
+                           legend=cellproj.Legend(cellproj.TransferFunction.default(mesh), (1.0, 0.0)))
+
+
 def test_vector_arrays_from_numpy():
     points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], float)
     velocity = np.array([[3.0, 4.0, 0.0], [0, 0, 1], [1, 1, 1], [2, 0, 0]])
