@@ -93,7 +93,8 @@ PartitionIndex read_partition_index(const std::string& given) {
     index.cells = j.at("cells").get<std::int64_t>();
     index.cost_model = j.value("cost_model", "projected");
     for (const json& f : j.at("fields")) {
-      index.fields.push_back({f.at("name").get<std::string>(), f.at("min").get<double>(), f.at("max").get<double>()});
+      index.fields.push_back(
+          {f.at("name").get<std::string>(), f.at("min").get<double>(), f.at("max").get<double>(), {}});
       for (const json& p : f.value("auto_extinction", json::array()))
         index.fields.back().auto_extinction.push_back({p.at(0).get<double>(), p.at(1).get<double>()});
     }

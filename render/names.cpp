@@ -38,6 +38,8 @@ constexpr std::pair<SliceAxis, const char*> kSliceAxes[] = {{SliceAxis::automati
                                                             {SliceAxis::z, "z"}};
 constexpr std::pair<SliceIntegral, const char*> kSliceIntegrals[] = {{SliceIntegral::sampled, "sampled"},
                                                                      {SliceIntegral::preintegrated, "preintegrated"}};
+constexpr std::pair<SampleFilter, const char*> kSampleFilters[] = {{SampleFilter::box, "box"},
+                                                                   {SampleFilter::tent, "tent"}};
 constexpr std::pair<SmallCells, const char*> kSmallCells[] = {
     {SmallCells::splat, "splat"}, {SmallCells::draw, "draw"}, {SmallCells::skip, "skip"}};
 constexpr std::pair<Silhouettes, const char*> kSilhouettes[] = {{Silhouettes::none, "none"},
@@ -83,6 +85,10 @@ std::string slice_axis_names() { return names(kSliceAxes); }
 SliceIntegral parse_slice_integral(const std::string& n) { return from_name(kSliceIntegrals, n, "slice integral"); }
 const char* name_of(SliceIntegral integral) { return name_in(kSliceIntegrals, integral); }
 std::string slice_integral_names() { return names(kSliceIntegrals); }
+
+SampleFilter parse_sample_filter(const std::string& n) { return from_name(kSampleFilters, n, "sample filter"); }
+const char* name_of(SampleFilter filter) { return name_in(kSampleFilters, filter); }
+std::string sample_filter_names() { return names(kSampleFilters); }
 
 SmallCells parse_small_cells(const std::string& n) { return from_name(kSmallCells, n, "small-cells mode"); }
 const char* name_of(SmallCells mode) { return name_in(kSmallCells, mode); }

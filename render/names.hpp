@@ -40,6 +40,10 @@ SliceIntegral parse_slice_integral(const std::string& name);
 const char* name_of(SliceIntegral integral);
 std::string slice_integral_names();
 
+SampleFilter parse_sample_filter(const std::string& name);
+const char* name_of(SampleFilter filter);
+std::string sample_filter_names();
+
 SmallCells parse_small_cells(const std::string& name);
 const char* name_of(SmallCells mode);
 std::string small_cells_names();

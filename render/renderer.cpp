@@ -350,11 +350,12 @@ class SlicingMode final : public Renderer {
 };
 
 // Anti-aliasing (RenderSettings::ssaa): the frame of the renderer it wraps, drawn n times larger on
-// each side, each pixel the mean of its n x n samples (a box filter over the pixel's square; the
-// same weights for colour and opacity, premultiplied).
+// each side, each pixel the mean of its n x n samples (a box filter over the pixel's square) or a
+// tent over them (the same weights for colour and opacity, premultiplied).
 class Supersampled final : public Renderer {
  public:
-  Supersampled(std::unique_ptr<Renderer> inner, int n) : inner_(std::move(inner)), n_(n) {}
+  Supersampled(std::unique_ptr<Renderer> inner, int n, SampleFilter filter)
+      : inner_(std::move(inner)), n_(n), filter_(filter) {}
   std::string name() const override { return inner_->name(); }
   void prepare(const Volume& volume) const override { inner_->prepare(volume); }
   std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
@@ -366,11 +367,12 @@ class Supersampled final : public Renderer {
   Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
               ImageSize size, RenderReport* report, const Progress& progress) const override {
     return resolve_samples(inner_->render(volume, field, tf, camera, supersampled_size(size, n_), report, progress), n_,
-                           report);
+                           filter_, report);
   }
 
   std::unique_ptr<Renderer> inner_;
   int n_;
+  SampleFilter filter_;
 };
 
 // The renderer of the settings' mode, not supersampled.
@@ -399,10 +401,10 @@ ImageSize supersampled_size(ImageSize size, int ssaa) {
   return {size.width * ssaa, size.height * ssaa};
 }
 
-Image resolve_samples(Image samples, int ssaa, RenderReport* report) {
+Image resolve_samples(Image samples, int ssaa, SampleFilter filter, RenderReport* report) {
   if (ssaa == 1) return samples;
   if (report) report->add("ssaa", std::int64_t{ssaa});
-  return downsample(samples, ssaa);
+  return downsample(samples, ssaa, filter);
 }
 
 Image Renderer::render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
@@ -421,7 +423,7 @@ void render_progressive(const Volume& volume, const Field& field, const Transfer
   SlicingMode(settings.slicing, settings.tetrahedralize)
       .render_levels(volume, field, tf, camera, supersampled_size(size, n), levels,
                      [&](std::size_t level, int slices, Image&& image, RenderReport&& report) {
-                       const Image picture = resolve_samples(std::move(image), n, &report);
+                       const Image picture = resolve_samples(std::move(image), n, settings.ssaa_filter, &report);
                        done(level, slices, picture, report);
                      });
 }
@@ -436,7 +438,7 @@ std::unique_ptr<Renderer> make_renderer(const RenderSettings& s) {
   supersampled_size({1, 1}, s.ssaa);  // the factor checked now
   std::unique_ptr<Renderer> renderer = mode_renderer(s);
   if (s.ssaa == 1) return renderer;
-  return std::make_unique<Supersampled>(std::move(renderer), s.ssaa);
+  return std::make_unique<Supersampled>(std::move(renderer), s.ssaa, s.ssaa_filter);
 }
 
 Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const RenderSettings& settings,

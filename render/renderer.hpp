@@ -52,9 +52,10 @@ inline constexpr int kMaxSupersampledSide = 65536;
 // The size a frame of `size` is drawn at for anti-aliasing by `ssaa` (each side ssaa times
 // longer); InputError naming the setting beyond kMaxSupersampledSide.
 ImageSize supersampled_size(ImageSize size, int ssaa);
-// The picture of a frame drawn at supersampled_size: each pixel the mean of its ssaa x ssaa
-// samples (a box filter), and `ssaa` added to the report when it is more than 1.
-Image resolve_samples(Image samples, int ssaa, RenderReport* report);
+// The picture of a frame drawn at supersampled_size: its samples filtered into pixels (the mean of
+// each pixel's ssaa x ssaa, or a tent over them: view/image.hpp), and `ssaa` added to the report
+// when it is more than 1.
+Image resolve_samples(Image samples, int ssaa, SampleFilter filter, RenderReport* report);
 
 // The renderer for `settings`, checked once (InputError for settings that do not go together).
 std::unique_ptr<Renderer> make_renderer(const RenderSettings& settings);

@@ -7,6 +7,7 @@
 #include "raycast/layer_options.hpp"
 #include "raycast/reduction.hpp"
 #include "slicing/slicing_options.hpp"
+#include "view/image.hpp"
 #include "visibility/methods.hpp"
 
 namespace cellproj {
@@ -31,6 +32,7 @@ struct RenderSettings {
   // Anti-aliasing: each pixel the mean of ssaa x ssaa samples (a box filter), every method
   // rendering the image ssaa times larger on each side (render/renderer.cpp, Supersampled).
   int ssaa = 1;
+  SampleFilter ssaa_filter = SampleFilter::box;  // how the samples become a pixel
 };
 
 struct ImageSize {

@@ -270,11 +270,17 @@ const std::vector<SettingRow> kRows = {
      [](const RenderSettings& s) { return std::to_string(s.projection.table_size); },
      [] { return std::string("an integer in [2, 8192]"); }},
     {"ssaa",
-     "Anti-aliasing: each pixel the mean of N x N samples (box filter), for every method; the frame's work and "
+     "Anti-aliasing: each pixel made of N x N samples (box filter, or tent: ssaa-filter), for every method; the "
+     "frame's work and "
      "memory grow N-squared-fold (docs/accuracy.md, Anti-aliasing)",
      false, always, [](RenderSettings& s, const std::string& t) { s.ssaa = int_in(t, 1, kMaxSsaa); },
      [](const RenderSettings& s) { return std::to_string(s.ssaa); },
      [] { return "an integer in [1, " + std::to_string(kMaxSsaa) + "]"; }},
+    {"ssaa-filter",
+     "With ssaa: box (each pixel the mean of its samples) or tent (the samples within a pixel of its centre "
+     "weighted 1 - distance: smoother edges, a touch softer)",
+     false, always, [](RenderSettings& s, const std::string& t) { s.ssaa_filter = parse_sample_filter(t); },
+     [](const RenderSettings& s) { return std::string(name_of(s.ssaa_filter)); }, sample_filter_names},
     {"interpolation", "exact: the field inside hexahedra, wedges and pyramids", false, exact,
      [](RenderSettings& s, const std::string& t) { s.interpolation = parse_cell_interpolation(t); },
      [](const RenderSettings& s) { return std::string(name_of(s.interpolation)); }, cell_interpolation_names},

@@ -54,7 +54,7 @@ Image render_volumes(const std::vector<VolumeEntry>& volumes, const RenderSettin
       report->add("spectrum_fit_exponents", st.fit_exponents);
     }
   }
-  return resolve_samples(std::move(image), settings.ssaa, report);
+  return resolve_samples(std::move(image), settings.ssaa, settings.ssaa_filter, report);
 }
 
 std::uint64_t estimate_volumes_bytes(const std::vector<VolumeSize>& volumes, ImageSize size, int ssaa) {

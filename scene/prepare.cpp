@@ -137,7 +137,7 @@ PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {
                                                                 std::pow(10.0, lo), std::pow(10.0, hi), true)
                                   : transfer_function_from_json(s.transfer_function, s.source, s.base_dir, lo, hi);
   const std::string scalar = log_scale ? log_scale_scalar(field) : field;
-  PreparedScene p{std::move(loaded), field, lo, hi, log_scale, scalar, std::move(tf), Camera{}, {}};
+  PreparedScene p{std::move(loaded), field, lo, hi, log_scale, scalar, std::move(tf), Camera{}, {}, {}};
   const auto [blo, bhi] = bounds(p.loaded.mesh);
   const Camera base = s.camera ? *s.camera : view_camera(s.view, blo, bhi, double(s.width) / s.height);
   check_camera(base, where(s.source, "the camera framing " + s.mesh + "'s bounds"));

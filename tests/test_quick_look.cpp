@@ -111,6 +111,20 @@ TEST(ColorBar, TicksAreTheEndsAndNiceValuesBetween) {
   EXPECT_EQ(texts(bar_ticks(bar, 6, 0.05)), (std::vector<std::string>{"1", "2", "5", "10", "20", "30"}));
 }
 
+TEST(SampleFilters, ATentKeepsAConstantAndWeighsItsNeighbours) {
+  Image flat(12, 8);
+  for (float& v : flat.rgba) v = 0.25f;
+  for (float v : downsample(flat, 4, SampleFilter::tent).rgba) EXPECT_NEAR(v, 0.25f, 1e-7);
+  // One lit sample column at x = 5 (pixel 1's second sample): the tent gives pixel 0 a share of it
+  // (its centre 1.125 pixels of samples away, weight 1 - 0.875 against the others), the box none.
+  Image line(12, 4);
+  for (int j = 0; j < 4; ++j) line.pixel(5, j)[3] = 1.0f;
+  const Image box = downsample(line, 4, SampleFilter::box), tent = downsample(line, 4, SampleFilter::tent);
+  EXPECT_EQ(box.pixel(0, 0)[3], 0.0f);
+  EXPECT_GT(tent.pixel(0, 0)[3], 0.0f);
+  EXPECT_GT(tent.pixel(1, 0)[3], tent.pixel(0, 0)[3]);
+}
+
 TEST(Caption, StandsAboveThePictureAndLabelsTheTime) {
   EXPECT_EQ(time_label("t = %.2f", 1.5), "t = 1.50");
   EXPECT_EQ(time_label("%g s (100%%)", 0.25), "0.25 s (100%)");

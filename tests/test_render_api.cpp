@@ -250,6 +250,14 @@ TEST(RenderApi, SupersamplingIsTheLargerFrameBoxFilteredAndNearerTheAntiAliasedI
   EXPECT_GT(aliased, 2e-3);  // the thin cells alias
   EXPECT_LT(smoothed, 0.5 * aliased) << aliased << " " << smoothed;
 
+  // The tent filter: the larger frame tent-filtered, and nearer the tent-filtered reference too.
+  aa.ssaa_filter = SampleFilter::tent;
+  EXPECT_EQ(render(volume, f, tf, aa, camera, size).rgba,
+            downsample(render(volume, f, tf, {}, camera, {160, 128}), 4, SampleFilter::tent).rgba);
+  const Image tent_reference = downsample(render(volume, f, tf, exact, camera, {320, 256}), 8, SampleFilter::tent);
+  EXPECT_LT(compare(render(volume, f, tf, aa, camera, size), tent_reference).rmse,
+            0.5 * compare(render(volume, f, tf, {}, camera, size), tent_reference).rmse);
+
   EXPECT_THROW(supersampled_size({8192, 8192}, 16), InputError);  // beyond 65536 pixels a side
   EXPECT_THROW(supersampled_size({64, 64}, 0), InputError);
   RenderSettings too_many;

@@ -12,6 +12,7 @@ Action add_compare(CLI::App& app) {
     std::string a, b, diff;
     double scale = 10.0;
     int downsample = 1;
+    std::string filter = "box";
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd =
@@ -23,11 +24,14 @@ Action add_compare(CLI::App& app) {
   cmd->add_option("--downsample", args->downsample,
                   "Box-filter B down by K first (B rendered at K times A's size: the anti-aliased reference)")
       ->check(CLI::Range(1, 64));
+  cmd->add_option("--filter", args->filter,
+                  "How --downsample filters: box (default) or tent, as render's --ssaa-filter")
+      ->check(CLI::IsMember({"box", "tent"}));
   return [args] {
     const Image a = read_npy(args->a), b_read = read_npy(args->b);  // each names its file when it fails
     Image b;
     try {
-      b = downsample(b_read, args->downsample);
+      b = downsample(b_read, args->downsample, args->filter == "tent" ? SampleFilter::tent : SampleFilter::box);
     } catch (const InputError& e) {  // a size --downsample does not divide: which file
       throw InputError(args->b + ": " + e.what());
     }

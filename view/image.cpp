@@ -234,4 +234,41 @@ Image downsample(const Image& image, int k) {
   return out;
 }
 
+Image downsample(const Image& image, int k, SampleFilter filter) {
+  if (filter == SampleFilter::box || k == 1) return downsample(image, k);
+  downsample(Image(k, k), k);  // k's checks, as the box filter's
+  if (image.width % k != 0 || image.height % k != 0) downsample(image, k);
+  // Separable: sample s's weight for pixel i is the tent at the distance of their centres, in pixels.
+  const auto weights = [k](int samples, int pixels) {
+    std::vector<std::vector<std::pair<int, double>>> w(static_cast<std::size_t>(pixels));
+    for (int i = 0; i < pixels; ++i) {
+      double sum = 0;
+      for (int s = std::max(0, (i - 1) * k); s < std::min(samples, (i + 2) * k); ++s) {
+        const double d = std::abs((s + 0.5) / k - (i + 0.5));
+        if (d < 1.0) w[i].push_back({s, 1.0 - d}), sum += 1.0 - d;
+      }
+      for (auto& [s, v] : w[i]) v /= sum;
+    }
+    return w;
+  };
+  const auto wx = weights(image.width, image.width / k), wy = weights(image.height, image.height / k);
+  Image rows(image.width / k, image.height);  // filtered along x
+  for (int j = 0; j < image.height; ++j)
+    for (int i = 0; i < rows.width; ++i) {
+      double sum[4] = {0, 0, 0, 0};
+      for (const auto& [s, v] : wx[i])
+        for (int c = 0; c < 4; ++c) sum[c] += v * image.pixel(s, j)[c];
+      for (int c = 0; c < 4; ++c) rows.pixel(i, j)[c] = static_cast<float>(sum[c]);
+    }
+  Image out(rows.width, image.height / k);
+  for (int j = 0; j < out.height; ++j)
+    for (int i = 0; i < out.width; ++i) {
+      double sum[4] = {0, 0, 0, 0};
+      for (const auto& [s, v] : wy[j])
+        for (int c = 0; c < 4; ++c) sum[c] += v * rows.pixel(i, s)[c];
+      for (int c = 0; c < 4; ++c) out.pixel(i, j)[c] = static_cast<float>(sum[c]);
+    }
+  return out;
+}
+
 }  // namespace cellproj

@@ -74,6 +74,11 @@ bool finite_pixels(const Image& image);
 // anti-aliased reference of an image rendered at k times the resolution). Throws InputError
 // unless k >= 1 divides both sides.
 Image downsample(const Image& image, int k);
+// How a supersampled frame becomes its pixels: the mean of each pixel's k x k samples (box), or
+// the samples within a pixel of its centre weighted by a tent, 1 - |d| on each axis (d in pixels;
+// smoother edges, a touch softer), renormalized at the image's border.
+enum class SampleFilter { box, tent };
+Image downsample(const Image& image, int k, SampleFilter filter);
 // |a - b| per pixel times `scale`, clamped to 1, opaque: each colour channel shows the larger of
 // its own difference and the opacity difference (for looking at where two methods disagree).
 Image difference_image(const Image& a, const Image& b, double scale);
