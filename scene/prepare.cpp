@@ -34,6 +34,25 @@ ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
   return color_bar(p.tf, p.field_min, p.field_max, p.log_scale, p.scalar.empty() ? p.field : p.scalar, background);
 }
 
+ColorBar color_bar(const PreparedScene& p, const RenderSettings& s, const glm::dvec3& background) {
+  ColorBar bar = color_bar(p, background);
+  const auto mark = [&](double value, const std::optional<glm::dvec3>& color) {
+    bar.marks.push_back({value, glm::clamp(color ? *color : p.tf.color(value), 0.0, 1.0)});
+  };
+  if (s.mode == RenderMode::reduction) {  // the colour map of one value per ray
+    const char* which[] = {"maximum", "minimum", "mean"};
+    bar.title += std::string(" (") + which[static_cast<int>(s.reduction)] + " along each ray)";
+  } else if (s.mode == RenderMode::layers) {  // one colour, shaded: the iso-value's
+    mark(s.layers.iso, s.layers.color);
+    bar.gradient = false;
+  } else if (s.mode == RenderMode::exact) {  // the surfaces' colours, over the volume's when drawn
+    for (const IsoSurface& iso : s.iso.surfaces)
+      mark(iso.value, iso.color_given ? std::optional<glm::dvec3>(iso.color) : std::nullopt);
+    bar.gradient = s.iso.volume || s.iso.surfaces.empty();
+  }
+  return bar;
+}
+
 namespace {
 
 // What of the box [lo, hi] the camera sees, as a warning ("" when some of it is in view and none

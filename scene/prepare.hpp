@@ -8,6 +8,7 @@
 #include "io/read_mesh.hpp"
 #include "io/series_files.hpp"
 #include "optics/transfer_function.hpp"
+#include "render/settings.hpp"
 #include "scene/scene_file.hpp"
 #include "view/camera.hpp"
 #include "view/color_bar.hpp"
@@ -54,6 +55,10 @@ LoadedMesh first_key_frame(SeriesPlayer& player, Scene& scene);
 // The legend of the picture: the transfer function's colours over the field's range, the field's
 // name, text that reads on `background`.
 ColorBar color_bar(const PreparedScene& scene, const glm::dvec3& background);
+// The legend of what `settings` draw: the mean, maximum or minimum along each ray named in the
+// title; iso-surfaces and layers marked on the bar in their colours, the bar's colours left out
+// where the picture has none of them (layers, iso-surfaces without the volume).
+ColorBar color_bar(const PreparedScene& scene, const RenderSettings& settings, const glm::dvec3& background);
 // The same for `tf` over [lo, hi] (in its own units: on a log scale, log10 of the values).
 ColorBar color_bar(const TransferFunction& tf, double lo, double hi, bool log, const std::string& title,
                    const glm::dvec3& background);

@@ -6,6 +6,7 @@
 #include "base/error.hpp"
 #include "optics/colormaps.hpp"
 #include "render/settings_table.hpp"
+#include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
 #include "test_util.hpp"
 #include "view/caption.hpp"
@@ -109,6 +110,44 @@ TEST(ColorBar, TicksAreTheEndsAndNiceValuesBetween) {
   EXPECT_EQ(texts(bar_ticks(bar, 6, 0.05)), (std::vector<std::string>{"3207", "1e+04", "1e+05", "1e+06", "8.1e+06"}));
   bar.lo = 0.0, bar.hi = std::log10(30.0);  // within two decades: 1, 2, 5 times them
   EXPECT_EQ(texts(bar_ticks(bar, 6, 0.05)), (std::vector<std::string>{"1", "2", "5", "10", "20", "30"}));
+}
+
+// The legend says what the picture's colours mean: a reduction named, iso-surfaces and layers
+// marked in their colours, the colour map left out where the picture has none of it.
+TEST(ColorBar, TheLegendOfEachMethodShowsItsColours) {
+  PreparedScene p{
+      {},       "T", 0.0, 1.0, false, "T", TransferFunction({{0.0, {0, 0, 1}}, {1.0, {1, 0, 0}}}, {{0.0, 1.0}}),
+      Camera{}, {},  {}};
+  RenderSettings s;
+  s.mode = RenderMode::reduction, s.reduction = RayReduction::minimum;
+  EXPECT_EQ(color_bar(p, s, glm::dvec3(0.0)).title, "T (minimum along each ray)");
+  s.mode = RenderMode::exact;
+  s.iso.surfaces = {{0.25, {0, 1, 0}, 0.5, true}, {0.75, {}, 0.5, false}};
+  s.iso.volume = false;
+  const ColorBar iso = color_bar(p, s, glm::dvec3(0.0));
+  ASSERT_EQ(iso.marks.size(), 2u);
+  EXPECT_EQ(iso.marks[0].color, glm::dvec3(0, 1, 0));
+  EXPECT_EQ(iso.marks[1].color, p.tf.color(0.75));  // the transfer function's where none is given
+  EXPECT_FALSE(iso.gradient);
+  s.mode = RenderMode::layers, s.layers.iso = 0.5;
+  const ColorBar layers = color_bar(p, s, glm::dvec3(0.0));
+  EXPECT_FALSE(layers.gradient);
+  ASSERT_EQ(layers.marks.size(), 1u);
+  EXPECT_EQ(layers.marks[0].value, 0.5);
+  if (default_font().empty()) GTEST_SKIP() << "no font";
+  Rgb8Image img;  // drawn: the swatch's colour on the bar, the bar's colours nowhere
+  img.width = 200, img.height = 200;
+  img.rgb.assign(200 * 200 * 3, 0);
+  draw_color_bar(img, layers);
+  int swatch = 0, red = 0;
+  for (int j = 0; j < img.height; ++j)
+    for (int i = 0; i < img.width; ++i) {
+      const unsigned char* q = img.pixel(i, j);
+      swatch += q[0] > 100 && q[1] < 60 && q[2] > 100;  // tf(0.5) = (0.5, 0, 0.5)
+      red += q[0] > 200 && q[1] < 60 && q[2] < 60;
+    }
+  EXPECT_GT(swatch, 10);
+  EXPECT_EQ(red, 0);
 }
 
 TEST(SampleFilters, ATentKeepsAConstantAndWeighsItsNeighbours) {

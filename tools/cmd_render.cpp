@@ -146,6 +146,8 @@ int run_render(const RenderArgs& given) {
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
   for (const auto& w : prepared.warnings) warn(w);
+  if (prepared.log_scale && (!settings.iso.surfaces.empty() || settings.mode == RenderMode::layers))
+    throw UsageError("iso-values do not go with --log yet: they would be read as logs of the field");
   if (const PointField* f = prepared.loaded.mesh.find_field(prepared.field);
       f && f->per_cell && (!settings.iso.surfaces.empty() || settings.mode == RenderMode::layers))
     warn(prepared.field +
@@ -153,7 +155,7 @@ int run_render(const RenderArgs& given) {
          "no iso-surface is drawn; setting 'cell-data' points averages it to the points, whose iso-surfaces are");
   const double load_seconds = seconds_since(t_load);
 
-  const FrameJob job{a, input, *renderer, settings, paths, color_bar(prepared, legend_page(scene))};
+  const FrameJob job{a, input, *renderer, settings, paths, color_bar(prepared, settings, legend_page(scene))};
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   FrameLoop run;
   tbb::task_arena(threads).execute([&] {

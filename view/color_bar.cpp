@@ -85,6 +85,13 @@ Layout layout(const ColorBar& bar, int height, Font& font) {
   const double bar_pixels = 0.6 * height;
   l.ticks = bar_ticks(bar, std::clamp(static_cast<int>(bar_pixels / (2.5 * l.pixels)) - 1, 0, 8),
                       1.5 * l.pixels / std::max(1.0, bar_pixels));
+  if (!bar.marks.empty()) {  // the marked values labelled instead of the nice ones between the ends
+    l.ticks = {l.ticks.front(), l.ticks.back()};
+    const double span = bar.hi - bar.lo;
+    for (const BarMark& m : bar.marks)
+      l.ticks.push_back({span > 0 ? std::clamp((m.value - bar.lo) / span, 0.0, 1.0) : 0.5,
+                         bar.log ? label(std::pow(10.0, m.value), 0.0) : label(m.value, span)});
+  }
   l.label_w = 0;
   for (const BarTick& t : l.ticks) l.label_w = std::max(l.label_w, font.width(t.text));
   l.margin = std::max(4, height / 40), l.bar_w = std::max(6, l.pixels), l.gap = std::max(3, l.pixels / 3);
@@ -101,9 +108,16 @@ void draw_bar(Picture& img, const ColorBar& bar) {
   const int x1 = img.width - l.margin - l.label_w - gap, x0 = x1 - l.bar_w;
   const int top = l.margin + 2 * pixels, bottom = top + static_cast<int>(0.6 * img.height);
   const int n = static_cast<int>(bar.colors.size());
-  for (int y = top; y < bottom; ++y) {  // high values at the top
+  for (int y = top; y < bottom && bar.gradient; ++y) {  // high values at the top
     const double t = 1.0 - (y - top + 0.5) / (bottom - top);
     fill(img, x0, y, x1, y + 1, bar.colors[std::clamp(static_cast<int>(t * n), 0, n - 1)]);
+  }
+  const double span = bar.hi - bar.lo;
+  for (const BarMark& m : bar.marks) {  // a swatch across the bar at its value, outlined
+    const double at = span > 0 ? std::clamp((m.value - bar.lo) / span, 0.0, 1.0) : 0.5;
+    const int y = bottom - static_cast<int>(std::lround(at * (bottom - top))), h = std::max(2, pixels / 3);
+    fill(img, x0 - 1, y - h - 1, x1 + 1, y + h + 1, bar.text);
+    fill(img, x0, y - h, x1, y + h, m.color);
   }
   fill(img, x0 - 1, top - 1, x1 + 1, top, bar.text);  // outline
   fill(img, x0 - 1, bottom, x1 + 1, bottom + 1, bar.text);

@@ -11,8 +11,16 @@
 
 namespace cellproj {
 
+// A value the picture draws in a colour of its own (an iso-surface, a layer), marked on the bar.
+struct BarMark {
+  double value;  // in the bar's units
+  glm::dvec3 color;
+};
+
 struct ColorBar {
   std::vector<glm::dvec3> colors;  // from the low end of the range to the high end, evenly spaced
+  bool gradient = true;            // the colours drawn; false: the picture has none of them (iso-surfaces alone)
+  std::vector<BarMark> marks;      // swatches beside the bar at their values, labelled
   double lo = 0, hi = 1;           // the values at the ends
   bool log = false;                // lo and hi are log10 of the values: labels show 10^lo ... 10^hi
   std::string title;               // the field's name
