@@ -361,6 +361,7 @@ PYBIND11_MODULE(_cellproj, m) {
         refuse_unused(settings, options.given);
         const ImageSize image_size = size_from(size);
         const Field f = chosen_field(mesh, field, log, log_floor);
+        refuse_iso_on_log_scale(settings, log);
         const double aspect = double(image_size.width) / image_size.height;
         if (!camera) {
           const auto [lo, hi] = bounds(mesh.view());
@@ -397,6 +398,7 @@ PYBIND11_MODULE(_cellproj, m) {
         if (!field.empty()) scene.field = field;
         if (log) scene.log_scale = true;
         if (log_floor) scene.log_floor = log_floor;
+        refuse_iso_on_log_scale(settings_from(options), scene.log_scale);
         if (!view.empty()) {
           scene.camera.reset(), scene.camera_moves = {};
           scene.view = view;

@@ -34,6 +34,11 @@ ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
   return color_bar(p.tf, p.field_min, p.field_max, p.log_scale, p.scalar.empty() ? p.field : p.scalar, background);
 }
 
+void refuse_iso_on_log_scale(const RenderSettings& s, bool log_scale) {
+  if (log_scale && (!s.iso.surfaces.empty() || s.mode == RenderMode::layers))
+    throw InputError("setting 'iso' does not go with setting 'log' yet: its values would be read as logs of the field");
+}
+
 ColorBar color_bar(const PreparedScene& p, const RenderSettings& s, const glm::dvec3& background) {
   ColorBar bar = color_bar(p, background);
   const auto mark = [&](double value, const std::optional<glm::dvec3>& color) {

@@ -59,6 +59,10 @@ ColorBar color_bar(const PreparedScene& scene, const glm::dvec3& background);
 // title; iso-surfaces and layers marked on the bar in their colours, the bar's colours left out
 // where the picture has none of them (layers, iso-surfaces without the volume).
 ColorBar color_bar(const PreparedScene& scene, const RenderSettings& settings, const glm::dvec3& background);
+// InputError when `settings` draw iso-values (exact's surfaces, layers) of a field on a log scale:
+// they would be read as logs of the field.
+void refuse_iso_on_log_scale(const RenderSettings& settings, bool log_scale);
+
 // The same for `tf` over [lo, hi] (in its own units: on a log scale, log10 of the values).
 ColorBar color_bar(const TransferFunction& tf, double lo, double hi, bool log, const std::string& title,
                    const glm::dvec3& background);

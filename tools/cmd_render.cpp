@@ -146,8 +146,7 @@ int run_render(const RenderArgs& given) {
   const Scene& scene = input.scene;
   const PreparedScene& prepared = input.prepared;
   for (const auto& w : prepared.warnings) warn(w);
-  if (prepared.log_scale && (!settings.iso.surfaces.empty() || settings.mode == RenderMode::layers))
-    throw UsageError("iso-values do not go with --log yet: they would be read as logs of the field");
+  usage([&] { refuse_iso_on_log_scale(settings, prepared.log_scale); });
   if (const PointField* f = prepared.loaded.mesh.find_field(prepared.field);
       f && f->per_cell && (!settings.iso.surfaces.empty() || settings.mode == RenderMode::layers))
     warn(prepared.field +

@@ -167,6 +167,8 @@ def test_a_log_scale_renders_as_the_cli_does(tmp_path, mixed):
     assert made.extinction(1.0) == 1.0
     with pytest.raises(cellproj.InputError, match="log_floor= is the floor of a log scale: give log= too"):
         cellproj.render(mesh, size=(8, 8), log_floor=0.05)
+    with pytest.raises(cellproj.InputError, match="iso= does not go with log= yet"):
+        cellproj.render(mesh, size=(8, 8), log=True, log_floor=0.05, method="exact", iso=["0.5"])
 
 
 @pytest.mark.parametrize("mode", ["cells", "points"])
