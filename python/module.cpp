@@ -118,7 +118,7 @@ struct Legend {
   TransferFunction tf;
   double lo, hi;
   std::string title;
-  bool log;
+  bool log, horizontal;
 };
 
 // Renders on `threads` workers (0: all cores) without the GIL.
@@ -318,7 +318,7 @@ PYBIND11_MODULE(_cellproj, m) {
           }),
           py::arg("tf"), py::arg("range"), py::arg("title") = "", py::arg("log") = false,
           "range=(lo, hi) in the field's units (mesh.field(name).min(), .max()); log=True for a transfer function "
-          "made for a log scale (labels the decades)");
+          "made for a log scale (labels the decades); horizontal=True puts the bar in a strip below the picture");
 
   py::class_<Camera>(m, "Camera")
       .def(py::init(&make_camera), py::arg("eye"), py::arg("target"), py::arg("up") = std::vector<double>{0, 0, 1},
@@ -490,6 +490,7 @@ PYBIND11_MODULE(_cellproj, m) {
             throw InputError("Legend: range must be finite and increasing" +
                              std::string(legend->log ? ", above 0 on a log scale" : ""));
           figure.legend = color_bar(legend->tf, lo, hi, legend->log, legend->title, page);
+          figure.legend->horizontal = legend->horizontal;
         }
         write_figure(from_numpy(image), figure, path);
       },

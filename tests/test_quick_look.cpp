@@ -266,6 +266,18 @@ TEST(PngOutputs, TheLegendStandsBesideThePicture) {
   const DisplayImage clear = beside_legend(to_display(img, std::nullopt), bar, std::nullopt);
   EXPECT_EQ(clear.width, with.width);
   EXPECT_EQ(clear.pixel(clear.width - 1, 0)[3], 0.0f);  // the strip is clear where nothing is drawn
+  // A horizontal bar stands below the picture: its rows untouched, the bar and text in the strip.
+  bar.horizontal = true;
+  const Rgb8Image below = beside_legend(picture, bar, page);
+  ASSERT_EQ(below.width, picture.width);
+  ASSERT_GT(below.height, picture.height);
+  EXPECT_TRUE(std::equal(picture.rgb.begin(), picture.rgb.end(), below.rgb.begin()));
+  int below_changed = 0;
+  for (int j = picture.height; j < below.height; ++j)
+    for (int i = 0; i < below.width; ++i)
+      below_changed +=
+          const_cast<Rgb8Image&>(below).pixel(i, j)[0] != static_cast<unsigned char>(std::lround(0.2 * 255));
+  EXPECT_GT(below_changed, 300);
 }
 
 }  // namespace

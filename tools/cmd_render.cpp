@@ -154,7 +154,7 @@ int run_render(const RenderArgs& given) {
          "no iso-surface is drawn; setting 'cell-data' points averages it to the points, whose iso-surfaces are");
   const double load_seconds = seconds_since(t_load);
 
-  const FrameJob job{a, input, *renderer, settings, paths, color_bar(prepared, settings, legend_page(scene))};
+  const FrameJob job{a, input, *renderer, settings, paths, legend_of(a, prepared, settings, scene)};
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   FrameLoop run;
   tbb::task_arena(threads).execute([&] {
@@ -212,6 +212,10 @@ Action add_render(CLI::App& app) {
   cmd->add_option("--png-bits", args->png_bits, "Bits a sample of the PNG: 8 (default) or 16")
       ->check(CLI::IsMember({8, 16}));
   cmd->add_flag("--legend", args->legend, "Draw the colour legend (field name and range) on the PNG");
+  cmd->add_option("--legend-orientation", args->legend_orientation,
+                  "The legend's bar: vertical (default, in a strip on the right) or horizontal (in a strip below); "
+                  "implies --legend")
+      ->check(CLI::IsMember({"vertical", "horizontal"}));
   cmd->add_option("--title", args->title, "A title above the picture, in a strip of its own (the PNG grows)");
   cmd->add_flag("--time-label", args->time_label,
                 "A time series: label each frame with its time above the picture (\"t = 1.50\")");
@@ -262,9 +266,11 @@ Action add_render(CLI::App& app) {
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
   CLI::Option* cell_data = cmd->get_option("--cell-data");
   CLI::Option* time_format = cmd->get_option("--time-format");
-  return [args, texts, look, moves, cell_data, time_format] {
+  CLI::Option* orientation = cmd->get_option("--legend-orientation");
+  return [args, texts, look, moves, cell_data, time_format, orientation] {
     args->cell_data_given = cell_data->count() > 0;
     if (time_format->count() > 0) args->time_label = true;
+    if (orientation->count() > 0) args->legend = true;
     for (const auto& [row, option] : moves) {
       if (option->count() == 0) continue;
       const std::vector<std::string> given = option->results();

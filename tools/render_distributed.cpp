@@ -48,7 +48,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   std::vector<double> frame_times;
   const FramePaths paths = frame_paths(a.png, a.npy, a.input, a.frames);
   make_output_folders(paths);
-  const ColorBar legend = color_bar(prepared, settings, legend_page(scene));
+  const ColorBar legend = legend_of(a, prepared, settings, scene);
   Image first;
   arena.execute([&] {
     // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.

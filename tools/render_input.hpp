@@ -30,13 +30,14 @@ struct RenderArgs {
   int png_bits = 8;    // --png-bits: 8 or 16 a sample
   double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
   bool legend = false;
-  bool cell_data_given = false;          // --cell-data, over a scene's reader block
-  std::string title;                     // --title, above the picture
-  bool time_label = false;               // --time-label: a series' frames labelled with their time
-  std::string time_format = "t = %.2f";  // --time-format
-  bool log = false;                      // --log: the field on a log scale
-  std::optional<double> log_floor;       // --log-floor
-  double max_memory_gib = 0.0;           // 0: the machine's available memory
+  std::string legend_orientation = "vertical";  // --legend-orientation
+  bool cell_data_given = false;                 // --cell-data, over a scene's reader block
+  std::string title;                            // --title, above the picture
+  bool time_label = false;                      // --time-label: a series' frames labelled with their time
+  std::string time_format = "t = %.2f";         // --time-format
+  bool log = false;                             // --log: the field on a log scale
+  std::optional<double> log_floor;              // --log-floor
+  double max_memory_gib = 0.0;                  // 0: the machine's available memory
   bool stats = false;
   std::optional<double> time;     // --time T: a series' frame at T
   std::vector<std::string> clip;  // --clip x,y,z,nx,ny,nz, repeatable: replaces the scene's planes
@@ -71,6 +72,15 @@ inline PngFormat png_format(const RenderArgs& a, const Scene& scene) {
 // What the legend's text is set against: the background, or for a transparent picture the light
 // page (a slide) it is likely laid on.
 inline glm::dvec3 legend_page(const Scene& scene) { return scene.transparent ? glm::dvec3(1.0) : scene.background; }
+
+// The legend of what `settings` draw (scene/prepare.hpp), across the bottom with
+// --legend-orientation horizontal.
+inline ColorBar legend_of(const RenderArgs& a, const PreparedScene& p, const RenderSettings& settings,
+                          const Scene& scene) {
+  ColorBar bar = color_bar(p, settings, legend_page(scene));
+  bar.horizontal = a.legend_orientation == "horizontal";
+  return bar;
+}
 
 // --view (replacing the scene's camera and its moves), the camera moves (after the scene's), and
 // --clip (replacing its planes); UsageError for a bad one.

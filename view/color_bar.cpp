@@ -78,13 +78,13 @@ struct Layout {
   std::vector<BarTick> ticks;                                                          // the ends and nice values
   int width() const { return 2 * margin + std::max(bar_w + gap + label_w, title_w); }  // of a strip holding it
 };
-Layout layout(const ColorBar& bar, int height, Font& font) {
+// `length`: the bar's, in pixels; `spacing`: between labels along it, in text lines.
+Layout layout(const ColorBar& bar, int height, Font& font, double length, double spacing) {
   Layout l;
   l.pixels = font.pixels();
-  // As many inner ticks as fit two and a half text lines apart, none nearer an end than a line and a half.
-  const double bar_pixels = 0.6 * height;
-  l.ticks = bar_ticks(bar, std::clamp(static_cast<int>(bar_pixels / (2.5 * l.pixels)) - 1, 0, 8),
-                      1.5 * l.pixels / std::max(1.0, bar_pixels));
+  // As many inner ticks as fit `spacing` text lines apart, none nearer an end than a line and a half.
+  l.ticks = bar_ticks(bar, std::clamp(static_cast<int>(length / (spacing * l.pixels)) - 1, 0, 8),
+                      1.5 * l.pixels / std::max(1.0, length));
   if (!bar.marks.empty()) {  // the marked values labelled instead of the nice ones between the ends
     l.ticks = {l.ticks.front(), l.ticks.back()};
     const double span = bar.hi - bar.lo;
@@ -103,7 +103,7 @@ template <class Picture>
 void draw_bar(Picture& img, const ColorBar& bar) {
   if (bar.colors.empty()) return;
   Font font(bar.font.empty() ? default_font() : bar.font, text_pixels(img.height));
-  const Layout l = layout(bar, img.height, font);
+  const Layout l = layout(bar, img.height, font, 0.6 * img.height, 2.5);
   const int pixels = l.pixels, gap = l.gap;
   const int x1 = img.width - l.margin - l.label_w - gap, x0 = x1 - l.bar_w;
   const int top = l.margin + 2 * pixels, bottom = top + static_cast<int>(0.6 * img.height);
@@ -133,12 +133,50 @@ void draw_bar(Picture& img, const ColorBar& bar) {
             bar.text);
 }
 
-// The picture with a strip on its right, `page` throughout, wide enough for the legend, which is
-// drawn there.
+// A horizontal bar across the strip of `strip` rows at the bottom of the image, 60% of the
+// picture's width `width` long, low values on the left: the title above it, the labels below.
+template <class Picture>
+void draw_horizontal(Picture& img, const ColorBar& bar, int width, int strip) {
+  Font font(bar.font.empty() ? default_font() : bar.font, text_pixels(img.height - strip));
+  const Layout l = layout(bar, img.height - strip, font, 0.6 * width, 6.0);
+  const int pixels = l.pixels, x0 = width / 5, x1 = x0 + static_cast<int>(0.6 * width);
+  const int top = img.height - strip + l.margin + pixels + pixels / 2, bottom = top + l.bar_w;
+  const int n = static_cast<int>(bar.colors.size());
+  for (int x = x0; x < x1 && bar.gradient; ++x)
+    fill(img, x, top, x + 1, bottom,
+         bar.colors[std::clamp(static_cast<int>((x - x0 + 0.5) / (x1 - x0) * n), 0, n - 1)]);
+  const double span = bar.hi - bar.lo;
+  for (const BarMark& m : bar.marks) {
+    const int x = x0 + static_cast<int>(
+                           std::lround((span > 0 ? std::clamp((m.value - bar.lo) / span, 0.0, 1.0) : 0.5) * (x1 - x0))),
+              w = std::max(2, pixels / 3);
+    fill(img, x - w - 1, top - 1, x + w + 1, bottom + 1, bar.text);
+    fill(img, x - w, top, x + w, bottom, m.color);
+  }
+  fill(img, x0 - 1, top - 1, x1 + 1, top, bar.text);  // outline
+  fill(img, x0 - 1, bottom, x1 + 1, bottom + 1, bar.text);
+  fill(img, x0 - 1, top, x0, bottom, bar.text);
+  fill(img, x1, top, x1 + 1, bottom, bar.text);
+  for (const BarTick& t : l.ticks) {
+    const int x = x0 + static_cast<int>(std::lround(t.at * (x1 - x0)));
+    fill(img, x, bottom, x + 1, bottom + l.gap / 2 + 1, bar.text);  // tick
+    font.draw(img, x - font.width(t.text) / 2, bottom + l.gap + font.ascender(), t.text, bar.text);
+  }
+  font.draw(img, x0, top - pixels / 2, bar.title, bar.text);
+}
+
+// The picture with a strip on its right (a horizontal bar: below it), `page` throughout, large
+// enough for the legend, which is drawn there.
 template <class Picture, class Sample>
 Picture beside(const Picture& picture, const ColorBar& bar, const std::vector<Sample>& page) {
   Font font(bar.font.empty() ? default_font() : bar.font, text_pixels(picture.height));
-  Picture out = grown(picture, layout(bar, picture.height, font).width(), 0, page);
+  if (bar.horizontal) {
+    const int strip = 2 * std::max(4, picture.height / 40) + 4 * font.pixels() + std::max(6, font.pixels());
+    Picture out = grown(picture, 0, 0, page, strip);
+    if (!bar.colors.empty()) draw_horizontal(out, bar, picture.width, strip);
+    return out;
+  }
+  Picture out = grown(picture, layout(bar, picture.height, font, 0.6 * picture.height, 2.5).width(), 0, page);
   draw_bar(out, bar);
   return out;
 }

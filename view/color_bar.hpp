@@ -21,6 +21,7 @@ struct ColorBar {
   std::vector<glm::dvec3> colors;  // from the low end of the range to the high end, evenly spaced
   bool gradient = true;            // the colours drawn; false: the picture has none of them (iso-surfaces alone)
   std::vector<BarMark> marks;      // swatches beside the bar at their values, labelled
+  bool horizontal = false;         // beside_legend: a strip below the picture, the bar across it
   double lo = 0, hi = 1;           // the values at the ends
   bool log = false;                // lo and hi are log10 of the values: labels show 10^lo ... 10^hi
   std::string title;               // the field's name
@@ -48,8 +49,9 @@ glm::dvec3 text_color_for(const glm::dvec3& background);
 void draw_color_bar(Rgb8Image& image, const ColorBar& bar);
 void draw_color_bar(DisplayImage& image, const ColorBar& bar);  // opaque over a transparent picture
 
-// The picture widened by a strip on its right that holds the legend, so that the legend never
-// covers the picture: the strip is the `page` colour (a DisplayImage's: clear without one).
+// The picture widened by a strip on its right that holds the legend (or, for a horizontal bar,
+// lengthened by one below it), so that the legend never covers the picture: the strip is the
+// `page` colour (a DisplayImage's: clear without one).
 Rgb8Image beside_legend(const Rgb8Image& picture, const ColorBar& bar, const glm::dvec3& page);
 DisplayImage beside_legend(const DisplayImage& picture, const ColorBar& bar, const std::optional<glm::dvec3>& page);
 

@@ -111,23 +111,23 @@ inline std::vector<float> page_sample(const std::optional<glm::dvec3>& page) {
   return {float(c.r), float(c.g), float(c.b), page ? 1.0f : 0.0f};
 }
 
-// The picture with `right` columns on its right and `top` rows above it of `page` (a pixel's worth
-// of samples).
+// The picture with `right` columns on its right, `top` rows above it and `bottom` below it of
+// `page` (a pixel's worth of samples).
 template <class Picture, class Sample>
-Picture grown(const Picture& picture, int right, int top, const std::vector<Sample>& page) {
+Picture grown(const Picture& picture, int right, int top, const std::vector<Sample>& page, int bottom = 0) {
   const std::size_t n = page.size();
   Picture out;
-  out.width = picture.width + right, out.height = picture.height + top;
+  out.width = picture.width + right, out.height = picture.height + top + bottom;
   auto& to = samples_of(out);
   const auto& from = samples_of(picture);
   to.resize(static_cast<std::size_t>(out.width) * out.height * n);
   for (int j = 0; j < out.height; ++j) {
     Sample* row = to.data() + static_cast<std::size_t>(j) * out.width * n;
-    const int source = j - top;  // the picture's row, or none in the strip above it
+    const int source = j - top;  // the picture's row, or none in the strips above and below it
+    const bool strip = source < 0 || source >= picture.height;
     for (int i = 0; i < out.width; ++i)
-      if (source < 0 || i >= picture.width) std::copy(page.begin(), page.end(), row + i * n);
-    if (source >= 0)
-      std::copy_n(from.data() + static_cast<std::size_t>(source) * picture.width * n, picture.width * n, row);
+      if (strip || i >= picture.width) std::copy(page.begin(), page.end(), row + i * n);
+    if (!strip) std::copy_n(from.data() + static_cast<std::size_t>(source) * picture.width * n, picture.width * n, row);
   }
   return out;
 }
