@@ -37,6 +37,7 @@ expect 0 "wrote .*log.png" -- render "$tmp/box.vtu" --log --log-floor 0.01 --leg
 expect 2 "--time-label labels a time series' frames, and .*box.vtu is not one" -- render "$tmp/box.vtu" --time-label -o "$tmp/t.png"
 expect 2 "--time-format: expected text with one %f, %e or %g" -- render "$tmp/box.vtu" --time-format "%s" -o "$tmp/t.png"
 expect 0 "wrote .*title.png" -- render "$tmp/box.vtu" --title "A box" --legend --size 48x32 -o "$tmp/title.png"
+expect 0 "wrote .*outline_1.png" -- render "$tmp/box.vtu" --outline --axes --frames 2 --orbit 90 --size 48x32 -o "$tmp/outline_%d.png"
 expect 2 "--iso does not go with --log yet" -- render "$tmp/box.vtu" --log --log-floor 0.01 --method exact --iso 0.5 -o "$tmp/t.png"
 echo '{"mesh": "box.vtu", "log": true, "transfer_function": {"color": [[0.1, 1, 1, 1]], "extinction": [[0.1, 1]]}}' > "$tmp/log.json"
 expect 1 "box.vtu: field 'scalar' on a log scale: 8 of 125 values are not above 0" -- render "$tmp/log.json" -o "$tmp/log.png"

@@ -9,6 +9,7 @@
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
 #include "test_util.hpp"
+#include "view/annotations.hpp"
 #include "view/caption.hpp"
 #include "view/color_bar.hpp"
 
@@ -148,6 +149,35 @@ TEST(ColorBar, TheLegendOfEachMethodShowsItsColours) {
     }
   EXPECT_GT(swatch, 10);
   EXPECT_EQ(red, 0);
+}
+
+// The outline is the box's edges as the camera sees them; the triad's axes point where the world's
+// do, an axis along the view foreshortened to nothing.
+TEST(Annotations, TheOutlineFollowsTheBoxAndTheAxesTheWorld) {
+  const Camera camera = test::looking_down(4.0);  // x right, y up, the box [-1, 1]^2 the middle half
+  Rgb8Image img;
+  img.width = img.height = 80;
+  img.rgb.assign(80 * 80 * 3, 0);
+  Annotations a;
+  a.outline = true, a.lo = glm::dvec3(-1), a.hi = glm::dvec3(1), a.color = glm::dvec3(1.0);
+  draw_annotations(img, camera, a);
+  const auto lit = [&](int i, int j) { return img.pixel(i, j)[0] > 100; };
+  EXPECT_TRUE(lit(20, 40) || lit(19, 40));  // the left edge, x = -1 at column 20
+  EXPECT_TRUE(lit(40, 20) || lit(40, 19));  // the top edge, y = 1 at row 20
+  EXPECT_FALSE(lit(40, 40));                // inside: untouched
+  EXPECT_FALSE(lit(5, 40));                 // outside: untouched
+  if (default_font().empty()) GTEST_SKIP() << "no font";
+  img.rgb.assign(80 * 80 * 3, 0);
+  a.outline = false, a.axes = true;
+  draw_annotations(img, camera, a);
+  int red = 0, green = 0;  // x to the right of the triad's origin (red), y above it (green)
+  for (int j = 0; j < 80; ++j)
+    for (int i = 0; i < 80; ++i) {
+      const unsigned char* q = img.pixel(i, j);
+      red += q[0] > 150 && q[1]<100, green += q[1]> 150 && q[0] < 100;
+    }
+  EXPECT_GT(red, 3);
+  EXPECT_GT(green, 3);
 }
 
 TEST(SampleFilters, ATentKeepsAConstantAndWeighsItsNeighbours) {

@@ -168,7 +168,8 @@ int run_render(const RenderArgs& given) {
     std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, method.c_str(),
                   median(run.frame_times));
     job.write(run.first, paths.png, paths.npy, what,
-              input.player ? std::optional<double>(input.times.front()) : std::nullopt);
+              input.player ? std::optional<double>(input.times.front()) : std::nullopt,
+              orbit(prepared.camera, job.degrees(0), prepared.turn_axis));
   }
 
   if (a.stats) print_stats(job, run, load_seconds, threads);
@@ -216,6 +217,10 @@ Action add_render(CLI::App& app) {
                   "The legend's bar: vertical (default, in a strip on the right) or horizontal (in a strip below); "
                   "implies --legend")
       ->check(CLI::IsMember({"vertical", "horizontal"}));
+  cmd->add_flag("--outline", args->outline, "Draw the mesh's bounding box over the picture, as ParaView's outline");
+  cmd->add_flag("--axes", args->axes,
+                "Draw an axes triad in the picture's lower-left corner (x red, y green, z blue), as ParaView's "
+                "orientation axes");
   cmd->add_option("--title", args->title, "A title above the picture, in a strip of its own (the PNG grows)");
   cmd->add_flag("--time-label", args->time_label,
                 "A time series: label each frame with its time above the picture (\"t = 1.50\")");

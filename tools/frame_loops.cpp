@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
+#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -36,8 +37,11 @@ struct PreparedVolume {
 }  // namespace
 
 void FrameJob::write(const Image& image, const std::string& png, const std::string& npy, const std::string& what,
-                     std::optional<double> time) const {
-  write_outputs(image, png_format(args, input.scene), args.legend ? &legend : nullptr, png, npy, what, time);
+                     std::optional<double> time, const Camera& camera) const {
+  PngFormat format = png_format(args, input.scene);
+  if (format.annotations.any())
+    std::tie(format.annotations.lo, format.annotations.hi) = bounds(input.prepared.loaded.mesh);
+  write_outputs(image, format, args.legend ? &legend : nullptr, png, npy, what, time, &camera);
 }
 
 std::string FrameJob::frame_what(int f, double seconds) const {
@@ -69,7 +73,8 @@ FrameLoop play_series_frames(const FrameJob& job) {
         char time[64];
         std::snprintf(time, sizeof time, ", time %g", in.times[f]);
         if (job.paths.sequence)
-          job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, r.seconds) + time, in.times[f]);
+          job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, r.seconds) + time, in.times[f],
+                    orbit(in.prepared.camera, job.degrees(f), in.prepared.turn_axis));
         else if (f == 0)
           out.first = std::move(img);
       },
@@ -93,7 +98,8 @@ FrameLoop progressive_levels(const FrameJob& job, const std::vector<int>& levels
                        char what[96];
                        std::snprintf(what, sizeof what, "%dx%d, slicing, %d slices, %.3f s", in.scene.width,
                                      in.scene.height, slices, r.seconds);
-                       job.write(img, level_path(job.paths.png, slices), level_path(job.paths.npy, slices), what);
+                       job.write(img, level_path(job.paths.png, slices), level_path(job.paths.npy, slices), what,
+                                 std::nullopt, in.prepared.camera);
                        if (job.args.stats) {
                          nlohmann::json j = {{"method", job.renderer.name()}, {"level_slices", slices}};
                          j.update(report_json(r));
@@ -113,13 +119,14 @@ FrameLoop mesh_frames(const FrameJob& job) {
     const auto t_frame = std::chrono::steady_clock::now();
     ProgressBar bar(bar_label(job.args, f));
     out.report = {};
-    Image img = job.renderer.render(v.volume, v.field, in.prepared.tf,
-                                    orbit(in.prepared.camera, job.degrees(f), in.prepared.turn_axis),
-                                    {in.scene.width, in.scene.height}, &out.report, [&](double d) { bar(d); });
+    const Camera camera = orbit(in.prepared.camera, job.degrees(f), in.prepared.turn_axis);
+    Image img = job.renderer.render(v.volume, v.field, in.prepared.tf, camera, {in.scene.width, in.scene.height},
+                                    &out.report, [&](double d) { bar(d); });
     out.render_seconds += out.report.seconds;
     out.frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own
     if (job.paths.sequence)
-      job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, out.report.seconds));
+      job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, out.report.seconds), std::nullopt,
+                camera);
     else if (f == 0)
       out.first = std::move(img);
   }

@@ -23,10 +23,10 @@ struct FrameJob {
   const FramePaths& paths;
   ColorBar legend;
 
-  // The image written to png and npy (either may be empty), with the legend when asked for and a
-  // series frame's `time` labelled when asked for.
+  // The image written to png and npy (either may be empty), with the legend when asked for, a
+  // series frame's `time` labelled and the mesh's box outlined as `camera` sees it when asked for.
   void write(const Image& image, const std::string& png, const std::string& npy, const std::string& what,
-             std::optional<double> time = std::nullopt) const;
+             std::optional<double> time, const Camera& camera) const;
   // "frame 3/36, 512x512, pt-breakpoints, 0.052 s"
   std::string frame_what(int f, double seconds) const;
   // The camera's turn at frame f: --orbit D spread over the frames; a playback keeps its camera; a

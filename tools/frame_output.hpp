@@ -25,13 +25,15 @@ struct PngFormat {
   int bits = 8;
   Caption caption;                         // its title (and text colour), above the picture
   std::optional<std::string> time_format;  // a time series' frames labelled with their time so
+  Annotations annotations;                 // the outline and the axes over the picture, when asked
 };
 
 // The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`;
-// on the PNG the caption above the picture (labelled with `time` when the format says so) and the
-// colour legend beside it when given.
+// on the PNG the caption above the picture (labelled with `time` when the format says so), the
+// colour legend beside it when given, and the format's annotations over it seen by `camera`.
 void write_outputs(const Image& image, const PngFormat& format, const ColorBar* legend, const std::string& png,
-                   const std::string& npy, const std::string& what, std::optional<double> time = std::nullopt);
+                   const std::string& npy, const std::string& what, std::optional<double> time = std::nullopt,
+                   const Camera* camera = nullptr);
 
 // Where the frames go: one PNG (and .npy), or with a printf pattern (frame_%04d.png) one per frame.
 struct FramePaths {

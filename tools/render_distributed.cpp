@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <tuple>
 
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
@@ -49,6 +50,8 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   const FramePaths paths = frame_paths(a.png, a.npy, a.input, a.frames);
   make_output_folders(paths);
   const ColorBar legend = legend_of(a, prepared, settings, scene);
+  PngFormat format = png_format(a, scene);
+  if (format.annotations.any()) std::tie(format.annotations.lo, format.annotations.hi) = bounds(prepared.loaded.mesh);
   Image first;
   arena.execute([&] {
     // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.
@@ -67,8 +70,8 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
         std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %d rank%s, %.3f s", f + 1, a.frames, scene.width,
                       scene.height, option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "",
                       frame_times.back());
-        write_outputs(image, png_format(a, scene), a.legend ? &legend : nullptr, paths.png_of(f), paths.npy_of(f),
-                      what);
+        write_outputs(image, format, a.legend ? &legend : nullptr, paths.png_of(f), paths.npy_of(f), what, std::nullopt,
+                      &camera);
       } else if (f == 0) {
         first = std::move(image);
       }
@@ -81,7 +84,8 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
     char what[160];
     std::snprintf(what, sizeof what, "%dx%d, %s, %d rank%s, %.3f s per frame", scene.width, scene.height,
                   option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "", median(frame_times));
-    write_outputs(first, png_format(a, scene), a.legend ? &legend : nullptr, paths.png, paths.npy, what);
+    const Camera camera = orbit(prepared.camera, 0.0, prepared.turn_axis);
+    write_outputs(first, format, a.legend ? &legend : nullptr, paths.png, paths.npy, what, std::nullopt, &camera);
   }
   if (a.stats) {
     constexpr std::size_t n = std::size(kRankStatNames);

@@ -31,6 +31,7 @@ struct RenderArgs {
   double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
   bool legend = false;
   std::string legend_orientation = "vertical";  // --legend-orientation
+  bool outline = false, axes = false;           // --outline, --axes: over the picture
   bool cell_data_given = false;                 // --cell-data, over a scene's reader block
   std::string title;                            // --title, above the picture
   bool time_label = false;                      // --time-label: a series' frames labelled with their time
@@ -66,6 +67,7 @@ inline PngFormat png_format(const RenderArgs& a, const Scene& scene) {
   const glm::dvec3 page = scene.transparent ? glm::dvec3(1.0) : scene.background;  // legend_page's
   PngFormat f{scene.background, scene.transparent, a.png_bits, {a.title, "", text_color_for(page), ""}, {}};
   if (a.time_label) f.time_format = a.time_format;
+  f.annotations.outline = a.outline, f.annotations.axes = a.axes, f.annotations.color = f.caption.text;
   return f;
 }
 

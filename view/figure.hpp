@@ -7,6 +7,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "view/annotations.hpp"
 #include "view/caption.hpp"
 #include "view/color_bar.hpp"
 #include "view/image.hpp"
@@ -18,6 +19,8 @@ struct Figure {
   int bits = 8;                                      // 8 or 16 a sample
   Caption caption;                                   // above the picture, when not empty
   std::optional<ColorBar> legend;                    // beside it, when given
+  Annotations annotations;                           // over the picture, drawn through `camera`
+  Camera camera;                                     // the picture's (for the annotations)
 };
 
 // InputError for bits other than 8 or 16, a font that cannot be loaded, a file that cannot be written.
