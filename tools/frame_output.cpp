@@ -21,8 +21,10 @@ std::string level_path(const std::string& path, int slices) {
 void write_outputs(const Image& image, const PngFormat& format, const ColorBar* legend, const std::string& png,
                    const std::string& npy, const std::string& what, std::optional<double> time, const Camera* camera) {
   if (!png.empty()) {
-    Figure figure{format.transparent ? std::nullopt : std::optional<glm::dvec3>(format.background), format.bits,
-                  format.caption, legend ? std::optional<ColorBar>(*legend) : std::nullopt};
+    Figure figure;
+    figure.page = format.transparent ? std::nullopt : std::optional<glm::dvec3>(format.background);
+    figure.bits = format.bits, figure.caption = format.caption;
+    if (legend) figure.legend = *legend;
     if (time && format.time_format) figure.caption.label = time_label(*format.time_format, *time);
     if (camera) figure.annotations = format.annotations, figure.camera = *camera;
     write_figure(image, figure, png);

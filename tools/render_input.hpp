@@ -65,7 +65,7 @@ struct Input {
 // --time-label.
 inline PngFormat png_format(const RenderArgs& a, const Scene& scene) {
   const glm::dvec3 page = scene.transparent ? glm::dvec3(1.0) : scene.background;  // legend_page's
-  PngFormat f{scene.background, scene.transparent, a.png_bits, {a.title, "", text_color_for(page), ""}, {}};
+  PngFormat f{scene.background, scene.transparent, a.png_bits, {a.title, "", text_color_for(page), ""}, {}, {}};
   if (a.time_label) f.time_format = a.time_format;
   f.annotations.outline = a.outline, f.annotations.axes = a.axes, f.annotations.color = f.caption.text;
   return f;
