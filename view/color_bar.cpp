@@ -99,6 +99,15 @@ Layout layout(const ColorBar& bar, int height, Font& font, double length, double
   return l;
 }
 
+// A one-pixel frame just outside the rectangle [x0, x1) x [y0, y1).
+template <class Picture>
+void outline(Picture& img, int x0, int y0, int x1, int y1, const glm::dvec3& c) {
+  fill(img, x0 - 1, y0 - 1, x1 + 1, y0, c);
+  fill(img, x0 - 1, y1, x1 + 1, y1 + 1, c);
+  fill(img, x0 - 1, y0, x0, y1, c);
+  fill(img, x1, y0, x1 + 1, y1, c);
+}
+
 template <class Picture>
 void draw_bar(Picture& img, const ColorBar& bar) {
   if (bar.colors.empty()) return;
@@ -119,10 +128,7 @@ void draw_bar(Picture& img, const ColorBar& bar) {
     fill(img, x0 - 1, y - h - 1, x1 + 1, y + h + 1, bar.text);
     fill(img, x0, y - h, x1, y + h, m.color);
   }
-  fill(img, x0 - 1, top - 1, x1 + 1, top, bar.text);  // outline
-  fill(img, x0 - 1, bottom, x1 + 1, bottom + 1, bar.text);
-  fill(img, x0 - 1, top, x0, bottom, bar.text);
-  fill(img, x1, top, x1 + 1, bottom, bar.text);
+  outline(img, x0, top, x1, bottom, bar.text);
   const int half = font.ascender() / 2;
   for (const BarTick& t : l.ticks) {
     const int y = bottom - static_cast<int>(std::lround(t.at * (bottom - top)));
@@ -153,10 +159,7 @@ void draw_horizontal(Picture& img, const ColorBar& bar, int width, int strip) {
     fill(img, x - w - 1, top - 1, x + w + 1, bottom + 1, bar.text);
     fill(img, x - w, top, x + w, bottom, m.color);
   }
-  fill(img, x0 - 1, top - 1, x1 + 1, top, bar.text);  // outline
-  fill(img, x0 - 1, bottom, x1 + 1, bottom + 1, bar.text);
-  fill(img, x0 - 1, top, x0, bottom, bar.text);
-  fill(img, x1, top, x1 + 1, bottom, bar.text);
+  outline(img, x0, top, x1, bottom, bar.text);
   for (const BarTick& t : l.ticks) {
     const int x = x0 + static_cast<int>(std::lround(t.at * (x1 - x0)));
     fill(img, x, bottom, x + 1, bottom + l.gap / 2 + 1, bar.text);  // tick

@@ -214,10 +214,53 @@ ImageDifference compare(const Image& a, const Image& b) {
   return d;
 }
 
-Image downsample(const Image& image, int k) {
+namespace {
+
+// InputError unless k divides the image's sides.
+void check_factor(const Image& image, int k) {
   if (k < 1 || image.width % k != 0 || image.height % k != 0)
     throw InputError("downsample: " + std::to_string(k) + " does not divide the image's " +
                      std::to_string(image.width) + "x" + std::to_string(image.height));
+}
+
+// One axis of a separable filter: per pixel, its samples along the axis and their weights.
+using AxisWeights = std::vector<std::vector<std::pair<int, double>>>;
+
+// The tent's: sample s weighs 1 - d for pixel i, d the distance of their centres in pixels (< 1),
+// renormalized where the image's border cuts the tent.
+AxisWeights tent_weights(int samples, int k) {
+  AxisWeights w(static_cast<std::size_t>(samples / k));
+  for (int i = 0; i < samples / k; ++i) {
+    double sum = 0;
+    for (int s = std::max(0, (i - 1) * k); s < std::min(samples, (i + 2) * k); ++s) {
+      const double d = std::abs((s + 0.5) / k - (i + 0.5));
+      if (d < 1.0) w[i].push_back({s, 1.0 - d}), sum += 1.0 - d;
+    }
+    for (auto& [s, v] : w[i]) v /= sum;
+  }
+  return w;
+}
+
+// `image` filtered along x (or y) by `w`: as many columns (rows) as `w` has pixels.
+Image filter_axis(const Image& image, const AxisWeights& w, bool along_x) {
+  const int n = static_cast<int>(w.size());
+  Image out(along_x ? n : image.width, along_x ? image.height : n);
+  for (int j = 0; j < out.height; ++j)
+    for (int i = 0; i < out.width; ++i) {
+      double sum[4] = {0, 0, 0, 0};
+      for (const auto& [s, v] : w[along_x ? i : j]) {
+        const float* p = along_x ? image.pixel(s, j) : image.pixel(i, s);
+        for (int c = 0; c < 4; ++c) sum[c] += v * p[c];
+      }
+      for (int c = 0; c < 4; ++c) out.pixel(i, j)[c] = static_cast<float>(sum[c]);
+    }
+  return out;
+}
+
+}  // namespace
+
+Image downsample(const Image& image, int k) {
+  check_factor(image, k);
   Image out(image.width / k, image.height / k);
   const double inv = 1.0 / (double(k) * k);
   for (int j = 0; j < out.height; ++j)
@@ -236,39 +279,9 @@ Image downsample(const Image& image, int k) {
 
 Image downsample(const Image& image, int k, SampleFilter filter) {
   if (filter == SampleFilter::box || k == 1) return downsample(image, k);
-  downsample(Image(k, k), k);  // k's checks, as the box filter's
-  if (image.width % k != 0 || image.height % k != 0) downsample(image, k);
-  // Separable: sample s's weight for pixel i is the tent at the distance of their centres, in pixels.
-  const auto weights = [k](int samples, int pixels) {
-    std::vector<std::vector<std::pair<int, double>>> w(static_cast<std::size_t>(pixels));
-    for (int i = 0; i < pixels; ++i) {
-      double sum = 0;
-      for (int s = std::max(0, (i - 1) * k); s < std::min(samples, (i + 2) * k); ++s) {
-        const double d = std::abs((s + 0.5) / k - (i + 0.5));
-        if (d < 1.0) w[i].push_back({s, 1.0 - d}), sum += 1.0 - d;
-      }
-      for (auto& [s, v] : w[i]) v /= sum;
-    }
-    return w;
-  };
-  const auto wx = weights(image.width, image.width / k), wy = weights(image.height, image.height / k);
-  Image rows(image.width / k, image.height);  // filtered along x
-  for (int j = 0; j < image.height; ++j)
-    for (int i = 0; i < rows.width; ++i) {
-      double sum[4] = {0, 0, 0, 0};
-      for (const auto& [s, v] : wx[i])
-        for (int c = 0; c < 4; ++c) sum[c] += v * image.pixel(s, j)[c];
-      for (int c = 0; c < 4; ++c) rows.pixel(i, j)[c] = static_cast<float>(sum[c]);
-    }
-  Image out(rows.width, image.height / k);
-  for (int j = 0; j < out.height; ++j)
-    for (int i = 0; i < out.width; ++i) {
-      double sum[4] = {0, 0, 0, 0};
-      for (const auto& [s, v] : wy[j])
-        for (int c = 0; c < 4; ++c) sum[c] += v * rows.pixel(i, s)[c];
-      for (int c = 0; c < 4; ++c) out.pixel(i, j)[c] = static_cast<float>(sum[c]);
-    }
-  return out;
+  check_factor(image, k);
+  const Image rows = filter_axis(image, tent_weights(image.width, k), true);
+  return filter_axis(rows, tent_weights(image.height, k), false);
 }
 
 }  // namespace cellproj
