@@ -16,21 +16,24 @@ constexpr double kDominant = 0.35;          // the share of the volume that make
 constexpr std::int64_t kSampled = 1 << 20;  // cells looked at, at most (every k-th beyond)
 const double kFaint = -std::log(0.95), kOpaque = -std::log(0.05);  // optical depths of alpha 0.05, 0.95
 
-// Every k-th cell, so that at most kSampled are visited, with the weight each stands for.
-struct CellSample {
-  std::int64_t step;
-  double weight;
+// Every k-th cell, so that at most kSampled are looked at, each standing for k (its weight): its
+// field (the mean of its vertices') and its volume, found once for the shape and the scale.
+struct SampledCells {
+  std::int64_t step = 1;
+  double weight = 1.0;
+  std::vector<double> mean, volume;  // of cells 0, step, 2 step, ...
 };
-CellSample sample_of(const MeshView& mesh) {
-  const std::int64_t step = std::max<std::int64_t>(1, mesh.n_cells / kSampled);
-  return {step, static_cast<double>(step)};
-}
-
-double cell_mean(const MeshView& mesh, std::int64_t c, const double* field) {
-  const std::int64_t* ids = mesh.cell(c);
-  double sum = 0;
-  for (int k = 0; k < mesh.cell_size(c); ++k) sum += field[ids[k]];
-  return sum / mesh.cell_size(c);
+SampledCells sample_cells(const MeshView& mesh, const double* field) {
+  SampledCells s;
+  s.step = std::max<std::int64_t>(1, mesh.n_cells / kSampled), s.weight = static_cast<double>(s.step);
+  for (std::int64_t c = 0; c < mesh.n_cells; c += s.step) {
+    const std::int64_t* ids = mesh.cell(c);
+    double sum = 0;
+    for (int k = 0; k < mesh.cell_size(c); ++k) sum += field[ids[k]];
+    s.mean.push_back(sum / mesh.cell_size(c));
+    s.volume.push_back(std::abs(cell_signed_volume(mesh, c)));
+  }
+  return s;
 }
 
 double shape_at(const std::vector<ExtinctionPoint>& shape, double s) {
@@ -67,7 +70,9 @@ std::vector<ExtinctionPoint> opacity_shape(const std::string& name, double lo, d
   return {};
 }
 
-AutoShape auto_shape(const MeshView& mesh, const double* field, double lo, double hi) {
+namespace {
+
+AutoShape shape_of(const SampledCells& cells, double lo, double hi) {
   AutoShape out;
   out.background_lo = hi, out.background_hi = lo;
   if (!(hi > lo)) {
@@ -76,11 +81,8 @@ AutoShape auto_shape(const MeshView& mesh, const double* field, double lo, doubl
   }
   // The field's histogram over the mesh's volume (each cell at its vertices' mean).
   std::vector<double> h(kBins, 0.0);
-  const CellSample sample = sample_of(mesh);
-  for (std::int64_t c = 0; c < mesh.n_cells; c += sample.step) {
-    const int bin = std::clamp(static_cast<int>((cell_mean(mesh, c, field) - lo) / (hi - lo) * kBins), 0, kBins - 1);
-    h[bin] += std::abs(cell_signed_volume(mesh, c));
-  }
+  for (std::size_t k = 0; k < cells.mean.size(); ++k)
+    h[std::clamp(static_cast<int>((cells.mean[k] - lo) / (hi - lo) * kBins), 0, kBins - 1)] += cells.volume[k];
   double total = 0;
   for (double v : h) total += v;
   const int mode = static_cast<int>(std::max_element(h.begin(), h.end()) - h.begin());
@@ -104,8 +106,8 @@ AutoShape auto_shape(const MeshView& mesh, const double* field, double lo, doubl
   return out;
 }
 
-FootprintScale footprint_scale(const MeshView& mesh, const double* field, const std::vector<ExtinctionPoint>& shape,
-                               const glm::dvec3& from, const glm::dvec3& up) {
+FootprintScale scale_of(const MeshView& mesh, const SampledCells& cells, const std::vector<ExtinctionPoint>& shape,
+                        const glm::dvec3& from, const glm::dvec3& up) {
   // The mesh seen orthographically from `from`, in bins, kBins along the longer side of its
   // projected box; each bin's optical depth at scale 1 is the extinction integrated over the cells
   // behind it (kappa V, spread over the bins their corners span) over its area.
@@ -124,8 +126,8 @@ FootprintScale footprint_scale(const MeshView& mesh, const double* field, const 
             nv = std::clamp(static_cast<int>(std::ceil((v1 - v0) / bin)), 1, kBins);
   std::vector<double> tau(static_cast<std::size_t>(nu) * nv, 0.0);
   std::vector<char> covered(tau.size(), 0);
-  const CellSample sample = sample_of(mesh);
-  for (std::int64_t c = 0; c < mesh.n_cells; c += sample.step) {
+  for (std::size_t n = 0; n < cells.mean.size(); ++n) {
+    const std::int64_t c = static_cast<std::int64_t>(n) * cells.step;
     double cu0 = u1, cu1 = u0, cv0 = v1, cv1 = v0;
     const std::int64_t* ids = mesh.cell(c);
     for (int k = 0; k < mesh.cell_size(c); ++k) {
@@ -138,8 +140,8 @@ FootprintScale footprint_scale(const MeshView& mesh, const double* field, const 
               i1 = std::clamp(static_cast<int>(std::ceil((cu1 - u0) / bin)) - 1, i0, nu - 1);
     const int j0 = std::clamp(static_cast<int>((cv0 - v0) / bin), 0, nv - 1),
               j1 = std::clamp(static_cast<int>(std::ceil((cv1 - v0) / bin)) - 1, j0, nv - 1);
-    const double depth = shape_at(shape, cell_mean(mesh, c, field)) * std::abs(cell_signed_volume(mesh, c)) *
-                         sample.weight / (bin * bin * (i1 - i0 + 1) * (j1 - j0 + 1));
+    const double depth =
+        shape_at(shape, cells.mean[n]) * cells.volume[n] * cells.weight / (bin * bin * (i1 - i0 + 1) * (j1 - j0 + 1));
     for (int j = j0; j <= j1; ++j)
       for (int i = i0; i <= i1; ++i) {
         tau[static_cast<std::size_t>(j) * nu + i] += depth;
@@ -169,11 +171,23 @@ FootprintScale footprint_scale(const MeshView& mesh, const double* field, const 
   return {kappa, static_cast<double>(best) / static_cast<double>(footprint)};
 }
 
+}  // namespace
+
+AutoShape auto_shape(const MeshView& mesh, const double* field, double lo, double hi) {
+  return shape_of(sample_cells(mesh, field), lo, hi);
+}
+
+FootprintScale footprint_scale(const MeshView& mesh, const double* field, const std::vector<ExtinctionPoint>& shape,
+                               const glm::dvec3& from, const glm::dvec3& up) {
+  return scale_of(mesh, sample_cells(mesh, field), shape, from, up);
+}
+
 std::vector<ExtinctionPoint> auto_extinction(const MeshView& mesh, const double* field, const glm::dvec3& from,
                                              const glm::dvec3& up) {
   const auto [lo, hi] = std::minmax_element(field, field + mesh.n_points);
-  std::vector<ExtinctionPoint> points = auto_shape(mesh, field, *lo, *hi).points;
-  const double kappa = footprint_scale(mesh, field, points, from, up).kappa;
+  const SampledCells cells = sample_cells(mesh, field);
+  std::vector<ExtinctionPoint> points = shape_of(cells, *lo, *hi).points;
+  const double kappa = scale_of(mesh, cells, points, from, up).kappa;
   for (ExtinctionPoint& p : points) p.kappa *= kappa;
   return points;
 }
