@@ -161,6 +161,10 @@ std::vector<double> scalar_values(const PointField& f, int component) {
                        component);
 }
 
+std::vector<double> shown_values(const PointField& f) {
+  return scalar_values(f, whole({f.name, f.components}).component);
+}
+
 std::vector<double> scalar_values(const double* tuples, std::int64_t n, int components, int component) {
   std::vector<double> out(static_cast<std::size_t>(n));
   for (std::int64_t p = 0; p < n; ++p) {

@@ -66,6 +66,8 @@ std::vector<double> choice_values(const double* tuples, std::int64_t n, int comp
 // magnitude or the von Mises stress.
 std::vector<double> scalar_values(const double* tuples, std::int64_t n, int components, int component);
 std::vector<double> scalar_values(const PointField& field, int component);
+// The values `field` shows named alone (choose_field): a scalar's own, a vector's magnitude.
+std::vector<double> shown_values(const PointField& field);
 
 // "x, y, z, magnitude or 0..2": the words that pick from a field of `components` values.
 std::string component_words(int components);

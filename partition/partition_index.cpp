@@ -196,7 +196,7 @@ PartitionIndex partition_mesh(const Mesh& mesh, int bricks, const std::string& d
   const std::vector<double> costs = cell_costs(view, image_side, cost_model == "cells");
   index.tree = build_kd_tree(view, costs, bricks);
   for (const PointField& f : mesh.fields) {  // a vector's range is its magnitude's
-    const std::vector<double> v = scalar_values(f, f.scalar() ? FieldChoice::kWhole : FieldChoice::kMagnitude);
+    const std::vector<double> v = shown_values(f);
     const auto [lo, hi] = std::minmax_element(v.begin(), v.end());
     index.fields.push_back({f.name, v.empty() ? 0.0 : *lo, v.empty() ? 0.0 : *hi,
                             auto_extinction(view, v.data(), kDefaultFrom, kDefaultUp)});

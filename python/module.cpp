@@ -137,13 +137,9 @@ glm::dvec3 vec(const std::vector<double>& v, const char* what) {
 // The transfer function `cellproj render MESH` gives the field (scene/quick_scene.hpp): over its
 // range in the field's units, placed on a log axis when the field is on a log scale.
 TransferFunction default_tf(const NumpyMesh& mesh, const Field& f, const QuickLook& look) {
-  const auto [lo_at, hi_at] = std::minmax_element(f.values, f.values + f.size);
-  const bool log = log_scale_name(f.name);
-  const double lo = log ? std::pow(10.0, *lo_at) : *lo_at, hi = log ? std::pow(10.0, *hi_at) : *hi_at;
-  const auto [blo, bhi] = bounds(mesh.view());
-  const OpacityInput opacity{mesh.view(), f.values, log};
-  return transfer_function_from_json(quick_transfer_function(look, lo, hi, glm::length(bhi - blo), &opacity), "python",
-                                     "", lo, hi, log);
+  const OpacityInput field{mesh.view(), f.values, log_scale_name(f.name)};
+  const FieldTransferFunction q = quick_transfer_function(look, field);
+  return transfer_function_from_json(q.json, "python", "", q.lo, q.hi, field.log);
 }
 
 // The field `spec` of `mesh`, on a log scale when asked (mesh/field_choice.hpp).

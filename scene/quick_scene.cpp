@@ -31,7 +31,7 @@ const NamedView kViews[] = {
 // `auto`'s extinction over the field's values (on a log scale, their logs; the points returned in
 // the field's units): found before (a partition index's), or from the mesh; a given depth fixes
 // the largest.
-nlohmann::json auto_extinction(const QuickLook& look, const OpacityInput& in, double diagonal) {
+nlohmann::json auto_points(const QuickLook& look, const OpacityInput& in, double diagonal) {
   std::vector<ExtinctionPoint> points;
   if (in.known) {
     points = *in.known;
@@ -58,7 +58,7 @@ nlohmann::json extinction(const QuickLook& look, double lo, double hi, double di
     throw InputError("setting 'depth': expected a positive optical depth, got " + std::to_string(look.depth));
   if (look.opacity == "auto") {
     if (!input) throw InternalError("opacity auto needs the mesh and its field");
-    return auto_extinction(look, *input, diagonal);
+    return auto_points(look, *input, diagonal);
   }
   const double per_length = 1.0 / (diagonal > 0 ? diagonal : 1.0),
                k = (look.depth > 0 ? look.depth : 20.0) * per_length;
@@ -104,6 +104,13 @@ nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double 
           {"extinction", extinction(look, lo, hi, diagonal, input)}};
 }
 
+FieldTransferFunction quick_transfer_function(const QuickLook& look, const OpacityInput& field) {
+  const auto [lo_at, hi_at] = std::minmax_element(field.field, field.field + field.mesh.n_points);
+  const double lo = field.log ? std::pow(10.0, *lo_at) : *lo_at, hi = field.log ? std::pow(10.0, *hi_at) : *hi_at;
+  const auto [blo, bhi] = bounds(field.mesh);
+  return {quick_transfer_function(look, lo, hi, glm::length(bhi - blo), &field), lo, hi};
+}
+
 std::string view_names() {
   std::string list;
   for (const NamedView& v : kViews) list += (list.empty() ? "" : ", ") + std::string(v.name);
@@ -127,25 +134,22 @@ nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, con
   const FieldChoice choice = choose_field(loaded.mesh, look.log ? log_spec(look.field, look.log_floor) : look.field);
   const PointField& f = select_field(loaded.mesh, choice.name);
   check_finite(mesh_path, f);
-  const auto [lo_it, hi_it] = std::minmax_element(f.values.begin(), f.values.end());
-  // The transfer function in the field's units (on a log scale placed at their logs when prepared).
-  const bool log = log_scale_name(f.name);  // asked for, or the name of a series' played log
-  const double lo = log ? std::pow(10.0, *lo_it) : *lo_it, hi = log ? std::pow(10.0, *hi_it) : *hi_it;
+  // The transfer function in the field's units (on a log scale placed at their logs when prepared);
+  // a log asked for, or the name of a series' played log.
+  const OpacityInput opacity{loaded.mesh.view(), f.values.data(), log_scale_name(f.name), known_auto};
   const auto [blo, bhi] = bounds(loaded.mesh);
   const Camera camera = view_camera(look.view, blo, bhi, double(look.width) / look.height);
-  const OpacityInput opacity{loaded.mesh.view(), f.values.data(), log, known_auto};
   namespace fs = std::filesystem;
   std::string mesh = fs::absolute(mesh_path).lexically_normal().string();
   if (!scene_dir.empty()) {  // relative when the scene sits next to the mesh or near it, so the two can move together
     const std::string relative = fs::absolute(mesh_path).lexically_relative(fs::absolute(scene_dir)).string();
     if (!relative.empty() && relative.rfind("../..", 0) != 0) mesh = relative;
   }
-  nlohmann::json scene = {
-      {"mesh", mesh},
-      {"field", field},
-      {"transfer_function", quick_transfer_function(look, lo, hi, glm::length(bhi - blo), &opacity)},
-      {"camera", camera_to_json(camera)},
-      {"image", {{"width", look.width}, {"height", look.height}}}};
+  nlohmann::json scene = {{"mesh", mesh},
+                          {"field", field},
+                          {"transfer_function", quick_transfer_function(look, opacity).json},
+                          {"camera", camera_to_json(camera)},
+                          {"image", {{"width", look.width}, {"height", look.height}}}};
   if (look.log) scene["log"] = true;
   if (look.log_floor) scene["log_floor"] = *look.log_floor;
   nlohmann::json r = nlohmann::json::object();

@@ -49,6 +49,15 @@ struct OpacityInput {
 nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal,
                                        const OpacityInput* input = nullptr);
 
+// The same for the field `field.field` (on a log scale, the logs of its values) of `field.mesh`:
+// its range and the mesh's diagonal taken from them. `lo` and `hi` are the range in the field's
+// units (what transfer_function_from_json takes with the transfer function).
+struct FieldTransferFunction {
+  nlohmann::json json;
+  double lo = 0, hi = 0;
+};
+FieldTransferFunction quick_transfer_function(const QuickLook& look, const OpacityInput& field);
+
 // The scene (as docs/scene.md) for `loaded`, read from `mesh_path` with `reader`, with the mesh's
 // path written relative to `scene_dir` (absolute when empty). InputError for a bad look, naming
 // the option. The field chosen from a vector or tensor is kept in the mesh (mesh/field_choice.hpp).

@@ -47,7 +47,7 @@ nlohmann::json describe(const LoadedMesh& loaded, double seconds_read) {
       double fmin = std::numeric_limits<double>::infinity(), fmax = -fmin;
       std::int64_t bad = 0;
       // A vector's or tensor's range is its magnitude's, as a picture of the field alone shows it.
-      const std::vector<double> values = scalar_values(f, f.scalar() ? FieldChoice::kWhole : FieldChoice::kMagnitude);
+      const std::vector<double> values = shown_values(f);
       components[f.name] = f.components;
       for (double v : values) {
         if (!std::isfinite(v)) {

@@ -154,7 +154,8 @@ int run_render(const RenderArgs& given) {
          "no iso-surface is drawn; setting 'cell-data' points averages it to the points, whose iso-surfaces are");
   const double load_seconds = seconds_since(t_load);
 
-  const FrameJob job{a, input, *renderer, settings, paths, legend_of(a, prepared, settings, scene)};
+  const FrameJob job{
+      a, input, *renderer, settings, paths, legend_of(a, prepared, settings, scene), png_format(a, scene, &prepared)};
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   FrameLoop run;
   tbb::task_arena(threads).execute([&] {
@@ -168,8 +169,7 @@ int run_render(const RenderArgs& given) {
     std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, method.c_str(),
                   median(run.frame_times));
     job.write(run.first, paths.png, paths.npy, what,
-              input.player ? std::optional<double>(input.times.front()) : std::nullopt,
-              orbit(prepared.camera, job.degrees(0), prepared.turn_axis));
+              input.player ? std::optional<double>(input.times.front()) : std::nullopt, job.camera(0));
   }
 
   if (a.stats) print_stats(job, run, load_seconds, threads);

@@ -3,7 +3,6 @@
 #include <chrono>
 #include <cstdio>
 #include <memory>
-#include <tuple>
 
 #include <nlohmann/json.hpp>
 
@@ -38,9 +37,6 @@ struct PreparedVolume {
 
 void FrameJob::write(const Image& image, const std::string& png, const std::string& npy, const std::string& what,
                      std::optional<double> time, const Camera& camera) const {
-  PngFormat format = png_format(args, input.scene);
-  if (format.annotations.any())
-    std::tie(format.annotations.lo, format.annotations.hi) = bounds(input.prepared.loaded.mesh);
   write_outputs(image, format, args.legend ? &legend : nullptr, png, npy, what, time, &camera);
 }
 
@@ -51,8 +47,9 @@ std::string FrameJob::frame_what(int f, double seconds) const {
   return what;
 }
 
-double FrameJob::degrees(int f) const {
-  return args.orbit != 0.0 ? f * args.orbit / args.frames : args.animate.empty() ? f : 0.0;
+Camera frame_camera(const RenderArgs& a, const PreparedScene& prepared, int f) {
+  const double degrees = a.orbit != 0.0 ? f * a.orbit / a.frames : a.animate.empty() ? f : 0.0;
+  return orbit(prepared.camera, degrees, prepared.turn_axis);
 }
 
 FrameLoop play_series_frames(const FrameJob& job) {
@@ -64,7 +61,7 @@ FrameLoop play_series_frames(const FrameJob& job) {
   // Frame f at times[f], the next one made on a background thread while f renders.
   out.playback = play_series(
       *in.player, in.first, in.times, !job.args.no_prefetch, job.renderer, in.prepared.tf,
-      [&](int f) { return orbit(in.prepared.camera, job.degrees(f), in.prepared.turn_axis); }, size,
+      [&](int f) { return job.camera(f); }, size,
       [&](int f, Image&& img, const RenderReport& r) {
         out.report = r;
         out.render_seconds += r.seconds;
@@ -74,7 +71,7 @@ FrameLoop play_series_frames(const FrameJob& job) {
         std::snprintf(time, sizeof time, ", time %g", in.times[f]);
         if (job.paths.sequence)
           job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, r.seconds) + time, in.times[f],
-                    orbit(in.prepared.camera, job.degrees(f), in.prepared.turn_axis));
+                    job.camera(f));
         else if (f == 0)
           out.first = std::move(img);
       },
@@ -119,7 +116,7 @@ FrameLoop mesh_frames(const FrameJob& job) {
     const auto t_frame = std::chrono::steady_clock::now();
     ProgressBar bar(bar_label(job.args, f));
     out.report = {};
-    const Camera camera = orbit(in.prepared.camera, job.degrees(f), in.prepared.turn_axis);
+    const Camera camera = job.camera(f);
     Image img = job.renderer.render(v.volume, v.field, in.prepared.tf, camera, {in.scene.width, in.scene.height},
                                     &out.report, [&](double d) { bar(d); });
     out.render_seconds += out.report.seconds;

@@ -14,6 +14,10 @@
 
 namespace cellproj {
 
+// The camera of frame f: the prepared one turned by --orbit D spread over the frames; a playback
+// keeps its camera; a timing run (--frames without --orbit) turns a degree per frame.
+Camera frame_camera(const RenderArgs& a, const PreparedScene& prepared, int f);
+
 // What every loop reads: the arguments, the scene loaded, the renderer, where frames go.
 struct FrameJob {
   const RenderArgs& args;
@@ -22,6 +26,7 @@ struct FrameJob {
   const RenderSettings& settings;
   const FramePaths& paths;
   ColorBar legend;
+  PngFormat format;  // png_format(args, scene, prepared), made once
 
   // The image written to png and npy (either may be empty), with the legend when asked for, a
   // series frame's `time` labelled and the mesh's box outlined as `camera` sees it when asked for.
@@ -29,9 +34,7 @@ struct FrameJob {
              std::optional<double> time, const Camera& camera) const;
   // "frame 3/36, 512x512, pt-breakpoints, 0.052 s"
   std::string frame_what(int f, double seconds) const;
-  // The camera's turn at frame f: --orbit D spread over the frames; a playback keeps its camera; a
-  // timing run (--frames without --orbit) turns a degree per frame.
-  double degrees(int f) const;
+  Camera camera(int f) const { return frame_camera(args, input.prepared, f); }
 };
 
 // What a loop measured.

@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
-#include <tuple>
 
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
@@ -16,6 +15,7 @@
 #include "scene/prepare.hpp"
 #include "scene/report_json.hpp"
 #include "tools/commands.hpp"
+#include "tools/frame_loops.hpp"
 #include "tools/frame_output.hpp"
 #include "tools/terminal_text.hpp"
 #include "tools/timing.hpp"
@@ -50,8 +50,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   const FramePaths paths = frame_paths(a.png, a.npy, a.input, a.frames);
   make_output_folders(paths);
   const ColorBar legend = legend_of(a, prepared, settings, scene);
-  PngFormat format = png_format(a, scene);
-  if (format.annotations.any()) std::tie(format.annotations.lo, format.annotations.hi) = bounds(prepared.loaded.mesh);
+  const PngFormat format = png_format(a, scene, &prepared);
   Image first;
   arena.execute([&] {
     // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.
@@ -61,7 +60,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
     // Frames as a single process makes them: a turntable with --orbit, else a degree a frame.
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
-      const Camera camera = orbit(prepared.camera, a.orbit != 0.0 ? f * a.orbit / a.frames : f, prepared.turn_axis);
+      const Camera camera = frame_camera(a, prepared, f);
       Image image = bricks.render(settings, prepared.tf, camera, {scene.width, scene.height}, &stats, &report);
       frame_times.push_back(seconds_since(t_frame));
       if (world.rank != 0) continue;
@@ -84,7 +83,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
     char what[160];
     std::snprintf(what, sizeof what, "%dx%d, %s, %d rank%s, %.3f s per frame", scene.width, scene.height,
                   option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "", median(frame_times));
-    const Camera camera = orbit(prepared.camera, 0.0, prepared.turn_axis);
+    const Camera camera = frame_camera(a, prepared, 0);
     write_outputs(first, format, a.legend ? &legend : nullptr, paths.png, paths.npy, what, std::nullopt, &camera);
   }
   if (a.stats) {

@@ -5,6 +5,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <tuple>
 #include <vector>
 
 #include "io/read_mesh.hpp"
@@ -61,19 +62,20 @@ struct Input {
   std::optional<PartitionIndex> partition;  // a partitioned mesh: prepared.loaded is its extent (no cells)
 };
 
-// How the PNGs of `scene` are written: its background (or transparent), --png-bits, --title and
-// --time-label.
-inline PngFormat png_format(const RenderArgs& a, const Scene& scene) {
-  const glm::dvec3 page = scene.transparent ? glm::dvec3(1.0) : scene.background;  // legend_page's
-  PngFormat f{scene.background, scene.transparent, a.png_bits, {a.title, "", text_color_for(page), ""}, {}, {}};
-  if (a.time_label) f.time_format = a.time_format;
-  f.annotations.outline = a.outline, f.annotations.axes = a.axes, f.annotations.color = f.caption.text;
-  return f;
-}
-
 // What the legend's text is set against: the background, or for a transparent picture the light
 // page (a slide) it is likely laid on.
 inline glm::dvec3 legend_page(const Scene& scene) { return scene.transparent ? glm::dvec3(1.0) : scene.background; }
+
+// How the PNGs of `scene` are written: its background (or transparent), --png-bits, --title,
+// --time-label, and --outline and --axes (their box `prepared`'s mesh's, when given).
+inline PngFormat png_format(const RenderArgs& a, const Scene& scene, const PreparedScene* prepared = nullptr) {
+  PngFormat f{
+      scene.background, scene.transparent, a.png_bits, {a.title, "", text_color_for(legend_page(scene)), ""}, {}, {}};
+  if (a.time_label) f.time_format = a.time_format;
+  f.annotations.outline = a.outline, f.annotations.axes = a.axes, f.annotations.color = f.caption.text;
+  if (prepared && f.annotations.any()) std::tie(f.annotations.lo, f.annotations.hi) = bounds(prepared->loaded.mesh);
+  return f;
+}
 
 // The legend of what `settings` draw (scene/prepare.hpp), across the bottom with
 // --legend-orientation horizontal.
