@@ -10,6 +10,7 @@ packages=(
   libvtk9-dev libcgal-dev libtet1.5-dev libglm-dev libtbb-dev libnetcdf-dev zlib1g-dev libpng-dev libopenmpi-dev openmpi-bin
   libosmesa6-dev libfreetype-dev fonts-dejavu-core libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-meshio python3-vtk9
+  libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev ffmpeg libopenexr-dev
 )
 [ "${1:-}" = "--fuzz" ] && packages+=(clang libclang-rt-dev)
 [ "${1:-}" = "--bench" ] && packages+=(xvfb xauth python3-matplotlib)

@@ -1,11 +1,21 @@
 // cellproj compare A.npy B.npy: how far apart two float images are (the numbers of methods.md).
 #include <cstdio>
+#include <filesystem>
 
 #include "base/error.hpp"
+#include "media/exr.hpp"
 #include "tools/commands.hpp"
 #include "view/image.hpp"
 
 namespace cellproj {
+namespace {
+
+// A float image by its name: an OpenEXR (render -o x.exr) or a .npy (render --npy).
+Image read_float_image(const std::string& path) {
+  return std::filesystem::path(path).extension() == ".exr" ? read_exr(path) : read_npy(path);
+}
+
+}  // namespace
 
 Action add_compare(CLI::App& app) {
   struct Args {
@@ -16,9 +26,9 @@ Action add_compare(CLI::App& app) {
   };
   auto args = std::make_shared<Args>();
   CLI::App* cmd =
-      app.add_subcommand("compare", "Largest and RMS difference of two .npy images written by render --npy");
-  cmd->add_option("a", args->a, "First image (.npy)")->required();
-  cmd->add_option("b", args->b, "Second image (.npy), e.g. the exact reference")->required();
+      app.add_subcommand("compare", "Largest and RMS difference of two float images written by render (--npy, .exr)");
+  cmd->add_option("a", args->a, "First image (.npy or .exr)")->required();
+  cmd->add_option("b", args->b, "Second image (.npy or .exr), e.g. the exact reference")->required();
   cmd->add_option("--diff", args->diff, "Also write |a - b| as a PNG, multiplied by --scale");
   cmd->add_option("--scale", args->scale, "Gain of the --diff image (default 10)")->check(positive_number("a gain"));
   cmd->add_option("--downsample", args->downsample,
@@ -28,7 +38,7 @@ Action add_compare(CLI::App& app) {
                   "How --downsample filters: box (default) or tent, as render's --ssaa-filter")
       ->check(CLI::IsMember({"box", "tent"}));
   return [args] {
-    const Image a = read_npy(args->a), b_read = read_npy(args->b);  // each names its file when it fails
+    const Image a = read_float_image(args->a), b_read = read_float_image(args->b);  // each names its file when it fails
     Image b;
     try {
       b = downsample(b_read, args->downsample, args->filter == "tent" ? SampleFilter::tent : SampleFilter::box);

@@ -81,9 +81,9 @@ void print_stats(const FrameJob& job, const FrameLoop& run, double load_seconds,
               {"volumes", run.playback.volumes},
               {"prefetch", !a.no_prefetch},
               {"series_make_seconds", run.playback.make_seconds},
-              {"series_wait_seconds", run.playback.wait_seconds},
-              {"peak_rss_mib", peak_rss_mib()}});
+              {"series_wait_seconds", run.playback.wait_seconds}});
   }
+  s["peak_rss_mib"] = peak_rss_mib();  // a movie's frames are not held: this does not grow with --frames
   std::fprintf(stderr, "%s\n", s.dump().c_str());
 }
 
@@ -154,8 +154,10 @@ int run_render(const RenderArgs& given) {
          "no iso-surface is drawn; setting 'cell-data' points averages it to the points, whose iso-surfaces are");
   const double load_seconds = seconds_since(t_load);
 
-  const FrameJob job{
-      a, input, *renderer, settings, paths, legend_of(a, prepared, settings, scene), png_format(a, scene, &prepared)};
+  FrameWriter writer(paths, png_format(a, scene, &prepared),
+                     a.legend ? std::optional<ColorBar>(legend_of(a, prepared, settings, scene)) : std::nullopt,
+                     movie_options(a));
+  const FrameJob job{a, input, *renderer, settings, writer};
   const int threads = a.threads > 0 ? a.threads : tbb::info::default_concurrency();
   FrameLoop run;
   tbb::task_arena(threads).execute([&] {
@@ -164,13 +166,10 @@ int run_render(const RenderArgs& given) {
   for (const auto& w : run.report.warnings) warn(w);  // the last frame's
   if (!levels.empty()) return kExitOk;
 
-  if (!paths.sequence) {
-    char what[128];
-    std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, method.c_str(),
-                  median(run.frame_times));
-    job.write(run.first, paths.png, paths.npy, what,
-              input.player ? std::optional<double>(input.times.front()) : std::nullopt, job.camera(0));
-  }
+  char what[128];
+  std::snprintf(what, sizeof what, "%dx%d, %s, %.3f s per frame", scene.width, scene.height, method.c_str(),
+                median(run.frame_times));
+  writer.finish(what);
 
   if (a.stats) print_stats(job, run, load_seconds, threads);
   return kExitOk;
@@ -187,8 +186,10 @@ Action add_render(CLI::App& app) {
                   "scene `cellproj scene MESH` writes")
       ->required();
   cmd->add_option("-o,--output", args->png,
-                  "PNG to write (default: INPUT's name with .png, in the current folder); with --frames, a pattern "
-                  "such as out/frame_%04d.png writes every frame");
+                  "Picture to write, by its name: a PNG (default: INPUT's name with .png, in the current folder), "
+                  "an OpenEXR .exr (float RGBA, premultiplied), or a movie of every frame (.mp4: H.264, .gif); with "
+                  "--frames, a pattern such as out/frame_%04d.png writes a file a frame");
+  cmd->add_option("--fps", args->fps, "A movie's frames per second (default 24)")->check(CLI::Range(0.01, 240.0));
   cmd->add_option("--npy", args->npy,
                   "Also write the premultiplied float RGBA image as .npy (H, W, 4); a pattern as for -o");
   add_reader_options(*cmd, args->reader);

@@ -15,8 +15,8 @@
 namespace cellproj {
 namespace {
 
-std::string bar_label(const RenderArgs& a, int f) {
-  return a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering";
+std::string bar_label(int f, int frames) {
+  return frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(frames) : "rendering";
 }
 
 // The mesh as a volume, prepared for the renderer (its time measured apart from the frames').
@@ -35,11 +35,6 @@ struct PreparedVolume {
 
 }  // namespace
 
-void FrameJob::write(const Image& image, const std::string& png, const std::string& npy, const std::string& what,
-                     std::optional<double> time, const Camera& camera) const {
-  write_outputs(image, format, args.legend ? &legend : nullptr, png, npy, what, time, &camera);
-}
-
 std::string FrameJob::frame_what(int f, double seconds) const {
   char what[128];
   std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %.3f s", f + 1, args.frames, input.scene.width,
@@ -52,12 +47,15 @@ Camera frame_camera(const RenderArgs& a, const PreparedScene& prepared, int f) {
   return orbit(prepared.camera, degrees, prepared.turn_axis);
 }
 
+// Each loop draws one progress bar over all its frames (a movie's, a turntable's), relabelled
+// with the frame it is on.
 FrameLoop play_series_frames(const FrameJob& job) {
   const Input& in = job.input;
   const ImageSize size{in.scene.width, in.scene.height};
+  const int frames = static_cast<int>(in.times.size());
   FrameLoop out;
   auto t_frame = std::chrono::steady_clock::now();
-  std::unique_ptr<ProgressBar> bar;
+  ProgressBar bar(bar_label(0, frames));
   // Frame f at times[f], the next one made on a background thread while f renders.
   out.playback = play_series(
       *in.player, in.first, in.times, !job.args.no_prefetch, job.renderer, in.prepared.tf,
@@ -69,15 +67,12 @@ FrameLoop play_series_frames(const FrameJob& job) {
         t_frame = std::chrono::steady_clock::now();
         char time[64];
         std::snprintf(time, sizeof time, ", time %g", in.times[f]);
-        if (job.paths.sequence)
-          job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, r.seconds) + time, in.times[f],
-                    job.camera(f));
-        else if (f == 0)
-          out.first = std::move(img);
+        if (job.writer.paths().sequence) bar.clear();
+        job.writer.frame(f, std::move(img), job.frame_what(f, r.seconds) + time, in.times[f], job.camera(f));
       },
       [&](int f) -> Progress {
-        bar = std::make_unique<ProgressBar>(bar_label(job.args, f));
-        return [&bar](double d) { (*bar)(d); };
+        bar.relabel(bar_label(f, frames));
+        return [&bar, f, frames](double d) { bar((f + d) / frames); };
       },
       in.scene.clip, &out.series_clipped);
   return out;
@@ -95,8 +90,7 @@ FrameLoop progressive_levels(const FrameJob& job, const std::vector<int>& levels
                        char what[96];
                        std::snprintf(what, sizeof what, "%dx%d, slicing, %d slices, %.3f s", in.scene.width,
                                      in.scene.height, slices, r.seconds);
-                       job.write(img, level_path(job.paths.png, slices), level_path(job.paths.npy, slices), what,
-                                 std::nullopt, in.prepared.camera);
+                       job.writer.level(slices, img, what, in.prepared.camera);
                        if (job.args.stats) {
                          nlohmann::json j = {{"method", job.renderer.name()}, {"level_slices", slices}};
                          j.update(report_json(r));
@@ -112,20 +106,19 @@ FrameLoop mesh_frames(const FrameJob& job) {
   const PreparedVolume v(job);
   FrameLoop out;
   out.prepare_seconds = v.seconds;
-  for (int f = 0; f < job.args.frames; ++f) {
+  const int frames = job.args.frames;
+  ProgressBar bar(bar_label(0, frames));
+  for (int f = 0; f < frames; ++f) {
     const auto t_frame = std::chrono::steady_clock::now();
-    ProgressBar bar(bar_label(job.args, f));
+    bar.relabel(bar_label(f, frames));
     out.report = {};
     const Camera camera = job.camera(f);
     Image img = job.renderer.render(v.volume, v.field, in.prepared.tf, camera, {in.scene.width, in.scene.height},
-                                    &out.report, [&](double d) { bar(d); });
+                                    &out.report, [&](double d) { bar((f + d) / frames); });
     out.render_seconds += out.report.seconds;
     out.frame_times.push_back(seconds_since(t_frame));  // preparation is reported on its own
-    if (job.paths.sequence)
-      job.write(img, job.paths.png_of(f), job.paths.npy_of(f), job.frame_what(f, out.report.seconds), std::nullopt,
-                camera);
-    else if (f == 0)
-      out.first = std::move(img);
+    if (job.writer.paths().sequence) bar.clear();
+    job.writer.frame(f, std::move(img), job.frame_what(f, out.report.seconds), std::nullopt, camera);
   }
   return out;
 }

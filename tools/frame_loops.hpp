@@ -1,8 +1,8 @@
 #pragma once
 // The frame loops of `cellproj render` in one process, one function each: a time series played,
 // slicing's progressive levels, and the frames of one mesh (one picture, a turntable or a timing
-// run). Each writes its frames as they come and returns what it measured. Internal to the
-// command line.
+// run). Each hands its frames to the FrameWriter as they come and returns what it measured.
+// Internal to the command line.
 #include <string>
 #include <vector>
 
@@ -24,14 +24,8 @@ struct FrameJob {
   const Input& input;
   const Renderer& renderer;
   const RenderSettings& settings;
-  const FramePaths& paths;
-  ColorBar legend;
-  PngFormat format;  // png_format(args, scene, prepared), made once
+  FrameWriter& writer;
 
-  // The image written to png and npy (either may be empty), with the legend when asked for, a
-  // series frame's `time` labelled and the mesh's box outlined as `camera` sees it when asked for.
-  void write(const Image& image, const std::string& png, const std::string& npy, const std::string& what,
-             std::optional<double> time, const Camera& camera) const;
   // "frame 3/36, 512x512, pt-breakpoints, 0.052 s"
   std::string frame_what(int f, double seconds) const;
   Camera camera(int f) const { return frame_camera(args, input.prepared, f); }
@@ -39,7 +33,6 @@ struct FrameJob {
 
 // What a loop measured.
 struct FrameLoop {
-  Image first;  // the first frame, where frames are not written as a sequence
   std::vector<double> frame_times;
   double prepare_seconds = 0.0, render_seconds = 0.0;
   RenderReport report;        // the last frame's

@@ -1,12 +1,14 @@
 #pragma once
-// Where `cellproj render` writes its pictures: one PNG and .npy, a frame pattern, the levels of
-// --progressive. Internal to the command line.
+// Where `cellproj render` writes its pictures: one PNG (or EXR) and .npy, a frame pattern, a movie,
+// the levels of --progressive. Internal to the command line.
 #include <cstdio>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include <glm/vec3.hpp>
 
+#include "media/movie.hpp"
 #include "view/caption.hpp"
 #include "view/color_bar.hpp"
 #include "view/figure.hpp"
@@ -28,17 +30,20 @@ struct PngFormat {
   Annotations annotations;                 // the outline and the axes over the picture, when asked
 };
 
-// The image into the PNG and the .npy asked for (either path may be empty), saying so with `what`;
-// on the PNG the caption above the picture (labelled with `time` when the format says so), the
-// colour legend beside it when given, and the format's annotations over it seen by `camera`.
+// The image into the PNG (an EXR by its name: float, premultiplied) and the .npy asked for (either
+// path may be empty), saying so with `what`; on the picture the caption above it (labelled with
+// `time` when the format says so), the colour legend beside it when given, and the format's
+// annotations over it seen by `camera`.
 void write_outputs(const Image& image, const PngFormat& format, const ColorBar* legend, const std::string& png,
                    const std::string& npy, const std::string& what, std::optional<double> time = std::nullopt,
                    const Camera* camera = nullptr);
 
-// Where the frames go: one PNG (and .npy), or with a printf pattern (frame_%04d.png) one per frame.
+// Where the frames go: one PNG (and .npy), or with a printf pattern (frame_%04d.png) one per frame,
+// or a movie (-o turn.mp4, turn.gif) of every frame.
 struct FramePaths {
   std::string png, npy;
-  bool sequence = false;
+  bool sequence = false;                            // a pattern: a file a frame
+  std::optional<MovieFormat> movie = std::nullopt;  // -o names a movie
   std::string png_of(int f) const { return sequence ? frame_path(png, f) : png; }
   std::string npy_of(int f) const { return sequence ? frame_path(npy, f) : npy; }
   static std::string frame_path(const std::string& pattern, int f) {
@@ -53,10 +58,39 @@ struct FramePaths {
 bool is_frame_pattern(const std::string& path, const char* option);
 
 // The outputs of a render of `frames` frames: -o and --npy as given (by default INPUT's name with
-// .png), patterns checked (a bad one is a usage error).
+// .png), patterns checked (a bad one is a usage error); a movie's --npy must be a pattern.
 FramePaths frame_paths(const std::string& png, const std::string& npy, const std::string& input, int frames);
 // A frame pattern's folders made where missing; a single output's folder must exist. InputError
 // naming the folder otherwise (bad output, exit 1).
 void make_output_folders(const FramePaths& paths);
+
+// Where a render's frames go as they are made: a sequence's each to its files, a movie's each
+// encoded (none held), the one picture of a single output kept for finish() to write with what all
+// frames measured.
+class FrameWriter {
+ public:
+  FrameWriter(FramePaths paths, PngFormat format, std::optional<ColorBar> legend, MovieOptions movie = {});
+  // Frame f (seen by `camera`; a series' at `time`), saying so with `what` where it is written now.
+  void frame(int f, Image&& image, const std::string& what, std::optional<double> time, const Camera& camera);
+  // The single picture written, or the movie closed, saying so with `what`.
+  void finish(const std::string& what);
+  // --progressive's level of `slices` planes, to OUT-64.png (and its .npy), written now.
+  void level(int slices, const Image& image, const std::string& what, const Camera& camera) const;
+  const FramePaths& paths() const { return paths_; }
+  // Each frame written as it comes (a pattern or a movie), not one kept to the end.
+  bool streams() const { return paths_.sequence || paths_.movie.has_value(); }
+
+ private:
+  FramePaths paths_;
+  PngFormat format_;
+  std::optional<ColorBar> legend_;
+  std::unique_ptr<MovieWriter> movie_;
+  struct Kept {
+    Image image;
+    std::optional<double> time;
+    Camera camera;
+  };
+  std::optional<Kept> first_;
+};
 
 }  // namespace cellproj

@@ -7,6 +7,7 @@
 #include "base/error.hpp"
 #include "base/huge_pages.hpp"
 #include "distributed/communicator.hpp"
+#include "media/movie.hpp"
 #include "tools/commands.hpp"
 #include "tools/terminal_text.hpp"
 
@@ -14,6 +15,7 @@ int main(int argc, char** argv) {
   using namespace cellproj;
   keep_frame_arrays_in_heap();         // a frame's arrays of a few MB reused, not mapped anew (base/huge_pages.hpp)
   const MpiSession mpi(&argc, &argv);  // MPI only when launched by mpirun
+  quiet_ffmpeg_messages();             // a movie's encoder says what goes wrong, not how it went
   // Under mpirun every rank meets the same error (agree() makes them one): rank 0 reports it.
   const bool report_errors = Communicator::world().rank == 0;
   CLI::App app{"cellproj: direct volume rendering of unstructured and curvilinear grids by cell projection"};

@@ -19,11 +19,22 @@ class ProgressBar {
  public:
   explicit ProgressBar(std::string label)
       : label_(std::move(label)), enabled_(isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
-  ~ProgressBar() {
+  ~ProgressBar() { clear(); }
+  // The bar's line erased (before a line of output; the next fraction draws it again).
+  void clear() {
+    std::lock_guard<std::mutex> lock(mutex_);
     if (shown_) std::fprintf(stderr, "\r%*s\r", 60, "");
+    shown_ = false, shown_percent_ = -1;
   }
   ProgressBar(const ProgressBar&) = delete;
   ProgressBar& operator=(const ProgressBar&) = delete;
+
+  // A new label (frame 3/36) for a bar that spans several frames; drawn with the next fraction.
+  void relabel(std::string label) {
+    std::lock_guard<std::mutex> lock(mutex_);
+    label_ = std::move(label);
+    shown_percent_ = -1;
+  }
 
   void operator()(double done) {
     if (!enabled_) return;

@@ -49,9 +49,13 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   std::vector<double> frame_times;
   const FramePaths paths = frame_paths(a.png, a.npy, a.input, a.frames);
   make_output_folders(paths);
-  const ColorBar legend = legend_of(a, prepared, settings, scene);
-  const PngFormat format = png_format(a, scene, &prepared);
-  Image first;
+  // Rank 0 writes: the other ranks' writer holds nothing and opens nothing.
+  std::optional<FrameWriter> writer;
+  if (world.rank == 0)
+    writer.emplace(paths, png_format(a, scene, &prepared),
+                   a.legend ? std::optional<ColorBar>(legend_of(a, prepared, settings, scene)) : std::nullopt,
+                   movie_options(a));
+  const std::string ranks = std::to_string(world.size) + (world.size > 1 ? " ranks" : " rank");
   arena.execute([&] {
     // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.
     const BrickRenderer bricks = input.partition
@@ -64,28 +68,19 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
       Image image = bricks.render(settings, prepared.tf, camera, {scene.width, scene.height}, &stats, &report);
       frame_times.push_back(seconds_since(t_frame));
       if (world.rank != 0) continue;
-      if (paths.sequence) {
-        char what[160];
-        std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %d rank%s, %.3f s", f + 1, a.frames, scene.width,
-                      scene.height, option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "",
-                      frame_times.back());
-        write_outputs(image, format, a.legend ? &legend : nullptr, paths.png_of(f), paths.npy_of(f), what, std::nullopt,
-                      &camera);
-      } else if (f == 0) {
-        first = std::move(image);
-      }
+      char what[160];
+      std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %s, %s, %.3f s", f + 1, a.frames, scene.width, scene.height,
+                    option_text(a.options, "method").c_str(), ranks.c_str(), frame_times.back());
+      writer->frame(f, std::move(image), what, std::nullopt, camera);
     }
   });
   const std::vector<double> all = gather_to_root(world, stats.values());
   if (world.rank != 0) return kExitOk;
   for (const auto& w : report.warnings) warn(w);
-  if (!paths.sequence) {
-    char what[160];
-    std::snprintf(what, sizeof what, "%dx%d, %s, %d rank%s, %.3f s per frame", scene.width, scene.height,
-                  option_text(a.options, "method").c_str(), world.size, world.size > 1 ? "s" : "", median(frame_times));
-    const Camera camera = frame_camera(a, prepared, 0);
-    write_outputs(first, format, a.legend ? &legend : nullptr, paths.png, paths.npy, what, std::nullopt, &camera);
-  }
+  char what[160];
+  std::snprintf(what, sizeof what, "%dx%d, %s, %s, %.3f s per frame", scene.width, scene.height,
+                option_text(a.options, "method").c_str(), ranks.c_str(), median(frame_times));
+  writer->finish(what);
   if (a.stats) {
     constexpr std::size_t n = std::size(kRankStatNames);
     nlohmann::json ranks = nlohmann::json::array();

@@ -29,6 +29,7 @@ struct RenderArgs {
   std::vector<std::string> look_given;  // --colormap, --opacity, --depth when given
   int threads = 0, frames = 1;
   int png_bits = 8;    // --png-bits: 8 or 16 a sample
+  double fps = 24.0;   // --fps: a movie's frames per second
   double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
   bool legend = false;
   std::string legend_orientation = "vertical";  // --legend-orientation
@@ -75,6 +76,13 @@ inline PngFormat png_format(const RenderArgs& a, const Scene& scene, const Prepa
   f.annotations.outline = a.outline, f.annotations.axes = a.axes, f.annotations.color = f.caption.text;
   if (prepared && f.annotations.any()) std::tie(f.annotations.lo, f.annotations.hi) = bounds(prepared->loaded.mesh);
   return f;
+}
+
+// How a movie (-o turn.mp4) is encoded: --fps.
+inline MovieOptions movie_options(const RenderArgs& a) {
+  MovieOptions m;
+  m.frames_per_second = a.fps;
+  return m;
 }
 
 // The legend of what `settings` draw (scene/prepare.hpp), across the bottom with

@@ -89,35 +89,33 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
   std::vector<double> frame_times;
   double render_seconds = 0.0;
   RenderReport report;
-  Image first;
+  FrameWriter writer(paths, png_format(a, scene), std::nullopt, movie_options(a));
   const double load_seconds = seconds_since(t_load);
   arena.execute([&] {
+    ProgressBar bar("rendering");
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
-      ProgressBar bar(a.frames > 1 ? "frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames) : "rendering");
+      if (a.frames > 1) bar.relabel("frame " + std::to_string(f + 1) + "/" + std::to_string(a.frames));
       report = {};
       const double degrees = a.orbit != 0.0 ? f * a.orbit / a.frames : f;
-      Image img = render_volumes(volumes.entries(), settings, orbit(prepared.camera, degrees, prepared.turn_axis), size,
-                                 &report, [&](double d) { bar(d); });
+      const Camera camera = orbit(prepared.camera, degrees, prepared.turn_axis);
+      Image img = render_volumes(volumes.entries(), settings, camera, size, &report,
+                                 [&](double d) { bar((f + d) / a.frames); });
       render_seconds += report.seconds;
       frame_times.push_back(seconds_since(t_frame));
       char what[128];
       std::snprintf(what, sizeof what, "frame %d/%d, %dx%d, %zu volumes, exact, %.3f s", f + 1, a.frames, scene.width,
                     scene.height, volumes.entries().size(), report.seconds);
-      if (paths.sequence)
-        write_outputs(img, png_format(a, scene), nullptr, paths.png_of(f), paths.npy_of(f), what);
-      else if (f == 0)
-        first = std::move(img);
+      if (paths.sequence) bar.clear();
+      writer.frame(f, std::move(img), what, std::nullopt, camera);
     }
   });
   for (const auto& w : report.warnings) warn(w);
   const double frame_seconds = median(frame_times);
-  if (!paths.sequence) {
-    char what[128];
-    std::snprintf(what, sizeof what, "%dx%d, %zu volumes, exact, %.3f s per frame", scene.width, scene.height,
-                  scene.volumes.size(), frame_seconds);
-    write_outputs(first, png_format(a, scene), nullptr, paths.png, paths.npy, what);
-  }
+  char what[128];
+  std::snprintf(what, sizeof what, "%dx%d, %zu volumes, exact, %.3f s per frame", scene.width, scene.height,
+                scene.volumes.size(), frame_seconds);
+  writer.finish(what);
   if (a.stats) {
     nlohmann::json meshes = nlohmann::json::array();
     for (std::size_t k = 0; k < prepared.volumes.size(); ++k)

@@ -1,7 +1,8 @@
 #pragma once
 // A picture as a figure to publish: the image over its page colour (or transparent), a caption
 // above it and the colour legend beside it, neither covering the data, written as a PNG of 8 or
-// 16 bits a sample. What the command line's and Python's PNGs are made of.
+// 16 bits a sample. What the command line's and Python's PNGs (and movie frames and EXRs: media/)
+// are made of.
 #include <optional>
 #include <string>
 
@@ -23,6 +24,11 @@ struct Figure {
   Camera camera;                                     // the picture's (for the annotations)
 };
 
+// The figure's pixels in 8 bits over its page (a movie's frame; InputError for a transparent
+// figure), or in float: straight alpha, opaque over a page. InputError for a font that cannot be
+// loaded.
+Rgb8Image figure_rgb8(const Image& image, const Figure& figure);
+DisplayImage figure_pixels(const Image& image, const Figure& figure);
 // InputError for bits other than 8 or 16, a font that cannot be loaded, a file that cannot be written.
 void write_figure(const Image& image, const Figure& figure, const std::string& path);
 

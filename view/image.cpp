@@ -48,6 +48,16 @@ DisplayImage to_display(const Image& img, const std::optional<glm::dvec3>& bg) {
   return out;
 }
 
+Image premultiplied(const DisplayImage& picture) {
+  Image out(picture.width, picture.height);
+  for (std::size_t p = 0; p < picture.rgba.size(); p += 4) {
+    const float a = picture.rgba[p + 3];
+    for (int k = 0; k < 3; ++k) out.rgba[p + k] = picture.rgba[p + k] * a;
+    out.rgba[p + 3] = a;
+  }
+  return out;
+}
+
 namespace {
 
 // libpng's writer or reader on `path`, opened, with its errors as InputErrors naming the file.

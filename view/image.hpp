@@ -51,6 +51,8 @@ struct DisplayImage {
 // The render over `background`, or without one its colour un-premultiplied (colour / alpha where
 // alpha > 0, black where nothing was drawn), for slides and compositing tools.
 DisplayImage to_display(const Image& image, const std::optional<glm::dvec3>& background);
+// The picture's colour multiplied by its alpha again: a figure as compositing tools take it (EXR).
+Image premultiplied(const DisplayImage& picture);
 // A PNG of `bits` (8 or 16) per sample: RGB when the picture is opaque everywhere, RGBA otherwise.
 // Throws InputError if unwritable.
 void write_png(const DisplayImage& image, int bits, const std::string& path);
