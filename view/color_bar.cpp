@@ -78,13 +78,32 @@ struct Layout {
   std::vector<BarTick> ticks;                                                          // the ends and nice values
   int width() const { return 2 * margin + std::max(bar_w + gap + label_w, title_w); }  // of a strip holding it
 };
-// `length`: the bar's, in pixels; `spacing`: between labels along it, in text lines.
-Layout layout(const ColorBar& bar, int height, Font& font, double length, double spacing) {
+// The inner labels that would touch an end's label dropped: each label is centred on its tick and
+// spans `extent` pixels along a bar `length` pixels long, and a `gap` must part two of them.
+template <class Extent>
+void drop_crowded(std::vector<BarTick>& ticks, double length, double gap, const Extent& extent) {
+  if (ticks.size() < 3) return;
+  const double lo = extent(ticks.front().text), hi = extent(ticks.back().text);
+  std::vector<BarTick> kept{ticks.front()};
+  for (std::size_t k = 1; k + 1 < ticks.size(); ++k) {
+    const double own = extent(ticks[k].text);
+    if (ticks[k].at * length >= (lo + own) / 2 + gap && (1.0 - ticks[k].at) * length >= (hi + own) / 2 + gap)
+      kept.push_back(ticks[k]);
+  }
+  kept.push_back(ticks.back());
+  ticks = std::move(kept);
+}
+
+// `length`: the bar's, in pixels; `spacing`: between labels along it, in text lines; `across`: a
+// horizontal bar, whose labels stand side by side along it.
+Layout layout(const ColorBar& bar, int height, Font& font, double length, double spacing, bool across = false) {
   Layout l;
   l.pixels = font.pixels();
-  // As many inner ticks as fit `spacing` text lines apart, none nearer an end than a line and a half.
+  // As many inner ticks as fit `spacing` text lines apart, none nearer an end than a line and a half
+  // (across the bar: than its label's width allows).
   l.ticks = bar_ticks(bar, std::clamp(static_cast<int>(length / (spacing * l.pixels)) - 1, 0, 8),
                       1.5 * l.pixels / std::max(1.0, length));
+  if (across) drop_crowded(l.ticks, length, l.pixels / 2.0, [&](const std::string& t) { return font.width(t); });
   if (!bar.marks.empty()) {  // the marked values labelled instead of the nice ones between the ends
     l.ticks = {l.ticks.front(), l.ticks.back()};
     const double span = bar.hi - bar.lo;
@@ -144,8 +163,9 @@ void draw_bar(Picture& img, const ColorBar& bar) {
 template <class Picture>
 void draw_horizontal(Picture& img, const ColorBar& bar, int width, int strip) {
   Font font(bar.font.empty() ? default_font() : bar.font, text_pixels(img.height - strip));
-  const Layout l = layout(bar, img.height - strip, font, 0.6 * width, 6.0);
-  const int pixels = l.pixels, x0 = width / 5, x1 = x0 + static_cast<int>(0.6 * width);
+  const int x0 = width / 5, x1 = x0 + static_cast<int>(0.6 * width);
+  const Layout l = layout(bar, img.height - strip, font, x1 - x0, 6.0, /*across*/ true);
+  const int pixels = l.pixels;
   const int top = img.height - strip + l.margin + pixels + pixels / 2, bottom = top + l.bar_w;
   const int n = static_cast<int>(bar.colors.size());
   for (int x = x0; x < x1 && bar.gradient; ++x)
