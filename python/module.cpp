@@ -308,12 +308,12 @@ PYBIND11_MODULE(_cellproj, m) {
   m.def("colormaps", &colormap_list, "The built-in colour maps, by ParaView's names");
 
   py::class_<Legend>(m, "Legend", "A colour legend for write_png: a transfer function's colours over a field's range")
-      .def(
-          py::init([](const TransferFunction& tf, std::pair<double, double> range, const std::string& title, bool log,
-                      bool horizontal) { return Legend{tf, range.first, range.second, title, log, horizontal}; }),
-          py::arg("tf"), py::arg("range"), py::arg("title") = "", py::arg("log") = false, py::arg("horizontal") = false,
-          "range=(lo, hi) in the field's units (mesh.field(name).min(), .max()); log=True for a transfer function "
-          "made for a log scale (labels the decades); horizontal=True puts the bar in a strip below the picture");
+      .def(py::init([](const TransferFunction& tf, std::pair<double, double> range, const std::string& title, bool log,
+                       bool horizontal) { return Legend{tf, range.first, range.second, title, log, horizontal}; }),
+           py::arg("tf"), py::arg("range"), py::arg("title") = "", py::arg("log") = false,
+           py::arg("horizontal") = false,
+           "range=(lo, hi) in the field's units (mesh.field(name).min(), .max()); log=True for a transfer function "
+           "made for a log scale (labels the decades); horizontal=True puts the bar in a strip below the picture");
 
   py::class_<Camera>(m, "Camera")
       .def(py::init(&make_camera), py::arg("eye"), py::arg("target"), py::arg("up") = std::vector<double>{0, 0, 1},
