@@ -119,6 +119,7 @@ struct Legend {
   double lo, hi;
   std::string title;
   bool log, horizontal;
+  std::string unit;  // after the title, in brackets
 };
 
 // Renders on `threads` workers (0: all cores) without the GIL.
@@ -309,11 +310,14 @@ PYBIND11_MODULE(_cellproj, m) {
 
   py::class_<Legend>(m, "Legend", "A colour legend for write_png: a transfer function's colours over a field's range")
       .def(py::init([](const TransferFunction& tf, std::pair<double, double> range, const std::string& title, bool log,
-                       bool horizontal) { return Legend{tf, range.first, range.second, title, log, horizontal}; }),
+                       bool horizontal, const std::string& unit) {
+             return Legend{tf, range.first, range.second, title, log, horizontal, unit};
+           }),
            py::arg("tf"), py::arg("range"), py::arg("title") = "", py::arg("log") = false,
-           py::arg("horizontal") = false,
+           py::arg("horizontal") = false, py::arg("unit") = "",
            "range=(lo, hi) in the field's units (mesh.field(name).min(), .max()); log=True for a transfer function "
-           "made for a log scale (labels the decades); horizontal=True puts the bar in a strip below the picture");
+           "made for a log scale (labels the decades); unit='K' titles it 'title [K]'; horizontal=True puts the bar in "
+           "a strip below the picture");
 
   py::class_<Camera>(m, "Camera")
       .def(py::init(&make_camera), py::arg("eye"), py::arg("target"), py::arg("up") = std::vector<double>{0, 0, 1},
@@ -484,7 +488,7 @@ PYBIND11_MODULE(_cellproj, m) {
           if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi >= lo))
             throw InputError("Legend: range must be finite and increasing" +
                              std::string(legend->log ? ", above 0 on a log scale" : ""));
-          figure.legend = color_bar(legend->tf, lo, hi, legend->log, legend->title, page);
+          figure.legend = color_bar(legend->tf, lo, hi, legend->log, legend_title(legend->title, legend->unit), page);
           figure.legend->horizontal = legend->horizontal;
         }
         write_figure(from_numpy(image), figure, path);

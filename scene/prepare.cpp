@@ -39,8 +39,10 @@ void refuse_iso_on_log_scale(const RenderSettings& s, bool log_scale) {
     throw InputError("setting 'iso' does not go with setting 'log' yet: its values would be read as logs of the field");
 }
 
-ColorBar color_bar(const PreparedScene& p, const RenderSettings& s, const glm::dvec3& background) {
+ColorBar color_bar(const PreparedScene& p, const RenderSettings& s, const glm::dvec3& background,
+                   const LegendText& text) {
   ColorBar bar = color_bar(p, background);
+  bar.title = legend_title(text.title.empty() ? bar.title : text.title, text.unit);
   const auto mark = [&](double value, const std::optional<glm::dvec3>& color) {
     bar.marks.push_back({value, glm::clamp(color ? *color : p.tf.color(value), 0.0, 1.0)});
   };

@@ -57,8 +57,13 @@ LoadedMesh first_key_frame(SeriesPlayer& player, Scene& scene);
 ColorBar color_bar(const PreparedScene& scene, const glm::dvec3& background);
 // The legend of what `settings` draw: the mean, maximum or minimum along each ray named in the
 // title; iso-surfaces and layers marked on the bar in their colours, the bar's colours left out
-// where the picture has none of them (layers, iso-surfaces without the volume).
-ColorBar color_bar(const PreparedScene& scene, const RenderSettings& settings, const glm::dvec3& background);
+// where the picture has none of them (layers, iso-surfaces without the volume). `text` names the
+// field instead of its own name when given, and adds its unit.
+struct LegendText {
+  std::string title, unit;
+};
+ColorBar color_bar(const PreparedScene& scene, const RenderSettings& settings, const glm::dvec3& background,
+                   const LegendText& text = {});
 // InputError when `settings` draw iso-values (exact's surfaces, layers) of a field on a log scale:
 // they would be read as logs of the field.
 void refuse_iso_on_log_scale(const RenderSettings& settings, bool log_scale);

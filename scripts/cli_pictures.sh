@@ -38,6 +38,7 @@ picture background_white "$mesh" --background white
 picture background_none "$mesh" --background none
 picture legend "$mesh" --legend
 picture legend_horizontal "$mesh" --legend-orientation horizontal
+picture legend_title "$mesh" --legend-title Temperature --legend-unit K
 picture title "$mesh" --title "A swirl"
 picture outline "$mesh" --outline
 picture axes "$mesh" --axes

@@ -218,6 +218,11 @@ Action add_render(CLI::App& app) {
                   "The legend's bar: vertical (default, in a strip on the right) or horizontal (in a strip below); "
                   "implies --legend")
       ->check(CLI::IsMember({"vertical", "horizontal"}));
+  cmd->add_option("--legend-title", args->legend_title,
+                  "The legend's title instead of the field's name (a reduction's \"maximum along each ray\" is "
+                  "kept); implies --legend");
+  cmd->add_option("--legend-unit", args->legend_unit,
+                  "The field's unit, after the legend's title in brackets: \"temperature [K]\"; implies --legend");
   cmd->add_flag("--outline", args->outline, "Draw the mesh's bounding box over the picture, as ParaView's outline");
   cmd->add_flag("--axes", args->axes,
                 "Draw an axes triad in the picture's lower-left corner (x red, y green, z blue), as ParaView's "
@@ -272,11 +277,13 @@ Action add_render(CLI::App& app) {
   cmd->add_flag("--stats", args->stats, "Print one JSON line of timings on stderr");
   CLI::Option* cell_data = cmd->get_option("--cell-data");
   CLI::Option* time_format = cmd->get_option("--time-format");
-  CLI::Option* orientation = cmd->get_option("--legend-orientation");
-  return [args, texts, look, moves, cell_data, time_format, orientation] {
+  const std::vector<CLI::Option*> legend_parts = {cmd->get_option("--legend-orientation"),
+                                                  cmd->get_option("--legend-title"), cmd->get_option("--legend-unit")};
+  return [args, texts, look, moves, cell_data, time_format, legend_parts] {
     args->cell_data_given = cell_data->count() > 0;
     if (time_format->count() > 0) args->time_label = true;
-    if (orientation->count() > 0) args->legend = true;
+    for (CLI::Option* part : legend_parts)
+      if (part->count() > 0) args->legend = true;
     for (const auto& [row, option] : moves) {
       if (option->count() == 0) continue;
       const std::vector<std::string> given = option->results();

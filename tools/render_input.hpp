@@ -33,6 +33,7 @@ struct RenderArgs {
   double orbit = 0.0;  // degrees over the frames; 0: one degree per frame (--frames as a timing run)
   bool legend = false;
   std::string legend_orientation = "vertical";  // --legend-orientation
+  std::string legend_title, legend_unit;        // --legend-title (instead of the field's name), --legend-unit
   bool outline = false, axes = false;           // --outline, --axes: over the picture
   bool cell_data_given = false;                 // --cell-data, over a scene's reader block
   std::string title;                            // --title, above the picture
@@ -89,7 +90,7 @@ inline MovieOptions movie_options(const RenderArgs& a) {
 // --legend-orientation horizontal.
 inline ColorBar legend_of(const RenderArgs& a, const PreparedScene& p, const RenderSettings& settings,
                           const Scene& scene) {
-  ColorBar bar = color_bar(p, settings, legend_page(scene));
+  ColorBar bar = color_bar(p, settings, legend_page(scene), {a.legend_title, a.legend_unit});
   bar.horizontal = a.legend_orientation == "horizontal";
   return bar;
 }

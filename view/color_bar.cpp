@@ -75,7 +75,8 @@ namespace {
 // Where a legend's parts go in a picture `height` pixels tall: text size, labels, widths.
 struct Layout {
   int pixels, margin, bar_w, gap, label_w, title_w;
-  std::vector<BarTick> ticks;                                                          // the ends and nice values
+  std::vector<std::string> title_lines;  // a long title's parenthesis on a line of its own
+  std::vector<BarTick> ticks;            // the ends and nice values
   int width() const { return 2 * margin + std::max(bar_w + gap + label_w, title_w); }  // of a strip holding it
 };
 // The inner labels that would touch an end's label dropped: each label is centred on its tick and
@@ -114,7 +115,14 @@ Layout layout(const ColorBar& bar, int height, Font& font, double length, double
   l.label_w = 0;
   for (const BarTick& t : l.ticks) l.label_w = std::max(l.label_w, font.width(t.text));
   l.margin = std::max(4, height / 40), l.bar_w = std::max(6, l.pixels), l.gap = std::max(3, l.pixels / 3);
-  l.title_w = font.width(bar.title);
+  // A title much wider than the bar and its labels ("T [K] (maximum along each ray)") takes two
+  // lines, broken before its parenthesis, so that the strip is not widened for it.
+  l.title_lines = {bar.title};
+  const std::size_t paren = bar.title.find(" (");
+  if (paren != std::string::npos && font.width(bar.title) > 2 * (l.bar_w + l.gap + l.label_w))
+    l.title_lines = {bar.title.substr(0, paren), bar.title.substr(paren + 1)};
+  l.title_w = 0;
+  for (const std::string& line : l.title_lines) l.title_w = std::max(l.title_w, font.width(line));
   return l;
 }
 
@@ -134,7 +142,8 @@ void draw_bar(Picture& img, const ColorBar& bar) {
   const Layout l = layout(bar, img.height, font, 0.6 * img.height, 2.5);
   const int pixels = l.pixels, gap = l.gap;
   const int x1 = img.width - l.margin - l.label_w - gap, x0 = x1 - l.bar_w;
-  const int top = l.margin + 2 * pixels, bottom = top + static_cast<int>(0.6 * img.height);
+  const int lines = static_cast<int>(l.title_lines.size());
+  const int top = l.margin + (1 + lines) * pixels, bottom = top + static_cast<int>(0.6 * img.height);
   const int n = static_cast<int>(bar.colors.size());
   for (int y = top; y < bottom && bar.gradient; ++y) {  // high values at the top
     const double t = 1.0 - (y - top + 0.5) / (bottom - top);
@@ -154,8 +163,9 @@ void draw_bar(Picture& img, const ColorBar& bar) {
     fill(img, x1, y, x1 + gap / 2 + 1, y + 1, bar.text);  // tick
     font.draw(img, x1 + gap, y + half, t.text, bar.text);
   }
-  font.draw(img, std::max(0, std::min(x0, img.width - l.margin - l.title_w)), top - pixels / 2 - 2, bar.title,
-            bar.text);
+  for (int k = 0; k < lines; ++k)
+    font.draw(img, std::max(0, std::min(x0, img.width - l.margin - l.title_w)),
+              top - pixels / 2 - 2 - (lines - 1 - k) * pixels, l.title_lines[k], bar.text);
 }
 
 // A horizontal bar across the strip of `strip` rows at the bottom of the image, 60% of the

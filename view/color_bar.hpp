@@ -29,6 +29,12 @@ struct ColorBar {
   std::string font;                // a .ttf/.otf file; empty: default_font()
 };
 
+// A legend's title: the field's (or the caller's) name with its unit in brackets, "T [K]"; the
+// name alone without a unit.
+inline std::string legend_title(const std::string& name, const std::string& unit) {
+  return unit.empty() ? name : name + " [" + unit + "]";
+}
+
 // A labelled tick of the bar: where along it (0 at the low end, 1 at the high end) and its text.
 struct BarTick {
   double at;

@@ -230,10 +230,10 @@ def test_a_figure_from_python_is_the_clis(tmp_path, mixed):
     cellproj.write_png(cellproj.render(mesh, size=(96, 80)), str(tmp_path / "py.png"), title="A twisted box",
                        legend=legend)
     assert (tmp_path / "py.png").read_bytes() == out.read_bytes()
-    subprocess.run([EXE, "render", mixed, "--size", "96x80", "--legend-orientation", "horizontal", "-o", str(out)],
-                   check=True, capture_output=True)
-    across = cellproj.Legend(cellproj.TransferFunction.default(mesh), (values.min(), values.max()), "scalar",
-                             horizontal=True)
+    subprocess.run([EXE, "render", mixed, "--size", "96x80", "--legend-orientation", "horizontal", "--legend-title",
+                    "Heat", "--legend-unit", "K", "-o", str(out)], check=True, capture_output=True)
+    across = cellproj.Legend(cellproj.TransferFunction.default(mesh), (values.min(), values.max()), "Heat",
+                             horizontal=True, unit="K")
     cellproj.write_png(cellproj.render(mesh, size=(96, 80)), str(tmp_path / "py.png"), legend=across)
     assert (tmp_path / "py.png").read_bytes() == out.read_bytes()
     with pytest.raises(cellproj.InputError, match="range must be finite and increasing"):
