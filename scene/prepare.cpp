@@ -31,7 +31,12 @@ ColorBar color_bar(const TransferFunction& tf, double lo, double hi, bool log, c
 }
 
 ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
-  return color_bar(p.tf, p.field_min, p.field_max, p.log_scale, p.scalar.empty() ? p.field : p.scalar, background);
+  // The colour map's own span, as ParaView's legend shows its lookup table's range: the field's
+  // range for a preset stretched over it, a given range (--range, clim) otherwise.
+  const std::vector<ColorPoint>& c = p.tf.color_points();
+  const bool spans = c.size() >= 2 && c.front().s < c.back().s;
+  return color_bar(p.tf, spans ? c.front().s : p.field_min, spans ? c.back().s : p.field_max, p.log_scale,
+                   p.scalar.empty() ? p.field : p.scalar, background);
 }
 
 void refuse_iso_on_log_scale(const RenderSettings& s, bool log_scale) {

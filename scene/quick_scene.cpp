@@ -106,7 +106,14 @@ nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double 
 
 FieldTransferFunction quick_transfer_function(const QuickLook& look, const OpacityInput& field) {
   const auto [lo_at, hi_at] = std::minmax_element(field.field, field.field + field.mesh.n_points);
-  const double lo = field.log ? std::pow(10.0, *lo_at) : *lo_at, hi = field.log ? std::pow(10.0, *hi_at) : *hi_at;
+  double lo = field.log ? std::pow(10.0, *lo_at) : *lo_at, hi = field.log ? std::pow(10.0, *hi_at) : *hi_at;
+  if (look.range) {
+    std::tie(lo, hi) = *look.range;
+    if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi) || (field.log && !(lo > 0)))
+      throw InputError("setting 'range': expected LO,HI with LO < HI" +
+                       std::string(field.log ? ", above 0 on a log scale" : "") + ", got " + std::to_string(lo) + "," +
+                       std::to_string(hi));
+  }
   const auto [blo, bhi] = bounds(field.mesh);
   return {quick_transfer_function(look, lo, hi, glm::length(bhi - blo), &field), lo, hi};
 }

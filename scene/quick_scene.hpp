@@ -26,6 +26,9 @@ struct QuickLook {
   // Optical depth across the mesh's diagonal where the extinction is largest; 0: auto's own scale,
   // 20 for the named shapes.
   double depth = 0.0;
+  // The range the colour map and the opacity shape span, in the field's units, instead of the
+  // field's own (ParaView's custom range, PyVista's clim): values beyond it take its ends' colours.
+  std::optional<std::pair<double, double>> range;
   std::string view;  // +x, -x, +y, -y, +z, -z, iso; empty: the scene files' default framing
   int width = 512, height = 512;
 };

@@ -32,6 +32,7 @@ picture dolly "$mesh" --perspective --dolly 1.6
 picture perspective "$mesh" --perspective 60
 picture focus "$mesh" --focus 0.5,0.5,0 --zoom 1.5
 picture colormap "$mesh" --colormap viridis
+picture range "$mesh" --range 0.3,0.8 --legend
 picture opacity_sigmoid "$mesh" --opacity sigmoid
 picture depth "$mesh" --depth 60
 picture background_white "$mesh" --background white

@@ -4,10 +4,12 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
+#include "mesh/generate.hpp"
 #include "optics/colormaps.hpp"
 #include "render/settings_table.hpp"
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
+#include "scene/scene_file.hpp"
 #include "test_util.hpp"
 #include "view/annotations.hpp"
 #include "view/caption.hpp"
@@ -308,6 +310,42 @@ TEST(PngOutputs, TheLegendStandsBesideThePicture) {
       below_changed +=
           const_cast<Rgb8Image&>(below).pixel(i, j)[0] != static_cast<unsigned char>(std::lround(0.2 * 255));
   EXPECT_GT(below_changed, 300);
+}
+
+}  // namespace
+}  // namespace cellproj
+
+namespace cellproj {
+namespace {
+
+// --range (clim): the colour map spans the given range instead of the field's, values beyond take
+// its ends' colours, the legend shows the range; a bad range names the setting.
+TEST(QuickLook, ARangeStretchesTheColourMapOverItAndTheLegendShowsIt) {
+  const test::TempDir dir;
+  LoadedMesh loaded;
+  loaded.mesh = generate("box-tets", 4);
+  loaded.mesh.source = "box";
+  QuickLook look;
+  look.range = std::make_pair(0.25, 0.5);
+  const Scene scene = scene_from_json(quick_scene(loaded, dir.file("m.vtu"), {}, look), "box", dir.file(""));
+  const PreparedScene p = prepare_scene(scene, loaded);
+  const TransferFunction map(colormap("Cool to Warm", 0.25, 0.5), {{0.0, 0.0}});
+  for (double s : {0.25, 0.3, 0.4, 0.5}) {
+    const glm::dvec3 got = p.tf.color(s), want = map.color(s);
+    EXPECT_NEAR(glm::length(got - want), 0.0, 1e-12) << s;
+  }
+  EXPECT_EQ(p.tf.color(0.0), p.tf.color(0.25));  // below the range: its low end's colour
+  EXPECT_EQ(p.tf.color(1.0), p.tf.color(0.5));
+  const ColorBar bar = color_bar(p, glm::dvec3(0.0));
+  EXPECT_EQ(bar.lo, 0.25);
+  EXPECT_EQ(bar.hi, 0.5);
+  look.range = std::make_pair(0.5, 0.25);
+  try {
+    quick_scene(loaded, dir.file("m.vtu"), {}, look);
+    FAIL() << "a range from high to low was taken";
+  } catch (const InputError& e) {
+    EXPECT_NE(std::string(e.what()).find("setting 'range'"), std::string::npos) << e.what();
+  }
 }
 
 }  // namespace

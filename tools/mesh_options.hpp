@@ -48,7 +48,14 @@ inline std::vector<CLI::Option*> add_look_options(CLI::App& cmd, QuickLook& look
                          "the mesh's diagonal at field value S)"),
           cmd.add_option("--depth", look.depth,
                          "Optical depth across the mesh's diagonal where extinction is largest (default: auto's own "
-                         "scale; 20 for the named shapes)")};
+                         "scale; 20 for the named shapes)"),
+          cmd.add_option_function<std::vector<double>>(
+                 "--range", [&look](const std::vector<double>& r) { look.range = std::make_pair(r[0], r[1]); },
+                 "LO,HI: the range the colour map and opacity span instead of the field's (ParaView's custom range; "
+                 "values beyond it take its ends' colours)")
+              ->expected(2)
+              ->delimiter(',')
+              ->type_name("LO,HI")};
 }
 
 // The field on a log scale, and its floor (scene keys "log" and "log_floor").
