@@ -160,13 +160,27 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options) {
   return m;
 }
 
-LoadedMesh load_mesh(const std::string& path, const ReadOptions& options) {
-  LoadedMesh out{read_mesh(path, options), {}};
+namespace {
+
+// A mesh as read, validated (errors throw), its inverted cells re-oriented, its cell data applied.
+LoadedMesh loaded(Mesh read, const ReadOptions& options) {
+  LoadedMesh out{std::move(read), {}};
   out.report = validate(out.mesh.view());
   reorient_inverted(out.mesh, out.report);
   if (options.cell_data)
     apply_cell_data(out.mesh, *options.cell_data);  // after validation: it counts the file's points
   return out;
+}
+
+}  // namespace
+
+LoadedMesh load_mesh(const std::string& path, const ReadOptions& options) {
+  return loaded(read_mesh(path, options), options);
+}
+
+LoadedMesh load_vtk_object(vtkDataObject* data, const std::string& source, const ReadOptions& options) {
+  if (!data) throw InputError(where(source, "no VTK object"));
+  return loaded(assemble_vtk_object(data, source), options);
 }
 
 }  // namespace cellproj

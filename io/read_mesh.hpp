@@ -35,10 +35,20 @@ Mesh read_mesh(const std::string& path, const ReadOptions& options = {});
 
 // read_mesh, then validate (errors throw) and re-orient inverted cells.
 LoadedMesh load_mesh(const std::string& path, const ReadOptions& options = {});
+}  // namespace cellproj
+class vtkDataObject;
+namespace cellproj {
+// The same for a VTK data object in memory (an unstructured or structured grid, a multiblock or
+// partitioned collection: assembled as the readers assemble a file's), named `source` in messages;
+// the object is read, not kept. What Python's from_vtk takes, so that it gives read()'s mesh.
+LoadedMesh load_vtk_object(vtkDataObject* data, const std::string& source, const ReadOptions& options = {});
+// The version of the VTK cellproj was built with ("9.1.0"): a VTK object from another cannot be read.
+std::string vtk_library_version();
 
 // One reader per file family (io/read_*.cpp); `path` is the file to open, `name` the one to
 // report in messages.
 Mesh read_vtk_family(const std::string& path, const std::string& format, const ReadOptions& options);
+Mesh assemble_vtk_object(vtkDataObject* data, const std::string& source);
 Mesh read_tetgen(const std::string& path);
 Mesh read_off(const std::string& path);
 Mesh read_point_cloud(const std::string& path);

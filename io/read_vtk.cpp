@@ -31,6 +31,7 @@
 #include <vtkStructuredGridReader.h>
 #include <vtkUnsignedCharArray.h>
 #include <vtkUnstructuredGrid.h>
+#include <vtkVersion.h>
 #include <vtkXMLGenericDataObjectReader.h>
 
 #include "base/error.hpp"
@@ -443,6 +444,14 @@ bool all_zero(const Mesh& m, const std::string& field) {
 }
 
 }  // namespace
+
+std::string vtk_library_version() { return vtkVersion::GetVTKVersion(); }
+
+Mesh assemble_vtk_object(vtkDataObject* data, const std::string& source) {
+  Mesh mesh = assemble(data, source, "");
+  mesh.source = source;
+  return mesh;
+}
 
 Mesh read_vtk_family(const std::string& path, const std::string& format, const ReadOptions& o) {
   VtkMessages messages;

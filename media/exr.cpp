@@ -6,7 +6,9 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 
+#include <cctype>
 #include <exception>
+#include <filesystem>
 
 #include "base/error.hpp"
 
@@ -25,6 +27,12 @@ Imf::FrameBuffer slices(float* rgba, int width, const Imath::V2i& origin) {
 }
 
 }  // namespace
+
+bool names_exr(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == ".exr";
+}
 
 void write_exr(const Image& image, const std::string& path) {
   if (image.width <= 0 || image.height <= 0) throw InputError(where(path, "an EXR needs an image with pixels"));

@@ -7,6 +7,8 @@
 
 namespace cellproj {
 
+// Whether a path names an EXR (.exr, any case): where the front ends write one instead of a PNG.
+bool names_exr(const std::string& path);
 // InputError naming the file if it cannot be written, or for an image with no pixel.
 void write_exr(const Image& premultiplied, const std::string& path);
 // An EXR read back: its R, G, B and A (missing colour channels 0, a missing A 1) as floats.

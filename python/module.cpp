@@ -15,15 +15,18 @@
 #include <glm/geometric.hpp>
 
 #include "base/error.hpp"
+#include "io/read_mesh.hpp"
 #include "io/series_files.hpp"
 #include "mesh/clip.hpp"
 #include "optics/colormaps.hpp"
 #include "python/numpy_mesh.hpp"
+#include "python/pictures.hpp"
 #include "render/renderer.hpp"
 #include "render/settings_table.hpp"
 #include "scene/camera_json.hpp"
 #include "scene/prepare.hpp"
 #include "scene/quick_scene.hpp"
+#include "scene/report_json.hpp"
 #include "scene/scene_file.hpp"
 #include "scene/transfer_function_json.hpp"
 #include "scene/volume_scene.hpp"
@@ -31,7 +34,10 @@
 
 namespace py = pybind11;
 using namespace cellproj;
+using cellproj::python::from_numpy;
+using cellproj::python::Legend;
 using cellproj::python::NumpyMesh;
+using cellproj::python::to_numpy;
 
 namespace {
 
@@ -98,36 +104,12 @@ ImageSize size_from(const std::pair<int, int>& size) {
   return {size.first, size.second};
 }
 
-py::array_t<float> to_numpy(Image&& image) {
-  using Pixels = decltype(image.rgba);
-  auto* owned = new Pixels(std::move(image.rgba));
-  py::capsule free(owned, [](void* p) { delete static_cast<Pixels*>(p); });
-  return py::array_t<float>({image.height, image.width, 4}, owned->data(), free);
-}
-
-Image from_numpy(const py::array_t<float, py::array::c_style | py::array::forcecast>& a) {
-  if (a.ndim() != 3 || a.shape(2) != 4) throw InputError("image: expected a float (H, W, 4) array");
-  Image img(static_cast<int>(a.shape(1)), static_cast<int>(a.shape(0)));
-  std::copy(a.data(), a.data() + a.size(), img.rgba.begin());
-  return img;
-}
-
-// What write_png's legend shows: `tf`'s colours over the field's range [lo, hi] (in the field's
-// units, also on a log scale), titled.
-struct Legend {
-  TransferFunction tf;
-  double lo, hi;
-  std::string title;
-  bool log, horizontal;
-  std::string unit;  // after the title, in brackets
-};
-
 // Renders on `threads` workers (0: all cores) without the GIL.
 Image render_frame(const Renderer& renderer, const Volume& volume, const Field& field, const TransferFunction& tf,
-                   const Camera& camera, ImageSize size, int threads) {
+                   const Camera& camera, ImageSize size, int threads, RenderReport* report = nullptr) {
   py::gil_scoped_release release;
   tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
-  return arena.execute([&] { return renderer.render(volume, field, tf, camera, size); });
+  return arena.execute([&] { return renderer.render(volume, field, tf, camera, size, report); });
 }
 
 glm::dvec3 vec(const std::vector<double>& v, const char* what) {
@@ -244,6 +226,17 @@ PYBIND11_MODULE(_cellproj, m) {
       "from_vtk's and from_meshio's door for data with cell fields (a copy, validated as cellproj.read validates)");
 
   m.def(
+      "_load_vtk",
+      [](std::uintptr_t address, const std::string& source, const std::string& cell_data) {
+        ReadOptions o;
+        o.cell_data = cell_data_from_name(cell_data);
+        auto* data = reinterpret_cast<vtkDataObject*>(address);  // a live object of the caller's, in this VTK
+        return std::make_unique<NumpyMesh>(std::make_shared<const Mesh>(load_vtk_object(data, source, o).mesh));
+      },
+      "from_vtk's door: the VTK object at `address` (its __this__) assembled as read() assembles a file's");
+  m.def("_vtk_version", &vtk_library_version);
+
+  m.def(
       "read",
       [](const std::string& path, const std::string& format, const std::string& q_file, const std::string& zone,
          int time_step, const std::string& cell_data) {
@@ -308,16 +301,7 @@ PYBIND11_MODULE(_cellproj, m) {
       .def("extinction", &TransferFunction::extinction);
   m.def("colormaps", &colormap_list, "The built-in colour maps, by ParaView's names");
 
-  py::class_<Legend>(m, "Legend", "A colour legend for write_png: a transfer function's colours over a field's range")
-      .def(py::init([](const TransferFunction& tf, std::pair<double, double> range, const std::string& title, bool log,
-                       bool horizontal, const std::string& unit) {
-             return Legend{tf, range.first, range.second, title, log, horizontal, unit};
-           }),
-           py::arg("tf"), py::arg("range"), py::arg("title") = "", py::arg("log") = false,
-           py::arg("horizontal") = false, py::arg("unit") = "",
-           "range=(lo, hi) in the field's units (mesh.field(name).min(), .max()); log=True for a transfer function "
-           "made for a log scale (labels the decades); unit='K' titles it 'title [K]'; horizontal=True puts the bar in "
-           "a strip below the picture");
+  cellproj::python::bind_pictures(m);
 
   py::class_<Camera>(m, "Camera")
       .def(py::init(&make_camera), py::arg("eye"), py::arg("target"), py::arg("up") = std::vector<double>{0, 0, 1},
@@ -350,10 +334,11 @@ PYBIND11_MODULE(_cellproj, m) {
       .def_property_readonly("up", [](const Camera& c) { return py::make_tuple(c.up.x, c.up.y, c.up.z); });
 
   m.def(
-      "render",
+      "_render",
       [](const NumpyMesh& mesh, std::optional<TransferFunction> tf, std::optional<Camera> camera,
          std::pair<int, int> size, const std::string& field, const std::string& method, int threads, bool log,
-         std::optional<double> log_floor, const py::kwargs& kwargs) {
+         std::optional<double> log_floor, const std::string& cmap, std::optional<std::pair<double, double>> clim,
+         const std::string& opacity, double depth, const std::string& view, const py::kwargs& kwargs) {
         const RenderOptions options = options_from(method, kwargs);
         const RenderSettings settings = settings_from(options);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings);
@@ -362,19 +347,42 @@ PYBIND11_MODULE(_cellproj, m) {
         const Field f = chosen_field(mesh, field, log, log_floor);
         refuse_iso_on_log_scale(settings, log);
         const double aspect = double(image_size.width) / image_size.height;
+        if (camera && !view.empty()) throw InputError("give camera= or view=, not both");
         if (!camera) {
           const auto [lo, hi] = bounds(mesh.view());
-          camera = view_camera("", lo, hi, aspect);
+          camera = view_camera(view, lo, hi, aspect);
         }
-        if (!tf) tf = default_tf(mesh, f, QuickLook{});
+        QuickLook look;  // the CLI's look of a mesh: its colour map, opacity, depth and range
+        if (!cmap.empty()) look.colormap = cmap;
+        if (!opacity.empty()) look.opacity = opacity;
+        look.depth = depth, look.range = clim;
+        if (tf && (!cmap.empty() || !opacity.empty() || depth != 0.0 || clim))
+          throw InputError("give tf= or the look keywords (cmap=, opacity=, depth=, clim=), not both");
+        if (!tf) tf = default_tf(mesh, f, look);
         CameraMoves moves;
         add_camera_moves(kwargs, moves);
         camera = moved(*camera, moves);
-        return to_numpy(render_frame(*renderer, mesh.volume(), f, *tf, *camera, image_size, threads));
+        RenderReport report;
+        Image image = render_frame(*renderer, mesh.volume(), f, *tf, *camera, image_size, threads, &report);
+        nlohmann::json stats = report_json(report);
+        stats.update({{"method", renderer->name()},
+                      {"field", f.name},
+                      {"cells", mesh.view().n_cells},
+                      {"width", image_size.width},
+                      {"height", image_size.height}});
+        // The legend of the picture: the colour map's span, the field's name (on a log scale, the field's own).
+        const std::vector<ColorPoint>& c = tf->color_points();
+        double lo = c.size() >= 2 ? c.front().s : 0.0, hi = c.size() >= 2 ? c.back().s : 1.0;
+        if (log) lo = std::pow(10.0, lo), hi = std::pow(10.0, hi);
+        const Legend legend{*tf, lo, hi, log ? log_scale_scalar(f.name) : f.name, log, false, ""};
+        return py::make_tuple(to_numpy(std::move(image)), stats.dump(), legend);
       },
       py::arg("mesh"), py::arg("tf") = py::none(), py::arg("camera") = py::none(),
       py::arg("size") = std::pair<int, int>{512, 512}, py::arg("field") = "", py::arg("method") = "pt-breakpoints",
-      py::arg("threads") = 0, py::arg("log") = false, py::arg("log_floor") = py::none(), render_doc.c_str());
+      py::arg("threads") = 0, py::arg("log") = false, py::arg("log_floor") = py::none(), py::arg("cmap") = "",
+      py::arg("clim") = py::none(), py::arg("opacity") = "", py::arg("depth") = 0.0, py::arg("view") = "",
+      "cellproj.render's door: the image, its --stats as JSON and its legend");
+  m.def("_keywords_doc", &keywords_doc);
 
   m.def(
       "render_scene",
@@ -471,32 +479,4 @@ PYBIND11_MODULE(_cellproj, m) {
       py::arg("path"), py::arg("size") = py::none(), py::arg("field") = "", py::arg("view") = "",
       py::arg("method") = "", py::arg("threads") = 0, py::arg("time") = py::none(), py::arg("log") = false,
       py::arg("log_floor") = py::none(), render_scene_doc.c_str());
-
-  m.def(
-      "write_png",
-      [](const py::array_t<float, py::array::c_style | py::array::forcecast>& image, const std::string& path,
-         std::optional<std::vector<double>> background, int bits, const std::string& title,
-         std::optional<Legend> legend) {
-        Figure figure;
-        figure.page = background ? std::optional<glm::dvec3>(vec(*background, "background")) : std::nullopt;
-        figure.bits = bits;
-        const glm::dvec3 page = figure.page ? *figure.page : glm::dvec3(1.0);  // a transparent figure's slide
-        figure.caption = {title, "", text_color_for(page), ""};
-        if (legend) {
-          const double lo = legend->log ? std::log10(legend->lo) : legend->lo;
-          const double hi = legend->log ? std::log10(legend->hi) : legend->hi;
-          if (!std::isfinite(lo) || !std::isfinite(hi) || !(hi >= lo))
-            throw InputError("Legend: range must be finite and increasing" +
-                             std::string(legend->log ? ", above 0 on a log scale" : ""));
-          figure.legend = color_bar(legend->tf, lo, hi, legend->log, legend_title(legend->title, legend->unit), page);
-          figure.legend->horizontal = legend->horizontal;
-        }
-        write_figure(from_numpy(image), figure, path);
-      },
-      py::arg("image"), py::arg("path"), py::arg("background") = std::vector<double>{0, 0, 0}, py::arg("bits") = 8,
-      py::arg("title") = "", py::arg("legend") = py::none(),
-      "Writes a render's array as a PNG: over the background colour, or with background=None transparent "
-      "(straight alpha: colour un-premultiplied); bits=8 or 16 a sample; title= above the picture and "
-      "legend=cellproj.Legend(tf, range, title) beside it, in strips of their own (never over the data), as the "
-      "CLI's --title and --legend");
 }

@@ -19,12 +19,6 @@ std::string level_path(const std::string& path, int slices) {
 
 namespace {
 
-bool names_exr(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr";
-}
-
 // The figure of a frame: the format's page, caption (with `time` when labelled), annotations seen
 // by `camera`, and the legend when given.
 Figure figure_of(const PngFormat& format, const ColorBar* legend, std::optional<double> time, const Camera* camera) {

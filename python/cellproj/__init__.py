@@ -1,84 +1,52 @@
 """cellproj: direct volume rendering of unstructured and curvilinear grids (docs/python.md).
 
     import cellproj
-    mesh = cellproj.read("mesh.vtu")
-    image = cellproj.render(mesh, size=(640, 480))   # float32 (480, 640, 4), premultiplied
-    cellproj.write_png(image, "out.png")
+    image = cellproj.render("mesh.vtu", cmap="viridis", view="+x", legend=True)
+    image.save("out.png")        # or show it: a Jupyter cell displays `image`
 """
-import numpy as _np
+from ._cellproj import (Camera, InputError, Legend, Mesh, ResourceError, TransferFunction, _keywords_doc, _render,
+                        colormaps, read, read_exr, render_scene, write_png)
+from ._data import as_mesh, from_meshio, from_vtk
+from ._image import Image, Movie
 
-from ._cellproj import (Camera, InputError, Legend, Mesh, ResourceError, TransferFunction, _mesh_with_cell_data,
-                        colormaps, read, render, render_scene, write_png)
+__all__ = ["Camera", "Image", "InputError", "Legend", "Mesh", "Movie", "ResourceError", "TransferFunction", "as_mesh",
+           "colormaps", "from_meshio", "from_vtk", "read", "read_exr", "render", "render_scene", "write_png"]
 
-__all__ = ["Camera", "InputError", "Legend", "Mesh", "ResourceError", "TransferFunction", "colormaps", "read", "render",
-           "render_scene", "write_png", "from_meshio", "from_vtk"]
+import json as _json
 
-# Arrays VTK's readers add that are not data (cellproj.read skips them too).
-_VTK_INTERNAL = {"GlobalNodeId", "PedigreeNodeId", "GlobalElementId", "PedigreeElementId", "ObjectId"}
-
-# meshio's cell block names -> VTK cell type codes (the cells cellproj renders).
-_MESHIO_TYPES = {"tetra": 10, "hexahedron": 12, "wedge": 13, "pyramid": 14, "voxel": 11}
+_BLACK = (0.0, 0.0, 0.0)
 
 
-def from_meshio(mesh, field=None, cell_data="cells"):
-    """A cellproj.Mesh from a meshio.Mesh: its volume cell blocks, its point data and its cell data
-    (all fields, or only `field`), vectors and tensors with their components as cellproj.read gives
-    them (field="V:x" renders one). Cell data is drawn constant over each cell, or averaged to the
-    points with cell_data="points", as cellproj.read(path, cell_data=...). Cell blocks of other
-    kinds (triangles, lines) are left out."""
-    kept = [k for k, b in enumerate(mesh.cells) if b.type in _MESHIO_TYPES]
-    blocks = [mesh.cells[k] for k in kept]
-    if not blocks:
-        raise InputError("meshio mesh: no tetra, hexahedron, wedge or pyramid cells (has: %s)"
-                         % ", ".join(b.type for b in mesh.cells))
-    connectivity = _np.concatenate([b.data.reshape(-1) for b in blocks]).astype(_np.int64, copy=False)
-    sizes = _np.concatenate([_np.full(len(b.data), b.data.shape[1], dtype=_np.int64) for b in blocks])
-    offsets = _np.concatenate([[0], _np.cumsum(sizes)]).astype(_np.int64)
-    types = _np.concatenate([_np.full(len(b.data), _MESHIO_TYPES[b.type], dtype=_np.uint8) for b in blocks])
-    names = [field] if field and field in mesh.point_data else [] if field else list(mesh.point_data)
-    scalars = {n: _components(_np.asarray(mesh.point_data[n]), len(mesh.points)) for n in names}
-    cell_names = [field] if field and field in mesh.cell_data else [] if field else list(mesh.cell_data)
-    cells = {n: _components(_np.concatenate([_np.asarray(mesh.cell_data[n][k]) for k in kept]), len(types))
-             for n in cell_names}
-    points = _np.asarray(mesh.points, dtype=_np.float64)
-    if cells:
-        return _mesh_with_cell_data(points, connectivity, offsets, types, _clash(scalars, cells), cells, cell_data,
-                                    "meshio mesh")
-    return Mesh(points, connectivity, offsets, types, scalars or None, name="meshio mesh")
+def render(data, tf=None, camera=None, *, size=(512, 512), field="", scalars=None, cmap="", colormap="", clim=None,
+           opacity="", depth=0.0, log_scale=False, log=False, log_floor=None, view="", method="pt-breakpoints",
+           threads=0, background=_BLACK, legend=False, title="", cell_data="cells", **settings):
+    """Renders `data` (a file's path, a cellproj.Mesh, a VTK data object, a PyVista dataset or a meshio
+    mesh) to a cellproj.Image: a float32 (H, W, 4) premultiplied array that saves itself
+    (image.save("out.png"), .exr) and shows itself in Jupyter, with .stats.
+
+    The look, as PyVista's add_volume names it: scalars= (or field=) the field, of a vector 'V:x',
+    'V_X', 'V:magnitude'; cmap= a colour map (cellproj.colormaps()); clim=(lo, hi) its range;
+    opacity= 'auto' (default), 'ramp', 'reverse', 'flat', 'sigmoid', 'geometric' or 'S=DEPTH,...';
+    depth= the largest optical depth across the mesh; log_scale=True (log_floor=F); or tf= a
+    cellproj.TransferFunction instead. The camera: view='+x' ... 'iso', or camera= a cellproj.Camera,
+    then the moves azimuth=, elevation=, roll=, zoom=, dolly=, focus=, perspective=, parallel=. The
+    picture: size=(width, height), background=(r, g, b) or None (transparent), legend=True, title=.
+    cell_data='points' averages cell data to the points. Every render setting of the CLI is a
+    keyword of the same name (below)."""
+    if scalars is not None:
+        if field and field != scalars:
+            raise InputError("render: give scalars= or field=, not both")
+        field = scalars
+    if cmap and colormap and cmap != colormap:
+        raise InputError("render: give cmap= or colormap=, not both")
+    if background is not None and len(background) != 3:
+        raise InputError("render: background= takes (r, g, b) in [0, 1], or None for a transparent picture")
+    array, stats, bar = _render(as_mesh(data, cell_data), tf, camera, size=size, field=field, method=method,
+                                threads=threads, log=bool(log or log_scale), log_floor=log_floor,
+                                cmap=cmap or colormap, clim=clim, opacity=opacity, depth=depth, view=view, **settings)
+    if title is None:
+        title = ""
+    return Image(array, stats=_json.loads(stats), background=background, title=title, legend=bar if legend else None)
 
 
-def _components(values, n):
-    """(n,) for one value per element, else (n, k)."""
-    v = values.reshape(n, -1)
-    return v[:, 0] if v.shape[1] == 1 else v
-
-
-def _clash(point_fields, cell_fields):
-    """The point fields, and each cell field named as a point field renamed NAME_cell, as cellproj.read names it."""
-    for n in [n for n in cell_fields if n in point_fields]:
-        cell_fields[n + "_cell"] = cell_fields.pop(n)
-    return point_fields
-
-
-def from_vtk(grid, field=None, cell_data="cells"):
-    """A cellproj.Mesh from a vtkUnstructuredGrid (VTK 9's arrays, through vtk.util.numpy_support):
-    its points, cells, point data and cell data (all fields, or only `field`), vectors and tensors
-    with their components as cellproj.read gives them (field="V:x" renders one). Cell data is drawn
-    constant over each cell, or averaged to the points with cell_data="points"."""
-    from vtkmodules.util.numpy_support import vtk_to_numpy
-    cells = grid.GetCells()
-    connectivity = vtk_to_numpy(cells.GetConnectivityArray())
-    offsets = vtk_to_numpy(cells.GetOffsetsArray())
-    types = vtk_to_numpy(grid.GetCellTypesArray())
-    points = vtk_to_numpy(grid.GetPoints().GetData())
-
-    def arrays(data):
-        names = [data.GetArrayName(i) for i in range(data.GetNumberOfArrays()) if data.GetArray(i) is not None]
-        names = [n for n in names if not n.startswith("vtk") and n not in _VTK_INTERNAL]
-        return {n: vtk_to_numpy(data.GetArray(n)) for n in ([field] if field in names else [] if field else names)}
-
-    scalars, cell_fields = arrays(grid.GetPointData()), arrays(grid.GetCellData())
-    if cell_fields:
-        return _mesh_with_cell_data(points, connectivity, offsets, types, _clash(scalars, cell_fields), cell_fields,
-                                    cell_data, "vtkUnstructuredGrid")
-    return Mesh(points, connectivity, offsets, types, scalars or None, name="vtkUnstructuredGrid")
+render.__doc__ += _keywords_doc()
