@@ -497,6 +497,32 @@ echo '{"volumes": [{"mesh": "box.vtu", "transfer_function": {"color": [[0, 1, 0.
 expect 0 "wrote .*two.png \(32x24, 2 volumes, exact" -- render "$tmp/two.json" --size 32x24 -o "$tmp/two.png" --stats
 grep -q '"overlap_pieces":[1-9]' "$tmp/err" && grep -q '"iso_mode":"oit4"' "$tmp/err" || { echo "FAIL: --stats of two volumes"; failed=$((failed+1)); }
 expect 0 "wrote" -- render "$tmp/two.json" --size 32x24 -o "$tmp/two_o.png" --frames 2 --orbit 90 --clip 0,0,0,1,0,0 --iso-mode ordered --volume off
+# --outline on several volumes outlines their common box: the pixels it changes span the picture,
+# not a dot at the origin (a box of zero size).
+expect 0 "wrote" -- render "$tmp/two.json" --size 64x48 -o "$tmp/two_plain.png"
+expect 0 "wrote" -- render "$tmp/two.json" --size 64x48 -o "$tmp/two_outline.png" --outline
+python3 - "$tmp/two_plain.png" "$tmp/two_outline.png" <<'PY' || { echo "FAIL: --outline of two volumes"; failed=$((failed+1)); }
+import struct, sys, zlib
+def rgb_rows(path):  # an 8-bit RGB PNG, filters undone
+    data = open(path, "rb").read()
+    w, h = struct.unpack(">II", data[16:24]); pos, idat = 8, b""
+    while pos < len(data):
+        n, kind = struct.unpack(">I4s", data[pos:pos + 8])
+        idat += data[pos + 8:pos + 8 + n] if kind == b"IDAT" else b""; pos += 12 + n
+    raw, rows, stride = zlib.decompress(idat), [], 3 * w
+    for j in range(h):
+        f, line = raw[j * (stride + 1)], bytearray(raw[j * (stride + 1) + 1:(j + 1) * (stride + 1)])
+        prev = rows[-1] if rows else bytearray(stride)
+        for i in range(stride):
+            a = line[i - 3] if i >= 3 else 0; b = prev[i]; c = prev[i - 3] if i >= 3 else 0
+            p = a + b - c; pr = a if abs(p - a) <= abs(p - b) and abs(p - a) <= abs(p - c) else b if abs(p - b) <= abs(p - c) else c
+            line[i] = (line[i] + [0, a, b, (a + b) // 2, pr][f]) & 255
+        rows.append(line)
+    return w, rows
+w, plain = rgb_rows(sys.argv[1]); _, lined = rgb_rows(sys.argv[2])
+xs = [i // 3 for r0, r1 in zip(plain, lined) for i in range(len(r0)) if r0[i] != r1[i]]
+sys.exit(0 if xs and max(xs) - min(xs) >= w // 2 else 1)
+PY
 expect 2 "--method pt-linear draws one mesh; .*two.json has 2 volumes, drawn together by --method exact" -- render "$tmp/two.json" --method pt-linear
 expect 2 "--iso: .*two.json has 2 volumes: give each volume's iso-surfaces in its \"iso\" list" -- render "$tmp/two.json" --iso 0.3
 expect 2 "--field: .*two.json has 2 volumes" -- render "$tmp/two.json" --field scalar

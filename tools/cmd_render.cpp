@@ -154,7 +154,7 @@ int run_render(const RenderArgs& given) {
          "no iso-surface is drawn; setting 'cell-data' points averages it to the points, whose iso-surfaces are");
   const double load_seconds = seconds_since(t_load);
 
-  FrameWriter writer(paths, png_format(a, scene, &prepared),
+  FrameWriter writer(paths, png_format(a, scene, bounds(prepared.loaded.mesh)),
                      a.legend ? std::optional<ColorBar>(legend_of(a, prepared, settings, scene)) : std::nullopt,
                      movie_options(a));
   const FrameJob job{a, input, *renderer, settings, writer};

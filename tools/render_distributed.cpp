@@ -52,7 +52,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   // Rank 0 writes: the other ranks' writer holds nothing and opens nothing.
   std::optional<FrameWriter> writer;
   if (world.rank == 0)
-    writer.emplace(paths, png_format(a, scene, &prepared),
+    writer.emplace(paths, png_format(a, scene, bounds(prepared.loaded.mesh)),
                    a.legend ? std::optional<ColorBar>(legend_of(a, prepared, settings, scene)) : std::nullopt,
                    movie_options(a));
   const std::string ranks = std::to_string(world.size) + (world.size > 1 ? " ranks" : " rank");

@@ -69,13 +69,13 @@ struct Input {
 inline glm::dvec3 legend_page(const Scene& scene) { return scene.transparent ? glm::dvec3(1.0) : scene.background; }
 
 // How the PNGs of `scene` are written: its background (or transparent), --png-bits, --title,
-// --time-label, and --outline and --axes (their box `prepared`'s mesh's, when given).
-inline PngFormat png_format(const RenderArgs& a, const Scene& scene, const PreparedScene* prepared = nullptr) {
+// --time-label, and --outline and --axes (the outline that of `box`, the meshes' bounds).
+inline PngFormat png_format(const RenderArgs& a, const Scene& scene, const std::pair<glm::dvec3, glm::dvec3>& box) {
   PngFormat f{
       scene.background, scene.transparent, a.png_bits, {a.title, "", text_color_for(legend_page(scene)), ""}, {}, {}};
   if (a.time_label) f.time_format = a.time_format;
   f.annotations.outline = a.outline, f.annotations.axes = a.axes, f.annotations.color = f.caption.text;
-  if (prepared && f.annotations.any()) std::tie(f.annotations.lo, f.annotations.hi) = bounds(prepared->loaded.mesh);
+  std::tie(f.annotations.lo, f.annotations.hi) = box;
   return f;
 }
 

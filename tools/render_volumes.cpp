@@ -2,11 +2,14 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 
 #include <tbb/info.h>
 #include <tbb/task_arena.h>
 #include <nlohmann/json.hpp>
+
+#include <glm/common.hpp>
 
 #include "base/error.hpp"
 #include "render/names.hpp"
@@ -89,7 +92,12 @@ int render_volume_scene(const RenderArgs& a, Scene scene, const RenderSettings& 
   std::vector<double> frame_times;
   double render_seconds = 0.0;
   RenderReport report;
-  FrameWriter writer(paths, png_format(a, scene), std::nullopt, movie_options(a));
+  std::pair<glm::dvec3, glm::dvec3> box{glm::dvec3(HUGE_VAL), glm::dvec3(-HUGE_VAL)};  // every volume's, for --outline
+  for (const VolumeEntry& e : volumes.entries()) {
+    const auto [lo, hi] = bounds(e.volume->mesh());
+    box = {glm::min(box.first, lo), glm::max(box.second, hi)};
+  }
+  FrameWriter writer(paths, png_format(a, scene, box), std::nullopt, movie_options(a));
   const double load_seconds = seconds_since(t_load);
   arena.execute([&] {
     ProgressBar bar("rendering");
