@@ -2,6 +2,7 @@
 // The file system's word on a path the user gave, as the API's errors: std::filesystem throws its
 // own filesystem_error for a name too long, a loop of symbolic links or a folder it may not
 // search, which would reach the caller unnamed (and the command line as an internal error).
+#include <cctype>
 #include <filesystem>
 #include <string>
 #include <system_error>
@@ -22,6 +23,14 @@ inline std::filesystem::file_status path_status(const std::string& path) {
 inline bool path_exists(const std::string& path) { return std::filesystem::exists(path_status(path)); }
 inline bool path_is_folder(const std::string& path) { return std::filesystem::is_directory(path_status(path)); }
 inline bool path_is_file(const std::string& path) { return std::filesystem::is_regular_file(path_status(path)); }
+
+// ".vtu" of "A.VTU": a path's extension in lower case, by which the readers and writers know a
+// file's format.
+inline std::string lower_extension(const std::string& path) {
+  std::string ext = std::filesystem::path(path).extension().string();
+  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext;
+}
 
 // Creates folder `dir` and its parents where missing (nothing for ""); an InputError naming it
 // when that fails (a file in the way, no permission, a name too long).

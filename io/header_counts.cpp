@@ -12,6 +12,7 @@
 #include VTK_CGNS(cgnslib.h)
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 #include "io/netcdf_check.hpp"
 #include "io/plot3d_header.hpp"
 #include "io/read_mesh.hpp"

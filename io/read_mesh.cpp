@@ -93,8 +93,6 @@ std::vector<std::pair<std::string, std::string>> known_formats() {
           {"points", ".xyzs .pts (text 'x y z s' per line) .vtp (points): Delaunay-tetrahedralized with CGAL"}};
 }
 
-std::string lower_extension(const std::string& path) { return lower(fs::path(path).extension().string()); }
-
 std::string format_for(const std::string& path) {
   const std::string name = lower(fs::path(path).filename().string());
   const std::string ext = lower_extension(path);

@@ -27,8 +27,7 @@ struct ReadOptions {
 
 // The format names accepted in ReadOptions::format, with the extensions that select them.
 std::vector<std::pair<std::string, std::string>> known_formats();
-std::string format_for(const std::string& path);       // by extension; throws InputError if unknown
-std::string lower_extension(const std::string& path);  // ".vtu" of "A.VTU": the extension in lower case
+std::string format_for(const std::string& path);  // by extension; throws InputError if unknown
 
 // Reads the file as stored (no validation). A trailing ".gz" is decompressed first.
 Mesh read_mesh(const std::string& path, const ReadOptions& options = {});

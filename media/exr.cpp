@@ -6,11 +6,10 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfOutputFile.h>
 
-#include <cctype>
 #include <exception>
-#include <filesystem>
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 
 namespace cellproj {
 namespace {
@@ -28,11 +27,7 @@ Imf::FrameBuffer slices(float* rgba, int width, const Imath::V2i& origin) {
 
 }  // namespace
 
-bool names_exr(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  for (char& c : ext) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == ".exr";
-}
+bool names_exr(const std::string& path) { return lower_extension(path) == ".exr"; }
 
 void write_exr(const Image& image, const std::string& path) {
   if (image.width <= 0 || image.height <= 0) throw InputError(where(path, "an EXR needs an image with pixels"));

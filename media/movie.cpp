@@ -1,7 +1,6 @@
 #include "media/movie.hpp"
 
 #include <algorithm>
-#include <cctype>
 #include <cmath>
 #include <cstring>
 #include <filesystem>
@@ -17,6 +16,7 @@ extern "C" {
 }
 
 #include "base/error.hpp"
+#include "base/file_status.hpp"
 
 namespace cellproj {
 namespace {
@@ -44,8 +44,7 @@ Rgb8Image even_sides(const Rgb8Image& frame) {
 }  // namespace
 
 std::optional<MovieFormat> movie_format(const std::string& path) {
-  std::string ext = std::filesystem::path(path).extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return std::tolower(c); });
+  const std::string ext = lower_extension(path);
   if (ext == ".mp4") return MovieFormat::mp4;
   if (ext == ".gif") return MovieFormat::gif;
   return std::nullopt;

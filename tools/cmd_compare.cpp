@@ -1,6 +1,5 @@
 // cellproj compare A.npy B.npy: how far apart two float images are (the numbers of methods.md).
 #include <cstdio>
-#include <filesystem>
 
 #include "base/error.hpp"
 #include "media/exr.hpp"
@@ -11,9 +10,7 @@ namespace cellproj {
 namespace {
 
 // A float image by its name: an OpenEXR (render -o x.exr) or a .npy (render --npy).
-Image read_float_image(const std::string& path) {
-  return std::filesystem::path(path).extension() == ".exr" ? read_exr(path) : read_npy(path);
-}
+Image read_float_image(const std::string& path) { return names_exr(path) ? read_exr(path) : read_npy(path); }
 
 }  // namespace
 
