@@ -370,9 +370,10 @@ PYBIND11_MODULE(_cellproj, m) {
                       {"cells", mesh.view().n_cells},
                       {"width", image_size.width},
                       {"height", image_size.height}});
-        // The legend of the picture: the colour map's span, the field's name (on a log scale, the field's own).
-        const std::vector<ColorPoint>& c = tf->color_points();
-        double lo = c.size() >= 2 ? c.front().s : 0.0, hi = c.size() >= 2 ? c.back().s : 1.0;
+        // The legend of the picture, as the CLI's: over legend_range, the field's name (on a log scale,
+        // the field's own), in the field's units.
+        const auto [field_lo, field_hi] = std::minmax_element(f.values, f.values + f.size);
+        auto [lo, hi] = legend_range(*tf, *field_lo, *field_hi);
         if (log) lo = std::pow(10.0, lo), hi = std::pow(10.0, hi);
         const Legend legend{*tf, lo, hi, log ? log_scale_scalar(f.name) : f.name, log, false, ""};
         return py::make_tuple(to_numpy(std::move(image)), stats.dump(), legend);

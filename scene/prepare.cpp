@@ -30,13 +30,15 @@ ColorBar color_bar(const TransferFunction& tf, double lo, double hi, bool log, c
   return bar;
 }
 
+std::pair<double, double> legend_range(const TransferFunction& tf, double field_lo, double field_hi) {
+  const std::vector<ColorPoint>& c = tf.color_points();
+  if (c.size() >= 2 && c.front().s < c.back().s) return {c.front().s, c.back().s};
+  return {field_lo, field_hi};
+}
+
 ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
-  // The colour map's own span, as ParaView's legend shows its lookup table's range: the field's
-  // range for a preset stretched over it, a given range (--range, clim) otherwise.
-  const std::vector<ColorPoint>& c = p.tf.color_points();
-  const bool spans = c.size() >= 2 && c.front().s < c.back().s;
-  return color_bar(p.tf, spans ? c.front().s : p.field_min, spans ? c.back().s : p.field_max, p.log_scale,
-                   p.scalar.empty() ? p.field : p.scalar, background);
+  const auto [lo, hi] = legend_range(p.tf, p.field_min, p.field_max);
+  return color_bar(p.tf, lo, hi, p.log_scale, p.scalar.empty() ? p.field : p.scalar, background);
 }
 
 void refuse_iso_on_log_scale(const RenderSettings& s, bool log_scale) {

@@ -52,7 +52,11 @@ PreparedVolumes prepare_volumes(const Scene& scene, const std::function<LoadedMe
 // field becomes the scalar the player chose (on a log scale, its name says so).
 LoadedMesh first_key_frame(SeriesPlayer& player, Scene& scene);
 
-// The legend of the picture: the transfer function's colours over the field's range, the field's
+// The range a legend of `tf` spans: its colour map's own points, as ParaView's legend shows its
+// lookup table's range (the field's range for a preset stretched over it, a given range
+// otherwise); the field's [lo, hi] when the map has no span (one colour).
+std::pair<double, double> legend_range(const TransferFunction& tf, double field_lo, double field_hi);
+// The legend of the picture: the transfer function's colours over legend_range, the field's
 // name, text that reads on `background`.
 ColorBar color_bar(const PreparedScene& scene, const glm::dvec3& background);
 // The legend of what `settings` draw: the mean, maximum or minimum along each ray named in the
