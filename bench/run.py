@@ -223,6 +223,27 @@ def log_scale_rows(bench, name, scene_path, info, size):
     ladder_rows(bench, name, log_scene, info, size, "log")
 
 
+def two_field_rows(bench, name, scene_path, info, size):
+    """Colour by one field, extinction by another (--opacity-field, docs/accuracy.md "Two fields"):
+    the scene's field as its own opacity field, so the picture is the one-field model drawn the
+    two-field way (each cell ray cast over its canonical tetrahedra); pt-breakpoints and pt-analytic
+    against exact with two fields, as rows METHOD-2fields."""
+    with open(scene_path) as f:
+        scene = json.load(f)
+    scene["opacity_field"] = scene["field"]
+    two_scene = os.path.join(os.path.dirname(scene_path), f"{name}_2fields.json")
+    with open(two_scene, "w") as f:
+        json.dump(scene, f)
+    cells, tag = info["cells"], f"{name}_{size}_2fields"
+    base = dict(mesh=name, cells=cells, width=size, height=size)
+    _, ref = bench.render(two_scene, tag + "_exact", "exact", size, 1, [])
+    for method in ("pt-breakpoints", "pt-analytic"):
+        st, npy = bench.render(two_scene, f"{tag}_{method}", method, size, bench.frames, [])
+        e = error(npy, ref)
+        bench.add(**base, method=f"{method}-2fields", sort=st["sort"], **timing(st, cells), rmse=e[0], max_abs=e[1],
+                  violations="")
+
+
 def cell_data_rows(bench, name, scene_path, mesh, info, size):
     """Cell data (--cell-data cells, the default: each cell's value constant over it, docs/accuracy.md
     "Cell data"): the mesh given a cell field, each cell the scene's transfer-function range sampled
@@ -478,7 +499,7 @@ def main():
                     help="each projection method against VTK's projected tetrahedra, time only, every mesh (~15 min)")
     ap.add_argument("--sweeps-only", action="store_true", help="only the table-size and thread sweeps (~3 min)")
     ap.add_argument("--fields-only", action="store_true",
-                    help="only the log-scale and cell-data rows (tets-100k and mixed, 512², ~1 min)")
+                    help="only the log-scale, cell-data and two-field rows (tets-100k and mixed, 512², ~2 min)")
     a = ap.parse_args()
     if a.report:
         report(a.report)
@@ -500,6 +521,7 @@ def main():
         for name, scene, mesh, info in [synthetic(bench, "box-tets", 26, "tets-100k"), synthetic(bench, "mixed", 8, "mixed")]:
             log_scale_rows(bench, name, scene, info, 512)
             cell_data_rows(bench, name, scene, mesh, info, 512)
+            two_field_rows(bench, name, scene, info, 512)
         return
     meshes = [synthetic(bench, "box-tets", 12, "tets-10k"), synthetic(bench, "box-tets", 26, "tets-100k"),
               synthetic(bench, "mixed", 8, "mixed"), synthetic(bench, "swirl", 16, "curvilinear")]
@@ -528,6 +550,7 @@ def main():
         if name in ("tets-100k", "mixed"):
             log_scale_rows(bench, name, scene, info, sizes[0])
             cell_data_rows(bench, name, scene, mesh, info, sizes[0])
+            two_field_rows(bench, name, scene, info, sizes[0])
     with open(os.path.join(a.out, "results.csv"), "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=COLUMNS)
         w.writeheader()

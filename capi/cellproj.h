@@ -88,6 +88,13 @@ void cp_renderer_release(cp_renderer* renderer);
 cp_status cp_render(const cp_renderer* renderer, const cp_mesh* mesh, const char* field, const cp_transfer_function* tf,
                     const cp_camera* camera, int width, int height, cp_image** image);
 
+/* The same coloured by `field` and opaque by `opacity_field` (ParaView's separate opacity array):
+ * the transfer function's colour over the one's values, its extinction over the other's. Drawn by
+ * the methods "exact", "pt-breakpoints" (exact too) and "pt-analytic"; the others refuse it. */
+cp_status cp_render_two_fields(const cp_renderer* renderer, const cp_mesh* mesh, const char* field,
+                               const char* opacity_field, const cp_transfer_function* tf, const cp_camera* camera,
+                               int width, int height, cp_image** image);
+
 int cp_image_width(const cp_image* image);
 int cp_image_height(const cp_image* image);
 /* Premultiplied RGBA floats, 4 per pixel, row-major from the top row. */

@@ -256,6 +256,12 @@ void cp_renderer_release(cp_renderer* renderer) { delete renderer; }
 
 cp_status cp_render(const cp_renderer* renderer, const cp_mesh* mesh, const char* field, const cp_transfer_function* tf,
                     const cp_camera* camera, int width, int height, cp_image** image) {
+  return cp_render_two_fields(renderer, mesh, field, nullptr, tf, camera, width, height, image);
+}
+
+cp_status cp_render_two_fields(const cp_renderer* renderer, const cp_mesh* mesh, const char* field,
+                               const char* opacity_field, const cp_transfer_function* tf, const cp_camera* camera,
+                               int width, int height, cp_image** image) {
   CP_NEED("cp_render", renderer);
   CP_NEED("cp_render", mesh);
   CP_NEED("cp_render", tf);
@@ -267,7 +273,11 @@ cp_status cp_render(const cp_renderer* renderer, const cp_mesh* mesh, const char
       throw InputError("cp_render: image size must be 1 to 16384 pixels a side, got " + std::to_string(width) + "x" +
                        std::to_string(height));
     if (mesh->fields.empty()) throw InputError("cp_render: the mesh has no fields (cp_mesh_set_field)");
-    const Field values = mesh->fields.scalar(field ? field : "", "cp_render");
+    Field values = mesh->fields.scalar(field ? field : "", "cp_render");
+    if (opacity_field) {
+      const Field opacity = mesh->fields.scalar(opacity_field, "cp_render");
+      values.opacity = opacity.values, values.opacity_name = opacity.name;
+    }
     const std::unique_ptr<Renderer> r = make_renderer(settings_from(renderer->options));
     tbb::task_arena arena(renderer->threads > 0 ? renderer->threads : tbb::info::default_concurrency());
     Image img = arena.execute([&] {

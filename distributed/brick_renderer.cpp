@@ -72,6 +72,7 @@ void BrickRenderer::load(const std::function<Mesh(int brick)>& make) {
       Mesh mesh = make(b);
       if (mesh.n_cells() == 0) continue;
       select_field(mesh, field_);  // made from a vector if need be, or an error naming the brick's file and its fields
+      if (!opacity_field_.empty()) select_field(mesh, opacity_field_);
       auto brick = std::make_unique<Brick>();
       brick->mesh = std::move(mesh);
       brick->volume = std::make_unique<Volume>(brick->mesh.view(), VolumeOptions{true});
@@ -97,8 +98,8 @@ BrickRenderer::BrickRenderer(const Communicator& comm, const PartitionIndex& ind
 }
 
 BrickRenderer::BrickRenderer(const Communicator& comm, const Mesh& mesh, const std::string& field,
-                             const std::string& cost_model)
-    : comm_(comm), field_(field) {
+                             const std::string& cost_model, const std::string& opacity_field)
+    : comm_(comm), field_(field), opacity_field_(opacity_field) {
   tree_ = build_kd_tree(mesh.view(), cell_costs(mesh.view(), 1024, cost_model == "cells"), comm.size);
   const std::vector<std::vector<std::int64_t>> cells = cells_of_bricks(mesh.view(), tree_);
   load([&](int b) { return extract_brick(mesh, tree_, b, cells[b]); });
@@ -119,7 +120,8 @@ Image BrickRenderer::render(const RenderSettings& settings, const TransferFuncti
       if (!bricks_[b]) continue;
       const Brick& brick = *bricks_[b];
       RenderReport r;
-      const Image img = renderer->render(*brick.volume, field_of(brick.mesh, field_), tf, camera, size, &r);
+      const Image img =
+          renderer->render(*brick.volume, field_of(brick.mesh, field_, opacity_field_), tf, camera, size, &r);
       for (std::size_t k = 0; k < mine.rgba.size(); k += 4) over(&mine.rgba[k], &img.rgba[k]);
       for (const auto& [phase, s] : r.phase_seconds)
         if (phase == "sort") st.sort_seconds += s;

@@ -38,8 +38,10 @@ class BrickRenderer {
   // corrupt file is an error naming rank and file on every rank).
   BrickRenderer(const Communicator& comm, const PartitionIndex& index, const std::string& field,
                 const ReadOptions& reader);
-  // Or cut from `mesh`, which every rank holds, into one brick per rank (the k-d tree built here).
-  BrickRenderer(const Communicator& comm, const Mesh& mesh, const std::string& field, const std::string& cost_model);
+  // Or cut from `mesh`, which every rank holds, into one brick per rank (the k-d tree built here);
+  // `opacity_field`: the extinction's own field (Field::opacity), none when empty.
+  BrickRenderer(const Communicator& comm, const Mesh& mesh, const std::string& field, const std::string& cost_model,
+                const std::string& opacity_field = "");
   ~BrickRenderer();
 
   // The picture on rank 0 (other ranks: an image of no meaning), each brick drawn by
@@ -58,7 +60,7 @@ class BrickRenderer {
   std::vector<int> roots_;  // each rank's subtree
   std::vector<int> owner_;  // each brick's rank
   int subtree_ = -1;
-  std::string field_;
+  std::string field_, opacity_field_;
   std::vector<std::unique_ptr<Brick>> bricks_;  // by brick number; null where another rank's or empty
   double load_seconds_ = 0.0;
 };

@@ -168,6 +168,18 @@ bool is_permutation_of(const std::vector<std::int64_t>& order, std::int64_t n) {
   return true;
 }
 
+// Colour by one field and extinction by another: drawn by the methods that integrate each pixel's
+// segment (a cell ray cast over its tetrahedra), not by Gouraud corners, OpenGL or splats.
+void check_two_fields(const ProjectionOptions& options, const FramePlan& plan) {
+  const std::string refused = "setting 'opacity-field' (the extinction from another field than the colour) ";
+  if (traits(options.method).gouraud)
+    throw InputError(refused + "is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " +
+                     name_of(options.method));
+  if (!plan.software) throw InputError(refused + "is drawn by setting 'backend' software");
+  if (plan.small_cells == SmallCells::splat)
+    throw InputError(refused + "is not drawn by splats: use setting 'small-cells' draw");
+}
+
 }  // namespace
 
 void check_options(const ProjectionOptions& o) {
@@ -349,15 +361,21 @@ Image draw_in_software(const FramePlan& plan, const FrameOrder& f, const std::ve
 
 }  // namespace
 
-Image ProjectionRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,
-                                 int height, const ProjectionOptions& options, ProjectionStats* stats) const {
+Image ProjectionRenderer::render(const double* color_scalar, const TransferFunction& tf, const Camera& camera,
+                                 int width, int height, const ProjectionOptions& options, ProjectionStats* stats,
+                                 const double* opacity) const {
   check_options(options);
   const auto start = std::chrono::steady_clock::now();
   const FramePlan plan = plan_frame(options, sorter_.mode(), height, tbb::this_task_arena::max_concurrency(),
                                     [this] { return sorter_.base().sorter->acyclic(); });
   ProjectionStats st;
   st.small_cells = plan.small_cells, st.splat_threshold = plan.splat_threshold;
+  if (opacity) check_two_fields(options, plan);
   const RecentredPoints& points = sorter_.points();
+  // The screen points, the culling and the sort read the field the extinction comes from.
+  const double* scalar = opacity ? opacity : color_scalar;
+  std::optional<ColorField> color;
+  if (opacity) color.emplace(ColorField{color_scalar, TwoFieldTransfer(tf)});
 
   // The points on screen (MWSC section 2), the rays as the A-buffer's.
   auto t = std::chrono::steady_clock::now();
@@ -394,7 +412,7 @@ Image ProjectionRenderer::render(const double* scalar, const TransferFunction& t
   PointOptics optics;
   if (method.point_optics) optics = point_optics(scalar, mesh_.n_points, tf);
   const CellFragments project(screen, rays, points, tf, options.method, table ? &*table : nullptr, &optics,
-                              options.whole_cells);
+                              options.whole_cells, color ? &*color : nullptr);
 
   // The cells drawn and composited in order (MWSC section 7).
   Image image;

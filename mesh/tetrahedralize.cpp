@@ -16,8 +16,11 @@ void split_quad(const std::int64_t q[4], std::int64_t tri[2][3]) {
 }
 
 int surface_triangles(const MeshView& mesh, std::int64_t c, std::int64_t out[kMaxSurfaceTriangles][3]) {
-  const CellDef& def = cell_def(mesh.type(c));
-  const std::int64_t* ids = mesh.cell(c);
+  return surface_triangles(mesh.cell(c), mesh.type(c), out);
+}
+
+int surface_triangles(const std::int64_t* ids, CellType type, std::int64_t out[kMaxSurfaceTriangles][3]) {
+  const CellDef& def = cell_def(type);
   int n = 0;
   for (int f = 0; f < def.faces; ++f) {
     const FaceDef& face = def.face[f];
@@ -36,15 +39,18 @@ int surface_triangles(const MeshView& mesh, std::int64_t c, std::int64_t out[kMa
 }
 
 int canonical_tetrahedra(const MeshView& mesh, std::int64_t c, Tet out[kMaxTetsPerCell]) {
-  const std::int64_t* ids = mesh.cell(c);
-  const CellDef& def = cell_def(mesh.type(c));
+  return canonical_tetrahedra(mesh.cell(c), mesh.type(c), out);
+}
+
+int canonical_tetrahedra(const std::int64_t* ids, CellType type, Tet out[kMaxTetsPerCell]) {
+  const CellDef& def = cell_def(type);
   if (def.vertices == 4) {
     out[0] = {ids[0], ids[1], ids[2], ids[3]};
     return 1;
   }
   const std::int64_t apex = *std::min_element(ids, ids + def.vertices);
   std::int64_t tri[kMaxSurfaceTriangles][3];
-  const int ntri = surface_triangles(mesh, c, tri);
+  const int ntri = surface_triangles(ids, type, tri);
   int n = 0;
   for (int t = 0; t < ntri; ++t) {
     if (tri[t][0] == apex || tri[t][1] == apex || tri[t][2] == apex) continue;

@@ -21,10 +21,12 @@ constexpr int kMaxSurfaceTriangles = 12;  // a hexahedron's six quads, two trian
 // Writes the triangles of cell c's surface (global point ids, each turning as its face, outward
 // for a positive cell) into out, its quads split by split_quad; returns how many.
 int surface_triangles(const MeshView& mesh, std::int64_t c, std::int64_t out[kMaxSurfaceTriangles][3]);
+int surface_triangles(const std::int64_t* ids, CellType type, std::int64_t out[kMaxSurfaceTriangles][3]);
 
 // Writes the tetrahedra of cell c (global point ids, VTK-positive when the cell is) into out and
 // returns how many (1 for a tetrahedron): the lowest-index vertex joined to each surface triangle
 // that does not contain it.
 int canonical_tetrahedra(const MeshView& mesh, std::int64_t c, Tet out[kMaxTetsPerCell]);
+int canonical_tetrahedra(const std::int64_t* ids, CellType type, Tet out[kMaxTetsPerCell]);  // the same of a cell's ids
 
 }  // namespace cellproj

@@ -15,6 +15,7 @@
 
 #include "optics/linear_segment.hpp"
 #include "projection/projected_tet.hpp"
+#include "projection/tet_clip.hpp"
 #include "view/raster.hpp"
 
 namespace cellproj {
@@ -225,7 +226,7 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
 
 CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                              const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
-                             const PointOptics* optics, WholeCells whole_cells)
+                             const PointOptics* optics, WholeCells whole_cells, const ColorField* color)
     : screen_(screen),
       rays_(rays),
       points_(points),
@@ -233,7 +234,8 @@ CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, 
       method_(traits(method)),
       table_(table),
       optics_(optics),
-      whole_cells_(whole_cells) {
+      whole_cells_(whole_cells),
+      color_(color) {
   // Which way a triangle facing the eye turns in this image: (c, c + r, c + u) with r x u towards
   // the eye, ahead of it on the view axis.
   const Camera& cam = rays.camera();
@@ -262,55 +264,97 @@ void CellFragments::ray_cast(const Tet& tet, RowRange rows, Emit& emit, Projecti
   double s[4];
   for (int k = 0; k < 4; ++k) p[k] = points_(tet[k]), s[k] = screen_.v[static_cast<std::size_t>(tet[k])].s;
   // The linear field s(x) = s0 + g . (x - p0): g from the three edges out of p0.
-  const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
-  const double det = glm::dot(e1, glm::cross(e2, e3));
+  const double det = edges_triple_product(p);
   if (!(std::abs(det) > 0.0)) return;  // zero volume: nothing to see
-  const glm::dvec3 g =
-      (glm::cross(e2, e3) * (s[1] - s[0]) + glm::cross(e3, e1) * (s[2] - s[0]) + glm::cross(e1, e2) * (s[3] - s[0])) /
-      det;
-  // Face planes n . x <= c inside, n outward (away from the opposite vertex).
-  glm::dvec3 n[4];
-  double c[4];
-  static constexpr int kFace[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
-  for (int f = 0; f < 4; ++f) {
-    const glm::dvec3& a = p[kFace[f][0]];
-    n[f] = glm::cross(p[kFace[f][1]] - a, p[kFace[f][2]] - a);
-    if (glm::dot(n[f], p[f] - a) > 0) n[f] = -n[f];
-    c[f] = glm::dot(n[f], a);
-  }
-  // The pixels to try: in perspective every one (a point behind the eye has no image position); in
-  // orthographic projection those under the tetrahedron's image, one pixel wider.
-  int i0 = 0, i1 = rays_.width() - 1, j0 = 0, j1 = rays_.height() - 1;
-  if (!rays_.perspective()) {
-    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (int k = 0; k < 4; ++k) {
-      const ScreenVertex& v = screen_.v[static_cast<std::size_t>(tet[k])];
-      x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
-    }
-    auto lo = [](double v, int n) { return static_cast<int>(std::clamp(std::floor(v - 0.5), 0.0, double(n))); };
-    auto hi = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - 0.5), -1.0, double(n - 1))); };
-    i0 = lo(x0, rays_.width()), i1 = hi(x1, rays_.width()), j0 = lo(y0, rays_.height()), j1 = hi(y1, rays_.height());
-  }
-  j0 = std::max(j0, rows.begin), j1 = std::min(j1, rows.end - 1);
+  const glm::dvec3 g = linear_gradient(p, s, det);
+  const TetClip clip(p);
+  const PixelBox box = cast_box(tet.data(), 4, rows);
+  const int i0 = box.i0, i1 = box.i1, j0 = box.j0, j1 = box.j1;
   std::int64_t emitted = 0;
   for (int j = j0; j <= j1; ++j)
     for (int i = i0; i <= i1; ++i) {
       const Ray r = rays_.ray(i + 0.5, j + 0.5);  // from the eye, or from its plane (recentred)
       const glm::dvec3 &eye = r.origin, &d = r.dir;
-      double t0 = 0.0, t1 = std::numeric_limits<double>::infinity();  // from the eye on
-      for (int f = 0; f < 4 && t0 < t1; ++f) {
-        const double den = glm::dot(n[f], d), num = c[f] - glm::dot(n[f], eye);
-        if (den > 0)
-          t1 = std::min(t1, num / den);
-        else if (den < 0)
-          t0 = std::max(t0, num / den);
-        else if (num < 0)
-          t1 = -1.0;  // parallel and outside
-      }
-      if (!(t1 > t0)) continue;
+      double t0, t1;
+      if (!clip.clip(r, t0, t1)) continue;
       const double sf = s[0] + glm::dot(g, eye + t0 * d - p[0]), sb = s[0] + glm::dot(g, eye + t1 * d - p[0]);
       const SegmentLight light = integrate_segment_closed_form(tf_, t1 - t0, sf, sb);
       emitted += emit(i, j, light.rgb, light.opacity());
+    }
+  counters.fragments += emitted;
+}
+
+PixelBox CellFragments::cast_box(const std::int64_t* ids, int n, RowRange rows) const {
+  PixelBox box;
+  box.i0 = 0, box.i1 = rays_.width() - 1, box.j0 = 0, box.j1 = rays_.height() - 1;
+  bool in_front = true;  // in perspective, a point behind the eye has no image position
+  for (int k = 0; k < n && rays_.perspective(); ++k)
+    in_front = in_front && !behind_eye(screen_.v[static_cast<std::size_t>(ids[k])].z);
+  if (in_front) {
+    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
+    for (int k = 0; k < n; ++k) {
+      const ScreenVertex& v = screen_.v[static_cast<std::size_t>(ids[k])];
+      x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
+    }
+    auto lo = [](double v, int n) { return static_cast<int>(std::clamp(std::floor(v - 0.5), 0.0, double(n))); };
+    auto hi = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - 0.5), -1.0, double(n - 1))); };
+    box.i0 = lo(x0, rays_.width()), box.i1 = hi(x1, rays_.width());
+    box.j0 = lo(y0, rays_.height()), box.j1 = hi(y1, rays_.height());
+  }
+  box.j0 = std::max(box.j0, rows.begin), box.j1 = std::min(box.j1, rows.end - 1);
+  return box;
+}
+
+template <class Emit>
+void CellFragments::ray_cast_fields(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
+                                    ProjectionCounters& counters) const {
+  ++(type == CellType::Tetra ? counters.tets : counters.polyhedra);
+  // Each tetrahedron's planes, and both fields as s(x) = s0 + g . (x - p0).
+  struct Part {
+    TetClip clip;
+    glm::dvec3 p0, gs, gu;
+    double s0, u0;
+  };
+  Part part[kMaxTetsPerCell];
+  Tet tets[kMaxTetsPerCell];
+  int parts = 0;
+  for (int t = 0, n = canonical_tetrahedra(ids, type, tets); t < n; ++t) {
+    glm::dvec3 p[4];
+    double s[4], u[4];
+    for (int k = 0; k < 4; ++k) {
+      const auto q = static_cast<std::size_t>(tets[t][k]);
+      p[k] = points_(tets[t][k]), s[k] = screen_.v[q].s, u[k] = color_->values[q];
+    }
+    const double det = edges_triple_product(p);
+    if (!(std::abs(det) > 0.0)) continue;  // zero volume: nothing to see
+    part[parts++] = {TetClip(p), p[0], linear_gradient(p, s, det), linear_gradient(p, u, det), s[0], u[0]};
+  }
+  const PixelBox box = cast_box(ids, cell_def(type).vertices, rows);
+  const bool cut = method_.cuts_at_breakpoints;
+  std::int64_t emitted = 0;
+  for (int j = box.j0; j <= box.j1; ++j)
+    for (int i = box.i0; i <= box.i1; ++i) {
+      const Ray r = rays_.ray(i + 0.5, j + 0.5);
+      struct Hit {
+        double t0, t1;
+        const Part* part;
+      } hit[kMaxTetsPerCell];
+      int hits = 0;
+      for (int k = 0; k < parts; ++k)
+        if (double t0, t1; part[k].clip.clip(r, t0, t1)) hit[hits++] = {t0, t1, &part[k]};
+      if (hits == 0) continue;
+      for (int k = 1; k < hits; ++k)  // front to back (insertion: at most kMaxTetsPerCell)
+        for (int m = k; m > 0 && hit[m].t0 < hit[m - 1].t0; --m) std::swap(hit[m], hit[m - 1]);
+      SegmentLight acc;
+      for (int k = 0; k < hits && acc.depth < kOpaqueDepth; ++k) {
+        const Part& q = *hit[k].part;
+        const glm::dvec3 xf = r.origin + hit[k].t0 * r.dir - q.p0, xb = r.origin + hit[k].t1 * r.dir - q.p0;
+        const SegmentLight light = integrate_two_fields_closed_form(
+            color_->tf, hit[k].t1 - hit[k].t0, q.u0 + glm::dot(q.gu, xf), q.u0 + glm::dot(q.gu, xb),
+            q.s0 + glm::dot(q.gs, xf), q.s0 + glm::dot(q.gs, xb), cut);
+        acc = k == 0 ? light : under(acc, light);
+      }
+      emitted += emit(i, j, acc.rgb, acc.opacity());
     }
   counters.fragments += emitted;
 }
@@ -492,6 +536,7 @@ bool CellFragments::by_layers(const std::int64_t* ids, CellType type) const {
 template <class Emit>
 void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                                  ProjectionCounters& counters) const {
+  if (color_) return ray_cast_fields(ids, type, rows, emit, counters);
   if (type != CellType::Tetra && by_layers(ids, type)) return project_layers(ids, type, rows, emit, p, counters);
   const bool tet = type == CellType::Tetra;
   const Seen seen = tet ? tet_triangles({ids[0], ids[1], ids[2], ids[3]}, p, counters, false)

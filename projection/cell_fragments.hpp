@@ -12,12 +12,14 @@
 #include "composite/opaque_mask.hpp"
 #include "mesh/tetrahedralize.hpp"
 #include "optics/transfer_function.hpp"
+#include "optics/two_fields.hpp"
 #include "projection/method.hpp"
 #include "projection/projected_cell.hpp"
 #include "projection/projected_tet.hpp"
 #include "projection/segment_batch.hpp"
 #include "projection/tet_fan.hpp"
 #include "view/image.hpp"
+#include "view/raster.hpp"
 #include "view/screen.hpp"
 
 namespace cellproj {
@@ -64,6 +66,14 @@ struct PointOptics {
 // Parallel over points (oneTBB, in the caller's task arena); a null scalar reads as 0 everywhere.
 PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf);
 
+// Colour by another field than the extinction's (optics/two_fields.hpp): the colour field's values
+// per point and the transfer function's halves apart. The screen points' scalar is then the
+// opacity field.
+struct ColorField {
+  const double* values = nullptr;
+  TwoFieldTransfer tf;
+};
+
 // A corner of a Gouraud-shaded triangle (pt-linear, pt-table; MWSC section 2): opacity (pt-linear)
 // or kappa_avg (pt-table), thickness, colour.
 struct GouraudCorner {
@@ -95,7 +105,8 @@ class CellFragments {
   // `rays` is the frame's PixelRays on the recentred camera, the one `screen` was made with.
   CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                 const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
-                const PointOptics* optics, WholeCells whole_cells = WholeCells::automatic);
+                const PointOptics* optics, WholeCells whole_cells = WholeCells::automatic,
+                const ColorField* color = nullptr);
   // Appends the fragments of the cell (point ids `ids`, of `type`) to out.
   void project(const std::int64_t* ids, CellType type, FragmentBands& out, CellScratch& scratch,
                ProjectionCounters& counters) const;
@@ -133,6 +144,15 @@ class CellFragments {
   // planes, the segment integrated exactly (pt-breakpoints' integral, whatever the method).
   template <class Emit>
   void ray_cast(const Tet& tet, RowRange rows, Emit& emit, ProjectionCounters& counters) const;
+  // A cell coloured by color_ (pt-analytic and pt-breakpoints): every pixel's ray clipped against
+  // its canonical tetrahedra (the exact renderer's), both fields linear over each, the segments
+  // integrated in closed form front to back into one fragment.
+  template <class Emit>
+  void ray_cast_fields(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
+                       ProjectionCounters& counters) const;
+  // The pixels of rows `rows` a ray cast cell of n vertices may cover: those under its image, one
+  // pixel wider, unless in perspective a vertex is behind the eye (then every one).
+  PixelBox cast_box(const std::int64_t* ids, int n, RowRange rows) const;
   // project()'s body; emit(i, j, rgb, alpha) stores or composites a fragment, true if it did.
   template <class Emit>
   void project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
@@ -183,6 +203,7 @@ class CellFragments {
   const PointOptics* optics_;
   int front_sign_;  // exact_sign of a face turned towards the eye
   WholeCells whole_cells_;
+  const ColorField* color_;  // null: colour and extinction from the one field
 };
 
 }  // namespace cellproj

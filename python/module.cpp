@@ -118,11 +118,13 @@ glm::dvec3 vec(const std::vector<double>& v, const char* what) {
 }
 
 // The transfer function `cellproj render MESH` gives the field (scene/quick_scene.hpp): over its
-// range in the field's units, placed on a log axis when the field is on a log scale.
+// range in the field's units, placed on a log axis when the field is on a log scale; the
+// extinction over the opacity field's values when it has one of its own.
 TransferFunction default_tf(const NumpyMesh& mesh, const Field& f, const QuickLook& look) {
   const OpacityInput field{mesh.view(), f.values, log_scale_name(f.name)};
-  const FieldTransferFunction q = quick_transfer_function(look, field);
-  return transfer_function_from_json(q.json, "python", "", q.lo, q.hi, field.log);
+  const OpacityInput opacity{mesh.view(), f.opacity};
+  const FieldTransferFunction q = quick_transfer_function(look, field, f.opacity ? &opacity : nullptr);
+  return transfer_function_from_json(q.json, "python", "", q.lo, q.hi, field.log, !f.opacity);
 }
 
 // The field `spec` of `mesh`, on a log scale when asked (mesh/field_choice.hpp).
@@ -338,13 +340,18 @@ PYBIND11_MODULE(_cellproj, m) {
       [](const NumpyMesh& mesh, std::optional<TransferFunction> tf, std::optional<Camera> camera,
          std::pair<int, int> size, const std::string& field, const std::string& method, int threads, bool log,
          std::optional<double> log_floor, const std::string& cmap, std::optional<std::pair<double, double>> clim,
-         const std::string& opacity, double depth, const std::string& view, const py::kwargs& kwargs) {
+         const std::string& opacity, double depth, const std::string& view, const std::string& opacity_field,
+         const py::kwargs& kwargs) {
         const RenderOptions options = options_from(method, kwargs);
         const RenderSettings settings = settings_from(options);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings);
         refuse_unused(settings, options.given);
         const ImageSize image_size = size_from(size);
-        const Field f = chosen_field(mesh, field, log, log_floor);
+        Field f = chosen_field(mesh, field, log, log_floor);
+        if (!opacity_field.empty()) {  // the extinction's own field, never on a log scale
+          const Field o = mesh.field(opacity_field);
+          f.opacity = o.values, f.opacity_name = o.name;
+        }
         refuse_iso_on_log_scale(settings, log);
         const double aspect = double(image_size.width) / image_size.height;
         if (camera && !view.empty()) throw InputError("give camera= or view=, not both");
@@ -370,6 +377,7 @@ PYBIND11_MODULE(_cellproj, m) {
                       {"cells", mesh.view().n_cells},
                       {"width", image_size.width},
                       {"height", image_size.height}});
+        if (f.opacity) stats["opacity_field"] = f.opacity_name;
         // The legend of the picture, as the CLI's: over legend_range, the field's name (on a log scale,
         // the field's own), in the field's units.
         const auto [field_lo, field_hi] = std::minmax_element(f.values, f.values + f.size);
@@ -382,7 +390,7 @@ PYBIND11_MODULE(_cellproj, m) {
       py::arg("size") = std::pair<int, int>{512, 512}, py::arg("field") = "", py::arg("method") = "pt-breakpoints",
       py::arg("threads") = 0, py::arg("log") = false, py::arg("log_floor") = py::none(), py::arg("cmap") = "",
       py::arg("clim") = py::none(), py::arg("opacity") = "", py::arg("depth") = 0.0, py::arg("view") = "",
-      "cellproj.render's door: the image, its --stats as JSON and its legend");
+      py::arg("opacity_field") = "", "cellproj.render's door: the image, its --stats as JSON and its legend");
   m.def("_keywords_doc", &keywords_doc);
 
   m.def(
@@ -461,7 +469,8 @@ PYBIND11_MODULE(_cellproj, m) {
           }
           const Volume volume(p.player->view(p.frame),
                               {/*trusted: key frames are validated*/ !p.player->points_move()});
-          const Field f{p.frame.field.data(), static_cast<std::int64_t>(p.frame.field.size()), p.player->field_name()};
+          const Field f{p.frame.field.data(), static_cast<std::int64_t>(p.frame.field.size()), p.player->field_name(),
+                        nullptr, ""};
           return to_numpy(render_frame(*renderer, volume, f, p.prepared.tf, p.prepared.camera, image_size, threads));
         }
         PreparedScene prepared = [&] {
@@ -474,8 +483,8 @@ PYBIND11_MODULE(_cellproj, m) {
         if (mesh.n_cells() == 0)
           throw InputError(where(path, "nothing of the mesh is on the kept side of the clipping planes"));
         const Volume volume(mesh.view(), {/*trusted: load_mesh validated it*/ true});
-        return to_numpy(render_frame(*renderer, volume, field_of(mesh, prepared.field), prepared.tf, prepared.camera,
-                                     image_size, threads));
+        return to_numpy(render_frame(*renderer, volume, field_of(mesh, prepared.field, prepared.opacity_field),
+                                     prepared.tf, prepared.camera, image_size, threads));
       },
       py::arg("path"), py::arg("size") = py::none(), py::arg("field") = "", py::arg("view") = "",
       py::arg("method") = "", py::arg("threads") = 0, py::arg("time") = py::none(), py::arg("log") = false,

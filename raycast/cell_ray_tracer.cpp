@@ -133,15 +133,30 @@ std::vector<glm::dvec3> CellRayTracer::point_gradients(const double* scalar) con
   return g;
 }
 
+namespace {
+// The barycentric weights of x in the tetrahedron p (the volume of the tetrahedron with x in vertex
+// k's place, over the whole), vertices 1 to 3; vertex 0's is 1 minus their sum.
+glm::dvec3 barycentric(const glm::dvec3 p[4], const glm::dvec3& x) {
+  const double v = tet_volume6(p[0], p[1], p[2], p[3]);
+  return {tet_volume6(p[0], x, p[2], p[3]) / v, tet_volume6(p[0], p[1], x, p[3]) / v,
+          tet_volume6(p[0], p[1], p[2], x) / v};
+}
+}  // namespace
+
 glm::dvec3 CellRayTracer::interpolate(const std::vector<glm::dvec3>& per_point, std::uint32_t tet,
                                       const glm::dvec3& x) const {
   const Tet& t = tets_[tet];
   const glm::dvec3 p[4] = {points_(t[0]), points_(t[1]), points_(t[2]), points_(t[3])};
-  const double v = tet_volume6(p[0], p[1], p[2], p[3]);
-  // Barycentric weight of vertex k: the volume of the tetrahedron with x in its place, over the whole.
-  const double w1 = tet_volume6(p[0], x, p[2], p[3]) / v, w2 = tet_volume6(p[0], p[1], x, p[3]) / v,
-               w3 = tet_volume6(p[0], p[1], p[2], x) / v;
-  return (1.0 - w1 - w2 - w3) * per_point[t[0]] + w1 * per_point[t[1]] + w2 * per_point[t[2]] + w3 * per_point[t[3]];
+  const glm::dvec3 w = barycentric(p, x);
+  return (1.0 - w[0] - w[1] - w[2]) * per_point[t[0]] + w[0] * per_point[t[1]] + w[1] * per_point[t[2]] +
+         w[2] * per_point[t[3]];
+}
+
+double CellRayTracer::value(std::uint32_t tet, const double* scalar, const glm::dvec3& x) const {
+  const Tet& t = tets_[tet];
+  const glm::dvec3 p[4] = {points_(t[0]), points_(t[1]), points_(t[2]), points_(t[3])};
+  const glm::dvec3 w = barycentric(p, x);
+  return (1.0 - w[0] - w[1] - w[2]) * scalar[t[0]] + w[0] * scalar[t[1]] + w[1] * scalar[t[2]] + w[2] * scalar[t[3]];
 }
 
 CellRayTracer::View::View(const CellRayTracer& tracer, const Camera& camera, int width, int height)

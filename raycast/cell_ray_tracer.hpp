@@ -68,6 +68,9 @@ class CellRayTracer {
   // The gradient of the point field `scalar` in tetrahedron `tet` (a RaySegment's), constant there.
   glm::dvec3 gradient(std::uint32_t tet, const double* scalar) const;
 
+  // The point field `scalar` interpolated linearly in tetrahedron `tet` at x (recentred, as the rays).
+  double value(std::uint32_t tet, const double* scalar, const glm::dvec3& x) const;
+
   // Per point, the volume-weighted mean of the gradients of the tetrahedra around it: a smooth
   // normal field for shading surfaces of the piecewise-linear field.
   std::vector<glm::dvec3> point_gradients(const double* scalar) const;

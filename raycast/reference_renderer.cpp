@@ -4,10 +4,12 @@
 #include <atomic>
 #include <chrono>
 #include <cmath>
+#include <optional>
 
 #include "base/error.hpp"
 #include "base/timing.hpp"
 #include "optics/polynomial_segment.hpp"
+#include "optics/two_fields.hpp"
 
 namespace cellproj {
 namespace {
@@ -64,10 +66,13 @@ ExactRenderer::ExactRenderer(const MeshView& mesh) : local_(mesh), tracer_(local
 
 Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,
                             int height, CellInterpolation interpolation, ExactStats* stats,
-                            const std::function<void(double)>& progress) const {
+                            const std::function<void(double)>& progress, const double* opacity) const {
   const auto start = std::chrono::steady_clock::now();
   Image img(width, height);
-  const IsoparametricField* iso = interpolation == CellInterpolation::isoparametric && scalar ? iso_.get() : nullptr;
+  const IsoparametricField* iso =
+      interpolation == CellInterpolation::isoparametric && scalar && !opacity ? iso_.get() : nullptr;
+  std::optional<TwoFieldTransfer> two;
+  if (opacity) two.emplace(tf);
   double scalar_tolerance = 0.0;  // largest error of the polynomial s(t) along a ray
   if (iso) {
     const auto [lo, hi] = std::minmax_element(scalar, scalar + n_points_);
@@ -79,6 +84,13 @@ Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, co
       [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t n) {
         SegmentLight acc;
         for (std::size_t k = 0; k < n && acc.depth < kOpaqueDepth;) {
+          if (two) {  // the colour field traced, the opacity field read at the segment's ends
+            const RaySegment& g = seg[k++];
+            const double sf = tracer_.value(g.tet, opacity, ray.origin + g.t0 * ray.dir),
+                         sb = tracer_.value(g.tet, opacity, ray.origin + g.t1 * ray.dir);
+            acc = under(acc, integrate_two_fields_reference(*two, g.t1 - g.t0, g.s0, g.s1, sf, sb));
+            continue;
+          }
           if (!iso || iso->linear(seg[k].cell)) {
             acc = under(acc, integrate_segment_reference(tf, seg[k].t1 - seg[k].t0, seg[k].s0, seg[k].s1));
             ++k;

@@ -36,10 +36,12 @@ void each_counter(const ExactStats& s, F&& f) {
 class ExactRenderer {
  public:
   explicit ExactRenderer(const MeshView& mesh);
-  // One frame of the point field `scalar` (n_points values).
+  // One frame of the point field `scalar` (n_points values). With `opacity` (n_points values) the
+  // colour comes from `scalar` and the extinction from `opacity` (optics/two_fields.hpp), both
+  // linear over the canonical tetrahedra whatever `interpolation` says.
   Image render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
                CellInterpolation interpolation = CellInterpolation::isoparametric, ExactStats* stats = nullptr,
-               const std::function<void(double)>& progress = {}) const;
+               const std::function<void(double)>& progress = {}, const double* opacity = nullptr) const;
   const CellRayTracer& tracer() const { return tracer_; }  // (over local_cells(): cell ids are its)
   const LocalCells& local_cells() const { return local_; }
 

@@ -51,6 +51,13 @@ void add_splats(RenderReport& r, SmallCells mode, double threshold, const SplatC
                          std::to_string(c.refused_inverted) + " inverted) and add nothing to the picture");
 }
 
+// InputError for a field whose extinction comes from another field, where `renderer` cannot draw it.
+void refuse_opacity_field(const Field& field, const std::string& renderer) {
+  if (field.opacity)
+    throw InputError("setting 'opacity-field' (the extinction from field '" + field.opacity_name +
+                     "') is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " + renderer);
+}
+
 class ProjectionMode final : public Renderer {
  public:
   ProjectionMode(const ProjectionOptions& options, Tetrahedralize mode) : options_(options), mode_(mode) {
@@ -65,7 +72,7 @@ class ProjectionMode final : public Renderer {
     const ProjectionRenderer& renderer =
         timed_preparation(volume, report, [&]() -> const ProjectionRenderer& { return volume.projection(mode_); });
     ProjectionStats st;
-    Image image = renderer.render(field.values, tf, camera, size.width, size.height, options_, &st);
+    Image image = renderer.render(field.values, tf, camera, size.width, size.height, options_, &st, field.opacity);
     if (report) fill(*report, st);
     return image;
   }
@@ -159,9 +166,13 @@ class ExactMode final : public Renderer {
   Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
               ImageSize size, RenderReport* report, const Progress& progress) const override {
     const ExactRenderer& renderer = checked_exact(volume, field, report);
-    if (!iso_.surfaces.empty()) return render_surfaces(renderer, field, tf, camera, size, report, progress);
+    if (!iso_.surfaces.empty()) {
+      refuse_opacity_field(field, "iso-surfaces");
+      return render_surfaces(renderer, field, tf, camera, size, report, progress);
+    }
     ExactStats st;
-    Image image = renderer.render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress);
+    Image image = renderer.render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress,
+                                  field.opacity);
     if (report) {
       report->seconds = st.trace_seconds;
       report->phase_seconds = {{"trace and integrate", st.trace_seconds}};
@@ -215,6 +226,7 @@ class ReductionMode final : public Renderer {
 
   Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
               ImageSize size, RenderReport* report, const Progress& progress) const override {
+    refuse_opacity_field(field, name());
     const ExactRenderer& renderer = checked_exact(volume, field, report);
     ReductionStats st;
     Image image =
@@ -245,6 +257,7 @@ class LayersMode final : public Renderer {
 
   Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
               ImageSize size, RenderReport* report, const Progress& progress) const override {
+    refuse_opacity_field(field, name());
     const ExactRenderer& renderer = checked_exact(volume, field, report);
     LayerStats st;
     Image image = render_layers(renderer.tracer(), field.values, field.size, tf, camera, size.width, size.height,
@@ -319,6 +332,7 @@ class SlicingMode final : public Renderer {
   using Taken = std::function<void(std::size_t level, int slices, Image&&, RenderReport&&)>;
   void render_levels(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                      ImageSize size, const std::vector<int>& levels, const Taken& done) const {
+    refuse_opacity_field(field, "slicing");
     volume.check(field);
     RenderReport first;
     const SliceRenderer& renderer =

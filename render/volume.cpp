@@ -56,6 +56,14 @@ Field field_of(const Mesh& mesh, const std::string& name) {
   return {f.values.data(), static_cast<std::int64_t>(f.values.size()), f.name};
 }
 
+Field field_of(const Mesh& mesh, const std::string& name, const std::string& opacity) {
+  Field f = field_of(mesh, name);
+  if (opacity.empty()) return f;
+  const PointField& o = mesh.field(opacity);
+  f.opacity = o.values.data(), f.opacity_name = o.name;
+  return f;
+}
+
 Volume::Volume(const MeshView& mesh, const VolumeOptions& options) : state_(std::make_unique<State>()) {
   commit(mesh, options);
 }
@@ -125,15 +133,19 @@ int Volume::preparations() const { return state_->preparations; }
 
 void Volume::check(const Field& f) const {
   const MeshView& m = state_->mesh;
-  const std::string name = f.name.empty() ? "the field" : "field '" + f.name + "'";
-  if (!f.values) throw InputError(where(m.source, "no field given: " + name + " has no values"));
-  if (f.size != m.n_points)
-    throw InputError(where(
-        m.source, name + " has " + std::to_string(f.size) + " values for " + std::to_string(m.n_points) + " points"));
-  for (std::int64_t p = 0; p < f.size; ++p)
-    if (!std::isfinite(f.values[p]))
+  const auto check = [&](const double* values, const std::string& field_name) {
+    const std::string name = field_name.empty() ? "the field" : "field '" + field_name + "'";
+    if (!values) throw InputError(where(m.source, "no field given: " + name + " has no values"));
+    if (f.size != m.n_points)
       throw InputError(where(
-          m.source, name + " is not finite at point " + std::to_string(p) + " (" + std::to_string(f.values[p]) + ")"));
+          m.source, name + " has " + std::to_string(f.size) + " values for " + std::to_string(m.n_points) + " points"));
+    for (std::int64_t p = 0; p < f.size; ++p)
+      if (!std::isfinite(values[p]))
+        throw InputError(where(
+            m.source, name + " is not finite at point " + std::to_string(p) + " (" + std::to_string(values[p]) + ")"));
+  };
+  check(f.values, f.name);
+  if (f.opacity) check(f.opacity, f.opacity_name.empty() ? "opacity" : f.opacity_name);
 }
 
 const ProjectionRenderer& Volume::projection(Tetrahedralize mode) const {

@@ -32,8 +32,14 @@ struct Field {
   const double* values = nullptr;
   std::int64_t size = 0;
   std::string name;  // for messages
+  // The extinction from another field (ParaView's separate opacity array), `size` values per point
+  // too; the colour then comes from `values` alone (optics/two_fields.hpp). Null: both from values.
+  const double* opacity = nullptr;
+  std::string opacity_name;
 };
 Field field_of(const Mesh& mesh, const std::string& name);  // the mesh's field `name` (InputError listing them)
+// The same coloured by `name` and opaque by `opacity` (the field itself when empty).
+Field field_of(const Mesh& mesh, const std::string& name, const std::string& opacity);
 
 struct VolumeOptions {
   // The caller vouches for the mesh (ids in range, finite points, supported cells): validation is

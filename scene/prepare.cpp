@@ -102,6 +102,9 @@ std::string view_warning(const Camera& camera, const glm::dvec3& lo, const glm::
 std::string scene_field(const Scene& s) { return s.log_scale ? log_spec(s.field, s.log_floor) : s.field; }
 
 LoadedMesh first_key_frame(SeriesPlayer& player, Scene& scene) {
+  if (!scene.opacity_field.empty())
+    throw InputError(
+        where(scene.source, "setting 'opacity-field' draws one mesh's two fields, not a time series' yet"));
   const SeriesFrame frame = player.frame_at(player.series().frames.front().time);
   scene.field = player.field_name(), scene.log_scale = false, scene.log_floor.reset();  // its log is in the name
   LoadedMesh loaded;
@@ -164,13 +167,21 @@ PreparedScene prepare_scene(const Scene& s, LoadedMesh loaded) {
   check_finite(s.mesh, f);
   const auto [lo_at, hi_at] = std::minmax_element(f.values.begin(), f.values.end());
   const double lo = *lo_at, hi = *hi_at;
+  std::string opacity_field;  // the extinction's own field, never on a log scale
+  if (!s.opacity_field.empty()) {
+    const PointField& o = select_field(loaded.mesh, choose_field(loaded.mesh, s.opacity_field).name);
+    check_finite(s.mesh, o);
+    opacity_field = o.name;
+  }
+  const bool opacity_log = opacity_field.empty();
   // A colour preset is stretched over the field's range unless the scene gives one (in the field's
   // units: on a log scale the range is 10^lo to 10^hi).
-  TransferFunction tf = log_scale ? transfer_function_from_json(s.transfer_function, s.source, s.base_dir,
-                                                                std::pow(10.0, lo), std::pow(10.0, hi), true)
-                                  : transfer_function_from_json(s.transfer_function, s.source, s.base_dir, lo, hi);
+  TransferFunction tf = log_scale
+                            ? transfer_function_from_json(s.transfer_function, s.source, s.base_dir, std::pow(10.0, lo),
+                                                          std::pow(10.0, hi), true, opacity_log)
+                            : transfer_function_from_json(s.transfer_function, s.source, s.base_dir, lo, hi);
   const std::string scalar = log_scale ? log_scale_scalar(field) : field;
-  PreparedScene p{std::move(loaded), field, lo, hi, log_scale, scalar, std::move(tf), Camera{}, {}, {}};
+  PreparedScene p{std::move(loaded), field, lo, hi, log_scale, scalar, std::move(tf), Camera{}, {}, {}, opacity_field};
   const auto [blo, bhi] = bounds(p.loaded.mesh);
   const Camera base = s.camera ? *s.camera : view_camera(s.view, blo, bhi, double(s.width) / s.height);
   check_camera(base, where(s.source, "the camera framing " + s.mesh + "'s bounds"));

@@ -27,6 +27,9 @@ struct PreparedScene {
   // so that a camera tilted by an elevation turns about the world's vertical.
   glm::dvec3 turn_axis{0.0, 1.0, 0.0};
   std::vector<std::string> warnings;  // mesh defects and what reading did, for stderr
+  // The field the extinction comes from (Scene::opacity_field, as mesh/field_choice.hpp names it);
+  // empty: `field`. The transfer function's extinction points are in its units.
+  std::string opacity_field;
 };
 
 PreparedScene prepare_scene(const Scene& scene);

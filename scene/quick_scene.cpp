@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
+#include <optional>
 
 #include <glm/geometric.hpp>
 
@@ -91,22 +92,30 @@ nlohmann::json extinction(const QuickLook& look, double lo, double hi, double di
   return points;
 }
 
-}  // namespace
-
-nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal,
-                                       const OpacityInput* input) {
+// The colour map of `look` over [lo, hi], as the scene's "color_preset".
+nlohmann::json color_preset(const QuickLook& look, double lo, double hi) {
   try {
     colormap(look.colormap, lo, hi);
   } catch (const InputError& e) {
     throw InputError(std::string("setting 'colormap': ") + e.what());
   }
-  return {{"color_preset", {{"name", look.colormap}, {"range", {lo, hi}}}},
-          {"extinction", extinction(look, lo, hi, diagonal, input)}};
+  return {{"name", look.colormap}, {"range", {lo, hi}}};
 }
 
-FieldTransferFunction quick_transfer_function(const QuickLook& look, const OpacityInput& field) {
-  const auto [lo_at, hi_at] = std::minmax_element(field.field, field.field + field.mesh.n_points);
-  double lo = field.log ? std::pow(10.0, *lo_at) : *lo_at, hi = field.log ? std::pow(10.0, *hi_at) : *hi_at;
+}  // namespace
+
+nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double hi, double diagonal,
+                                       const OpacityInput* input) {
+  return {{"color_preset", color_preset(look, lo, hi)}, {"extinction", extinction(look, lo, hi, diagonal, input)}};
+}
+
+FieldTransferFunction quick_transfer_function(const QuickLook& look, const OpacityInput& field,
+                                              const OpacityInput* opacity) {
+  const auto range = [](const OpacityInput& in) {
+    const auto [lo_at, hi_at] = std::minmax_element(in.field, in.field + in.mesh.n_points);
+    return in.log ? std::pair{std::pow(10.0, *lo_at), std::pow(10.0, *hi_at)} : std::pair{*lo_at, *hi_at};
+  };
+  auto [lo, hi] = range(field);
   if (look.range) {
     std::tie(lo, hi) = *look.range;
     if (!std::isfinite(lo) || !std::isfinite(hi) || !(lo < hi) || (field.log && !(lo > 0)))
@@ -115,7 +124,12 @@ FieldTransferFunction quick_transfer_function(const QuickLook& look, const Opaci
                        std::to_string(hi));
   }
   const auto [blo, bhi] = bounds(field.mesh);
-  return {quick_transfer_function(look, lo, hi, glm::length(bhi - blo), &field), lo, hi};
+  const double diagonal = glm::length(bhi - blo);
+  if (!opacity) return {quick_transfer_function(look, lo, hi, diagonal, &field), lo, hi};
+  const auto [olo, ohi] = range(*opacity);  // the extinction over the opacity field's own range
+  return {{{"color_preset", color_preset(look, lo, hi)}, {"extinction", extinction(look, olo, ohi, diagonal, opacity)}},
+          lo,
+          hi};
 }
 
 std::string view_names() {
@@ -138,12 +152,22 @@ nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, con
     throw InputError("setting 'log-floor' is the floor of a log scale: give setting 'log' too");
   // The field as the user spelt it (a vector alone, its magnitude, is said so when the scene is prepared).
   const std::string field = look.field.empty() ? choose_field(loaded.mesh, "").field : look.field;
+  // The extinction's own field first: selecting a field may add one to the mesh's list.
+  const std::string opacity_field =
+      look.opacity_field.empty() ? ""
+                                 : select_field(loaded.mesh, choose_field(loaded.mesh, look.opacity_field).name).name;
   const FieldChoice choice = choose_field(loaded.mesh, look.log ? log_spec(look.field, look.log_floor) : look.field);
   const PointField& f = select_field(loaded.mesh, choice.name);
   check_finite(mesh_path, f);
   // The transfer function in the field's units (on a log scale placed at their logs when prepared);
   // a log asked for, or the name of a series' played log.
-  const OpacityInput opacity{loaded.mesh.view(), f.values.data(), log_scale_name(f.name), known_auto};
+  const OpacityInput color{loaded.mesh.view(), f.values.data(), log_scale_name(f.name), known_auto};
+  std::optional<OpacityInput> opacity;
+  if (!opacity_field.empty()) {
+    const PointField& o = loaded.mesh.field(opacity_field);
+    check_finite(mesh_path, o);
+    opacity = OpacityInput{loaded.mesh.view(), o.values.data()};
+  }
   const auto [blo, bhi] = bounds(loaded.mesh);
   const Camera camera = view_camera(look.view, blo, bhi, double(look.width) / look.height);
   namespace fs = std::filesystem;
@@ -152,13 +176,15 @@ nlohmann::json quick_scene(LoadedMesh& loaded, const std::string& mesh_path, con
     const std::string relative = fs::absolute(mesh_path).lexically_relative(fs::absolute(scene_dir)).string();
     if (!relative.empty() && relative.rfind("../..", 0) != 0) mesh = relative;
   }
-  nlohmann::json scene = {{"mesh", mesh},
-                          {"field", field},
-                          {"transfer_function", quick_transfer_function(look, opacity).json},
-                          {"camera", camera_to_json(camera)},
-                          {"image", {{"width", look.width}, {"height", look.height}}}};
+  nlohmann::json scene = {
+      {"mesh", mesh},
+      {"field", field},
+      {"transfer_function", quick_transfer_function(look, color, opacity ? &*opacity : nullptr).json},
+      {"camera", camera_to_json(camera)},
+      {"image", {{"width", look.width}, {"height", look.height}}}};
   if (look.log) scene["log"] = true;
   if (look.log_floor) scene["log_floor"] = *look.log_floor;
+  if (!opacity_field.empty()) scene["opacity_field"] = look.opacity_field;
   nlohmann::json r = nlohmann::json::object();
   if (!reader.format.empty()) r["format"] = reader.format;
   if (!reader.q_file.empty()) r["q_file"] = fs::absolute(reader.q_file).lexically_normal().string();

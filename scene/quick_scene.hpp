@@ -18,6 +18,9 @@ struct QuickLook {
   bool log = false;   // the field on a log scale (Scene::log_scale), the colour map over its log
   std::optional<double> log_floor;
   std::string colormap = "Cool to Warm";  // optics/colormaps.hpp
+  // The field the extinction comes from (Scene::opacity_field): `opacity` is then shaped over its
+  // range and values, never on a log scale; `range` spans the colour map only. Empty: `field`.
+  std::string opacity_field;
   // Extinction over the field's range: auto (scene/auto_opacity.hpp: faint where the field holds its
   // background value, the scale that leaves the picture neither opaque nor empty), a named shape
   // (ramp: 0 at the minimum, most at the maximum; reverse, flat, sigmoid, geometric), or explicit
@@ -54,12 +57,14 @@ nlohmann::json quick_transfer_function(const QuickLook& look, double lo, double 
 
 // The same for the field `field.field` (on a log scale, the logs of its values) of `field.mesh`:
 // its range and the mesh's diagonal taken from them. `lo` and `hi` are the range in the field's
-// units (what transfer_function_from_json takes with the transfer function).
+// units (what transfer_function_from_json takes with the transfer function). With `opacity`, the
+// extinction is shaped over that field instead (QuickLook::opacity_field).
 struct FieldTransferFunction {
   nlohmann::json json;
   double lo = 0, hi = 0;
 };
-FieldTransferFunction quick_transfer_function(const QuickLook& look, const OpacityInput& field);
+FieldTransferFunction quick_transfer_function(const QuickLook& look, const OpacityInput& field,
+                                              const OpacityInput* opacity = nullptr);
 
 // The scene (as docs/scene.md) for `loaded`, read from `mesh_path` with `reader`, with the mesh's
 // path written relative to `scene_dir` (absolute when empty). InputError for a bad look, naming

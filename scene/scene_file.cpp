@@ -325,9 +325,10 @@ SceneVolume volume_from_json(const nlohmann::json& v, const std::string& at, con
 
 Scene scene_from_json(const nlohmann::json& j, const std::string& path, const std::string& base_dir) {
   if (!j.is_object()) throw InputError(where(path, "a scene is a JSON object"));
-  only_keys(j, path,
-            {"mesh", "reader", "field", "log", "log_floor", "transfer_function", "camera", "camera_moves", "image",
-             "render", "layers", "clip", "iso", "iso_mode", "iso_opacity", "volume", "volumes"});
+  only_keys(
+      j, path,
+      {"mesh", "reader", "field", "log", "log_floor", "opacity_field", "transfer_function", "camera", "camera_moves",
+       "image", "render", "layers", "clip", "iso", "iso_mode", "iso_opacity", "volume", "volumes"});
   Scene s;
   s.source = path;
   s.base_dir = base_dir;
@@ -362,6 +363,10 @@ Scene scene_from_json(const nlohmann::json& j, const std::string& path, const st
   if (j.contains("mesh")) s.mesh = resolved(j["mesh"], path + ": mesh", s.base_dir);
   if (j.contains("reader")) s.reader = reader_from_json(j["reader"], path + ": reader", s.base_dir);
   if (j.contains("field")) s.field = text(j["field"], path + ": field");
+  if (j.contains("opacity_field")) {
+    if (!s.volumes.empty()) throw InputError(path + ": opacity_field: one mesh's, not with a \"volumes\" list");
+    s.opacity_field = text(j["opacity_field"], path + ": opacity_field");
+  }
   if (j.contains("log")) {
     if (!j["log"].is_boolean()) throw InputError(path + ": log: expected true or false, got " + j["log"].dump());
     s.log_scale = j["log"].get<bool>();

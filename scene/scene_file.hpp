@@ -38,6 +38,10 @@ struct Scene {
   // are an error unless a floor is given.
   bool log_scale = false;
   std::optional<double> log_floor;
+  // The extinction from another field (ParaView's separate opacity array), as mesh/field_choice.hpp
+  // reads it: the transfer function's colour over `field`, its extinction over this field's values
+  // (never on a log scale). Empty: both over `field`.
+  std::string opacity_field;
   nlohmann::json transfer_function;  // parsed once the field's range is known
   std::optional<Camera> camera;      // absent: frame the mesh from `view`
   CameraMoves camera_moves;          // the "camera_moves" block: turns, zoom, focus... applied to the camera

@@ -105,7 +105,7 @@ double on_log_axis(double s, const std::string& at) {
 
 TransferFunction transfer_function_from_json(const nlohmann::json& j, const std::string& source,
                                              const std::string& base_dir, double field_min, double field_max,
-                                             bool log_axis) {
+                                             bool log_axis, bool extinction_on_log_axis) {
   const std::string key = source + ": transfer_function";
   if (!j.is_object()) throw InputError(key + ": expected an object with \"color\" and \"extinction\"");
   for (const auto& [k, v] : j.items())
@@ -137,7 +137,7 @@ TransferFunction transfer_function_from_json(const nlohmann::json& j, const std:
     const std::string at = key + ".extinction[" + std::to_string(i) + "]";
     if (!e[i].is_array() || e[i].size() != 2) throw InputError(at + ": expected [s, kappa], got " + e[i].dump());
     const double at_s = number(e[i][0], at);
-    ext.push_back({log_axis ? on_log_axis(at_s, at) : at_s, number(e[i][1], at)});
+    ext.push_back({log_axis && extinction_on_log_axis ? on_log_axis(at_s, at) : at_s, number(e[i][1], at)});
   }
   return TransferFunction(std::move(color), std::move(ext), key);
 }

@@ -15,9 +15,11 @@ namespace cellproj {
 // x range mapped onto `range` (default: `field_range`). Relative preset paths resolve against
 // `base_dir`. Errors (InputError) name `source` and the key. With `log_axis` the points are in the
 // field's units and placed at their log10 (a field on a log scale, mesh/field_choice.hpp), a
-// preset spread evenly over the log of its range, as ParaView's log-scale colour maps.
+// preset spread evenly over the log of its range, as ParaView's log-scale colour maps; the
+// extinction's points too unless `extinction_on_log_axis` is false (an opacity field of its own,
+// Scene::opacity_field, is never on a log scale).
 TransferFunction transfer_function_from_json(const nlohmann::json& j, const std::string& source,
                                              const std::string& base_dir, double field_min, double field_max,
-                                             bool log_axis = false);
+                                             bool log_axis = false, bool extinction_on_log_axis = true);
 
 }  // namespace cellproj

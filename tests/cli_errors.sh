@@ -32,6 +32,10 @@ echo '{"mesh": "box.vtu", "field": "nope", "transfer_function": {"color": [[0, 1
 expect 1 "no point field named 'nope'; the fields are: scalar" -- render "$tmp/field.json"
 # The log scale: values not above 0 refused with their count, or floored; a floor alone is refused.
 expect 2 "field 'scalar' on a log scale: [0-9]+ of 125 values are not above 0 \\(the smallest 0.000000, at point 0\\); give a floor below which values count as it \\(--log-floor\\)" -- render "$tmp/box.vtu" --log -o "$tmp/log.png"
+expect 1 "--opacity-field \\(the extinction from another field than the colour\\) is drawn by --method exact, pt-breakpoints or pt-analytic, not by pt-linear" -- render "$tmp/box.vtu" --opacity-field scalar --method pt-linear -o "$tmp/o.png"
+expect 1 "--opacity-field \\(the extinction from field 'scalar'\\) is drawn by --method exact, pt-breakpoints or pt-analytic, not by slicing" -- render "$tmp/box.vtu" --opacity-field scalar --method slicing -o "$tmp/o.png"
+expect 2 "box.vtu: no point field named 'nope'" -- render "$tmp/box.vtu" --opacity-field nope -o "$tmp/o.png"
+expect 0 "wrote .*o.png" -- render "$tmp/box.vtu" --opacity-field scalar --log --log-floor 0.01 --size 24x20 -o "$tmp/o.png"
 expect 2 "--log-floor is the floor of a log scale: give --log too" -- render "$tmp/box.vtu" --log-floor 0.1 -o "$tmp/log.png"
 expect 0 "wrote .*log.png" -- render "$tmp/box.vtu" --log --log-floor 0.01 --legend --size 48x32 -o "$tmp/log.png"
 expect 2 "--time-label labels a time series' frames, and .*box.vtu is not one" -- render "$tmp/box.vtu" --time-label -o "$tmp/t.png"
@@ -289,6 +293,8 @@ cmp -s "$tmp/ser/t5.npy" "$tmp/ser/a_3.npy" || { echo "FAIL: --time 5 differs fr
 expect 0 "wrote" -- render "$tmp/ser/s_%04d.vtu" --time 2.5 --size 24x20 -o "$tmp/ser/p.png"
 expect 0 "s.pvd: a time series of 6 key frames, times 0.0 to 5.0" -- info "$tmp/ser/s.pvd"
 expect 1 "s.pvd: time 7.000000 is outside the series' times \[0.000000, 5.000000\]" -- render "$tmp/ser/s.pvd" --time 7
+# An opacity field of its own (colour by --field, extinction by --opacity-field).
+expect 1 "s.pvd: --opacity-field draws one mesh's two fields, not a time series' yet" -- render "$tmp/ser/s.pvd" --opacity-field scalar -o "$tmp/ser/o.png"
 expect 2 "--time renders one frame and --animate many" -- render "$tmp/ser/s.pvd" --time 1 --animate 0:1:2 -o "$tmp/ser/x_%d.png"
 expect 2 "--animate: expected T0:T1:FRAMES" -- render "$tmp/ser/s.pvd" --animate 0:1
 expect 1 "box.vtu: not a time series" -- render "$tmp/box.vtu" --time 1

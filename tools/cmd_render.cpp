@@ -62,6 +62,7 @@ void print_stats(const FrameJob& job, const FrameLoop& run, double load_seconds,
                       {"max_frame_seconds", *std::max_element(frame_times.begin(), frame_times.end())},
                       {"prepare_seconds", run.prepare_seconds},
                       {"render_seconds", run.render_seconds / a.frames}};
+  if (!prepared.opacity_field.empty()) s["opacity_field"] = prepared.opacity_field;
   s["settings"] = settings_json(job.settings);
   s.update(report_json(run.report));  // the last frame's
   if (!scene.clip.empty()) {
@@ -253,6 +254,7 @@ Action add_render(CLI::App& app) {
                   "Point field to render, overriding the scene; of a vector or tensor one scalar: NAME:x (y, z, N, "
                   "xx ... for a tensor), NAME_X, NAME:magnitude, NAME:von_mises (NAME alone: its magnitude)");
   add_log_options(*cmd, args->log, args->log_floor);
+  add_opacity_field_option(*cmd, args->look.opacity_field);
   cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
   cmd->add_option(
          "--frames", args->frames,

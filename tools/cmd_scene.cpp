@@ -74,6 +74,7 @@ Action add_scene(CLI::App& app) {
       "--field", args->look.field,
       "Point field to render (default: the mesh's only one); of a vector NAME:x, NAME_X, NAME:magnitude, ...");
   add_log_options(*cmd, args->look.log, args->look.log_floor);
+  add_opacity_field_option(*cmd, args->look.opacity_field);
   add_look_options(*cmd, args->look);
   cmd->add_option("--view", args->look.view, "Frame the mesh from a named view: " + view_names());
   cmd->add_option("--size", args->size, "Image size WxH (default 512x512)");

@@ -23,7 +23,7 @@ std::string bar_label(int f, int frames) {
 struct PreparedVolume {
   explicit PreparedVolume(const FrameJob& job)
       : volume(job.input.prepared.loaded.mesh.view(), {/*trusted: load_mesh validated it*/ true}),
-        field(field_of(job.input.prepared.loaded.mesh, job.input.prepared.field)) {
+        field(field_of(job.input.prepared.loaded.mesh, job.input.prepared.field, job.input.prepared.opacity_field)) {
     const auto t = std::chrono::steady_clock::now();
     job.renderer.prepare(volume);
     seconds = seconds_since(t);

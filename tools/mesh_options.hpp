@@ -37,6 +37,13 @@ inline void add_reader_options(CLI::App& cmd, ReadOptions& reader) {
       ->check(CLI::IsMember({"cells", "points"}));
 }
 
+// The field the extinction comes from (scene key "opacity_field").
+inline void add_opacity_field_option(CLI::App& cmd, std::string& field) {
+  cmd.add_option("--opacity-field", field,
+                 "Extinction from this field, colour from --field (ParaView's separate opacity array); --opacity and "
+                 "a scene's extinction points are then over its values, never on a log scale; spelt as --field");
+}
+
 // The look of a mesh rendered without a scene; the options given are listed in `given`.
 inline std::vector<CLI::Option*> add_look_options(CLI::App& cmd, QuickLook& look) {
   return {cmd.add_option("--colormap", look.colormap,

@@ -58,9 +58,9 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
   const std::string ranks = std::to_string(world.size) + (world.size > 1 ? " ranks" : " rank");
   arena.execute([&] {
     // A partition index: each rank reads its own bricks; a mesh: every rank holds it and cuts its brick.
-    const BrickRenderer bricks = input.partition
-                                     ? BrickRenderer(world, *input.partition, prepared.field, scene.reader)
-                                     : BrickRenderer(world, prepared.loaded.mesh, prepared.field, "projected");
+    const BrickRenderer bricks = input.partition ? BrickRenderer(world, *input.partition, prepared.field, scene.reader)
+                                                 : BrickRenderer(world, prepared.loaded.mesh, prepared.field,
+                                                                 "projected", prepared.opacity_field);
     // Frames as a single process makes them: a turntable with --orbit, else a degree a frame.
     for (int f = 0; f < a.frames; ++f) {
       const auto t_frame = std::chrono::steady_clock::now();
@@ -109,6 +109,7 @@ int render_distributed(const RenderArgs& a, const Input& input, const RenderSett
                         {"slowest_rank", slowest_rank},
                         {"imbalance", sum > 0 ? slowest / (sum / world.size) : 1.0},  // of render_cpu_seconds
                         {"per_rank", ranks}};
+    if (!prepared.opacity_field.empty()) s["opacity_field"] = prepared.opacity_field;
     std::fprintf(stderr, "%s\n", s.dump().c_str());
   }
   return kExitOk;

@@ -55,6 +55,7 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
     scene.reader = a.reader;
   }
   if (!a.field.empty()) scene.field = a.field;
+  if (!a.look.opacity_field.empty()) scene.opacity_field = a.look.opacity_field;
   if (a.log) scene.log_scale = true;
   if (a.log_floor) scene.log_floor = a.log_floor;
   if (width > 0) std::tie(scene.width, scene.height) = std::tie(width, height);
@@ -86,6 +87,8 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   std::optional<PartitionIndex> partition;
   if (is_partition_index(scene.mesh)) {
     if (series) throw UsageError(scene.mesh + " is a partition index: --time and --animate need a time series");
+    if (!scene.opacity_field.empty())
+      throw InputError(where(scene.mesh, "an opacity field of its own is drawn from one mesh, not a partition yet"));
     partition = read_partition_index(scene.mesh);
   } else if (const HeaderCounts h = header_counts(first_file); h.cells > 0)
     refuse_beyond_memory(

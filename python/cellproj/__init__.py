@@ -16,8 +16,9 @@ import json as _json
 
 
 def render(data, tf=None, camera=None, *, size=(512, 512), field="", scalars=None, cmap="", colormap="", clim=None,
-           opacity="", depth=0.0, log_scale=False, log=False, log_floor=None, view="", method="pt-breakpoints",
-           threads=0, background=_BLACK, legend=False, title="", cell_data="cells", **settings):
+           opacity="", opacity_field="", depth=0.0, log_scale=False, log=False, log_floor=None, view="",
+           method="pt-breakpoints", threads=0, background=_BLACK, legend=False, title="", cell_data="cells",
+           **settings):
     """Renders `data` (a file's path, a cellproj.Mesh, a VTK data object, a PyVista dataset or a meshio
     mesh) to a cellproj.Image: a float32 (H, W, 4) premultiplied array that saves itself
     (image.save("out.png"), .exr) and shows itself in Jupyter, with .stats.
@@ -25,7 +26,9 @@ def render(data, tf=None, camera=None, *, size=(512, 512), field="", scalars=Non
     The look, as PyVista's add_volume names it: scalars= (or field=) the field, of a vector 'V:x',
     'V_X', 'V:magnitude'; cmap= a colour map (cellproj.colormaps()); clim=(lo, hi) its range;
     opacity= 'auto' (default), 'ramp', 'reverse', 'flat', 'sigmoid', 'geometric' or 'S=DEPTH,...';
-    depth= the largest optical depth across the mesh; log_scale=True (log_floor=F); or tf= a
+    depth= the largest optical depth across the mesh; log_scale=True (log_floor=F); opacity_field= another
+    field the extinction comes from (ParaView's separate opacity array: opacity= then shapes it over
+    that field's values, never on a log scale); or tf= a
     cellproj.TransferFunction instead. The camera: view='+x' ... 'iso', or camera= a cellproj.Camera,
     then the moves azimuth=, elevation=, roll=, zoom=, dolly=, focus=, perspective=, parallel=. The
     picture: size=(width, height), background=(r, g, b) or None (transparent), legend=True, title=.
@@ -41,7 +44,8 @@ def render(data, tf=None, camera=None, *, size=(512, 512), field="", scalars=Non
         raise InputError("render: background= takes (r, g, b) in [0, 1], or None for a transparent picture")
     array, stats, bar = _render(as_mesh(data, cell_data), tf, camera, size=size, field=field, method=method,
                                 threads=threads, log=bool(log or log_scale), log_floor=log_floor,
-                                cmap=cmap or colormap, clim=clim, opacity=opacity, depth=depth, view=view, **settings)
+                                cmap=cmap or colormap, clim=clim, opacity=opacity, depth=depth, view=view,
+                                opacity_field=opacity_field, **settings)
     if title is None:
         title = ""
     return Image(array, stats=_json.loads(stats), background=background, title=title, legend=bar if legend else None)

@@ -41,6 +41,25 @@ def test_pyvista_keywords_give_the_clis_picture(tmp_path):
     assert np.array_equal(log, cli_npy(tmp_path, DEFAULT, "--log", "--log-floor", "0.01", "--size", "64x48"))
 
 
+def test_an_opacity_field_of_its_own_as_the_cli_draws_it(tmp_path):
+    """opacity_field= is the CLI's --opacity-field, on a log scale too; exact is its reference."""
+    path = shared("exodus_disk_out_ref/disk_out_ref.ex2")
+    image = cellproj.render(path, scalars="Temp", opacity_field="V_X", opacity="ramp", size=(64, 48))
+    assert image.stats["opacity_field"] == "V:x"
+    cli = cli_npy(tmp_path, path, "--field", "Temp", "--opacity-field", "V_X", "--opacity", "ramp", "--size", "64x48")
+    assert np.array_equal(image, cli)
+    exact = cellproj.render(path, scalars="Temp", opacity_field="V_X", opacity="ramp", size=(64, 48), method="exact")
+    assert np.abs(image - exact).max() < 1e-6
+    log = cellproj.render(path, scalars="Pres", log_scale=True, opacity_field="Temp", size=(64, 48))
+    assert np.array_equal(log, cli_npy(tmp_path, path, "--field", "Pres", "--log", "--opacity-field", "Temp",
+                                       "--size", "64x48"))
+    with pytest.raises(cellproj.InputError, match="opacity_field= .* is drawn by method= exact, pt-breakpoints or "
+                                                  "pt-analytic, not by slicing"):
+        cellproj.render(path, scalars="Temp", opacity_field="V", method="slicing", size=(32, 32))
+    with pytest.raises(cellproj.InputError, match="no point field named 'nope'"):
+        cellproj.render(path, scalars="Temp", opacity_field="nope", size=(32, 32))
+
+
 @pytest.mark.parametrize("path, reader, field", [
     ("vtkdata_post_tets/post_tets.vtu", "vtkXMLUnstructuredGridReader", "Pressure"),
     ("nasa_bluntfin/bluntfin.vts", "vtkXMLStructuredGridReader", "Density"),
