@@ -71,9 +71,114 @@ def from_vtk(data, field=None, cell_data="cells"):
     return mesh
 
 
+# VTK's linear cell types and their point counts, for PyVista's legacy `cells` layout [n, ids..., n, ...].
+_CELL_SIZES = {1: 1, 3: 2, 5: 3, 8: 4, 9: 4, 10: 4, 11: 8, 12: 8, 13: 6, 14: 5}
+
+
+def _legacy_offsets(cells, types, name):
+    """The offsets (n_cells + 1) and connectivity of PyVista's legacy `cells` array, checked against
+    `celltypes`: InputError naming the first cell whose count disagrees."""
+    cells = _np.asarray(cells, dtype=_np.int64).reshape(-1)
+    n = len(types)
+    sizes = _np.array([_CELL_SIZES.get(int(t), -1) for t in _np.unique(types)])
+    if (sizes > 0).all():  # every type of a fixed size: the layout follows from the types
+        lookup = _np.zeros(256, dtype=_np.int64)
+        for t, k in _CELL_SIZES.items():
+            lookup[t] = k
+        counts = lookup[_np.asarray(types, dtype=_np.int64)]
+    else:  # polygons, polyhedra: walk the counts
+        counts, at = _np.empty(n, dtype=_np.int64), 0
+        for c in range(n):
+            if at >= len(cells):
+                raise InputError("%s: cells: ends at cell %d of %d" % (name, c, n))
+            counts[c], at = cells[at], at + 1 + cells[at]
+    heads = _np.concatenate([[0], _np.cumsum(counts + 1)[:-1]]).astype(_np.int64)
+    need = int(heads[-1] + counts[-1] + 1) if n else 0
+    if need != len(cells):
+        raise InputError("%s: cells: %d entries, where the legacy layout [n, ids...] of celltypes' %d cells "
+                         "needs %d" % (name, len(cells), n, need))
+    wrong = _np.nonzero(cells[heads] != counts)[0]
+    if wrong.size:
+        c = int(wrong[0])
+        raise InputError("%s: cells: cell %d has %d points in the legacy layout, its celltype %d has %d"
+                         % (name, c, cells[heads[c]], types[c], counts[c]))
+    keep = _np.ones(len(cells), dtype=bool)
+    keep[heads] = False
+    return _np.concatenate([[0], _np.cumsum(counts)]), cells[keep]
+
+
+def _vtk_of(data, name):
+    """A VTK data object made of a PyVista-like dataset's arrays (its attributes, no PyVista needed):
+    an UnstructuredGrid or ExplicitStructuredGrid (points, celltypes, and cell_connectivity with
+    offset, or the legacy cells), a StructuredGrid (points, dimensions), a MultiBlock (blocks by
+    key), with their point_data and cell_data."""
+    from vtkmodules.util.numpy_support import numpy_to_vtk, numpy_to_vtkIdTypeArray
+    from vtkmodules.vtkCommonCore import vtkPoints
+    from vtkmodules.vtkCommonDataModel import (vtkCellArray, vtkCompositeDataSet, vtkMultiBlockDataSet,
+                                               vtkStructuredGrid, vtkUnstructuredGrid)
+    if hasattr(data, "keys") and not hasattr(data, "points"):  # a MultiBlock: its blocks in order
+        blocks = vtkMultiBlockDataSet()
+        for k, key in enumerate(data.keys()):
+            block = data[key]
+            if block is None:
+                continue
+            blocks.SetBlock(k, _vtk_of(block, "%s block '%s'" % (name, key)))
+            blocks.GetMetaData(k).Set(vtkCompositeDataSet.NAME(), str(key))
+        return blocks
+    points = _np.asarray(data.points, dtype=_np.float64)
+    if points.ndim != 2 or points.shape[1] != 3:
+        raise InputError("%s: points: expected an (n, 3) array, got shape %s" % (name, points.shape))
+    vtk_points = vtkPoints()
+    vtk_points.SetData(numpy_to_vtk(_np.ascontiguousarray(points), deep=1))
+    if hasattr(data, "celltypes"):
+        types = _np.asarray(data.celltypes, dtype=_np.uint8)
+        if hasattr(data, "cell_connectivity") and hasattr(data, "offset"):
+            offsets = _np.asarray(data.offset, dtype=_np.int64)
+            connectivity = _np.asarray(data.cell_connectivity, dtype=_np.int64)
+            if len(offsets) != len(types) + 1:
+                raise InputError("%s: offset has %d entries for %d cells (expected n_cells + 1)"
+                                 % (name, len(offsets), len(types)))
+        else:
+            offsets, connectivity = _legacy_offsets(data.cells, types, name)
+        cell_array = vtkCellArray()
+        cell_array.SetData(numpy_to_vtkIdTypeArray(_np.ascontiguousarray(offsets), deep=1),
+                           numpy_to_vtkIdTypeArray(_np.ascontiguousarray(connectivity), deep=1))
+        out = vtkUnstructuredGrid()
+        out.SetPoints(vtk_points)
+        out.SetCells(numpy_to_vtk(_np.ascontiguousarray(types), deep=1), cell_array)
+    elif hasattr(data, "dimensions"):
+        dims = [int(d) for d in data.dimensions]
+        if len(dims) != 3 or _np.prod(dims) != len(points):
+            raise InputError("%s: dimensions %s do not hold its %d points" % (name, dims, len(points)))
+        out = vtkStructuredGrid()
+        out.SetDimensions(*dims)
+        out.SetPoints(vtk_points)
+    else:
+        raise InputError("%s: has points but neither celltypes (an unstructured grid) nor dimensions (a "
+                         "structured grid)" % name)
+    for attributes, target in ((getattr(data, "point_data", {}), out.GetPointData()),
+                               (getattr(data, "cell_data", {}), out.GetCellData())):
+        for key in attributes.keys():
+            array = numpy_to_vtk(_np.ascontiguousarray(_np.asarray(attributes[key])), deep=1)
+            array.SetName(str(key))
+            target.AddArray(array)
+    return out
+
+
+def from_pyvista(data, field=None, cell_data="cells"):
+    """A cellproj.Mesh from a PyVista dataset, taken by its attributes (PyVista need not be
+    installed): UnstructuredGrid and ExplicitStructuredGrid (the legacy `cells` [n, ids...] or the
+    new cell_connectivity and offset), StructuredGrid (points and dimensions: a curvilinear grid's
+    hexahedra), MultiBlock (its blocks, assembled as VTK's readers' output is), with point_data and
+    cell_data as cellproj.read gives a file's. The arrays become VTK objects of this machine's
+    VTK, read as from_vtk reads them: the same mesh as the file."""
+    return from_vtk(_vtk_of(data, "%s.%s" % (type(data).__module__, type(data).__name__)), field, cell_data)
+
+
 def as_mesh(data, cell_data="cells"):
     """A cellproj.Mesh from whatever holds a mesh: a cellproj.Mesh, a file's path, a VTK data object,
-    a meshio mesh, or a PyVista dataset (taken as the VTK object it is)."""
+    a PyVista dataset (the VTK object it is, or any object with PyVista's attributes), or a meshio
+    mesh."""
     if isinstance(data, Mesh):
         return data
     if isinstance(data, (str, _os.PathLike)):
@@ -82,6 +187,9 @@ def as_mesh(data, cell_data="cells"):
         return from_vtk(data, cell_data=cell_data)
     if hasattr(data, "points") and isinstance(getattr(data, "cells", None), list) and hasattr(data, "point_data"):
         return from_meshio(data, cell_data=cell_data)
+    if hasattr(data, "points") and (hasattr(data, "celltypes") or hasattr(data, "dimensions")) or (
+            hasattr(data, "keys") and hasattr(data, "n_blocks")):
+        return from_pyvista(data, cell_data=cell_data)
     raise InputError("cellproj: cannot render a %s.%s: give a file's path, a cellproj.Mesh, a VTK data object "
                      "(vtkUnstructuredGrid, vtkStructuredGrid, vtkMultiBlockDataSet, ...), a PyVista dataset or a "
                      "meshio mesh" % (type(data).__module__, type(data).__name__))
