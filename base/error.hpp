@@ -19,6 +19,14 @@ class InputError : public Error {
   using Error::Error;
 };
 
+// A valid request this version does not draw yet (two settings that do not go together yet, a
+// feature of one method asked of another): an InputError to the CLI (exit 1), Python's
+// UnsupportedError.
+class UnsupportedError : public InputError {
+ public:
+  using InputError::InputError;
+};
+
 // A resource the machine lacks: an OpenGL context, a back end not built in. The CLI exits 3.
 class ResourceError : public Error {
  public:

@@ -173,11 +173,11 @@ bool is_permutation_of(const std::vector<std::int64_t>& order, std::int64_t n) {
 void check_two_fields(const ProjectionOptions& options, const FramePlan& plan) {
   const std::string refused = "setting 'opacity-field' (the extinction from another field than the colour) ";
   if (traits(options.method).gouraud)
-    throw InputError(refused + "is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " +
-                     name_of(options.method));
-  if (!plan.software) throw InputError(refused + "is drawn by setting 'backend' software");
+    throw UnsupportedError(refused + "is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " +
+                           name_of(options.method));
+  if (!plan.software) throw UnsupportedError(refused + "is drawn by setting 'backend' software");
   if (plan.small_cells == SmallCells::splat)
-    throw InputError(refused + "is not drawn by splats: use setting 'small-cells' draw");
+    throw UnsupportedError(refused + "is not drawn by splats: use setting 'small-cells' draw");
 }
 
 }  // namespace

@@ -167,9 +167,14 @@ PYBIND11_MODULE(_cellproj, m) {
   m.doc() = "cellproj: direct volume rendering of unstructured and curvilinear grids (docs/python.md)";
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
   static py::exception<ResourceError> resource_error(m, "ResourceError", PyExc_RuntimeError);
+  // A valid request not drawn yet: an InputError, and Python's NotImplementedError.
+  static py::exception<UnsupportedError> unsupported_error(
+      m, "UnsupportedError", py::make_tuple(input_error, py::handle(PyExc_NotImplementedError)));
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
+    } catch (const UnsupportedError& e) {
+      unsupported_error(python_words(e.what()).c_str());
     } catch (const InputError& e) {
       input_error(python_words(e.what()).c_str());
     } catch (const ResourceError& e) {

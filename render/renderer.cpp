@@ -54,8 +54,8 @@ void add_splats(RenderReport& r, SmallCells mode, double threshold, const SplatC
 // InputError for a field whose extinction comes from another field, where `renderer` cannot draw it.
 void refuse_opacity_field(const Field& field, const std::string& renderer) {
   if (field.opacity)
-    throw InputError("setting 'opacity-field' (the extinction from field '" + field.opacity_name +
-                     "') is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " + renderer);
+    throw UnsupportedError("setting 'opacity-field' (the extinction from field '" + field.opacity_name +
+                           "') is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " + renderer);
 }
 
 class ProjectionMode final : public Renderer {

@@ -43,7 +43,8 @@ ColorBar color_bar(const PreparedScene& p, const glm::dvec3& background) {
 
 void refuse_iso_on_log_scale(const RenderSettings& s, bool log_scale) {
   if (log_scale && (!s.iso.surfaces.empty() || s.mode == RenderMode::layers))
-    throw InputError("setting 'iso' does not go with setting 'log' yet: its values would be read as logs of the field");
+    throw UnsupportedError(
+        "setting 'iso' does not go with setting 'log' yet: its values would be read as logs of the field");
 }
 
 ColorBar color_bar(const PreparedScene& p, const RenderSettings& s, const glm::dvec3& background,
@@ -103,7 +104,7 @@ std::string scene_field(const Scene& s) { return s.log_scale ? log_spec(s.field,
 
 LoadedMesh first_key_frame(SeriesPlayer& player, Scene& scene) {
   if (!scene.opacity_field.empty())
-    throw InputError(
+    throw UnsupportedError(
         where(scene.source, "setting 'opacity-field' draws one mesh's two fields, not a time series' yet"));
   const SeriesFrame frame = player.frame_at(player.series().frames.front().time);
   scene.field = player.field_name(), scene.log_scale = false, scene.log_floor.reset();  // its log is in the name

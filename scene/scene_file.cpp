@@ -10,6 +10,7 @@
 
 #include "base/error.hpp"
 #include "base/file_status.hpp"
+#include "io/read_mesh.hpp"
 #include "render/settings_table.hpp"
 
 namespace fs = std::filesystem;
@@ -158,7 +159,18 @@ Scene load_scene(const std::string& path) {
   try {
     j = nlohmann::json::parse(in);
   } catch (const nlohmann::json::exception& e) {  // parse_error, and out_of_range: a number beyond a double
-    throw InputError(where(path, std::string("not valid JSON: ") + e.what()));
+    // The parser's words without its own tag ("[json.exception.parse_error.101] "); a mesh given
+    // where a scene was expected said so.
+    const std::string what = e.what(),
+                      said = what.substr(what.find("] ") == std::string::npos ? 0 : what.find("] ") + 2);
+    bool mesh = false;
+    try {
+      mesh = !format_for(path).empty();
+    } catch (const InputError&) {
+    }
+    throw InputError(
+        where(path, mesh ? "is a mesh file, not a scene (a JSON file, docs/scene.md): render the mesh itself"
+                         : "not valid JSON (a scene file, docs/scene.md): " + said));
   }
   return scene_from_json(j, path, fs::path(path).parent_path().string());
 }

@@ -4,13 +4,14 @@
     image = cellproj.render("mesh.vtu", cmap="viridis", view="+x", legend=True)
     image.save("out.png")        # or show it: a Jupyter cell displays `image`
 """
-from ._cellproj import (Camera, InputError, Legend, Mesh, ResourceError, TransferFunction, _keywords_doc, _render,
-                        colormaps, read, read_exr, render_scene, write_png)
+from ._cellproj import (Camera, InputError, Legend, Mesh, ResourceError, TransferFunction, UnsupportedError,
+                        _keywords_doc, _render, colormaps, read, read_exr, render_scene, write_png)
 from ._data import as_mesh, from_meshio, from_pyvista, from_vtk
 from ._image import _BLACK, Image, Movie
 
-__all__ = ["Camera", "Image", "InputError", "Legend", "Mesh", "Movie", "ResourceError", "TransferFunction", "as_mesh",
-           "colormaps", "from_meshio", "from_pyvista", "from_vtk", "read", "read_exr", "render", "render_scene", "write_png"]
+__all__ = ["Camera", "Image", "InputError", "Legend", "Mesh", "Movie", "ResourceError", "TransferFunction",
+           "UnsupportedError", "as_mesh", "colormaps", "from_meshio", "from_pyvista", "from_vtk", "read", "read_exr",
+           "render", "render_scene", "write_png"]
 
 import json as _json
 

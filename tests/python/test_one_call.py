@@ -53,8 +53,10 @@ def test_an_opacity_field_of_its_own_as_the_cli_draws_it(tmp_path):
     log = cellproj.render(path, scalars="Pres", log_scale=True, opacity_field="Temp", size=(64, 48))
     assert np.array_equal(log, cli_npy(tmp_path, path, "--field", "Pres", "--log", "--opacity-field", "Temp",
                                        "--size", "64x48"))
-    with pytest.raises(cellproj.InputError, match="opacity_field= .* is drawn by method= exact, pt-breakpoints or "
-                                                  "pt-analytic, not by slicing"):
+    assert issubclass(cellproj.UnsupportedError, cellproj.InputError)
+    assert issubclass(cellproj.UnsupportedError, NotImplementedError)
+    with pytest.raises(cellproj.UnsupportedError, match="opacity_field= .* is drawn by method= exact, pt-breakpoints "
+                                                        "or pt-analytic, not by slicing"):
         cellproj.render(path, scalars="Temp", opacity_field="V", method="slicing", size=(32, 32))
     with pytest.raises(cellproj.InputError, match="no point field named 'nope'"):
         cellproj.render(path, scalars="Temp", opacity_field="nope", size=(32, 32))
@@ -83,6 +85,17 @@ def test_one_picture_from_a_path_a_mesh_and_a_vtk_object(path, reader, field):
     from_vtk = cellproj.render(data, field=field, size=(72, 64))
     assert from_vtk.stats["cells"] == from_path.stats["cells"], data.GetClassName()
     assert np.array_equal(from_vtk, from_path), data.GetClassName()
+
+
+def test_render_scene_of_what_is_not_a_scene_says_what_it_is(tmp_path):
+    """A mesh or a text given to render_scene: what it is, never the JSON parser's raw message."""
+    with pytest.raises(cellproj.InputError, match="default.vtu: is a mesh file, not a scene .*: render the mesh itself"):
+        cellproj.render_scene(DEFAULT)
+    notes = tmp_path / "notes.json"
+    notes.write_text("mesh: run.vtu\n")
+    with pytest.raises(cellproj.InputError, match=r"notes.json: not valid JSON \(a scene file, docs/scene.md\): "
+                                                  r"parse error at line 1, column 1"):
+        cellproj.render_scene(str(notes))
 
 
 def test_anything_else_is_an_input_error_naming_its_type():
