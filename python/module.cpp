@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 #include <nlohmann/json.hpp>
 
@@ -110,6 +111,42 @@ Image render_frame(const Renderer& renderer, const Volume& volume, const Field& 
   py::gil_scoped_release release;
   tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
   return arena.execute([&] { return renderer.render(volume, field, tf, camera, size, report); });
+}
+
+// A mesh clipped by planes (mesh/clip.hpp, the CLI's --clip), owning its arrays, with the chosen
+// field (and its opacity field) carried to the cut points: what a clipped picture renders, its
+// colours and framing still the whole mesh's.
+struct ClippedVolume {
+  Mesh mesh;
+  std::unique_ptr<Volume> volume;
+  Field field;
+};
+ClippedVolume clipped(const NumpyMesh& numpy, const Field& f, const std::vector<std::vector<double>>& planes) {
+  std::vector<ClipPlane> clip;
+  for (const std::vector<double>& p : planes) {
+    if (p.size() != 6)
+      throw InputError("setting 'clip': expected planes of 6 numbers (x, y, z, nx, ny, nz), got " +
+                       std::to_string(p.size()));
+    clip.push_back({{p[0], p[1], p[2]}, {p[3], p[4], p[5]}});
+    check(clip.back());
+  }
+  const MeshView& v = numpy.view();
+  Mesh whole;
+  whole.source = v.source;
+  for (std::int64_t q = 0; q < v.n_points; ++q)
+    for (int k = 0; k < 3; ++k) whole.points.push_back(v.point(q)[k]);
+  whole.connectivity.assign(v.connectivity, v.connectivity + v.offsets[v.n_cells]);
+  whole.offsets.assign(v.offsets, v.offsets + v.n_cells + 1);
+  whole.types.assign(v.types, v.types + v.n_cells);
+  whole.fields.push_back({f.name, std::vector<double>(f.values, f.values + f.size), "the field rendered"});
+  if (f.opacity && f.opacity_name != f.name)
+    whole.fields.push_back({f.opacity_name, std::vector<double>(f.opacity, f.opacity + f.size), "its opacity field"});
+  ClippedVolume out{clip_mesh(whole, clip), nullptr, {}};
+  if (out.mesh.n_cells() == 0)
+    throw InputError(where(v.source, "nothing of the mesh is on the kept side of the clipping planes"));
+  out.volume = std::make_unique<Volume>(out.mesh.view(), VolumeOptions{/*trusted: the mesh was validated*/ true});
+  out.field = field_of(out.mesh, f.name, f.opacity ? f.opacity_name : "");
+  return out;
 }
 
 glm::dvec3 vec(const std::vector<double>& v, const char* what) {
@@ -346,7 +383,7 @@ PYBIND11_MODULE(_cellproj, m) {
          std::pair<int, int> size, const std::string& field, const std::string& method, int threads, bool log,
          std::optional<double> log_floor, const std::string& cmap, std::optional<std::pair<double, double>> clim,
          const std::string& opacity, double depth, const std::string& view, const std::string& opacity_field,
-         const py::kwargs& kwargs) {
+         const std::vector<std::vector<double>>& clip, const py::kwargs& kwargs) {
         const RenderOptions options = options_from(method, kwargs);
         const RenderSettings settings = settings_from(options);
         const std::unique_ptr<Renderer> renderer = make_renderer(settings);
@@ -375,7 +412,10 @@ PYBIND11_MODULE(_cellproj, m) {
         add_camera_moves(kwargs, moves);
         camera = moved(*camera, moves);
         RenderReport report;
-        Image image = render_frame(*renderer, mesh.volume(), f, *tf, *camera, image_size, threads, &report);
+        std::optional<ClippedVolume> cut;  // colours and framing above are the whole mesh's, as the CLI's
+        if (!clip.empty()) cut = clipped(mesh, f, clip);
+        Image image = render_frame(*renderer, cut ? *cut->volume : mesh.volume(), cut ? cut->field : f, *tf, *camera,
+                                   image_size, threads, &report);
         nlohmann::json stats = report_json(report);
         stats.update({{"method", renderer->name()},
                       {"field", f.name},
@@ -395,7 +435,8 @@ PYBIND11_MODULE(_cellproj, m) {
       py::arg("size") = std::pair<int, int>{512, 512}, py::arg("field") = "", py::arg("method") = "pt-breakpoints",
       py::arg("threads") = 0, py::arg("log") = false, py::arg("log_floor") = py::none(), py::arg("cmap") = "",
       py::arg("clim") = py::none(), py::arg("opacity") = "", py::arg("depth") = 0.0, py::arg("view") = "",
-      py::arg("opacity_field") = "", "cellproj.render's door: the image, its --stats as JSON and its legend");
+      py::arg("opacity_field") = "", py::arg("clip") = std::vector<std::vector<double>>{},
+      "cellproj.render's door: the image, its --stats as JSON and its legend");
   m.def("_keywords_doc", &keywords_doc);
 
   m.def(

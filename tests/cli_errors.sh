@@ -475,7 +475,7 @@ printf '822222212 # a garbled count\n6\n0 0 0 1\n' >"$tmp/count.off"
 expect 1 "count.off: its header declares 822222212 points and 6 cells: reading them needs about [0-9.]+ GiB, more than the 4.0 GiB allowed by --max-memory" -- info "$tmp/count.off" --max-memory 4
 # A number beyond a double in a scene: named as the scene file's JSON error, like a syntax error.
 echo '{"mesh": "box.vtu", "camera": {"height": 8e898}}' >"$tmp/big.json"
-expect 1 "big.json: not valid JSON: .*number overflow" -- render "$tmp/big.json"
+expect 1 "big.json: not valid JSON .*number overflow" -- render "$tmp/big.json"
 # Partitioning (issue 18): bad counts, a missing mesh, a malformed index; a partition index renders
 # in one process as well (the single-machine path).
 expect 2 "bricks" -- partition "$tmp/box.vtu" --bricks 0 -o "$tmp/parts"

@@ -87,6 +87,23 @@ def test_one_picture_from_a_path_a_mesh_and_a_vtk_object(path, reader, field):
     assert np.array_equal(from_vtk, from_path), data.GetClassName()
 
 
+def test_clip_gives_the_clis_picture(tmp_path):
+    """clip= is the CLI's --clip: one plane as 6 numbers or (point, normal), or a list of them."""
+    lo, hi = cellproj.read(DEFAULT).bounds
+    c = [0.5 * (a + b) for a, b in zip(lo, hi)]
+    one = cellproj.render(DEFAULT, clip=(*c, 1, 0.3, 0), size=(64, 48))
+    text = ",".join("%.17g" % v for v in (*c, 1, 0.3, 0))
+    assert np.array_equal(one, cli_npy(tmp_path, DEFAULT, "--clip", text, "--size", "64x48"))
+    assert not np.array_equal(one, cellproj.render(DEFAULT, size=(64, 48)))
+    two = cellproj.render(DEFAULT, clip=[(c, (1, 0.3, 0)), (*c, 0, 0, 1)], size=(64, 48))
+    z = ",".join("%.17g" % v for v in (*c, 0, 0, 1))
+    assert np.array_equal(two, cli_npy(tmp_path, DEFAULT, "--clip", text, "--clip", z, "--size", "64x48"))
+    with pytest.raises(cellproj.InputError, match=r"clip= takes planes"):
+        cellproj.render(DEFAULT, clip=(1, 2, 3))
+    with pytest.raises(cellproj.InputError, match=r"clip=.*normal"):
+        cellproj.render(DEFAULT, clip=(0, 0, 0, 0, 0, 0))
+
+
 def test_render_scene_of_what_is_not_a_scene_says_what_it_is(tmp_path):
     """A mesh or a text given to render_scene: what it is, never the JSON parser's raw message."""
     with pytest.raises(cellproj.InputError, match="default.vtu: is a mesh file, not a scene .*: render the mesh itself"):
