@@ -9,7 +9,7 @@ packages=(
   build-essential cmake pkg-config python3 clang-format
   libvtk9-dev libcgal-dev libtet1.5-dev libglm-dev libtbb-dev libnetcdf-dev zlib1g-dev libpng-dev libopenmpi-dev openmpi-bin
   libosmesa6-dev libfreetype-dev fonts-dejavu-core libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
-  pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-meshio python3-vtk9
+  pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-meshio python3-vtk9 python3-pip python3-setuptools python3-wheel
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev ffmpeg libopenexr-dev
 )
 [ "${1:-}" = "--fuzz" ] && packages+=(clang libclang-rt-dev)
