@@ -57,6 +57,8 @@ int main(int argc, char** argv) {
          alpha_sum / (96 * 96));
   const double white[3] = {1, 1, 1};
   CHECK(cp_image_write_png(image, out, white));
+  cp_image_release(image); /* the calls below that fail set it to NULL */
+  image = NULL;
 
   /* Colour by temperature, extinction by density: pt-breakpoints is exact for two fields too. */
   CHECK(cp_mesh_set_field(mesh, "density", density, 8));
