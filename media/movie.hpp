@@ -21,7 +21,8 @@ struct MovieOptions {
 };
 
 // FFmpeg's own messages below errors silenced (its filters' notes on each palette). FFmpeg's log
-// level belongs to the process, so only a front end that owns the process calls this.
+// level belongs to the process, so only a front end calls this: the CLI at its start, Python when
+// a movie is made.
 void quiet_ffmpeg_messages();
 
 class MovieWriter {

@@ -102,6 +102,9 @@ void bind_pictures(py::module_& m) {
 
   py::class_<MovieWriter>(m, "_MovieWriter")
       .def(py::init([](const std::string& path, double fps) {
+             // FFmpeg's notes on each GIF palette are noise in a notebook: its log level (the
+             // process's) is set to errors when a movie is made (docs/python.md).
+             quiet_ffmpeg_messages();
              MovieOptions o;
              o.frames_per_second = fps;
              return std::make_unique<MovieWriter>(path, o);
