@@ -171,13 +171,10 @@ bool is_permutation_of(const std::vector<std::int64_t>& order, std::int64_t n) {
 // Colour by one field and extinction by another: drawn by the methods that integrate each pixel's
 // segment (a cell ray cast over its tetrahedra), not by Gouraud corners, OpenGL or splats.
 void check_two_fields(const ProjectionOptions& options, const FramePlan& plan) {
-  const std::string refused = "setting 'opacity-field' (the extinction from another field than the colour) ";
-  if (traits(options.method).gouraud)
-    throw UnsupportedError(refused + "is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " +
-                           name_of(options.method));
-  if (!plan.software) throw UnsupportedError(refused + "is drawn by setting 'backend' software");
+  if (traits(options.method).gouraud) throw two_fields_refused("", name_of(options.method));
+  if (!plan.software) throw two_fields_refused("", "an OpenGL back end (setting 'backend' software draws it)");
   if (plan.small_cells == SmallCells::splat)
-    throw UnsupportedError(refused + "is not drawn by splats: use setting 'small-cells' draw");
+    throw two_fields_refused("", "splats (setting 'small-cells' draw draws the small cells)");
 }
 
 }  // namespace

@@ -78,8 +78,8 @@ class ProjectionRenderer {
   // One frame of the point field `scalar` (n_points values). Threads: those of the task arena it
   // is called from. With `opacity` (n_points values) the colour comes from `scalar` and the
   // extinction from `opacity` (optics/two_fields.hpp): each cell is then ray cast over its
-  // canonical tetrahedra by pt-analytic or pt-breakpoints in software; InputError for the other
-  // methods, the OpenGL back ends and splats.
+  // canonical tetrahedra by pt-analytic or pt-breakpoints in software; UnsupportedError for the
+  // other methods, the OpenGL back ends and splats.
   Image render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
                const ProjectionOptions& options = {}, ProjectionStats* stats = nullptr,
                const double* opacity = nullptr) const;

@@ -208,4 +208,14 @@ Mesh clip_mesh(const Mesh& mesh, const std::vector<ClipPlane>& planes, ClipRepor
   return compact(std::move(current), weights ? &sources : nullptr, weights);
 }
 
+Mesh clip_mesh_kept(const Mesh& mesh, const std::vector<ClipPlane>& planes, const std::string& source,
+                    ClipReport* report) {
+  Mesh kept = clip_mesh(mesh, planes, report);
+  if (kept.n_cells() == 0)
+    throw InputError(where(source,
+                           "nothing of the mesh is on the kept side of the clipping planes (each keeps the "
+                           "side its normal points away from)"));
+  return kept;
+}
+
 }  // namespace cellproj

@@ -47,5 +47,9 @@ struct ClipWeights {
 // the clipped points are made from mesh's.
 Mesh clip_mesh(const Mesh& mesh, const std::vector<ClipPlane>& planes, ClipReport* report = nullptr,
                ClipWeights* weights = nullptr);
+// The same, InputError naming `source` when nothing of the mesh is on the kept side (a picture of
+// one mesh: nothing would show).
+Mesh clip_mesh_kept(const Mesh& mesh, const std::vector<ClipPlane>& planes, const std::string& source,
+                    ClipReport* report = nullptr);
 
 }  // namespace cellproj

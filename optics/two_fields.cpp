@@ -7,23 +7,11 @@ namespace cellproj {
 TwoFieldTransfer::TwoFieldTransfer(const TransferFunction& tf)
     : color(tf.color_points(), {{0.0, 0.0}}), extinction({{0.0, glm::dvec3(1.0)}}, tf.extinction_points()) {}
 
-namespace detail {
-
-std::size_t breakpoints_inside(const TransferFunction& tf, double a, double b) {
-  const double lo = std::min(a, b), hi = std::max(a, b);
-  const std::size_t first = tf.breakpoints_not_above(lo), last = tf.breakpoints_below(hi);
-  return last > first ? last - first : 0;
+UnsupportedError two_fields_refused(const std::string& opacity_field, const std::string& by) {
+  const std::string from = opacity_field.empty() ? "another field than the colour" : "field '" + opacity_field + "'";
+  return UnsupportedError("setting 'opacity-field' (the extinction from " + from +
+                          ") is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " + by);
 }
-
-double* breakpoint_fractions(const TransferFunction& tf, double a, double b, double* cuts) {
-  const auto& bp = tf.breakpoints();
-  const double lo = std::min(a, b), hi = std::max(a, b);
-  for (std::size_t k = tf.breakpoints_not_above(lo), last = tf.breakpoints_below(hi); k < last; ++k)
-    *cuts++ = (bp[k] - a) / (b - a);  // b != a: a breakpoint lies strictly between them
-  return cuts;
-}
-
-}  // namespace detail
 
 SegmentLight integrate_two_fields_reference(const TwoFieldTransfer& tf, double length, double u0, double u1, double s0,
                                             double s1) {

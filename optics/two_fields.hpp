@@ -6,8 +6,9 @@
 // integral of Williams and Max (MWSC section 4), exact.
 #include <algorithm>
 #include <cstddef>
-#include <vector>
+#include <string>
 
+#include "base/error.hpp"
 #include "optics/segment_integral.hpp"
 #include "optics/transfer_function.hpp"
 
@@ -44,38 +45,59 @@ SegmentLight integrate_two_fields_reference(const TwoFieldTransfer& tf, double l
 SegmentLight integrate_two_fields_closed_form(const TwoFieldTransfer& tf, double length, double u0, double u1,
                                               double s0, double s1, bool cut = true);
 
+// The refusal of two fields where `by` (a method, a back end, splats) cannot draw them: the
+// opacity field named when known.
+UnsupportedError two_fields_refused(const std::string& opacity_field, const std::string& by);
+
 // ---- implementation
 
 namespace detail {
-// How many breakpoints of tf lie strictly between a and b (either order).
-std::size_t breakpoints_inside(const TransferFunction& tf, double a, double b);
-// The fractions of [0, 1] where a field running from a to b meets them, written to `cuts`;
-// returns one past the last written.
-double* breakpoint_fractions(const TransferFunction& tf, double a, double b, double* cuts);
+// The breakpoints of one half met by a field running from a (front) to b (back), in the order the
+// field meets them, and the breakpoint interval each piece between them lies in (as
+// for_each_linear_piece walks them: piece_in, no search per piece).
+class HalfCuts {
+ public:
+  HalfCuts(const TransferFunction& tf, double a, double b)
+      : tf_(tf),
+        a_(a),
+        b_(b),
+        first_(tf.breakpoints_not_above(std::min(a, b))),
+        last_(tf.breakpoints_below(std::max(a, b))),
+        up_(b >= a) {}
+  bool more() const { return first_ + passed_ < last_; }  // a breakpoint ahead
+  // The fraction of the segment at the next breakpoint (more() only): strictly inside, so b != a.
+  double next() const { return (tf_.breakpoints()[up_ ? first_ + passed_ : last_ - 1 - passed_] - a_) / (b_ - a_); }
+  void pass() { ++passed_; }
+  // The piece [fa, fb] of the segment, between the breakpoints passed and the next.
+  TransferFunction::Ends piece(double fa, double fb) const {
+    const std::size_t interval = up_ ? first_ + passed_ : std::max(first_, last_) - passed_;
+    return tf_.piece_in(interval, a_ + fa * (b_ - a_), a_ + fb * (b_ - a_));
+  }
+
+ private:
+  const TransferFunction& tf_;
+  double a_, b_;
+  std::size_t first_, last_;  // breakpoints first_ .. last_ - 1 lie strictly between a and b
+  bool up_;
+  std::size_t passed_ = 0;
+};
 }  // namespace detail
 
 template <class Piece>
 void for_each_two_field_piece(const TwoFieldTransfer& tf, double u0, double u1, double s0, double s1, Piece&& piece) {
-  // The cuts of both fields, merged: on the stack for the few a segment through one cell meets.
-  constexpr std::size_t kOnStack = 64;
-  const std::size_t inside =
-      detail::breakpoints_inside(tf.color, u0, u1) + detail::breakpoints_inside(tf.extinction, s0, s1);
-  double on_stack[kOnStack + 2];
-  std::vector<double> on_heap(inside > kOnStack ? inside + 2 : 0);
-  double* const cuts = inside > kOnStack ? on_heap.data() : on_stack;
-  cuts[0] = 0.0;
-  double* end = detail::breakpoint_fractions(tf.color, u0, u1, cuts + 1);
-  end = detail::breakpoint_fractions(tf.extinction, s0, s1, end);
-  std::sort(cuts + 1, end);
-  *end++ = 1.0;
-  const std::size_t n = static_cast<std::size_t>(end - cuts);
-  for (std::size_t k = 0; k + 1 < n; ++k) {
-    const double fa = cuts[k], fb = cuts[k + 1];
-    if (!(fb > fa)) continue;  // a breakpoint met by both fields at once
-    const double ua = u0 + fa * (u1 - u0), ub = u0 + fb * (u1 - u0);
-    const double sa = s0 + fa * (s1 - s0), sb = s0 + fb * (s1 - s0);
-    const TransferFunction::Ends c = tf.color.piece(ua, ub), k2 = tf.extinction.piece(sa, sb);
-    piece(TransferFunction::Ends{c.ca, c.cb, k2.ka, k2.kb}, FieldPieceCut{fa, fb});
+  // Both halves' breakpoints merged as the segment meets them (each half's in order already).
+  detail::HalfCuts color(tf.color, u0, u1), extinction(tf.extinction, s0, s1);
+  double fa = 0.0;
+  for (;;) {
+    const bool c = color.more(), e = extinction.more();
+    const double fc = c ? color.next() : 1.0, fe = e ? extinction.next() : 1.0, fb = std::min(fc, fe);
+    if (fb > fa) {  // (a breakpoint met by both fields at once makes no piece)
+      const TransferFunction::Ends ce = color.piece(fa, fb), ke = extinction.piece(fa, fb);
+      piece(TransferFunction::Ends{ce.ca, ce.cb, ke.ka, ke.kb}, FieldPieceCut{fa, fb});
+      fa = fb;
+    }
+    if (!c && !e) return;
+    (c && (!e || fc <= fe) ? color : extinction).pass();
   }
 }
 

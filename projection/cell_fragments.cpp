@@ -291,15 +291,12 @@ PixelBox CellFragments::cast_box(const std::int64_t* ids, int n, RowRange rows) 
   for (int k = 0; k < n && rays_.perspective(); ++k)
     in_front = in_front && !behind_eye(screen_.v[static_cast<std::size_t>(ids[k])].z);
   if (in_front) {
-    double x0 = INFINITY, x1 = -INFINITY, y0 = INFINITY, y1 = -INFINITY;
-    for (int k = 0; k < n; ++k) {
-      const ScreenVertex& v = screen_.v[static_cast<std::size_t>(ids[k])];
-      x0 = std::min(x0, v.x), x1 = std::max(x1, v.x), y0 = std::min(y0, v.y), y1 = std::max(y1, v.y);
-    }
+    const auto [v0, v1] =
+        vertex_box(n, [&](int k) -> const ScreenVertex& { return screen_.v[static_cast<std::size_t>(ids[k])]; });
     auto lo = [](double v, int n) { return static_cast<int>(std::clamp(std::floor(v - 0.5), 0.0, double(n))); };
     auto hi = [](double v, int n) { return static_cast<int>(std::clamp(std::ceil(v - 0.5), -1.0, double(n - 1))); };
-    box.i0 = lo(x0, rays_.width()), box.i1 = hi(x1, rays_.width());
-    box.j0 = lo(y0, rays_.height()), box.j1 = hi(y1, rays_.height());
+    box.i0 = lo(v0.x, rays_.width()), box.i1 = hi(v1.x, rays_.width());
+    box.j0 = lo(v0.y, rays_.height()), box.j1 = hi(v1.y, rays_.height());
   }
   box.j0 = std::max(box.j0, rows.begin), box.j1 = std::min(box.j1, rows.end - 1);
   return box;
@@ -342,8 +339,8 @@ void CellFragments::ray_cast_fields(const std::int64_t* ids, CellType type, RowR
       int hits = 0;
       for (int k = 0; k < parts; ++k)
         if (double t0, t1; part[k].clip.clip(r, t0, t1)) hit[hits++] = {t0, t1, &part[k]};
-      if (hits == 0) continue;
-      for (int k = 1; k < hits; ++k)  // front to back (insertion: at most kMaxTetsPerCell)
+      if (hits == 0 || emit.hidden(i, j)) continue;  // (hidden: an opaque pixel, front to back)
+      for (int k = 1; k < hits; ++k)                 // front to back (insertion: at most kMaxTetsPerCell)
         for (int m = k; m > 0 && hit[m].t0 < hit[m - 1].t0; --m) std::swap(hit[m], hit[m - 1]);
       SegmentLight acc;
       for (int k = 0; k < hits && acc.depth < kOpaqueDepth; ++k) {

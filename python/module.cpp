@@ -141,9 +141,7 @@ ClippedVolume clipped(const NumpyMesh& numpy, const Field& f, const std::vector<
   whole.fields.push_back({f.name, std::vector<double>(f.values, f.values + f.size), "the field rendered"});
   if (f.opacity && f.opacity_name != f.name)
     whole.fields.push_back({f.opacity_name, std::vector<double>(f.opacity, f.opacity + f.size), "its opacity field"});
-  ClippedVolume out{clip_mesh(whole, clip), nullptr, {}};
-  if (out.mesh.n_cells() == 0)
-    throw InputError(where(v.source, "nothing of the mesh is on the kept side of the clipping planes"));
+  ClippedVolume out{clip_mesh_kept(whole, clip, v.source), nullptr, {}};
   out.volume = std::make_unique<Volume>(out.mesh.view(), VolumeOptions{/*trusted: the mesh was validated*/ true});
   out.field = field_of(out.mesh, f.name, f.opacity ? f.opacity_name : "");
   return out;
@@ -506,9 +504,7 @@ PYBIND11_MODULE(_cellproj, m) {
             Mesh whole = p.player->cells();
             whole.points = *p.frame.points;
             whole.fields.push_back({p.player->field_name(), p.frame.field, "a time series' frame"});
-            const Mesh mesh = clip_mesh(whole, scene.clip);
-            if (mesh.n_cells() == 0)
-              throw InputError(where(path, "nothing of the mesh is on the kept side of the clipping planes"));
+            const Mesh mesh = clip_mesh_kept(whole, scene.clip, path);
             const Volume volume(mesh.view(), {/*trusted: key frames are validated*/ !p.player->points_move()});
             return to_numpy(render_frame(*renderer, volume, field_of(mesh, p.player->field_name()), p.prepared.tf,
                                          p.prepared.camera, image_size, threads));
@@ -524,10 +520,8 @@ PYBIND11_MODULE(_cellproj, m) {
           return prepare_scene(scene);
         }();
         // Clipped after preparing, as the CLI does: colours and framing are the whole mesh's.
-        const Mesh mesh =
-            scene.clip.empty() ? std::move(prepared.loaded.mesh) : clip_mesh(prepared.loaded.mesh, scene.clip);
-        if (mesh.n_cells() == 0)
-          throw InputError(where(path, "nothing of the mesh is on the kept side of the clipping planes"));
+        const Mesh mesh = scene.clip.empty() ? std::move(prepared.loaded.mesh)
+                                             : clip_mesh_kept(prepared.loaded.mesh, scene.clip, path);
         const Volume volume(mesh.view(), {/*trusted: load_mesh validated it*/ true});
         return to_numpy(render_frame(*renderer, volume, field_of(mesh, prepared.field, prepared.opacity_field),
                                      prepared.tf, prepared.camera, image_size, threads));

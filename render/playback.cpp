@@ -81,7 +81,7 @@ PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::ve
       }
       if (!clip.empty()) clipped_field = clip_weights.apply(current.field);
       const std::vector<double>& values = clip.empty() ? current.field : clipped_field;
-      const Field field{values.data(), static_cast<std::int64_t>(values.size()), player.field_name()};
+      const Field field{values.data(), static_cast<std::int64_t>(values.size()), player.field_name(), nullptr, {}};
       RenderReport report;
       Image image =
           renderer.render(*volume, field, tf, camera_of(f), size, &report, progress_of ? progress_of(f) : Progress{});

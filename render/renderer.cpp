@@ -7,6 +7,7 @@
 #include "base/timing.hpp"
 #include "frame/projection_renderer.hpp"
 #include "mesh/tetrahedralize.hpp"
+#include "optics/two_fields.hpp"
 #include "raycast/iso_layers.hpp"
 #include "raycast/iso_surfaces.hpp"
 #include "raycast/ray_reduction.hpp"
@@ -51,11 +52,9 @@ void add_splats(RenderReport& r, SmallCells mode, double threshold, const SplatC
                          std::to_string(c.refused_inverted) + " inverted) and add nothing to the picture");
 }
 
-// InputError for a field whose extinction comes from another field, where `renderer` cannot draw it.
+// UnsupportedError for a field whose extinction comes from another field, where `renderer` cannot draw it.
 void refuse_opacity_field(const Field& field, const std::string& renderer) {
-  if (field.opacity)
-    throw UnsupportedError("setting 'opacity-field' (the extinction from field '" + field.opacity_name +
-                           "') is drawn by setting 'method' exact, pt-breakpoints or pt-analytic, not by " + renderer);
+  if (field.opacity) throw two_fields_refused(field.opacity_name, renderer);
 }
 
 class ProjectionMode final : public Renderer {

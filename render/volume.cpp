@@ -53,7 +53,7 @@ std::string points_copy(const MeshView& mesh, const char* what) {
 
 Field field_of(const Mesh& mesh, const std::string& name) {
   const PointField& f = mesh.field(name);
-  return {f.values.data(), static_cast<std::int64_t>(f.values.size()), f.name};
+  return {f.values.data(), static_cast<std::int64_t>(f.values.size()), f.name, nullptr, {}};
 }
 
 Field field_of(const Mesh& mesh, const std::string& name, const std::string& opacity) {

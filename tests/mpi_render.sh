@@ -76,9 +76,10 @@ for mesh in $meshes; do
   same "$tmp/m.npy" "$tmp/${mesh}_persp_exact.npy" 1e-6 "$mesh cut in memory over 3 ranks"
   # Colour and extinction from two fields (here the one field twice): every cell is drawn over its
   # canonical tetrahedra, so bricks that cut cells leave no seam: 3 ranks give the whole mesh's picture.
-  "$exe" render "$tmp/${mesh}_persp.json" --opacity-field scalar --threads 1 --npy "$tmp/two1.npy" \
+  field=$("$py" -c "import json,sys; print(json.load(open(sys.argv[1]))['field'])" "$tmp/${mesh}_persp.json")
+  "$exe" render "$tmp/${mesh}_persp.json" --opacity-field "$field" --threads 1 --npy "$tmp/two1.npy" \
     -o "$tmp/two1.png" >/dev/null 2>&1 || fail "$mesh with --opacity-field"
-  mpi 3 render "$tmp/${mesh}_persp.json" --opacity-field scalar --threads 1 --npy "$tmp/two3.npy" \
+  mpi 3 render "$tmp/${mesh}_persp.json" --opacity-field "$field" --threads 1 --npy "$tmp/two3.npy" \
     -o "$tmp/two3.png" >/dev/null 2>&1 || fail "mpirun -np 3 $mesh with --opacity-field"
   same "$tmp/two3.npy" "$tmp/two1.npy" 1e-6 "$mesh, two fields over 3 ranks against 1 process"
 done

@@ -32,17 +32,27 @@ void expect_near(const SegmentLight& a, const SegmentLight& b, double tol) {
 
 }  // namespace
 
+// f(k, L, v) for 500 random segments of length up to `longest`, v four field values in [-0.2, 1.2]
+// (stepped()'s range and beyond it).
+template <class F>
+void random_segments(unsigned seed, double longest, F&& f) {
+  std::mt19937 rng(seed);
+  std::uniform_real_distribution<double> s(-0.2, 1.2), length(0.01, longest);
+  for (int k = 0; k < 500; ++k) {
+    const double L = length(rng), v[4] = {s(rng), s(rng), s(rng), s(rng)};
+    f(k, L, v);
+  }
+}
+
 TEST(TwoFields, OneFieldTwiceIsTheOneFieldIntegral) {
   const TransferFunction tf = stepped();
   const TwoFieldTransfer two(tf);
-  std::mt19937 rng(7);
-  std::uniform_real_distribution<double> s(-0.2, 1.2), length(0.01, 3.0);
-  for (int k = 0; k < 500; ++k) {
-    const double L = length(rng), a = s(rng), b = k % 10 == 0 ? a : s(rng);
+  random_segments(7, 3.0, [&](int k, double L, const double* v) {
+    const double a = v[0], b = k % 10 == 0 ? a : v[1];
     const SegmentLight one = integrate_segment_reference(tf, L, a, b);
     expect_near(integrate_two_fields_reference(two, L, a, b, a, b), one, 1e-13);
     expect_near(integrate_two_fields_closed_form(two, L, a, b, a, b), one, 1e-11);
-  }
+  });
 }
 
 // Extinction constant through the opacity field while the colour field runs over the extinction's
@@ -82,18 +92,14 @@ TEST(TwoFields, ColourFollowsItsOwnField) {
 }
 
 TEST(TwoFields, ClosedFormMatchesReference) {
-  const TransferFunction tf = stepped();
-  const TwoFieldTransfer two(tf);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> s(-0.2, 1.2), length(0.01, 5.0);
-  for (int k = 0; k < 500; ++k) {
-    const double L = length(rng), u0 = s(rng), u1 = s(rng), s0 = s(rng), s1 = s(rng);
-    expect_near(integrate_two_fields_closed_form(two, L, u0, u1, s0, s1),
-                integrate_two_fields_reference(two, L, u0, u1, s0, s1), 1e-11);
-  }
+  const TwoFieldTransfer two(stepped());
+  random_segments(11, 5.0, [&](int, double L, const double* v) {
+    expect_near(integrate_two_fields_closed_form(two, L, v[0], v[1], v[2], v[3]),
+                integrate_two_fields_reference(two, L, v[0], v[1], v[2], v[3]), 1e-11);
+  });
 }
 
-// A transfer function with more breakpoints than a segment's cuts hold on the stack.
+// A transfer function with hundreds of breakpoints, met by both fields along one segment.
 TEST(TwoFields, ManyBreakpoints) {
   std::vector<ColorPoint> color;
   std::vector<ExtinctionPoint> extinction;

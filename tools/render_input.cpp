@@ -144,11 +144,7 @@ Input load_input(const RenderArgs& a, const Renderer& renderer, const RenderSett
   ClipReport clipped;
   if (!scene.clip.empty() && !player) {  // after the scene is prepared: colours and framing are the whole mesh's
     // (a time series is clipped frame by frame as it plays: render/playback.hpp)
-    prepared.loaded.mesh = clip_mesh(prepared.loaded.mesh, scene.clip, &clipped);
-    if (prepared.loaded.mesh.n_cells() == 0)
-      throw InputError(where(a.input,
-                             "nothing of the mesh is on the kept side of the clipping planes (each keeps "
-                             "the side its normal points away from)"));
+    prepared.loaded.mesh = clip_mesh_kept(prepared.loaded.mesh, scene.clip, a.input, &clipped);
   }
   const MeshView cells = player ? player->view(first) : prepared.loaded.mesh.view();
   refuse_beyond_memory(renderer.estimate_bytes(size_of(cells), size), a.max_memory_gib,
