@@ -35,69 +35,80 @@ std::vector<double> animation_times(const std::string& text) {
   return times;
 }
 
+Playback::Playback(SeriesPlayer& player, SeriesFrame first, std::vector<double> times, bool prefetch,
+                   std::vector<ClipPlane> clip)
+    : player_(player),
+      times_(std::move(times)),
+      prefetch_(prefetch),
+      clip_(std::move(clip)),
+      current_(std::move(first)) {}
+
+Playback::~Playback() {
+  if (coming_.valid()) coming_.wait();  // the background thread uses the player
+}
+
+SeriesFrame Playback::make(double t) {
+  const auto start = std::chrono::steady_clock::now();
+  SeriesFrame f = player_.frame_at(t);
+  stats_.make_seconds += seconds_since(start);
+  if (!prefetch_) stats_.wait_seconds = stats_.make_seconds;
+  return f;
+}
+
+void Playback::commit_volume() {
+  // Interpolated points may fold a cell the key frames did not: validated unless they are a key frame's.
+  const bool trusted = !player_.points_move();
+  if (clip_.empty()) {
+    volume_ = std::make_unique<Volume>(player_.view(current_), VolumeOptions{trusted});
+  } else {
+    volume_.reset();  // it views the clipped mesh about to be replaced
+    Mesh whole = player_.cells();
+    whole.points = *current_.points;
+    ClipReport report;
+    clipped_mesh_ = clip_mesh(whole, clip_, &report, &clip_weights_);
+    if (clipped_mesh_.n_cells() == 0)
+      throw InputError(where(player_.series().source, "nothing of the mesh at time " + std::to_string(current_.time) +
+                                                          " is on the kept side of the clipping planes"));
+    if (stats_.volumes == 0) first_clip_ = report;
+    volume_ = std::make_unique<Volume>(clipped_mesh_.view(), VolumeOptions{trusted});
+  }
+  volume_points_ = current_.points->data();
+  ++stats_.volumes;
+}
+
+Image Playback::render_next(const Renderer& renderer, const TransferFunction& tf, const Camera& camera, ImageSize size,
+                            RenderReport* report, const Progress& progress) {
+  if (next_ >= frames()) throw InputError(where(player_.series().source, "every frame of the playback was drawn"));
+  if (next_ > 0) {  // frame next_: made in the background while the last one rendered, or now
+    const auto wait = std::chrono::steady_clock::now();
+    current_ = prefetch_ ? coming_.get() : make(times_[next_]);
+    if (prefetch_) stats_.wait_seconds += seconds_since(wait);
+  }
+  const double t_next = next_ + 1 < frames() ? times_[next_ + 1] : 0.0;
+  const bool fetch = prefetch_ && next_ + 1 < frames();
+  ++next_;
+  if (fetch) coming_ = std::async(std::launch::async, [this, t_next] { return make(t_next); });
+  if (!volume_ || current_.points->data() != volume_points_) commit_volume();  // the points moved: anew
+  if (!clip_.empty()) clipped_field_ = clip_weights_.apply(current_.field);
+  const std::vector<double>& values = clip_.empty() ? current_.field : clipped_field_;
+  const Field field{values.data(), static_cast<std::int64_t>(values.size()), player_.field_name(), nullptr, {}};
+  return renderer.render(*volume_, field, tf, camera, size, report, progress);
+}
+
 PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::vector<double>& times, bool prefetch,
                           const Renderer& renderer, const TransferFunction& tf,
                           const std::function<Camera(int)>& camera_of, ImageSize size, const FrameDone& done,
                           const std::function<Progress(int)>& progress_of, const std::vector<ClipPlane>& clip,
                           ClipReport* clipped) {
-  PlaybackStats stats;
-  const auto make = [&player, &stats](double t) {  // runs on one thread at a time
-    const auto start = std::chrono::steady_clock::now();
-    SeriesFrame f = player.frame_at(t);
-    stats.make_seconds += seconds_since(start);
-    return f;
-  };
-  std::unique_ptr<Volume> volume;
-  const double* volume_points = nullptr;
-  Mesh clipped_mesh;         // with clipping planes: the clipped cells the volume views
-  ClipWeights clip_weights;  // how a frame's field maps onto the clipped points
-  std::vector<double> clipped_field;
-  SeriesFrame current = std::move(first);
-  const int n = static_cast<int>(times.size());
-  for (int f = 0; f < n; ++f) {
-    std::future<SeriesFrame> next;
-    if (prefetch && f + 1 < n) next = std::async(std::launch::async, make, times[f + 1]);
-    try {
-      if (!volume || current.points->data() != volume_points) {  // the points moved: the cells' preparation anew
-        // Interpolated points may fold a cell the key frames did not: validate them unless they are a key frame's.
-        const bool trusted = !player.points_move();
-        if (clip.empty()) {
-          volume = std::make_unique<Volume>(player.view(current), VolumeOptions{trusted});
-        } else {
-          volume.reset();  // it views the clipped mesh about to be replaced
-          Mesh whole = player.cells();
-          whole.points = *current.points;
-          ClipReport report;
-          clipped_mesh = clip_mesh(whole, clip, &report, &clip_weights);
-          if (clipped_mesh.n_cells() == 0)
-            throw InputError(where(player.series().source, "nothing of the mesh at time " +
-                                                               std::to_string(current.time) +
-                                                               " is on the kept side of the clipping planes"));
-          if (clipped && stats.volumes == 0) *clipped = report;
-          volume = std::make_unique<Volume>(clipped_mesh.view(), VolumeOptions{trusted});
-        }
-        volume_points = current.points->data();
-        ++stats.volumes;
-      }
-      if (!clip.empty()) clipped_field = clip_weights.apply(current.field);
-      const std::vector<double>& values = clip.empty() ? current.field : clipped_field;
-      const Field field{values.data(), static_cast<std::int64_t>(values.size()), player.field_name(), nullptr, {}};
-      RenderReport report;
-      Image image =
-          renderer.render(*volume, field, tf, camera_of(f), size, &report, progress_of ? progress_of(f) : Progress{});
-      done(f, std::move(image), report);
-    } catch (...) {
-      if (next.valid()) next.wait();  // the background thread uses the player: let it finish first
-      throw;
-    }
-    if (f + 1 < n) {
-      const auto wait = std::chrono::steady_clock::now();
-      current = prefetch ? next.get() : make(times[f + 1]);
-      if (prefetch) stats.wait_seconds += seconds_since(wait);
-    }
+  Playback playback(player, std::move(first), times, prefetch, clip);
+  for (int f = 0; f < playback.frames(); ++f) {
+    RenderReport report;
+    Image image =
+        playback.render_next(renderer, tf, camera_of(f), size, &report, progress_of ? progress_of(f) : Progress{});
+    if (clipped && f == 0) *clipped = playback.first_clip();
+    done(f, std::move(image), report);
   }
-  if (!prefetch) stats.wait_seconds = stats.make_seconds;
-  return stats;
+  return playback.stats();
 }
 
 }  // namespace cellproj

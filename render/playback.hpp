@@ -3,6 +3,8 @@
 // interpolated between the two key frames around its time, while a background thread reads the
 // next key frame when needed and interpolates the next frame's field.
 #include <functional>
+#include <future>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -23,14 +25,53 @@ struct PlaybackStats {
   int volumes = 0;            // volumes committed: 1 when the points do not move, one a frame when they do
 };
 
+// A series played frame by frame, in order: frame f renders the field at times[f] while, with
+// `prefetch`, a background thread makes frame f + 1 (reads a key frame when needed and
+// interpolates). With `clip` planes every frame is clipped (mesh/clip.hpp): while the points do not
+// move, the cells once and each frame's field mapped onto the clipped points. The pictures are the
+// same bits with and without prefetch. What a front end iterates (the CLI's frames, Python's
+// cellproj.play).
+class Playback {
+ public:
+  // `first`: the frame at times[0], made by the caller. `player` must outlive the playback.
+  Playback(SeriesPlayer& player, SeriesFrame first, std::vector<double> times, bool prefetch,
+           std::vector<ClipPlane> clip = {});
+  ~Playback();  // waits for the background thread
+  Playback(const Playback&) = delete;
+  Playback& operator=(const Playback&) = delete;
+
+  int frames() const { return static_cast<int>(times_.size()); }
+  int next_frame() const { return next_; }  // the frame render_next draws; frames() when done
+  // The next frame's picture, seen by `camera`. Throws when every frame was drawn.
+  Image render_next(const Renderer& renderer, const TransferFunction& tf, const Camera& camera, ImageSize size,
+                    RenderReport* report = nullptr, const Progress& progress = {});
+  const PlaybackStats& stats() const { return stats_; }
+  const ClipReport& first_clip() const { return first_clip_; }  // what the planes did to the first frame
+
+ private:
+  SeriesFrame make(double t);  // on one thread at a time
+  void commit_volume();        // the volume of current_'s points (and the clipped cells)
+
+  SeriesPlayer& player_;
+  std::vector<double> times_;
+  bool prefetch_;
+  std::vector<ClipPlane> clip_;
+  PlaybackStats stats_;
+  ClipReport first_clip_;
+  SeriesFrame current_;
+  int next_ = 0;
+  std::unique_ptr<Volume> volume_;
+  const double* volume_points_ = nullptr;
+  Mesh clipped_mesh_;         // with clipping planes: the clipped cells the volume views
+  ClipWeights clip_weights_;  // how a frame's field maps onto the clipped points
+  std::vector<double> clipped_field_;
+  std::future<SeriesFrame> coming_;  // frame next_'s, made in the background; last: waited for first
+};
+
 using FrameDone = std::function<void(int frame, Image&& image, const RenderReport& report)>;
 
-// Renders the frames at `times` (the first given as `first`, made by the caller) with `renderer`,
-// frame f seen by camera_of(f); done(f, ...) is called in order. With `prefetch`, frame f + 1 is
-// made on a background thread while frame f renders; without it, in turn. The pictures are the
-// same bits either way. With `clip` planes every frame is clipped (mesh/clip.hpp): while the points
-// do not move, the cells once and each frame's field mapped onto the clipped points; `clipped`
-// receives what the planes did to the first frame.
+// Plays the frames at `times` (Playback) with `renderer`, frame f seen by camera_of(f), and hands
+// each to done(f, ...) in order; `clipped` receives what the planes did to the first frame.
 PlaybackStats play_series(SeriesPlayer& player, SeriesFrame first, const std::vector<double>& times, bool prefetch,
                           const Renderer& renderer, const TransferFunction& tf,
                           const std::function<Camera(int)>& camera_of, ImageSize size, const FrameDone& done,

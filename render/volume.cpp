@@ -17,11 +17,16 @@ struct Volume::State {
   ValidationReport validation;
   std::vector<std::int64_t> connectivity, offsets;  // copies, where the caller's could not serve
   std::vector<std::string> copies;
+  std::size_t id_copies = 0;  // of copies, those of the caller's ids (kept when the points move)
   std::mutex mutex;
   std::unique_ptr<ProjectionRenderer> projection[3];  // by Tetrahedralize
   std::unique_ptr<ExactRenderer> exact;
   std::unique_ptr<SliceRenderer> slicing[3];  // by Tetrahedralize
   std::atomic<int> preparations{0};
+
+  // The cells validation found inverted, re-oriented in a copy of the connectivity (made now unless
+  // the volume has one): the caller's arrays are read-only.
+  void reorient_inverted_cells();
 
   // The preparation in `slot`, made by make() under the lock on first use, counted, and its copy of
   // the mesh listed (what copied() says of it).
@@ -50,6 +55,15 @@ std::string points_copy(const MeshView& mesh, const char* what) {
          megabytes(static_cast<std::size_t>(mesh.n_points) * 3 * sizeof(double));
 }
 }  // namespace
+
+void Volume::State::reorient_inverted_cells() {
+  if (validation.inverted.empty()) return;
+  if (connectivity.empty()) connectivity.assign(mesh.connectivity, mesh.connectivity + mesh.offsets[mesh.n_cells]);
+  reorient_inverted(connectivity.data(), mesh.offsets, mesh.types, validation);
+  mesh.connectivity = connectivity.data();
+  copies.push_back("connectivity: " + std::to_string(validation.inverted_cells) +
+                   " inverted cells re-oriented in a copy, " + megabytes(connectivity.size() * sizeof(std::int64_t)));
+}
 
 Field field_of(const Mesh& mesh, const std::string& name) {
   const PointField& f = mesh.field(name);
@@ -107,16 +121,29 @@ Volume::Volume(const PointArray& points, std::int64_t n_points, const CellArrays
 void Volume::commit(const MeshView& mesh, const VolumeOptions& options) {
   State& s = *state_;
   s.mesh = mesh;
+  s.id_copies = s.copies.size();
   if (options.trusted) return;
   s.validation = validate(mesh);
-  if (s.validation.inverted.empty()) return;
-  // Inverted cells are re-oriented in a copy of the connectivity: the caller's arrays are read-only.
-  if (s.connectivity.empty()) s.connectivity.assign(mesh.connectivity, mesh.connectivity + mesh.offsets[mesh.n_cells]);
-  reorient_inverted(s.connectivity.data(), mesh.offsets, mesh.types, s.validation);
-  s.mesh.connectivity = s.connectivity.data();
-  s.copies.push_back("connectivity: " + std::to_string(s.validation.inverted_cells) +
-                     " inverted cells re-oriented in a copy, " +
-                     megabytes(s.connectivity.size() * sizeof(std::int64_t)));
+  s.reorient_inverted_cells();
+}
+
+void Volume::set_points(const PointArray& points, std::int64_t n_points, const VolumeOptions& options) {
+  State& s = *state_;
+  if (n_points != s.mesh.n_points || points.empty())
+    throw InputError(where(s.mesh.source, "the moved points: expected " + std::to_string(s.mesh.n_points) +
+                                              " points, got " + std::to_string(n_points)));
+  MeshView moved = s.mesh;
+  moved.points = points;
+  // Validated before anything is dropped: a bad set of points leaves the volume as it was.
+  ValidationReport report = options.trusted ? ValidationReport{} : validate(moved);
+  std::lock_guard<std::mutex> lock(s.mutex);
+  for (auto& p : s.projection) p.reset();
+  for (auto& p : s.slicing) p.reset();
+  s.exact.reset();
+  s.copies.resize(s.id_copies);
+  s.mesh = moved;
+  s.validation = std::move(report);
+  s.reorient_inverted_cells();
 }
 
 Volume::Volume(Volume&&) noexcept = default;

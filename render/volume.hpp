@@ -67,6 +67,12 @@ class Volume {
   // recentred on their bounding box (doubles, so huge coordinate offsets lose no precision).
   std::vector<std::string> copies() const;
 
+  // The points moved (a solver's deforming mesh): the same cells over `points` (n_points of them,
+  // as many as before), validated again unless `options.trusted`. Every preparation is dropped (face
+  // topology, boundary hull, sorter planes: remade on next use); the connectivity and its copies are
+  // kept. Not while a render of this volume runs.
+  void set_points(const PointArray& points, std::int64_t n_points, const VolumeOptions& options = {});
+
   // Throws InputError unless `field` has one finite value per point.
   void check(const Field& field) const;
 

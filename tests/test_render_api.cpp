@@ -63,6 +63,42 @@ TEST(RenderApi, ANewFieldRendersWithoutPreparingAgain) {
   EXPECT_EQ(a.rgba, test::project(m, "a", tf(), kView, 64).rgba);
 }
 
+TEST(RenderApi, MovedPointsGiveTheFreshVolumesPictureAndABadMoveLeavesTheVolumeAsItWas) {
+  // A deforming mesh: the same cells over new points render as a volume committed over them, with
+  // the preparation made again; a move that folds a cell is re-oriented, one with a NaN refused.
+  const Mesh m = box();
+  Mesh bent = m;
+  for (std::size_t i = 0; i < bent.points.size(); i += 3)
+    bent.points[i] += 0.25 * bent.points[i + 2] * bent.points[i + 2];  // x += z^2 / 4
+  Volume volume(m.view());
+  const auto renderer = make_renderer({});
+  const Image before = renderer->render(volume, field_of(m, "a"), tf(), kView, {48, 48});
+  volume.set_points(PointArray(bent.points.data()), bent.n_points());
+  RenderReport moved;
+  const Image after = renderer->render(volume, field_of(m, "a"), tf(), kView, {48, 48}, &moved);
+  EXPECT_EQ(volume.preparations(), 2) << "the points moved: the preparation is made again";
+  EXPECT_GT(moved.prepare_seconds, 0.0);
+  EXPECT_EQ(after.rgba, renderer->render(Volume(bent.view()), field_of(m, "a"), tf(), kView, {48, 48}).rgba);
+  EXPECT_NE(after.rgba, before.rgba);
+
+  Mesh mirrored = m;  // every cell inverted: re-oriented in a copy, the picture the mirror's
+  for (std::size_t i = 0; i < mirrored.points.size(); i += 3) mirrored.points[i] = -mirrored.points[i];
+  volume.set_points(PointArray(mirrored.points.data()), mirrored.n_points());
+  EXPECT_EQ(volume.validation().inverted_cells, m.n_cells());
+  Mesh fixed = mirrored;
+  reorient_inverted(fixed, validate(fixed.view()));
+  EXPECT_EQ(renderer->render(volume, field_of(m, "a"), tf(), kView, {48, 48}).rgba,
+            renderer->render(Volume(fixed.view()), field_of(m, "a"), tf(), kView, {48, 48}).rgba);
+
+  Mesh bad = bent;
+  bad.points[7] = std::nan("");
+  EXPECT_NE(error_of([&] { volume.set_points(PointArray(bad.points.data()), bad.n_points()); }).find("point 2"),
+            std::string::npos);
+  EXPECT_NE(error_of([&] { volume.set_points(PointArray(bent.points.data()), bent.n_points() - 1); }).find("expected"),
+            std::string::npos);
+  EXPECT_EQ(volume.validation().inverted_cells, m.n_cells()) << "a refused move changes nothing";
+}
+
 TEST(RenderApi, ProjectionAndExactBehindOneInterface) {
   const Mesh m = box();
   const Volume volume(m.view());
