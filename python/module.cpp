@@ -22,6 +22,9 @@
 #include "optics/colormaps.hpp"
 #include "python/numpy_mesh.hpp"
 #include "python/pictures.hpp"
+#include "python/render_call.hpp"
+#include "python/series.hpp"
+#include "render/playback.hpp"
 #include "render/renderer.hpp"
 #include "render/settings_table.hpp"
 #include "scene/camera_json.hpp"
@@ -35,137 +38,20 @@
 
 namespace py = pybind11;
 using namespace cellproj;
-using cellproj::python::from_numpy;
-using cellproj::python::Legend;
-using cellproj::python::NumpyMesh;
-using cellproj::python::to_numpy;
+using namespace cellproj::python;
 
 namespace {
 
-// A library message as Python says it: setting 'table-size' as the keyword table_size=.
-std::string python_words(const std::string& message) { return spell_settings(message, "", "=", '_'); }
-
-// The keyword arguments as render options (method=, sort=, table_size=, ...).
-// The render settings as keywords, for docstrings: one line each, from the settings table.
-std::string keywords_doc() {
-  std::string doc = "\n\nRender settings (keywords; the command line's options of the same names):\n";
-  for (const SettingRow& row : render_settings()) {
-    std::string name = row.name;
-    std::replace(name.begin(), name.end(), '-', '_');
-    doc += "  " + name + "=: " + python_words(setting_help(row)) + "\n";
-  }
-  return doc;
-}
-
-// A camera move's value as its text: numbers, a point (x, y, z), True for a switch.
-std::string move_text(const py::handle& value) {
-  if (py::isinstance<py::bool_>(value)) return "";
-  if (py::isinstance<py::tuple>(value) || py::isinstance<py::list>(value)) {
-    std::string text;
-    for (const auto& x : value) text += (text.empty() ? "" : ",") + std::string(py::str(x));
-    return text;
-  }
-  return py::str(value);
-}
-
-bool is_camera_move(const std::string& name) {
-  for (const CameraMoveRow& row : camera_moves())
-    if (name == row.name) return true;
-  return false;
-}
-
-// The camera moves among the keywords (azimuth=30, zoom=2, ...), added to `moves`; False skips a switch.
-void add_camera_moves(const py::kwargs& kwargs, CameraMoves& moves) {
-  for (const auto& [key, value] : kwargs) {
-    const std::string name = py::str(key);
-    if (!is_camera_move(name) || (py::isinstance<py::bool_>(value) && !value.cast<bool>())) continue;
-    set_camera_move(moves, name, move_text(value));
-  }
-}
-
-// `method` empty: not given (a scene's, or the default).
-RenderOptions options_from(const std::string& method, const py::kwargs& kwargs) {
-  RenderOptions o;
-  if (!method.empty()) set_option(o, "method", method);
-  for (const auto& [key, value] : kwargs) {
-    if (is_camera_move(py::str(key))) continue;                                 // camera_moves_from's
-    if (py::isinstance<py::list>(value) || py::isinstance<py::tuple>(value)) {  // a repeatable option: iso=[...]
-      for (const auto& item : value) set_option(o, py::str(key), py::str(item));
-    } else {
-      set_option(o, py::str(key), py::str(value));
-    }
-  }
-  return o;
-}
-
-ImageSize size_from(const std::pair<int, int>& size) {
-  if (size.first < 1 || size.second < 1 || size.first > 16384 || size.second > 16384)
-    throw InputError("size: expected (width, height) in [1, 16384], got (" + std::to_string(size.first) + ", " +
-                     std::to_string(size.second) + ")");
-  return {size.first, size.second};
-}
-
-// Renders on `threads` workers (0: all cores) without the GIL.
-Image render_frame(const Renderer& renderer, const Volume& volume, const Field& field, const TransferFunction& tf,
-                   const Camera& camera, ImageSize size, int threads, RenderReport* report = nullptr) {
-  py::gil_scoped_release release;
-  tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
-  return arena.execute([&] { return renderer.render(volume, field, tf, camera, size, report); });
-}
-
-// A mesh clipped by planes (mesh/clip.hpp, the CLI's --clip), owning its arrays, with the chosen
-// field (and its opacity field) carried to the cut points: what a clipped picture renders, its
-// colours and framing still the whole mesh's.
-struct ClippedVolume {
-  Mesh mesh;
-  std::unique_ptr<Volume> volume;
-  Field field;
-};
-ClippedVolume clipped(const NumpyMesh& numpy, const Field& f, const std::vector<std::vector<double>>& planes) {
-  std::vector<ClipPlane> clip;
-  for (const std::vector<double>& p : planes) {
-    if (p.size() != 6)
-      throw InputError("setting 'clip': expected planes of 6 numbers (x, y, z, nx, ny, nz), got " +
-                       std::to_string(p.size()));
-    clip.push_back({{p[0], p[1], p[2]}, {p[3], p[4], p[5]}});
-    check(clip.back());
-  }
-  const MeshView& v = numpy.view();
-  Mesh whole;
-  whole.source = v.source;
-  for (std::int64_t q = 0; q < v.n_points; ++q)
-    for (int k = 0; k < 3; ++k) whole.points.push_back(v.point(q)[k]);
-  whole.connectivity.assign(v.connectivity, v.connectivity + v.offsets[v.n_cells]);
-  whole.offsets.assign(v.offsets, v.offsets + v.n_cells + 1);
-  whole.types.assign(v.types, v.types + v.n_cells);
-  whole.fields.push_back({f.name, std::vector<double>(f.values, f.values + f.size), "the field rendered"});
-  if (f.opacity && f.opacity_name != f.name)
-    whole.fields.push_back({f.opacity_name, std::vector<double>(f.opacity, f.opacity + f.size), "its opacity field"});
-  ClippedVolume out{clip_mesh_kept(whole, clip, v.source), nullptr, {}};
-  out.volume = std::make_unique<Volume>(out.mesh.view(), VolumeOptions{/*trusted: the mesh was validated*/ true});
-  out.field = field_of(out.mesh, f.name, f.opacity ? f.opacity_name : "");
-  return out;
+// A mesh's connectivity or offsets as a read-only int64 array over the volume's own, kept alive by `self`.
+py::array ids_array(py::object self, const std::int64_t* MeshView::*ids) {
+  const MeshView& v = self.cast<const NumpyMesh&>().view();
+  const py::ssize_t n = ids == &MeshView::offsets ? v.n_cells + 1 : v.offsets[v.n_cells];
+  return read_only(py::array(py::dtype::of<std::int64_t>(), {n}, {py::ssize_t(sizeof(std::int64_t))}, v.*ids, self));
 }
 
 glm::dvec3 vec(const std::vector<double>& v, const char* what) {
   if (v.size() != 3) throw InputError(std::string(what) + ": expected 3 numbers");
   return {v[0], v[1], v[2]};
-}
-
-// The transfer function `cellproj render MESH` gives the field (scene/quick_scene.hpp): over its
-// range in the field's units, placed on a log axis when the field is on a log scale; the
-// extinction over the opacity field's values when it has one of its own.
-TransferFunction default_tf(const NumpyMesh& mesh, const Field& f, const QuickLook& look) {
-  const OpacityInput field{mesh.view(), f.values, log_scale_name(f.name)};
-  const OpacityInput opacity{mesh.view(), f.opacity};
-  const FieldTransferFunction q = quick_transfer_function(look, field, f.opacity ? &opacity : nullptr);
-  return transfer_function_from_json(q.json, "python", "", q.lo, q.hi, field.log, !f.opacity);
-}
-
-// The field `spec` of `mesh`, on a log scale when asked (mesh/field_choice.hpp).
-Field chosen_field(const NumpyMesh& mesh, const std::string& spec, bool log, std::optional<double> floor) {
-  if (floor && !log) throw InputError("setting 'log-floor' is the floor of a log scale: give setting 'log' too");
-  return mesh.field(log ? log_spec(spec, floor) : spec);
 }
 
 Camera make_camera(const std::vector<double>& eye, const std::vector<double>& target, const std::vector<double>& up,
@@ -237,6 +123,32 @@ PYBIND11_MODULE(_cellproj, m) {
           },
           "The fields, name -> components per point (1 for a scalar); field='V:x', 'V_X', 'V:magnitude' or "
           "'S:von_mises' picks a scalar of a vector or tensor, 'V' alone its magnitude")
+      .def_property_readonly(
+          "points",
+          [](const NumpyMesh& s) {
+            const MeshView& v = s.view();
+            py::array_t<double> out({py::ssize_t(v.n_points), py::ssize_t(3)});
+            auto w = out.mutable_unchecked<2>();
+            for (std::int64_t p = 0; p < v.n_points; ++p) {
+              const glm::dvec3 x = v.point(p);
+              w(p, 0) = x.x, w(p, 1) = x.y, w(p, 2) = x.z;
+            }
+            return out;
+          },
+          "The points, (N, 3) float64: a copy")
+      .def_property_readonly(
+          "connectivity", [](py::object self) { return ids_array(self, &MeshView::connectivity); },
+          "The cells' point ids, int64, read-only, no copy (inverted cells as re-oriented)")
+      .def_property_readonly(
+          "offsets", [](py::object self) { return ids_array(self, &MeshView::offsets); },
+          "Where each cell's ids start in connectivity (n_cells + 1 entries), int64, read-only, no copy")
+      .def_property_readonly(
+          "types",
+          [](py::object self) {
+            const MeshView& v = self.cast<const NumpyMesh&>().view();
+            return read_only(py::array(py::dtype::of<std::uint8_t>(), {v.n_cells}, {1}, v.types, self));
+          },
+          "The cells' VTK type codes, uint8, read-only, no copy")
       .def_property_readonly("copies", &NumpyMesh::copies, "What was copied of the caller's arrays, and why")
       .def_property_readonly("bounds",
                              [](const NumpyMesh& s) {
@@ -253,6 +165,18 @@ PYBIND11_MODULE(_cellproj, m) {
           "A field's values, read-only, without a copy: (N,) or (N, k) as stored, or the (N,) scalar a choice "
           "such as 'V:x' makes")
       .def("add_field", &NumpyMesh::add_field, py::arg("name"), py::arg("values"))
+      .def(
+          "update",
+          [](NumpyMesh& mesh, std::optional<py::array> field, std::optional<py::array> points,
+             const std::string& name) {
+            if (points) mesh.set_points(*points);
+            if (field) mesh.add_field(mesh.stored_name(name), *field);
+          },
+          py::kw_only(), py::arg("field") = py::none(), py::arg("points") = py::none(), py::arg("name") = "",
+          "A solver's next step, its arrays taken in place (float64, contiguous: no copy): field= the values of "
+          "field `name` ('' the only one; 'V:x' names V), (N,) or (N, k) as stored; the preparation is kept. "
+          "points= (N, 3): the same cells over moved points, validated; the preparation is made again on the next "
+          "render (connectivity and types are kept)")
       .def("__repr__", [](const NumpyMesh& s) {
         return "<cellproj.Mesh " + s.view().source + ": " + std::to_string(s.view().n_cells) + " cells, " +
                std::to_string(s.view().n_points) + " points>";
@@ -343,7 +267,8 @@ PYBIND11_MODULE(_cellproj, m) {
       .def("extinction", &TransferFunction::extinction);
   m.def("colormaps", &colormap_list, "The built-in colour maps, by ParaView's names");
 
-  cellproj::python::bind_pictures(m);
+  bind_pictures(m);
+  bind_series(m);
 
   py::class_<Camera>(m, "Camera")
       .def(py::init(&make_camera), py::arg("eye"), py::arg("target"), py::arg("up") = std::vector<double>{0, 0, 1},
@@ -377,64 +302,15 @@ PYBIND11_MODULE(_cellproj, m) {
 
   m.def(
       "_render",
-      [](const NumpyMesh& mesh, std::optional<TransferFunction> tf, std::optional<Camera> camera,
-         std::pair<int, int> size, const std::string& field, const std::string& method, int threads, bool log,
-         std::optional<double> log_floor, const std::string& cmap, std::optional<std::pair<double, double>> clim,
-         const std::string& opacity, double depth, const std::string& view, const std::string& opacity_field,
-         const std::vector<std::vector<double>>& clip, const py::kwargs& kwargs) {
-        const RenderOptions options = options_from(method, kwargs);
-        const RenderSettings settings = settings_from(options);
-        const std::unique_ptr<Renderer> renderer = make_renderer(settings);
-        refuse_unused(settings, options.given);
-        const ImageSize image_size = size_from(size);
-        Field f = chosen_field(mesh, field, log, log_floor);
-        if (!opacity_field.empty()) {  // the extinction's own field, never on a log scale
-          const Field o = mesh.field(opacity_field);
-          f.opacity = o.values, f.opacity_name = o.name;
-        }
-        refuse_iso_on_log_scale(settings, log);
-        const double aspect = double(image_size.width) / image_size.height;
-        if (camera && !view.empty()) throw InputError("give camera= or view=, not both");
-        if (!camera) {
-          const auto [lo, hi] = bounds(mesh.view());
-          camera = view_camera(view, lo, hi, aspect);
-        }
-        QuickLook look;  // the CLI's look of a mesh: its colour map, opacity, depth and range
-        if (!cmap.empty()) look.colormap = cmap;
-        if (!opacity.empty()) look.opacity = opacity;
-        look.depth = depth, look.range = clim;
-        if (tf && (!cmap.empty() || !opacity.empty() || depth != 0.0 || clim))
-          throw InputError("give tf= or the look keywords (cmap=, opacity=, depth=, clim=), not both");
-        if (!tf) tf = default_tf(mesh, f, look);
-        CameraMoves moves;
-        add_camera_moves(kwargs, moves);
-        camera = moved(*camera, moves);
-        RenderReport report;
-        std::optional<ClippedVolume> cut;  // colours and framing above are the whole mesh's, as the CLI's
-        if (!clip.empty()) cut = clipped(mesh, f, clip);
-        Image image = render_frame(*renderer, cut ? *cut->volume : mesh.volume(), cut ? cut->field : f, *tf, *camera,
-                                   image_size, threads, &report);
-        nlohmann::json stats = report_json(report);
-        stats.update({{"method", renderer->name()},
-                      {"field", f.name},
-                      {"cells", mesh.view().n_cells},
-                      {"width", image_size.width},
-                      {"height", image_size.height}});
-        if (f.opacity) stats["opacity_field"] = f.opacity_name;
-        // The legend of the picture, as the CLI's: over legend_range, the field's name (on a log scale,
-        // the field's own), in the field's units.
-        const auto [field_lo, field_hi] = std::minmax_element(f.values, f.values + f.size);
-        auto [lo, hi] = legend_range(*tf, *field_lo, *field_hi);
-        if (log) lo = std::pow(10.0, lo), hi = std::pow(10.0, hi);
-        const Legend legend{*tf, lo, hi, log ? log_scale_scalar(f.name) : f.name, log, false, ""};
-        return py::make_tuple(to_numpy(std::move(image)), stats.dump(), legend);
+      [](const NumpyMesh& mesh, const NumpyMesh* look, const py::kwargs& kwargs) {
+        const RenderCall call = render_call(kwargs);
+        const FramePlan plan = plan_frame(look ? *look : mesh, call);
+        auto [image, stats] = render_planned(mesh, plan, call);
+        return py::make_tuple(to_numpy(std::move(image)), stats, plan.legend, plan.tf, plan.view);
       },
-      py::arg("mesh"), py::arg("tf") = py::none(), py::arg("camera") = py::none(),
-      py::arg("size") = std::pair<int, int>{512, 512}, py::arg("field") = "", py::arg("method") = "pt-breakpoints",
-      py::arg("threads") = 0, py::arg("log") = false, py::arg("log_floor") = py::none(), py::arg("cmap") = "",
-      py::arg("clim") = py::none(), py::arg("opacity") = "", py::arg("depth") = 0.0, py::arg("view") = "",
-      py::arg("opacity_field") = "", py::arg("clip") = std::vector<std::vector<double>>{},
-      "cellproj.render's door: the image, its --stats as JSON and its legend");
+      py::arg("mesh"), py::arg("look") = py::none(),
+      "cellproj.render's door: the image, its --stats as JSON, its legend, and the transfer function and camera "
+      "(before the moves) it was drawn with; colours and framing are look's, else the mesh's");
   m.def("_keywords_doc", &keywords_doc);
 
   m.def(
@@ -483,37 +359,19 @@ PYBIND11_MODULE(_cellproj, m) {
         // A time series (the scene's mesh a .pvd, a pattern, or an Exodus file given a time): the
         // field at `time`, interpolated between key frames, as `cellproj render --time`.
         if (time || is_series_path(scene.mesh)) {
-          struct Played {
-            std::unique_ptr<SeriesPlayer> player;
-            PreparedScene prepared;
-            SeriesFrame frame;
-          };
-          const Played p = [&] {
-            py::gil_scoped_release release;
-            TimeSeries series = list_series(scene.mesh, scene.reader);
-            const double t = time ? *time : series.frames.front().time;
-            locate(series, t);
-            auto player =
-                std::make_unique<SeriesPlayer>(std::move(series), scene_field(scene), key_frame_reader(scene.reader));
-            LoadedMesh first = first_key_frame(*player, scene);
-            PreparedScene prepared = prepare_scene(scene, std::move(first));
-            SeriesFrame frame = player->frame_at(t);
-            return Played{std::move(player), std::move(prepared), std::move(frame)};
-          }();
-          if (!scene.clip.empty()) {  // the frame clipped, as the CLI's playback clips it
-            Mesh whole = p.player->cells();
-            whole.points = *p.frame.points;
-            whole.fields.push_back({p.player->field_name(), p.frame.field, "a time series' frame"});
-            const Mesh mesh = clip_mesh_kept(whole, scene.clip, path);
-            const Volume volume(mesh.view(), {/*trusted: key frames are validated*/ !p.player->points_move()});
-            return to_numpy(render_frame(*renderer, volume, field_of(mesh, p.player->field_name()), p.prepared.tf,
-                                         p.prepared.camera, image_size, threads));
-          }
-          const Volume volume(p.player->view(p.frame),
-                              {/*trusted: key frames are validated*/ !p.player->points_move()});
-          const Field f{p.frame.field.data(), static_cast<std::int64_t>(p.frame.field.size()), p.player->field_name(),
-                        nullptr, ""};
-          return to_numpy(render_frame(*renderer, volume, f, p.prepared.tf, p.prepared.camera, image_size, threads));
+          py::gil_scoped_release release;
+          TimeSeries series = list_series(scene.mesh, scene.reader);
+          const std::vector<double> times{time ? *time : series.frames.front().time};
+          locate(series, times[0]);
+          SeriesPlayer player(std::move(series), scene_field(scene), key_frame_reader(scene.reader));
+          const PreparedScene prepared = prepare_scene(scene, first_key_frame(player, scene));
+          // One frame played as the CLI plays it (clipped with the scene's planes).
+          Playback playback(player, player.frame_at(times[0]), times, false, scene.clip);
+          tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
+          Image image =
+              arena.execute([&] { return playback.render_next(*renderer, prepared.tf, prepared.camera, image_size); });
+          py::gil_scoped_acquire acquire;
+          return to_numpy(std::move(image));
         }
         PreparedScene prepared = [&] {
           py::gil_scoped_release release;

@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "base/error.hpp"
+#include "mesh/field_choice.hpp"
 #include "mesh/validate.hpp"
 
 namespace cellproj::python {
@@ -47,6 +48,18 @@ bool ids_32bit(py::array& connectivity, py::array& offsets, std::vector<std::str
   return false;
 }
 
+// Points as they are when float64 or float32 with packed x, y, z in each row; else `points` becomes
+// a float64 copy (said in `conversions`).
+PointArray points_of(py::array& points, std::vector<std::string>& conversions) {
+  const bool row_packed = points.ndim() == 2 && points.strides(1) == points.itemsize() && points.strides(0) > 0;
+  if (py::isinstance<py::array_t<double>>(points) && row_packed)
+    return PointArray::strided(static_cast<const double*>(points.data()), points.strides(0));
+  if (py::isinstance<py::array_t<float>>(points) && row_packed)
+    return PointArray::strided(static_cast<const float*>(points.data()), points.strides(0));
+  points = as<double>(points, "points", conversions);
+  return PointArray(static_cast<const double*>(points.data()));
+}
+
 }  // namespace
 
 NumpyMesh::NumpyMesh(py::array points, py::array connectivity, py::array offsets, py::array types, py::object scalars,
@@ -64,17 +77,7 @@ NumpyMesh::NumpyMesh(py::array points, py::array connectivity, py::array offsets
                                        std::to_string(types.shape(0) + 1) + "), got " +
                                        std::to_string(offsets.shape(0)) +
                                        " (VTK's layout: cell c is connectivity[offsets[c]:offsets[c+1]])"));
-  // Points as they are when float64 or float32 with packed x, y, z in each row.
-  PointArray point_array;
-  const bool row_packed = points.ndim() == 2 && points.strides(1) == points.itemsize() && points.strides(0) > 0;
-  if (py::isinstance<py::array_t<double>>(points) && row_packed)
-    point_array = PointArray::strided(static_cast<const double*>(points.data()), points.strides(0));
-  else if (py::isinstance<py::array_t<float>>(points) && row_packed)
-    point_array = PointArray::strided(static_cast<const float*>(points.data()), points.strides(0));
-  else {
-    points = as<double>(points, "points", conversions_);
-    point_array = PointArray(static_cast<const double*>(points.data()));
-  }
+  const PointArray point_array = points_of(points, conversions_);
   if (types.dtype().kind() != 'u' && types.dtype().kind() != 'i')
     throw InputError(where(source, "types: expected VTK cell type codes (uint8), got dtype " + dtype_name(types)));
   if (!py::isinstance<py::array_t<std::uint8_t>>(types)) {
@@ -104,8 +107,8 @@ NumpyMesh::NumpyMesh(py::array points, py::array connectivity, py::array offsets
   }
 }
 
-NumpyMesh::NumpyMesh(std::shared_ptr<const Mesh> read) : read_(std::move(read)) {
-  volume_ = std::make_unique<Volume>(read_->view(), VolumeOptions{/*trusted: load_mesh validated it*/ true});
+NumpyMesh::NumpyMesh(std::shared_ptr<const Mesh> read, bool trusted) : read_(std::move(read)) {
+  volume_ = std::make_unique<Volume>(read_->view(), VolumeOptions{trusted});
   fields_.add(*volume_, *read_);
 }
 
@@ -123,6 +126,21 @@ void NumpyMesh::add_field(const std::string& name, py::array values) {
   arrays_[name] = v;
 }
 
+void NumpyMesh::set_points(py::array points) {
+  const std::int64_t n = view().n_points;
+  if (!points || points.ndim() != 2 || points.shape(0) != n || points.shape(1) != 3)
+    throw InputError(where(view().source, "points: expected shape (" + std::to_string(n) + ", 3), the mesh's points"));
+  std::vector<std::string> conversions;
+  const PointArray p = points_of(points, conversions);
+  volume_->set_points(p, n);  // validated: a refused move leaves the mesh as it was
+  moved_points_ = points;
+  for (std::string& c : conversions) conversions_.push_back(std::move(c));
+}
+
+std::string NumpyMesh::stored_name(const std::string& spec) const {
+  return choose_field(fields_.shapes(), spec, view().source).field;
+}
+
 py::array NumpyMesh::field_array(const std::string& spec, py::handle owner) const {
   const std::vector<FieldShape> shapes = fields_.shapes();
   const auto stored = std::find_if(shapes.begin(), shapes.end(), [&](const FieldShape& f) { return f.name == spec; });
@@ -131,6 +149,10 @@ py::array NumpyMesh::field_array(const std::string& spec, py::handle owner) cons
   py::array a = k == 1 ? py::array(py::dtype::of<double>(), {f.size}, {sizeof(double)}, f.values, owner)
                        : py::array(py::dtype::of<double>(), {f.size, py::ssize_t(k)},
                                    {py::ssize_t(k * sizeof(double)), py::ssize_t(sizeof(double))}, f.values, owner);
+  return read_only(a);
+}
+
+py::array read_only(py::array a) {
   py::detail::array_proxy(a.ptr())->flags &= ~py::detail::npy_api::NPY_ARRAY_WRITEABLE_;
   return a;
 }

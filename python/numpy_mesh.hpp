@@ -16,6 +16,9 @@ namespace cellproj::python {
 
 namespace py = pybind11;
 
+// `a` marked read-only (a view of arrays the volume reads).
+py::array read_only(py::array a);
+
 class NumpyMesh {
  public:
   // Points (N, 3) float64 or float32 with rows at any stride; connectivity and offsets int64 or
@@ -23,7 +26,8 @@ class NumpyMesh {
   // of them. Other dtypes and non-contiguous arrays are converted, and copies() says so.
   NumpyMesh(py::array points, py::array connectivity, py::array offsets, py::array types, py::object scalars,
             std::string source);
-  explicit NumpyMesh(std::shared_ptr<const Mesh> read);  // from cellproj.read
+  // A reader's mesh (cellproj.read), validated there unless `trusted` is false.
+  explicit NumpyMesh(std::shared_ptr<const Mesh> read, bool trusted = true);
 
   const Volume& volume() const { return *volume_; }
   const MeshView& view() const { return volume_->mesh(); }
@@ -34,10 +38,16 @@ class NumpyMesh {
   py::array field_array(const std::string& spec, py::handle owner) const;
   void add_field(const std::string& name, py::array values);  // (N,) or (N, k)
   std::vector<std::string> copies() const;                    // what the module and the volume copied
+  // The points moved: the same cells over `points` (N, 3), taken as the constructor takes them,
+  // validated; every preparation made again on the next render.
+  void set_points(py::array points);
+  // The stored field a scalar choice reads ('V' of 'V:x'); "" the only one.
+  std::string stored_name(const std::string& spec) const;
 
  private:
   std::shared_ptr<const Mesh> read_;         // a reader's mesh, or null
   std::vector<py::array> keep_;              // the arrays the volume reads
+  py::array moved_points_;                   // set_points' array, which the volume reads instead
   std::map<std::string, py::array> arrays_;  // the caller's field arrays, kept alive
   FieldSet fields_;
   std::vector<std::string> conversions_;
