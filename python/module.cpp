@@ -87,10 +87,13 @@ PYBIND11_MODULE(_cellproj, m) {
       keywords_doc();
   m.doc() = "cellproj: direct volume rendering of unstructured and curvilinear grids (docs/python.md)";
   static py::exception<InputError> input_error(m, "InputError", PyExc_ValueError);
+  input_error.attr("__doc__") = "Bad input: a file, an array, a keyword or a value, named with what is wrong";
   static py::exception<ResourceError> resource_error(m, "ResourceError", PyExc_RuntimeError);
+  resource_error.attr("__doc__") = "Not enough of a resource: memory, or a back end this build does not have";
   // A valid request not drawn yet: an InputError, and Python's NotImplementedError.
   static py::exception<UnsupportedError> unsupported_error(
       m, "UnsupportedError", py::make_tuple(input_error, py::handle(PyExc_NotImplementedError)));
+  unsupported_error.attr("__doc__") = "A valid request this version does not draw yet";
   py::register_exception_translator([](std::exception_ptr p) {
     try {
       if (p) std::rethrow_exception(p);
@@ -112,8 +115,10 @@ PYBIND11_MODULE(_cellproj, m) {
            py::arg("scalars") = py::none(), py::arg("name") = "numpy arrays",
            "points (N, 3) float64/float32; connectivity, offsets (n_cells + 1) int64/int32; types uint8 VTK "
            "codes; scalars: one array (N,) or a dict name -> array")
-      .def_property_readonly("n_points", [](const NumpyMesh& s) { return s.view().n_points; })
-      .def_property_readonly("n_cells", [](const NumpyMesh& s) { return s.view().n_cells; })
+      .def_property_readonly(
+          "n_points", [](const NumpyMesh& s) { return s.view().n_points; }, "How many points")
+      .def_property_readonly(
+          "n_cells", [](const NumpyMesh& s) { return s.view().n_cells; }, "How many cells")
       .def_property_readonly(
           "fields",
           [](const NumpyMesh& s) {
@@ -164,7 +169,9 @@ PYBIND11_MODULE(_cellproj, m) {
           py::arg("name") = "",
           "A field's values, read-only, without a copy: (N,) or (N, k) as stored, or the (N,) scalar a choice "
           "such as 'V:x' makes")
-      .def("add_field", &NumpyMesh::add_field, py::arg("name"), py::arg("values"))
+      .def("add_field", &NumpyMesh::add_field, py::arg("name"), py::arg("values"),
+           "Adds (or replaces) a field: values (N,) or (N, k) for k components, one row per point, read in place "
+           "when float64 and contiguous")
       .def(
           "update",
           [](NumpyMesh& mesh, std::optional<py::array> field, std::optional<py::array> points,
@@ -259,20 +266,25 @@ PYBIND11_MODULE(_cellproj, m) {
           "extinction opacity= names: auto (faint at the field's background value, scaled so the mesh is neither "
           "an opaque slab nor a haze), ramp, reverse, flat, sigmoid, geometric or 'S=DEPTH,...'; depth= fixes the "
           "largest optical depth across the mesh's diagonal (0: auto's, or 20)")
-      .def("color",
-           [](const TransferFunction& tf, double s) {
-             const glm::dvec3 c = tf.color(s);
-             return py::make_tuple(c.r, c.g, c.b);
-           })
-      .def("extinction", &TransferFunction::extinction);
+      .def(
+          "color",
+          [](const TransferFunction& tf, double s) {
+            const glm::dvec3 c = tf.color(s);
+            return py::make_tuple(c.r, c.g, c.b);
+          },
+          py::arg("s"), "The colour (r, g, b) at field value s")
+      .def("extinction", &TransferFunction::extinction, py::arg("s"),
+           "The extinction coefficient at field value s (per unit length)");
   m.def("colormaps", &colormap_list, "The built-in colour maps, by ParaView's names");
 
   bind_pictures(m);
   bind_series(m);
 
-  py::class_<Camera>(m, "Camera")
+  py::class_<Camera>(m, "Camera", "A camera: where the eye is, what it looks at, and how it projects")
       .def(py::init(&make_camera), py::arg("eye"), py::arg("target"), py::arg("up") = std::vector<double>{0, 0, 1},
-           py::arg("projection") = "perspective", py::arg("fov_y") = 30.0, py::arg("height") = 2.0)
+           py::arg("projection") = "perspective", py::arg("fov_y") = 30.0, py::arg("height") = 2.0,
+           "eye, target and up as (x, y, z); projection 'perspective' (fov_y: the vertical field of view in "
+           "degrees) or 'orthographic' (height: the view's height in the mesh's units)")
       .def_static(
           "framing",
           [](const NumpyMesh& mesh, const std::string& view, double aspect) {
@@ -295,10 +307,13 @@ PYBIND11_MODULE(_cellproj, m) {
           },
           "The camera moved as ParaView moves it: moved(azimuth=30, elevation=20, roll=0, zoom=2, dolly=1.5, "
           "focus=(x, y, z), perspective=40 or True, parallel=True); angles in degrees")
-      .def_property_readonly("eye", [](const Camera& c) { return py::make_tuple(c.eye.x, c.eye.y, c.eye.z); })
-      .def_property_readonly("target",
-                             [](const Camera& c) { return py::make_tuple(c.target.x, c.target.y, c.target.z); })
-      .def_property_readonly("up", [](const Camera& c) { return py::make_tuple(c.up.x, c.up.y, c.up.z); });
+      .def_property_readonly(
+          "eye", [](const Camera& c) { return py::make_tuple(c.eye.x, c.eye.y, c.eye.z); }, "The eye's position")
+      .def_property_readonly(
+          "target", [](const Camera& c) { return py::make_tuple(c.target.x, c.target.y, c.target.z); },
+          "The point looked at")
+      .def_property_readonly(
+          "up", [](const Camera& c) { return py::make_tuple(c.up.x, c.up.y, c.up.z); }, "The up direction");
 
   m.def(
       "_render",

@@ -72,11 +72,13 @@ void bind_pictures(py::module_& m) {
            "range=(lo, hi) in the field's units (mesh.field(name).min(), .max()); log=True for a transfer function "
            "made for a log scale (labels the decades); unit='K' titles it 'title [K]'; horizontal=True puts the bar in "
            "a strip below the picture")
-      .def_readwrite("title", &Legend::title)
-      .def_readwrite("unit", &Legend::unit)
-      .def_readwrite("horizontal", &Legend::horizontal)
-      .def_property_readonly("range", [](const Legend& l) { return std::make_pair(l.lo, l.hi); })
-      .def_readonly("log", &Legend::log);
+      .def_readwrite("title", &Legend::title, "The legend's title (the field's name unless given)")
+      .def_readwrite("unit", &Legend::unit, "The unit printed after the title, in brackets")
+      .def_readwrite("horizontal", &Legend::horizontal, "Across the bottom of the picture instead of at its right")
+      .def_property_readonly(
+          "range", [](const Legend& l) { return std::make_pair(l.lo, l.hi); },
+          "(lo, hi): the field's values at the legend's ends, in the field's units")
+      .def_readonly("log", &Legend::log, "Whether the legend's axis is a log scale");
 
   m.def(
       "write_png",

@@ -129,16 +129,21 @@ void bind_series(py::module_& m) {
              py::gil_scoped_release release;
              return std::make_unique<Series>(path, o);
            }),
-           py::arg("path"), py::arg("cell_data") = "cells")
+           py::arg("path"), py::arg("cell_data") = "cells",
+           "Lists the series at `path` (cellproj.read_series); cell_data as cellproj.read's")
       .def_property_readonly("times", &Series::times, "The key frames' times, increasing")
-      .def_property_readonly("source", [](const Series& s) { return s.listed().source; })
-      .def_property_readonly("files",
-                             [](const Series& s) {
-                               std::vector<std::string> files;
-                               for (const KeyFrame& k : s.listed().frames) files.push_back(k.path);
-                               return files;
-                             })
-      .def("__len__", [](const Series& s) { return s.listed().frames.size(); })
+      .def_property_readonly(
+          "source", [](const Series& s) { return s.listed().source; }, "The .pvd, pattern or Exodus file")
+      .def_property_readonly(
+          "files",
+          [](const Series& s) {
+            std::vector<std::string> files;
+            for (const KeyFrame& k : s.listed().frames) files.push_back(k.path);
+            return files;
+          },
+          "Each key frame's file")
+      .def(
+          "__len__", [](const Series& s) { return s.listed().frames.size(); }, "How many key frames")
       .def("__getitem__", &Series::key_frame, py::arg("index"), "Key frame `index` read whole, every field")
       .def("at", &Series::at, py::arg("time"), py::arg("field") = "",
            "The mesh at `time`: the field (a scalar choice such as 'V:x') and, when they move, the points "

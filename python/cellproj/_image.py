@@ -53,9 +53,11 @@ class Movie:
     legend; every frame must have the first one's size. A movie left by an exception is removed."""
 
     def __init__(self, path, fps=24.0):
+        """A movie at `path` (.mp4 or .gif), `fps` frames per second."""
         self._writer = _MovieWriter(_os.fspath(path), fps)
 
     def add(self, image):
+        """Encodes `image` (a cellproj.Image, or an (H, W, 4) array over black) as the next frame."""
         background = getattr(image, "background", _BLACK)
         if background is None:
             raise ValueError("Movie.add: a movie has no alpha; render with a background= colour")
@@ -64,6 +66,7 @@ class Movie:
 
     @property
     def frames(self):
+        """How many frames were added."""
         return self._writer.frames
 
     def close(self):

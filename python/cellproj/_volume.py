@@ -25,6 +25,7 @@ class Volume:
              "log_floor", "view", "field", "scalars", "size"}
 
     def __init__(self, data, *, cell_data="cells", **keywords):
+        """`data` as render() takes it (cell_data= as read's); `keywords` render()'s, for every picture."""
         self.mesh = as_mesh(data, cell_data)
         self._keywords = keywords
         self._fixed = None  # the transfer function and camera (before the moves) of the look
