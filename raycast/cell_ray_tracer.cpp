@@ -152,6 +152,19 @@ glm::dvec3 CellRayTracer::interpolate(const std::vector<glm::dvec3>& per_point, 
          w[2] * per_point[t[3]];
 }
 
+glm::dvec3 CellRayTracer::face_normal(std::uint32_t tet, const glm::dvec3& x) const {
+  const Tet& t = tets_[tet];
+  const glm::dvec3 p[4] = {points_(t[0]), points_(t[1]), points_(t[2]), points_(t[3])};
+  const glm::dvec3 w = barycentric(p, x);
+  const double weight[4] = {1.0 - w[0] - w[1] - w[2], w[0], w[1], w[2]};
+  int opposite = 0;  // the vertex whose weight is nearest 0: x is on (or nearest) the face without it
+  for (int k = 1; k < 4; ++k)
+    if (std::abs(weight[k]) < std::abs(weight[opposite])) opposite = k;
+  const glm::dvec3 a = p[(opposite + 1) % 4], b = p[(opposite + 2) % 4], c = p[(opposite + 3) % 4];
+  const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
+  return glm::dot(n, a - p[opposite]) >= 0.0 ? n : -n;  // away from the vertex opposite
+}
+
 double CellRayTracer::value(std::uint32_t tet, const double* scalar, const glm::dvec3& x) const {
   const Tet& t = tets_[tet];
   const glm::dvec3 p[4] = {points_(t[0]), points_(t[1]), points_(t[2]), points_(t[3])};

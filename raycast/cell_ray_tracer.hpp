@@ -77,6 +77,10 @@ class CellRayTracer {
   // point_gradients interpolated linearly in tetrahedron `tet` at x (recentred, as the rays).
   glm::dvec3 interpolate(const std::vector<glm::dvec3>& per_point, std::uint32_t tet, const glm::dvec3& x) const;
 
+  // The unit normal of the face of tetrahedron `tet` nearest x (recentred, as the rays): where x is
+  // on the tetrahedron's boundary, the face it lies on. Oriented outwards.
+  glm::dvec3 face_normal(std::uint32_t tet, const glm::dvec3& x) const;
+
   std::int64_t tetrahedra() const { return static_cast<std::int64_t>(tets_.size()); }
   std::int64_t dropped_degenerate() const { return dropped_; }
   const double* points() const { return points_.xyz.data(); }  // recentred on the bounding box

@@ -123,7 +123,10 @@ glm::dvec3 surface_normal(const CellRayTracer& tracer, const double* scalar, con
     const double length = glm::length(g);
     if (length > 0 && std::isfinite(length)) return g / length;
   }
-  return -ray.dir;
+  // The field is flat there: constant cells (cell data) meet V only across the face between two
+  // cells, a flat field on V begins at a face. That face is the surface.
+  const glm::dvec3 n = tracer.face_normal(c.tet, ray.origin + c.t * ray.dir);
+  return std::isfinite(n.x + n.y + n.z) ? n : -ray.dir;
 }
 
 glm::dvec3 shade_layer(const glm::dvec3& base, const glm::dvec3& n, const glm::dvec3& d) {

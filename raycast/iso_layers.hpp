@@ -71,8 +71,9 @@ Image render_layers(const CellRayTracer& tracer, const double* scalar, std::int6
 
 // The unit normal of the iso-surface at crossing c: the direction of the points' gradients
 // (CellRayTracer::point_gradients) interpolated there, smooth across cells as a texture renderer's
-// gradients are; else the tetrahedron's own gradient; where both vanish (the field flat on V) it
-// faces the viewer.
+// gradients are; else the tetrahedron's own gradient; where both vanish (cell data, constant over
+// each cell, crosses V only at the face between two cells; a field flat on V) the normal of the
+// tetrahedron's face the crossing lies on.
 glm::dvec3 surface_normal(const CellRayTracer& tracer, const double* scalar, const std::vector<glm::dvec3>& gradients,
                           const IsoCrossing& c, const Ray& ray);
 

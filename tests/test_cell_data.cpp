@@ -10,6 +10,7 @@
 #include "mesh/cell_data.hpp"
 #include "mesh/generate.hpp"
 #include "mesh/geometry.hpp"
+#include "raycast/iso_layers.hpp"
 #include "render/renderer.hpp"
 #include "render/settings_table.hpp"
 #include "test_util.hpp"
@@ -137,4 +138,41 @@ TEST(CellData, AFilesCellDataIsReadEitherWay) {
   const LoadedMesh averaged = load_mesh(dir.file("m.vtu"), points);
   EXPECT_EQ(averaged.mesh.n_points(), m.n_points());
   EXPECT_TRUE(averaged.mesh.find_field("p_cell"));
+}
+
+// Cell data crosses an iso-value only where one cell meets the next: its iso-surface is the faces
+// between cells whose values straddle it (a staircase, as the solver's cells are), found by the
+// layers and the exact renderer's surfaces and shaded by the face's normal, not drawn flat.
+TEST(CellData, AnIsoValueBetweenTwoCellsIsTheirSharedFaceShadedByItsNormal) {
+  Mesh m = make_box(2, 1, 1, glm::dvec3(0), glm::dvec3(2, 1, 1), false);  // two hexahedra, shared face x = 1
+  m.cell_fields.push_back({"c", {0.0, 1.0}, "cell data", 1});
+  apply_cell_data(m, CellData::cells);
+  const Camera camera = test::perspective({3.5, -2.2, 2.4}, {1.0, 0.5, 0.5}, 40);
+  const int n = 48;
+  const CellRayTracer tracer(m.view());
+  const double* values = test::field_values(m, "c");
+  const LayerDepths d = layer_depths(tracer, values, 0.5, iso_tolerance(0.5, 0.0, 1.0), camera, n, n, 1);
+  LayerOptions o;
+  o.iso = 0.5, o.layers = {1};
+  const glm::dvec3 base(0.9, 0.6, 0.3);
+  const Image img = render_layers(tracer, values, m.n_points(), test::constant_tf(1.0, base), camera, n, n, o);
+  int on_face = 0;
+  for (int j = 0; j < n; ++j)
+    for (int i = 0; i < n; ++i) {
+      const std::size_t p = static_cast<std::size_t>(j) * n + i;
+      const Ray ray = PixelRays(camera, n, n).ray(i + 0.5, j + 0.5);
+      // Where the ray meets the plane x = 1 inside the face, it crosses 0.5 once, there.
+      const double t = (1.0 - ray.origin.x) / ray.dir.x;
+      const glm::dvec3 hit = ray.origin + t * ray.dir;
+      const bool inside = hit.y > 0.02 && hit.y < 0.98 && hit.z > 0.02 && hit.z < 0.98;
+      const bool outside = hit.y < -0.02 || hit.y > 1.02 || hit.z < -0.02 || hit.z > 1.02;
+      if (!inside && !outside) continue;  // near the face's edges: either
+      ASSERT_EQ(d.count[p], inside ? 1 : 0) << i << "," << j;
+      if (!inside) continue;
+      ++on_face;
+      EXPECT_NEAR(d.t[p], t, 1e-9 * (1.0 + t));
+      const glm::dvec3 expect = shade_layer(base, {1.0, 0.0, 0.0}, ray.dir);
+      for (int c = 0; c < 3; ++c) EXPECT_NEAR(img.pixel(i, j)[c], expect[c], 1e-6) << i << "," << j;
+    }
+  EXPECT_GT(on_face, 100);
 }

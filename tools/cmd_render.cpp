@@ -151,8 +151,9 @@ int run_render(const RenderArgs& given) {
   if (const PointField* f = prepared.loaded.mesh.find_field(prepared.field);
       f && f->per_cell && (!settings.iso.surfaces.empty() || settings.mode == RenderMode::layers))
     warn(prepared.field +
-         " is cell data drawn constant over each cell: it takes an iso-value only on the faces between cells, where "
-         "no iso-surface is drawn; setting 'cell-data' points averages it to the points, whose iso-surfaces are");
+         " is cell data drawn constant over each cell: its iso-surfaces are the faces between cells whose values "
+         "straddle the iso-value, a staircase of the cells; setting 'cell-data' points averages it to the points for "
+         "a smooth surface");
   const double load_seconds = seconds_since(t_load);
 
   FrameWriter writer(paths, png_format(a, scene, bounds(prepared.loaded.mesh)),
