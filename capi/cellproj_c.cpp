@@ -8,7 +8,6 @@
 #include <optional>
 #include <string>
 
-#include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include "base/error.hpp"
@@ -247,7 +246,7 @@ cp_status cp_renderer_set(cp_renderer* renderer, const char* option, const char*
 cp_status cp_renderer_set_threads(cp_renderer* renderer, int threads) {
   CP_NEED("cp_renderer_set_threads", renderer);
   return guarded([&] {
-    if (threads < 0 || threads > 1024) throw InputError("cp_renderer_set_threads: expected 0 to 1024 threads");
+    worker_threads(threads);  // checked now
     renderer->threads = threads;
   });
 }
@@ -279,7 +278,7 @@ cp_status cp_render_two_fields(const cp_renderer* renderer, const cp_mesh* mesh,
       values.opacity = opacity.values, values.opacity_name = opacity.name;
     }
     const std::unique_ptr<Renderer> r = make_renderer(settings_from(renderer->options));
-    tbb::task_arena arena(renderer->threads > 0 ? renderer->threads : tbb::info::default_concurrency());
+    tbb::task_arena arena(worker_threads(renderer->threads));
     Image img = arena.execute([&] {
       return r->render(*mesh->volume, values, tf->tf, camera->camera, {width, height});
     });

@@ -84,6 +84,9 @@ int main(int argc, char** argv) {
     ++failures, fprintf(stderr, "render_c: an out-of-range id gave '%s'\n", cp_last_error());
   if (cp_renderer_set(exact, "sort", "mpvo") != CP_ERROR_INPUT || !strstr(cp_last_error(), "does not apply"))
     ++failures, fprintf(stderr, "render_c: an unused option gave '%s'\n", cp_last_error());
+  if (cp_renderer_set_threads(projection, 1000000000) != CP_ERROR_INPUT ||
+      !strstr(cp_last_error(), "setting 'threads'"))
+    ++failures, fprintf(stderr, "render_c: a billion threads gave '%s'\n", cp_last_error());
   if (cp_camera_move(camera, "zoom", "-2") != CP_ERROR_INPUT || !strstr(cp_last_error(), "setting 'zoom'"))
     ++failures, fprintf(stderr, "render_c: a negative zoom gave '%s'\n", cp_last_error());
   if (cp_mesh_set_field(mesh, "short", temperature, 7) != CP_ERROR_INPUT)

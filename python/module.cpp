@@ -11,7 +11,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <tbb/info.h>
 #include <tbb/task_arena.h>
 #include <glm/geometric.hpp>
 
@@ -331,8 +330,9 @@ PYBIND11_MODULE(_cellproj, m) {
   m.def(
       "render_scene",
       [](const std::string& path, std::optional<std::pair<int, int>> size, const std::string& field,
-         const std::string& view, const std::string& method, int threads, std::optional<double> time, bool log,
-         std::optional<double> log_floor, const py::kwargs& kwargs) {
+         const std::string& view, const std::string& method, const py::object& threads_arg, std::optional<double> time,
+         bool log, std::optional<double> log_floor, const py::kwargs& kwargs) {
+        const int threads = threads_of(threads_arg);
         Scene scene = load_scene(path);
         // Several volumes are drawn by the exact renderer, its default there (render/volume_set.hpp).
         RenderOptions options = options_from(method, kwargs);
@@ -365,7 +365,7 @@ PYBIND11_MODULE(_cellproj, m) {
           const VolumeScene volumes(
               scene, [](const SceneVolume& v) { return load_mesh(v.mesh, v.reader); },
               volume_given ? std::optional<bool>(settings.iso.volume) : std::nullopt);
-          tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
+          tbb::task_arena arena(threads);
           Image image =
               arena.execute([&] { return render_volumes(volumes.entries(), settings, volumes.camera(), image_size); });
           py::gil_scoped_acquire acquire;
@@ -382,7 +382,7 @@ PYBIND11_MODULE(_cellproj, m) {
           const PreparedScene prepared = prepare_scene(scene, first_key_frame(player, scene));
           // One frame played as the CLI plays it (clipped with the scene's planes).
           Playback playback(player, player.frame_at(times[0]), times, false, scene.clip);
-          tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
+          tbb::task_arena arena(threads);
           Image image =
               arena.execute([&] { return playback.render_next(*renderer, prepared.tf, prepared.camera, image_size); });
           py::gil_scoped_acquire acquire;

@@ -14,6 +14,9 @@ std::string dtype_name(const py::array& a) { return py::str(a.dtype()).cast<std:
 // `a` as a C-contiguous array of T, converting (and saying so) unless it already is one.
 template <class T>
 py::array as(py::array a, const char* what, std::vector<std::string>& conversions) {
+  if (a.dtype().kind() == 'c')  // numpy would drop the imaginary part with a warning only
+    throw InputError(std::string(what) + ": complex values (dtype " + py::str(a.dtype()).cast<std::string>() +
+                     ") are not coordinates, ids or field values");
   if (py::isinstance<py::array_t<T>>(a) && (a.flags() & py::array::c_style)) return a;
   const std::string from = dtype_name(a);
   py::array out = py::array_t<T, py::array::c_style | py::array::forcecast>::ensure(a);

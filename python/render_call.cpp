@@ -7,7 +7,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include "base/error.hpp"
@@ -84,6 +83,14 @@ Field call_field(const NumpyMesh& mesh, const RenderCall& call) {
   return f;
 }
 
+// threads= as a worker count (0: all cores), checked as the CLI's --threads before TBB sees it.
+int take_threads(py::dict& d) {
+  if (!d.contains("threads")) return worker_threads(0);
+  const py::object t = d["threads"];
+  PyDict_DelItemString(d.ptr(), "threads");
+  return threads_of(t);
+}
+
 template <class T>
 void take(py::dict& d, const char* key, T& out) {
   if (!d.contains(key)) return;
@@ -133,6 +140,23 @@ RenderOptions options_from(const std::string& method, const py::dict& kwargs) {
   return o;
 }
 
+int threads_of(const py::handle& threads) {
+  const auto refuse = [&](const char* expected) {
+    return InputError(std::string("setting 'threads': expected ") + expected + ", 0 (all cores) to " +
+                      std::to_string(kMaxThreads) + ", got " + std::string(py::repr(threads)));
+  };
+  if (py::isinstance<py::bool_>(threads)) throw refuse("an integer");
+  const py::object index = py::reinterpret_steal<py::object>(PyNumber_Index(threads.ptr()));  // numpy ints too
+  if (!index) {
+    PyErr_Clear();
+    throw refuse("an integer");
+  }
+  int overflow = 0;
+  const long long n = PyLong_AsLongLongAndOverflow(index.ptr(), &overflow);
+  if (overflow) throw refuse("a thread count");
+  return worker_threads(n);
+}
+
 ImageSize size_from(const std::pair<int, int>& size) {
   if (size.first < 1 || size.second < 1 || size.first > 16384 || size.second > 16384)
     throw InputError("size: expected (width, height) in [1, 16384], got (" + std::to_string(size.first) + ", " +
@@ -143,7 +167,7 @@ ImageSize size_from(const std::pair<int, int>& size) {
 Image render_frame(const Renderer& renderer, const Volume& volume, const Field& field, const TransferFunction& tf,
                    const Camera& camera, ImageSize size, int threads, RenderReport* report) {
   py::gil_scoped_release release;
-  tbb::task_arena arena(threads > 0 ? threads : tbb::info::default_concurrency());
+  tbb::task_arena arena(threads);
   return arena.execute([&] { return renderer.render(volume, field, tf, camera, size, report); });
 }
 
@@ -163,7 +187,7 @@ RenderCall render_call(const py::kwargs& kwargs) {
   RenderCall c;
   py::dict d(kwargs);  // a copy: the keys taken here leave the settings and moves
   take(d, "tf", c.tf), take(d, "camera", c.camera), take(d, "size", c.size), take(d, "field", c.field);
-  take(d, "method", c.method), take(d, "threads", c.threads), take(d, "log", c.log), take(d, "log_floor", c.log_floor);
+  take(d, "method", c.method), c.threads = take_threads(d), take(d, "log", c.log), take(d, "log_floor", c.log_floor);
   take(d, "cmap", c.cmap), take(d, "clim", c.clim), take(d, "opacity", c.opacity), take(d, "depth", c.depth);
   take(d, "view", c.view), take(d, "opacity_field", c.opacity_field), take(d, "clip", c.clip);
   c.rest = d;

@@ -33,7 +33,7 @@ struct RenderCall {
   std::optional<Camera> camera;
   std::pair<int, int> size{512, 512};
   std::string field, method = "pt-breakpoints";
-  int threads = 0;
+  int threads = 1;  // workers: threads_of(threads=)
   bool log = false;
   std::optional<double> log_floor;
   std::string cmap;
@@ -70,7 +70,7 @@ Field chosen_field(const NumpyMesh& mesh, const std::string& spec, bool log, std
 // extinction over the opacity field's values when it has one of its own.
 TransferFunction default_tf(const NumpyMesh& mesh, const Field& f, const QuickLook& look);
 
-// Renders on `threads` workers (0: all cores) without the GIL.
+// Renders on `threads` workers (threads_of's count) without the GIL.
 Image render_frame(const Renderer& renderer, const Volume& volume, const Field& field, const TransferFunction& tf,
                    const Camera& camera, ImageSize size, int threads, RenderReport* report = nullptr);
 
@@ -92,5 +92,8 @@ bool is_camera_move(const std::string& name);
 RenderOptions options_from(const std::string& method, const py::dict& kwargs);
 
 ImageSize size_from(const std::pair<int, int>& size);
+
+// threads= (an int: 0 all cores, up to kMaxThreads) as a worker count; InputError for anything else.
+int threads_of(const py::handle& threads);
 
 }  // namespace cellproj::python

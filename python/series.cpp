@@ -4,7 +4,6 @@
 
 #include <nlohmann/json.hpp>
 
-#include <tbb/info.h>
 #include <tbb/task_arena.h>
 
 #include "base/error.hpp"
@@ -96,7 +95,7 @@ class SeriesPlayback {
     RenderReport report;
     Image image = [&] {
       py::gil_scoped_release release;
-      tbb::task_arena arena(call_.threads > 0 ? call_.threads : tbb::info::default_concurrency());
+      tbb::task_arena arena(call_.threads);
       return arena.execute(
           [&] { return playback_->render_next(*plan_->renderer, plan_->tf, plan_->camera, plan_->size, &report); });
     }();

@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include <tbb/info.h>
+
 #include "base/check.hpp"
 #include "base/error.hpp"
 #include "base/timing.hpp"
@@ -401,6 +403,13 @@ std::unique_ptr<Renderer> mode_renderer(const RenderSettings& s) {
 }
 
 }  // namespace
+
+int worker_threads(long long asked) {
+  if (asked < 0 || asked > kMaxThreads)
+    throw InputError("setting 'threads': expected 0 (all cores) to " + std::to_string(kMaxThreads) + ", got " +
+                     std::to_string(asked));
+  return asked > 0 ? static_cast<int>(asked) : tbb::info::default_concurrency();
+}
 
 ImageSize supersampled_size(ImageSize size, int ssaa) {
   if (ssaa < 1 || ssaa > kMaxSsaa)

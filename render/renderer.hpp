@@ -44,6 +44,11 @@ class Renderer {
                       ImageSize size, RenderReport* report, const Progress& progress) const = 0;
 };
 
+// The most worker threads a front end may ask for, and the count `asked` gives (0: all cores);
+// InputError naming setting 'threads' outside [0, kMaxThreads].
+inline constexpr int kMaxThreads = 1024;
+int worker_threads(long long asked);
+
 // The largest anti-aliasing factor (RenderSettings::ssaa), and the largest side of the image it
 // renders (the image's side times ssaa).
 inline constexpr int kMaxSsaa = 16;

@@ -139,6 +139,8 @@ std::string view_names() {
 }
 
 Camera view_camera(const std::string& view, const glm::dvec3& lo, const glm::dvec3& hi, double aspect) {
+  if (!(aspect > 0.0) || !std::isfinite(aspect))
+    throw InputError("aspect: expected a finite width / height above 0, got " + std::to_string(aspect));
   if (view.empty()) return frame_box(lo, hi, Projection::Orthographic, kDefaultFrom, kDefaultUp, aspect);
   for (const NamedView& v : kViews)
     if (view == v.name) return frame_box(lo, hi, Projection::Orthographic, v.from, v.up, aspect);

@@ -256,7 +256,7 @@ Action add_render(CLI::App& app) {
                   "xx ... for a tensor), NAME_X, NAME:magnitude, NAME:von_mises (NAME alone: its magnitude)");
   add_log_options(*cmd, args->log, args->log_floor);
   add_opacity_field_option(*cmd, args->look.opacity_field);
-  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, 1024));
+  cmd->add_option("--threads", args->threads, "Worker threads (default: all cores)")->check(CLI::Range(1, kMaxThreads));
   cmd->add_option(
          "--frames", args->frames,
          "Render N frames: a turntable with --orbit and a pattern in -o, else a timing run turning the camera 1 "

@@ -282,7 +282,7 @@ Action add_sortbench(CLI::App& app) {
                   "than twice), all, or none")
       ->capture_default_str();
   cmd->add_option("--threads", args->threads, "Worker threads for the sorts' parallel phases (default: all cores)")
-      ->check(CLI::Range(1, 1024));
+      ->check(CLI::Range(1, kMaxThreads));
   add_max_memory_option(*cmd, args->reader.max_memory_gib, "Refuse meshes");
   cmd->add_flag("--check", args->check, "Count order violations with the ray-traced oracle (slow)");
   cmd->add_flag("--abuffer-every-pixel", args->abuffer_every_pixel,

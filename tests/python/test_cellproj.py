@@ -402,3 +402,27 @@ def test_a_scene_of_two_volumes_and_a_clipped_scene_equal_the_cli(tmp_path):
     whole = tmp_path / "whole.json"
     whole.write_text('{"mesh": "a.vtu", "transfer_function": %s}' % tf)
     assert not np.array_equal(clipped, cellproj.render_scene(str(whole), size=(40, 32)))
+
+
+def test_thread_counts_are_checked_as_the_clis_before_tbb_sees_them():
+    mesh = cellproj.read(DEFAULT_MESH)
+    for bad in (10 ** 9, 10 ** 8, -1, 1025, 10 ** 30, 2.5, True, "4"):
+        with pytest.raises(cellproj.InputError, match="threads=: expected"):
+            cellproj.render(mesh, size=(8, 8), threads=bad)
+    with pytest.raises(cellproj.InputError, match="threads=: expected"):
+        cellproj.render_scene(DEFAULT_SCENE, size=(8, 8), threads=10 ** 9)
+    one = cellproj.render(mesh, size=(24, 16), threads=np.int64(1))
+    assert np.array_equal(one, cellproj.render(mesh, size=(24, 16), threads=1024))  # the same bits on any count
+
+
+def test_complex_arrays_and_a_bad_framing_aspect_are_refused():
+    points = np.array([[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]], dtype=float)
+    conn, offsets, types = np.arange(4), np.array([0, 4]), np.array([10], dtype=np.uint8)
+    with pytest.raises(cellproj.InputError, match="points: complex values"):
+        cellproj.Mesh(points.astype(complex), conn, offsets, types, np.zeros(4))
+    with pytest.raises(cellproj.InputError, match="complex values"):
+        cellproj.Mesh(points, conn, offsets, types, np.zeros(4, dtype=complex))
+    mesh = cellproj.Mesh(points, conn, offsets, types, np.zeros(4))
+    for aspect in (float("nan"), 0.0, -1.0, float("inf")):
+        with pytest.raises(cellproj.InputError, match="aspect: expected"):
+            cellproj.Camera.framing(mesh, "iso", aspect)
