@@ -144,6 +144,21 @@ bool pieces_cover(const std::array<long long, 6>& whole, const std::vector<std::
   return true;
 }
 
+// An extent attribute of a structured file read as six integers, low to high on each axis (VTK's
+// reader sizes its arrays from them: an inverted one ended in std::length_error); InputError
+// naming `what` otherwise.
+std::array<long long, 6> checked_extent(const std::string& path, const std::string& what, const std::string& text) {
+  const auto e = extent(text);
+  if (!e) throw InputError(where(path, "its " + what + " '" + text.substr(0, 60) + "' is not six integers"));
+  for (int a = 0; a < 3; ++a)
+    if ((*e)[2 * a + 1] < (*e)[2 * a])
+      throw InputError(where(path, "its " + what + " '" + text.substr(0, 60) + "' runs backwards along " +
+                                       std::string(1, static_cast<char>('x' + a)) + " (" + std::to_string((*e)[2 * a]) +
+                                       " to " + std::to_string((*e)[2 * a + 1]) +
+                                       "): a structured grid's extent goes from its low index to its high one"));
+  return *e;
+}
+
 // A structured file's pieces against its WholeExtent, and a rectilinear piece's ASCII axes.
 void check_extents(const std::string& path, const std::string& xml) {
   const std::size_t end = std::min(xml.find("<AppendedData"), xml.size());
@@ -155,7 +170,7 @@ void check_extents(const std::string& path, const std::string& xml) {
     const std::string tag = xml.substr(at, close - at);
     if (tag.rfind("<StructuredGrid", 0) == 0 || tag.rfind("<RectilinearGrid", 0) == 0 ||
         tag.rfind("<ImageData", 0) == 0) {
-      if (const auto w = xml_attribute(tag, "WholeExtent")) whole = extent(*w);
+      if (const auto w = xml_attribute(tag, "WholeExtent")) whole = checked_extent(path, "WholeExtent", *w);
       // VTK's reader keeps its default for an Origin or Spacing it cannot parse ("1 nan 1" read as
       // spacing 1 without a word): the points would be placed where the file does not say.
       for (const char* name : {"Origin", "Spacing"})
@@ -167,7 +182,8 @@ void check_extents(const std::string& path, const std::string& xml) {
                                              "' is not three finite numbers"));
         }
     } else if (tag.rfind("<Piece", 0) == 0) {
-      if (const auto e = xml_attribute(tag, "Extent"); e && extent(*e)) pieces.push_back(*extent(*e));
+      if (const auto e = xml_attribute(tag, "Extent"))
+        pieces.push_back(checked_extent(path, "piece " + std::to_string(pieces.size()) + "'s Extent", *e));
     } else if (tag.rfind("<Coordinates", 0) == 0) {
       axis = 0;
     } else if (tag.rfind("</Coordinates", 0) == 0) {
@@ -195,7 +211,6 @@ void check_extents(const std::string& path, const std::string& xml) {
   // Few pieces: the cover is checked exactly; many (a file rarely has them): left to VTK.
   if (!whole || pieces.empty() || pieces.size() > 16) return;
   const auto& w = *whole;
-  if (w[1] < w[0] || w[3] < w[2] || w[5] < w[4]) return;  // an empty extent: VTK says so
   if (!pieces_cover(w, pieces))
     throw InputError(where(path, "its pieces' extents do not cover its WholeExtent (" + std::to_string(w[0]) + " " +
                                      std::to_string(w[1]) + " " + std::to_string(w[2]) + " " + std::to_string(w[3]) +

@@ -5,7 +5,8 @@
 //   (at most 1032 bytes per byte), and, where the Piece says how many points or cells there are
 //   (or a rectilinear piece's extent, its axes' coordinates), against the size the array needs. A
 //   garbled header otherwise makes the reader allocate what it claims or read past the file;
-// - a structured file's (.vts, .vtr, .vti) pieces against its WholeExtent, which they must cover
+// - a structured file's (.vts, .vtr, .vti) extents, each six integers running from low to high, and
+//   its pieces against its WholeExtent, which they must cover
 //   (VTK's reader leaves the points no piece holds undefined), and a rectilinear piece's ASCII axes
 //   against its extent.
 // Throws InputError naming the file, the array or extent and what is wrong (docs/reliability.md).

@@ -446,6 +446,18 @@ TEST(Readers, StructuredXmlPiecesMustCoverTheWholeExtent) {
     EXPECT_NE(what.find("gap.vts: its pieces' extents do not cover its WholeExtent (" + gap + ")"), std::string::npos)
         << what;
   }
+  // An extent that runs backwards (VTK's reader sized its arrays from it and ended in
+  // std::length_error, an internal error) or is not six integers: an InputError naming it.
+  const std::string backwards = test::input_error([&] {
+    read_mesh(vts("back.vts", "2 0 0 1 0 1", {"0 1 0 1 0 1", "1 2 0 1 0 1"}));
+  });
+  EXPECT_NE(backwards.find("its WholeExtent '2 0 0 1 0 1' runs backwards along x (2 to 0)"), std::string::npos)
+      << backwards;
+  const std::string piece = test::input_error([&] { read_mesh(vts("piece.vts", "0 2 0 1 0 1", {"0 1 1 0 0 1"})); });
+  EXPECT_NE(piece.find("its piece 0's Extent '0 1 1 0 0 1' runs backwards along y (1 to 0)"), std::string::npos)
+      << piece;
+  const std::string words = test::input_error([&] { read_mesh(vts("words.vts", "0 2 0 one 0 1", {"0 2 0 1 0 1"})); });
+  EXPECT_NE(words.find("its WholeExtent '0 2 0 one 0 1' is not six integers"), std::string::npos) << words;
 }
 
 TEST(Readers, AnImageDatasOriginAndSpacingMustBeThreeFiniteNumbers) {
