@@ -100,9 +100,10 @@ class DatasetWalk {
         if (n < 0) refuse_count("CELL_TYPES", n);
         if (!cell_types(n)) return;
       } else if (structured && (starts(word, "dimensions") || starts(word, "extent"))) {
-        if (numbers(word[0] == 'd' ? 3 : 6) < (word[0] == 'd' ? 3 : 6)) return;  // VTK's message
+        std::int64_t unused[3];
+        if (!grid_size(word[0] == 'd', unused)) return;  // VTK's message
       } else if (rectilinear && starts(word, "dimensions")) {
-        if (!(in_ >> dims[0] >> dims[1] >> dims[2])) return;  // VTK's message
+        if (!grid_size(true, dims)) return;  // VTK's message
       } else if (rectilinear && word.size() > 1 && word[0] >= 'x' && word[0] <= 'z' &&
                  word.substr(1) == "_coordinates") {
         // VTK's reader builds the points from DIMENSIONS and reads each axis's values unchecked: an
@@ -305,6 +306,24 @@ class DatasetWalk {
   }
 
   // ASCII: reads up to `count` numbers as VTK does, stopping at one that is not; how many were.
+  // A grid's DIMENSIONS nx ny nz (else EXTENT x0 x1 y0 y1 z0 z1) into `dims`, false when they are
+  // not integers (VTK's message). VTK's reader sizes its arrays from them: an axis of fewer than
+  // one point ended in std::length_error (an internal error), or read as no cells at all.
+  bool grid_size(bool dimensions, std::int64_t dims[3]) {
+    std::int64_t v[6];
+    for (int k = 0; k < (dimensions ? 3 : 6); ++k)
+      if (!(in_ >> v[k])) return in_.clear(), false;
+    for (int a = 0; a < 3; ++a) {
+      dims[a] = dimensions ? v[a] : v[2 * a + 1] - v[2 * a] + 1;
+      if (dims[a] < 1)
+        throw InputError(where(path_, std::string(dimensions ? "DIMENSIONS" : "EXTENT") + " gives " +
+                                          std::to_string(dims[a]) + " points along " +
+                                          std::string(1, static_cast<char>('x' + a)) +
+                                          ": a grid has at least one point along each axis"));
+    }
+    return true;
+  }
+
   std::int64_t numbers(std::int64_t count) {
     double v;
     for (std::int64_t k = 0; k < count; ++k)

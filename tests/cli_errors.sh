@@ -431,6 +431,12 @@ printf '# vtk DataFile Version 3.0\nrg\nASCII\nDATASET RECTILINEAR_GRID\nDIMENSI
 expect 1 "rg.vtk: Y_COORDINATES holds 1 values for the 2 points along its axis that DIMENSIONS gives" -- info "$tmp/rg.vtk"
 sed 's/^Y_COORDINATES 1 float$/Y_COORDINATES 2 float/; s/^0$/0 1/' "$tmp/rg.vtk" >"$tmp/rg2.vtk"
 expect 0 "points 8, cells 1: hexahedron 1" -- info "$tmp/rg2.vtk"
+# A grid whose DIMENSIONS or EXTENT give an axis fewer than one point: a rectilinear grid's ended in
+# VTK's std::length_error (exit 3), a structured grid's read as no cells at all.
+sed 's/^DIMENSIONS 2 2 2$/DIMENSIONS 2 -2 2/' "$tmp/rg2.vtk" >"$tmp/rgneg.vtk"
+expect 1 "rgneg.vtk: DIMENSIONS gives -2 points along y: a grid has at least one point along each axis" -- info "$tmp/rgneg.vtk"
+sed 's/^DIMENSIONS 2 2 2$/DIMENSIONS -2 2 2/' "$tmp/sg.vtk" >"$tmp/sgneg.vtk"
+expect 1 "sgneg.vtk: DIMENSIONS gives -2 points along x" -- info "$tmp/sgneg.vtk"
 printf '# vtk DataFile Version 3.0\npd\nASCII\nDATASET POLYDATA\nPOINTS 3 float\n0 0 0 1 0 0 0 1 0\nPOLYGONS 1 4\n3 0 1 7\n' >"$tmp/pd.vtk"
 expect 1 "pd.vtk: its dataset is POLYDATA \\(surfaces, lines and points\\), which holds no volume cells" -- info "$tmp/pd.vtk"
 # A fuzzed .vtu whose offsets array says format="appe": VTK read it as appended, and its garbled
