@@ -19,6 +19,30 @@ inline double tet_volume6(const glm::dvec3& a, const glm::dvec3& b, const glm::d
   return glm::dot(glm::cross(b - a, c - a), d - a);
 }
 
+// The vertices of tetrahedron p's face opposite vertex f, and that face's normal (not unit) pointing
+// out of the tetrahedron, away from p[f].
+inline constexpr int kTetFace[4][3] = {{1, 2, 3}, {0, 2, 3}, {0, 1, 3}, {0, 1, 2}};
+inline glm::dvec3 tet_face_normal(const glm::dvec3 p[4], int f) {
+  const glm::dvec3& a = p[kTetFace[f][0]];
+  const glm::dvec3 n = glm::cross(p[kTetFace[f][1]] - a, p[kTetFace[f][2]] - a);
+  return glm::dot(n, p[f] - a) > 0 ? -n : n;
+}
+
+// The triple product of tetrahedron p's edges out of p[0], e1 . (e2 x e3): tet_volume6's value, in
+// the order linear_gradient divides by it.
+inline double edges_triple_product(const glm::dvec3 p[4]) {
+  return glm::dot(p[1] - p[0], glm::cross(p[2] - p[0], p[3] - p[0]));
+}
+// The gradient g of the field linear over tetrahedron p with values s at its vertices,
+// s(x) = s[0] + g . (x - p[0]), from the three edges out of p[0]; `det` is edges_triple_product(p)
+// (non-zero).
+inline glm::dvec3 linear_gradient(const glm::dvec3 p[4], const double s[4], double det) {
+  const glm::dvec3 e1 = p[1] - p[0], e2 = p[2] - p[0], e3 = p[3] - p[0];
+  return (glm::cross(e2, e3) * (s[1] - s[0]) + glm::cross(e3, e1) * (s[2] - s[0]) +
+          glm::cross(e1, e2) * (s[3] - s[0])) /
+         det;
+}
+
 // Signed volume of any supported cell (divergence theorem over its faces, quads fanned from their
 // centroid, so a non-planar face counts as the bilinear-ish surface it approximates).
 double cell_signed_volume(const MeshView& mesh, std::int64_t cell);

@@ -331,6 +331,7 @@ void CellFragments::ray_cast_fields(const std::int64_t* ids, CellType type, RowR
   std::int64_t emitted = 0;
   for (int j = box.j0; j <= box.j1; ++j)
     for (int i = box.i0; i <= box.i1; ++i) {
+      if (emit.hidden(i, j)) continue;  // an opaque pixel, front to back: nothing to add
       const Ray r = rays_.ray(i + 0.5, j + 0.5);
       struct Hit {
         double t0, t1;
@@ -339,8 +340,8 @@ void CellFragments::ray_cast_fields(const std::int64_t* ids, CellType type, RowR
       int hits = 0;
       for (int k = 0; k < parts; ++k)
         if (double t0, t1; part[k].clip.clip(r, t0, t1)) hit[hits++] = {t0, t1, &part[k]};
-      if (hits == 0 || emit.hidden(i, j)) continue;  // (hidden: an opaque pixel, front to back)
-      for (int k = 1; k < hits; ++k)                 // front to back (insertion: at most kMaxTetsPerCell)
+      if (hits == 0) continue;
+      for (int k = 1; k < hits; ++k)  // front to back (insertion: at most kMaxTetsPerCell)
         for (int m = k; m > 0 && hit[m].t0 < hit[m - 1].t0; --m) std::swap(hit[m], hit[m - 1]);
       SegmentLight acc;
       for (int k = 0; k < hits && acc.depth < kOpaqueDepth; ++k) {

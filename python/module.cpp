@@ -130,13 +130,9 @@ PYBIND11_MODULE(_cellproj, m) {
       .def_property_readonly(
           "points",
           [](const NumpyMesh& s) {
-            const MeshView& v = s.view();
-            py::array_t<double> out({py::ssize_t(v.n_points), py::ssize_t(3)});
-            auto w = out.mutable_unchecked<2>();
-            for (std::int64_t p = 0; p < v.n_points; ++p) {
-              const glm::dvec3 x = v.point(p);
-              w(p, 0) = x.x, w(p, 1) = x.y, w(p, 2) = x.z;
-            }
+            std::vector<double> xyz = s.point_coordinates();
+            py::array_t<double> out({py::ssize_t(xyz.size() / 3), py::ssize_t(3)});
+            std::copy(xyz.begin(), xyz.end(), out.mutable_data());
             return out;
           },
           "The points, (N, 3) float64: a copy")

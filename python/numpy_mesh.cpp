@@ -140,6 +140,16 @@ void NumpyMesh::set_points(py::array points) {
   for (std::string& c : conversions) conversions_.push_back(std::move(c));
 }
 
+std::vector<double> NumpyMesh::point_coordinates() const {
+  const MeshView& v = view();
+  std::vector<double> xyz(static_cast<std::size_t>(v.n_points) * 3);
+  for (std::int64_t p = 0; p < v.n_points; ++p) {
+    const glm::dvec3 x = v.point(p);
+    for (int k = 0; k < 3; ++k) xyz[static_cast<std::size_t>(p) * 3 + k] = x[k];
+  }
+  return xyz;
+}
+
 std::string NumpyMesh::stored_name(const std::string& spec) const {
   return choose_field(fields_.shapes(), spec, view().source).field;
 }

@@ -41,6 +41,8 @@ class NumpyMesh {
   // The points moved: the same cells over `points` (N, 3), taken as the constructor takes them,
   // validated; every preparation made again on the next render.
   void set_points(py::array points);
+  // The points as x, y, z doubles, a copy (they may be float32 or strided in the caller's array).
+  std::vector<double> point_coordinates() const;
   // The stored field a scalar choice reads ('V' of 'V:x'); "" the only one.
   std::string stored_name(const std::string& spec) const;
 

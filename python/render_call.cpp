@@ -59,8 +59,7 @@ ClippedVolume clipped(const NumpyMesh& numpy, const Field& f, const std::vector<
   const MeshView& v = numpy.view();
   Mesh whole;
   whole.source = v.source;
-  for (std::int64_t q = 0; q < v.n_points; ++q)
-    for (int k = 0; k < 3; ++k) whole.points.push_back(v.point(q)[k]);
+  whole.points = numpy.point_coordinates();
   whole.connectivity.assign(v.connectivity, v.connectivity + v.offsets[v.n_cells]);
   whole.offsets.assign(v.offsets, v.offsets + v.n_cells + 1);
   whole.types.assign(v.types, v.types + v.n_cells);

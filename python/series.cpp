@@ -64,7 +64,7 @@ namespace {
 class SeriesPlayback {
  public:
   SeriesPlayback(const Series& series, const std::vector<double>& times, bool prefetch, const py::kwargs& kwargs)
-      : call_(render_call(kwargs)), times_(times) {
+      : call_(render_call(kwargs)) {
     if (times.empty()) throw InputError(series.listed().source + ": times= lists no frame");
     if (call_.log_floor && !call_.log)
       throw InputError("setting 'log-floor' is the floor of a log scale: give setting 'log' too");
@@ -91,7 +91,7 @@ class SeriesPlayback {
   // The next frame: its picture, its --stats (with its time) and its legend.
   py::tuple next() {
     if (playback_->next_frame() >= playback_->frames()) throw py::stop_iteration();
-    const double time = times_of(playback_->next_frame());
+    const double time = playback_->time_of(playback_->next_frame());
     RenderReport report;
     Image image = [&] {
       py::gil_scoped_release release;
@@ -106,13 +106,10 @@ class SeriesPlayback {
   }
 
  private:
-  double times_of(int f) const { return times_[static_cast<std::size_t>(f)]; }
-
   RenderCall call_;
   std::unique_ptr<SeriesPlayer> player_;
   std::unique_ptr<NumpyMesh> look_;
-  std::optional<FramePlan> plan_;  // the first key frame's colours and framing
-  std::vector<double> times_;
+  std::optional<FramePlan> plan_;       // the first key frame's colours and framing
   std::unique_ptr<Playback> playback_;  // last: it uses the player
 };
 
@@ -157,7 +154,8 @@ void bind_series(py::module_& m) {
       .def(py::init([](const Series& s, const std::vector<double>& times, bool prefetch, const py::kwargs& kwargs) {
         return std::make_unique<SeriesPlayback>(s, times, prefetch, kwargs);
       }))
-      .def("next", &SeriesPlayback::next);
+      .def("__iter__", [](py::object self) { return self; })
+      .def("__next__", &SeriesPlayback::next);
   m.def("_animation_times", &animation_times);
   m.def("_is_series_path", &is_series_path);
 }

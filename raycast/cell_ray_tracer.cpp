@@ -109,14 +109,10 @@ CellRayTracer::CellRayTracer(const MeshView& mesh) : points_(recentre(mesh)) {
 }
 
 glm::dvec3 CellRayTracer::gradient(std::uint32_t tet, const double* scalar) const {
-  // s(x) = s_a + G (x - a) with G's rows solving the three edges from vertex a.
   const Tet& t = tets_[tet];
-  const RecentredPoints& P = points_;
-  const glm::dvec3 a = P(t[0]), e1 = P(t[1]) - a, e2 = P(t[2]) - a, e3 = P(t[3]) - a;
-  const double d1 = scalar[t[1]] - scalar[t[0]], d2 = scalar[t[2]] - scalar[t[0]], d3 = scalar[t[3]] - scalar[t[0]];
-  // grad = (d1 (e2 x e3) + d2 (e3 x e1) + d3 (e1 x e2)) / (e1 . (e2 x e3))
-  return (d1 * glm::cross(e2, e3) + d2 * glm::cross(e3, e1) + d3 * glm::cross(e1, e2)) /
-         glm::dot(e1, glm::cross(e2, e3));
+  const glm::dvec3 p[4] = {points_(t[0]), points_(t[1]), points_(t[2]), points_(t[3])};
+  const double s[4] = {scalar[t[0]], scalar[t[1]], scalar[t[2]], scalar[t[3]]};
+  return linear_gradient(p, s, edges_triple_product(p));
 }
 
 std::vector<glm::dvec3> CellRayTracer::point_gradients(const double* scalar) const {
@@ -160,9 +156,7 @@ glm::dvec3 CellRayTracer::face_normal(std::uint32_t tet, const glm::dvec3& x) co
   int opposite = 0;  // the vertex whose weight is nearest 0: x is on (or nearest) the face without it
   for (int k = 1; k < 4; ++k)
     if (std::abs(weight[k]) < std::abs(weight[opposite])) opposite = k;
-  const glm::dvec3 a = p[(opposite + 1) % 4], b = p[(opposite + 2) % 4], c = p[(opposite + 3) % 4];
-  const glm::dvec3 n = glm::normalize(glm::cross(b - a, c - a));
-  return glm::dot(n, a - p[opposite]) >= 0.0 ? n : -n;  // away from the vertex opposite
+  return glm::normalize(tet_face_normal(p, opposite));
 }
 
 double CellRayTracer::value(std::uint32_t tet, const double* scalar, const glm::dvec3& x) const {

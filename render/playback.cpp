@@ -51,7 +51,6 @@ SeriesFrame Playback::make(double t) {
   const auto start = std::chrono::steady_clock::now();
   SeriesFrame f = player_.frame_at(t);
   stats_.make_seconds += seconds_since(start);
-  if (!prefetch_) stats_.wait_seconds = stats_.make_seconds;
   return f;
 }
 

@@ -42,10 +42,16 @@ class Playback {
 
   int frames() const { return static_cast<int>(times_.size()); }
   int next_frame() const { return next_; }  // the frame render_next draws; frames() when done
+  double time_of(int frame) const { return times_[static_cast<std::size_t>(frame)]; }
   // The next frame's picture, seen by `camera`. Throws when every frame was drawn.
   Image render_next(const Renderer& renderer, const TransferFunction& tf, const Camera& camera, ImageSize size,
                     RenderReport* report = nullptr, const Progress& progress = {});
-  const PlaybackStats& stats() const { return stats_; }
+  // Without prefetch every frame's making was waited for.
+  PlaybackStats stats() const {
+    PlaybackStats s = stats_;
+    if (!prefetch_) s.wait_seconds = s.make_seconds;
+    return s;
+  }
   const ClipReport& first_clip() const { return first_clip_; }  // what the planes did to the first frame
 
  private:

@@ -46,7 +46,7 @@ def render(data, tf=None, camera=None, *, size=(512, 512), field="", scalars=Non
                     clim=clim, opacity=opacity, opacity_field=opacity_field, depth=depth, log_scale=log_scale,
                     log=log, log_floor=log_floor, view=view, method=method, threads=threads, clip=clip, **settings)
     picture = _picture(background, title, legend)
-    series = _series_of(data, time, cell_data)
+    series = _series_of(data, time is not None, cell_data)
     if series is not None:
         return next(_frames(series, [series.times[0] if time is None else float(time)], False, picture, keywords))
     if time is not None:

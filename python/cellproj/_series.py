@@ -39,7 +39,7 @@ def play(data, times=None, *, prefetch=True, background=_BLACK, title="", legend
         with cellproj.Movie("run.mp4") as movie:
             for image in cellproj.play("run.pvd", "0:2:48", cmap="viridis", legend=True):
                 movie.add(image)"""
-    series = _series_of(data, 0.0, cell_data)
+    series = _series_of(data, True, cell_data)
     if series is None:
         raise InputError("play: expected a time series (a .pvd, a pattern, an Exodus file or a cellproj.Series), "
                          "got %s" % type(data).__name__)
@@ -52,22 +52,18 @@ def play(data, times=None, *, prefetch=True, background=_BLACK, title="", legend
     return _frames(series, times, prefetch, _picture(background, title, legend), keywords)
 
 
-def _series_of(data, time, cell_data):
-    """`data` as a cellproj.Series when it is one (or names one; an Exodus file when time= is given), else None."""
+def _series_of(data, any_path, cell_data):
+    """`data` as a cellproj.Series when it is one or names one (a .pvd or a pattern; with `any_path`,
+    any file, an Exodus file's time steps among them), else None."""
     if isinstance(data, Series):
         return data
     if isinstance(data, (str, _os.PathLike)):
         path = _os.fspath(data)
-        if _is_series_path(path) or time is not None:
+        if any_path or _is_series_path(path):
             return read_series(path, cell_data=cell_data)
     return None
 
 
 def _frames(series, times, prefetch, picture, keywords):
-    playback = _Playback(series, times, prefetch, **_call(**keywords))
-    while True:
-        try:
-            array, stats, bar = playback.next()
-        except StopIteration:
-            return
+    for array, stats, bar in _Playback(series, times, prefetch, **_call(**keywords)):
         yield picture(array, stats, bar)
