@@ -24,6 +24,7 @@
 #include "mesh/geometry.hpp"
 #include "raycast/cell_ray_tracer.hpp"
 #include "splat/splat.hpp"
+#include "view/depth_limit.hpp"
 #include "view/screen.hpp"
 
 namespace cellproj {
@@ -175,6 +176,15 @@ void check_two_fields(const ProjectionOptions& options, const FramePlan& plan) {
   if (!plan.software) throw two_fields_refused("", "an OpenGL back end (setting 'backend' software draws it)");
   if (plan.small_cells == SmallCells::splat)
     throw two_fields_refused("", "splats (setting 'small-cells' draw draws the small cells)");
+}
+
+// Opaque geometry (a depth buffer) cuts each pixel's segments where it lies: drawn by the software
+// back end's cells, not by OpenGL or splats.
+void check_opaque_geometry(const FramePlan& plan) {
+  const char* by = !plan.software                          ? "an OpenGL back end (setting 'backend' software draws it)"
+                   : plan.small_cells == SmallCells::splat ? "splats (setting 'small-cells' draw draws the small cells)"
+                                                           : nullptr;
+  if (by) throw UnsupportedError(std::string("opaque geometry (a depth buffer) is not drawn among by ") + by);
 }
 
 }  // namespace
@@ -360,7 +370,7 @@ Image draw_in_software(const FramePlan& plan, const FrameOrder& f, const std::ve
 
 Image ProjectionRenderer::render(const double* color_scalar, const TransferFunction& tf, const Camera& camera,
                                  int width, int height, const ProjectionOptions& options, ProjectionStats* stats,
-                                 const double* opacity) const {
+                                 const double* opacity, const OpaqueDepth* opaque) const {
   check_options(options);
   const auto start = std::chrono::steady_clock::now();
   const FramePlan plan = plan_frame(options, sorter_.mode(), height, tbb::this_task_arena::max_concurrency(),
@@ -368,6 +378,7 @@ Image ProjectionRenderer::render(const double* color_scalar, const TransferFunct
   ProjectionStats st;
   st.small_cells = plan.small_cells, st.splat_threshold = plan.splat_threshold;
   if (opacity) check_two_fields(options, plan);
+  if (opaque) check_opaque_geometry(plan);
   const RecentredPoints& points = sorter_.points();
   // The screen points, the culling and the sort read the field the extinction comes from.
   const double* scalar = opacity ? opacity : color_scalar;
@@ -408,8 +419,11 @@ Image ProjectionRenderer::render(const double* color_scalar, const TransferFunct
   if (method.opacity_table) table.emplace(opacity_table(tf, options.table_size, max_diameter_));
   PointOptics optics;
   if (method.point_optics) optics = point_optics(scalar, mesh_.n_points, tf);
+  std::optional<DepthLimit> limit;  // a depth with no surface is no limit
+  if (opaque) limit.emplace(*opaque, rays);
   const CellFragments project(screen, rays, points, tf, options.method, table ? &*table : nullptr, &optics,
-                              options.whole_cells, color ? &*color : nullptr);
+                              options.whole_cells, color ? &*color : nullptr,
+                              limit && limit->any() ? &*limit : nullptr);
 
   // The cells drawn and composited in order (MWSC section 7).
   Image image;

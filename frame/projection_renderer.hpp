@@ -19,6 +19,7 @@
 #include "splat/small_cells.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
+#include "view/opaque_depth.hpp"
 #include "visibility/sort.hpp"
 #include "visibility/split_sorter.hpp"
 
@@ -81,8 +82,8 @@ class ProjectionRenderer {
   // canonical tetrahedra by pt-analytic or pt-breakpoints in software; UnsupportedError for the
   // other methods, the OpenGL back ends and splats.
   Image render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
-               const ProjectionOptions& options = {}, ProjectionStats* stats = nullptr,
-               const double* opacity = nullptr) const;
+               const ProjectionOptions& options = {}, ProjectionStats* stats = nullptr, const double* opacity = nullptr,
+               const OpaqueDepth* opaque = nullptr) const;
 
   bool convex_boundary() const;
   Tetrahedralize mode() const { return sorter_.mode(); }

@@ -208,6 +208,7 @@ void ProjectionCounters::add(const ProjectionCounters& o) {
   subdivisions_looked_up += o.subdivisions_looked_up;
   fragments += o.fragments, breakpoint_cells += o.breakpoint_cells, direct_cells += o.direct_cells;
   hidden_cells += o.hidden_cells, hidden_fragments += o.hidden_fragments;
+  depth_cut_cells += o.depth_cut_cells, depth_hidden_cells += o.depth_hidden_cells;
 }
 
 PointOptics point_optics(const double* scalar, std::int64_t n_points, const TransferFunction& tf) {
@@ -226,7 +227,8 @@ PointOptics point_optics(const double* scalar, std::int64_t n_points, const Tran
 
 CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                              const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
-                             const PointOptics* optics, WholeCells whole_cells, const ColorField* color)
+                             const PointOptics* optics, WholeCells whole_cells, const ColorField* color,
+                             const DepthLimit* limit)
     : screen_(screen),
       rays_(rays),
       points_(points),
@@ -235,7 +237,8 @@ CellFragments::CellFragments(const ScreenPoints& screen, const PixelRays& rays, 
       table_(table),
       optics_(optics),
       whole_cells_(whole_cells),
-      color_(color) {
+      color_(color),
+      limit_(limit) {
   // Which way a triangle facing the eye turns in this image: (c, c + r, c + u) with r x u towards
   // the eye, ahead of it on the view axis.
   const Camera& cam = rays.camera();
@@ -303,8 +306,8 @@ PixelBox CellFragments::cast_box(const std::int64_t* ids, int n, RowRange rows) 
 }
 
 template <class Emit>
-void CellFragments::ray_cast_fields(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
-                                    ProjectionCounters& counters) const {
+void CellFragments::ray_cast_cell(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
+                                  ProjectionCounters& counters) const {
   ++(type == CellType::Tetra ? counters.tets : counters.polyhedra);
   // Each tetrahedron's planes, and both fields as s(x) = s0 + g . (x - p0).
   struct Part {
@@ -320,7 +323,7 @@ void CellFragments::ray_cast_fields(const std::int64_t* ids, CellType type, RowR
     double s[4], u[4];
     for (int k = 0; k < 4; ++k) {
       const auto q = static_cast<std::size_t>(tets[t][k]);
-      p[k] = points_(tets[t][k]), s[k] = screen_.v[q].s, u[k] = color_->values[q];
+      p[k] = points_(tets[t][k]), s[k] = screen_.v[q].s, u[k] = color_ ? color_->values[q] : s[k];
     }
     const double det = edges_triple_product(p);
     if (!(std::abs(det) > 0.0)) continue;  // zero volume: nothing to see
@@ -338,8 +341,10 @@ void CellFragments::ray_cast_fields(const std::int64_t* ids, CellType type, RowR
         const Part* part;
       } hit[kMaxTetsPerCell];
       int hits = 0;
+      const double t_max = limit_ ? limit_->t_max(i, j) : std::numeric_limits<double>::infinity();
       for (int k = 0; k < parts; ++k)
-        if (double t0, t1; part[k].clip.clip(r, t0, t1)) hit[hits++] = {t0, t1, &part[k]};
+        if (double t0, t1; part[k].clip.clip(r, t0, t1) && t0 < t_max)
+          hit[hits++] = {t0, std::min(t1, t_max), &part[k]};
       if (hits == 0) continue;
       for (int k = 1; k < hits; ++k)  // front to back (insertion: at most kMaxTetsPerCell)
         for (int m = k; m > 0 && hit[m].t0 < hit[m - 1].t0; --m) std::swap(hit[m], hit[m - 1]);
@@ -347,9 +352,11 @@ void CellFragments::ray_cast_fields(const std::int64_t* ids, CellType type, RowR
       for (int k = 0; k < hits && acc.depth < kOpaqueDepth; ++k) {
         const Part& q = *hit[k].part;
         const glm::dvec3 xf = r.origin + hit[k].t0 * r.dir - q.p0, xb = r.origin + hit[k].t1 * r.dir - q.p0;
-        const SegmentLight light = integrate_two_fields_closed_form(
-            color_->tf, hit[k].t1 - hit[k].t0, q.u0 + glm::dot(q.gu, xf), q.u0 + glm::dot(q.gu, xb),
-            q.s0 + glm::dot(q.gs, xf), q.s0 + glm::dot(q.gs, xb), cut);
+        const double length = hit[k].t1 - hit[k].t0, sf = q.s0 + glm::dot(q.gs, xf), sb = q.s0 + glm::dot(q.gs, xb);
+        const SegmentLight light = color_
+                                       ? integrate_two_fields_closed_form(color_->tf, length, q.u0 + glm::dot(q.gu, xf),
+                                                                          q.u0 + glm::dot(q.gu, xb), sf, sb, cut)
+                                       : integrate_segment_closed_form(tf_, length, sf, sb);
         acc = k == 0 ? light : under(acc, light);
       }
       emitted += emit(i, j, acc.rgb, acc.opacity());
@@ -531,10 +538,25 @@ bool CellFragments::by_layers(const std::int64_t* ids, CellType type) const {
   return (hi.x - lo.x + 1) * (hi.y - lo.y + 1) <= kLayersUpToPixels;
 }
 
+DepthSide CellFragments::depth_side(const std::int64_t* ids, CellType type, RowRange rows) const {
+  const int n = cell_def(type).vertices;
+  double z_near = std::numeric_limits<double>::infinity(), z_far = -z_near;
+  for (int k = 0; k < n; ++k) {
+    const double z = screen_.v[static_cast<std::size_t>(ids[k])].z;
+    z_near = std::min(z_near, z), z_far = std::max(z_far, z);
+  }
+  return side_of(z_near, z_far, limit_->range(cast_box(ids, n, rows)));
+}
+
 template <class Emit>
 void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit, CellScratch& p,
                                  ProjectionCounters& counters) const {
-  if (color_) return ray_cast_fields(ids, type, rows, emit, counters);
+  if (limit_) switch (depth_side(ids, type, rows)) {
+      case DepthSide::behind: ++counters.depth_hidden_cells; return;
+      case DepthSide::cut: ++counters.depth_cut_cells; return ray_cast_cell(ids, type, rows, emit, counters);
+      case DepthSide::in_front: break;
+    }
+  if (color_) return ray_cast_cell(ids, type, rows, emit, counters);
   if (type != CellType::Tetra && by_layers(ids, type)) return project_layers(ids, type, rows, emit, p, counters);
   const bool tet = type == CellType::Tetra;
   const Seen seen = tet ? tet_triangles({ids[0], ids[1], ids[2], ids[3]}, p, counters, false)

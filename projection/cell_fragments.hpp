@@ -18,6 +18,7 @@
 #include "projection/projected_tet.hpp"
 #include "projection/segment_batch.hpp"
 #include "projection/tet_fan.hpp"
+#include "view/depth_limit.hpp"
 #include "view/image.hpp"
 #include "view/raster.hpp"
 #include "view/screen.hpp"
@@ -41,6 +42,9 @@ struct ProjectionCounters {
   // Early ray termination (front to back): cells not projected in the tile that counts them, every
   // pixel of theirs there opaque already; fragments dropped at opaque pixels.
   std::int64_t hidden_cells = 0, hidden_fragments = 0;
+  // Among opaque geometry (view/opaque_depth.hpp): cells a surface cuts (ray cast up to it), and
+  // cells wholly behind the surfaces under them (not drawn).
+  std::int64_t depth_cut_cells = 0, depth_hidden_cells = 0;
   void add(const ProjectionCounters& o);
   // Only the per-pixel counts (fragments, unmatched, hidden fragments): a cell drawn tile by tile is
   // counted once, by its first tile, and its pixels by every tile.
@@ -56,6 +60,7 @@ void each_counter(const ProjectionCounters& c, F&& f) {
   f("class1_tets", c.class1), f("class2_tets", c.class2), f("empty_tets", c.empty), f("behind_eye_tets", c.behind_eye);
   f("fragments", c.fragments), f("breakpoint_cells", c.breakpoint_cells), f("direct_cells", c.direct_cells);
   f("hidden_cells", c.hidden_cells), f("hidden_fragments", c.hidden_fragments);
+  f("depth_cut_cells", c.depth_cut_cells), f("depth_hidden_cells", c.depth_hidden_cells);
 }
 
 // Extinction and colour at every point (the corners of the Gouraud-shaded methods), once per frame.
@@ -106,7 +111,7 @@ class CellFragments {
   CellFragments(const ScreenPoints& screen, const PixelRays& rays, const RecentredPoints& points,
                 const TransferFunction& tf, ProjectionMethod method, const OpacityTable* table,
                 const PointOptics* optics, WholeCells whole_cells = WholeCells::automatic,
-                const ColorField* color = nullptr);
+                const ColorField* color = nullptr, const DepthLimit* limit = nullptr);
   // Appends the fragments of the cell (point ids `ids`, of `type`) to out.
   void project(const std::int64_t* ids, CellType type, FragmentBands& out, CellScratch& scratch,
                ProjectionCounters& counters) const;
@@ -144,12 +149,15 @@ class CellFragments {
   // planes, the segment integrated exactly (pt-breakpoints' integral, whatever the method).
   template <class Emit>
   void ray_cast(const Tet& tet, RowRange rows, Emit& emit, ProjectionCounters& counters) const;
-  // A cell coloured by color_ (pt-analytic and pt-breakpoints): every pixel's ray clipped against
-  // its canonical tetrahedra (the exact renderer's), both fields linear over each, the segments
-  // integrated in closed form front to back into one fragment.
+  // A cell coloured by color_ (pt-analytic and pt-breakpoints), or cut by the opaque depth: every
+  // pixel's ray clipped against its canonical tetrahedra (the exact renderer's) and cut at the
+  // depth, the fields linear over each, the segments integrated in closed form front to back into
+  // one fragment.
   template <class Emit>
-  void ray_cast_fields(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
-                       ProjectionCounters& counters) const;
+  void ray_cast_cell(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
+                     ProjectionCounters& counters) const;
+  // Where the cell lies against the opaque depth under its pixels of rows `rows` (limit_ set).
+  DepthSide depth_side(const std::int64_t* ids, CellType type, RowRange rows) const;
   // The pixels of rows `rows` a ray cast cell of n vertices may cover: those under its image, one
   // pixel wider, unless in perspective a vertex is behind the eye (then every one).
   PixelBox cast_box(const std::int64_t* ids, int n, RowRange rows) const;
@@ -204,6 +212,7 @@ class CellFragments {
   int front_sign_;  // exact_sign of a face turned towards the eye
   WholeCells whole_cells_;
   const ColorField* color_;  // null: colour and extinction from the one field
+  const DepthLimit* limit_;  // null: no opaque geometry
 };
 
 }  // namespace cellproj

@@ -5,11 +5,13 @@
 #include <chrono>
 #include <cmath>
 #include <optional>
+#include <vector>
 
 #include "base/error.hpp"
 #include "base/timing.hpp"
 #include "optics/polynomial_segment.hpp"
 #include "optics/two_fields.hpp"
+#include "view/depth_limit.hpp"
 
 namespace cellproj {
 namespace {
@@ -56,6 +58,18 @@ void integrate_run(const TransferFunction& tf, IsoparametricRun& run, double ta,
   integrate_run(tf, run, mid, tb, tol, depth + 1, acc);
 }
 
+// The segments in front of t_max, the one it falls in cut there (the field linear along it: exact
+// in a tetrahedron), into `out`; their count.
+std::size_t cut_at(double t_max, const RaySegment* seg, std::size_t n, std::vector<RaySegment>& out) {
+  out.clear();
+  for (std::size_t k = 0; k < n && seg[k].t0 < t_max; ++k) {
+    RaySegment g = seg[k];
+    if (g.t1 > t_max) g.s1 = g.s0 + (g.s1 - g.s0) * ((t_max - g.t0) / (g.t1 - g.t0)), g.t1 = t_max;
+    out.push_back(g);
+  }
+  return out.size();
+}
+
 }  // namespace
 
 ExactRenderer::ExactRenderer(const MeshView& mesh) : local_(mesh), tracer_(local_.view()), n_points_(mesh.n_points) {
@@ -66,7 +80,8 @@ ExactRenderer::ExactRenderer(const MeshView& mesh) : local_(mesh), tracer_(local
 
 Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width,
                             int height, CellInterpolation interpolation, ExactStats* stats,
-                            const std::function<void(double)>& progress, const double* opacity) const {
+                            const std::function<void(double)>& progress, const double* opacity,
+                            const OpaqueDepth* opaque) const {
   const auto start = std::chrono::steady_clock::now();
   Image img(width, height);
   const IsoparametricField* iso =
@@ -78,10 +93,15 @@ Image ExactRenderer::render(const double* scalar, const TransferFunction& tf, co
     const auto [lo, hi] = std::minmax_element(scalar, scalar + n_points_);
     scalar_tolerance = 1e-9 * (*hi - *lo);
   }
+  std::optional<PixelRays> rays;  // the opaque depth's rays: t along them is the tracer's (distance from the eye)
+  std::optional<DepthLimit> limit;
+  if (opaque) rays.emplace(camera, width, height), limit.emplace(*opaque, *rays);
   std::atomic<std::int64_t> segments{0}, failures{0};
   tracer_.trace(
       camera, width, height, scalar,
       [&](int i, int j, const Ray& ray, const RaySegment* seg, std::size_t n) {
+        thread_local std::vector<RaySegment> cut;
+        if (limit) n = cut_at(limit->t_max(i, j), seg, n, cut), seg = cut.data();
         SegmentLight acc;
         for (std::size_t k = 0; k < n && acc.depth < kOpaqueDepth;) {
           if (two) {  // the colour field traced, the opacity field read at the segment's ends

@@ -15,6 +15,7 @@
 #include "raycast/isoparametric.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
+#include "view/opaque_depth.hpp"
 
 namespace cellproj {
 
@@ -41,7 +42,8 @@ class ExactRenderer {
   // linear over the canonical tetrahedra whatever `interpolation` says.
   Image render(const double* scalar, const TransferFunction& tf, const Camera& camera, int width, int height,
                CellInterpolation interpolation = CellInterpolation::isoparametric, ExactStats* stats = nullptr,
-               const std::function<void(double)>& progress = {}, const double* opacity = nullptr) const;
+               const std::function<void(double)>& progress = {}, const double* opacity = nullptr,
+               const OpaqueDepth* opaque = nullptr) const;
   const CellRayTracer& tracer() const { return tracer_; }  // (over local_cells(): cell ids are its)
   const LocalCells& local_cells() const { return local_; }
 

@@ -69,13 +69,11 @@ class ProjectionMode final : public Renderer {
 
   Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
               ImageSize size, RenderReport* report, const Progress&) const override {
-    volume.check(field);
-    const ProjectionRenderer& renderer =
-        timed_preparation(volume, report, [&]() -> const ProjectionRenderer& { return volume.projection(mode_); });
-    ProjectionStats st;
-    Image image = renderer.render(field.values, tf, camera, size.width, size.height, options_, &st, field.opacity);
-    if (report) fill(*report, st);
-    return image;
+    return draw(volume, field, tf, camera, size, nullptr, report);
+  }
+  Image frame_among(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+                    ImageSize size, const OpaqueDepth& opaque, RenderReport* report) const override {
+    return draw(volume, field, tf, camera, size, &opaque, report);
   }
 
   std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
@@ -86,6 +84,18 @@ class ProjectionMode final : public Renderer {
   }
 
  private:
+  Image draw(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera, ImageSize size,
+             const OpaqueDepth* opaque, RenderReport* report) const {
+    volume.check(field);
+    const ProjectionRenderer& renderer =
+        timed_preparation(volume, report, [&]() -> const ProjectionRenderer& { return volume.projection(mode_); });
+    ProjectionStats st;
+    Image image =
+        renderer.render(field.values, tf, camera, size.width, size.height, options_, &st, field.opacity, opaque);
+    if (report) fill(*report, st);
+    return image;
+  }
+
   void fill(RenderReport& r, const ProjectionStats& p) const {
     r.seconds = p.seconds;
     r.phase_seconds = p.phase_seconds;
@@ -171,16 +181,12 @@ class ExactMode final : public Renderer {
       refuse_opacity_field(field, "iso-surfaces");
       return render_surfaces(renderer, field, tf, camera, size, report, progress);
     }
-    ExactStats st;
-    Image image = renderer.render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress,
-                                  field.opacity);
-    if (report) {
-      report->seconds = st.trace_seconds;
-      report->phase_seconds = {{"trace and integrate", st.trace_seconds}};
-      report->add("interpolation", interpolation_);
-      report->add_counters(st);
-    }
-    return image;
+    return draw(renderer, field, tf, camera, size, nullptr, report, progress);
+  }
+  Image frame_among(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+                    ImageSize size, const OpaqueDepth& opaque, RenderReport* report) const override {
+    if (!iso_.surfaces.empty()) return Renderer::frame_among(volume, field, tf, camera, size, opaque, report);
+    return draw(checked_exact(volume, field, report), field, tf, camera, size, &opaque, report, {});
   }
 
   std::uint64_t estimate_bytes(const VolumeSize& v, ImageSize size) const override {
@@ -190,6 +196,20 @@ class ExactMode final : public Renderer {
   }
 
  private:
+  Image draw(const ExactRenderer& renderer, const Field& field, const TransferFunction& tf, const Camera& camera,
+             ImageSize size, const OpaqueDepth* opaque, RenderReport* report, const Progress& progress) const {
+    ExactStats st;
+    Image image = renderer.render(field.values, tf, camera, size.width, size.height, interpolation_, &st, progress,
+                                  field.opacity, opaque);
+    if (report) {
+      report->seconds = st.trace_seconds;
+      report->phase_seconds = {{"trace and integrate", st.trace_seconds}};
+      report->add("interpolation", interpolation_);
+      report->add_counters(st);
+    }
+    return image;
+  }
+
   // Iso-surfaces with the volume (raycast/iso_surfaces.hpp), in the mode asked for.
   Image render_surfaces(const ExactRenderer& renderer, const Field& field, const TransferFunction& tf,
                         const Camera& camera, ImageSize size, RenderReport* report, const Progress& progress) const {
@@ -434,6 +454,22 @@ Image Renderer::render(const Volume& volume, const Field& field, const TransferF
   Image image = frame(volume, field, tf, camera, size, report, progress);
   CELLPROJ_DCHECK(finite_pixels(image), name() + " made a pixel that is not finite");
   return image;
+}
+
+Image Renderer::render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+                       ImageSize size, const OpaqueDepth& opaque, RenderReport* report) const {
+  check_opaque_depth(opaque, size.width, size.height, "opaque geometry");
+  Image image = frame_among(volume, field, tf, camera, size, opaque, report);
+  CELLPROJ_DCHECK(finite_pixels(image), name() + " made a pixel that is not finite");
+  return image;
+}
+
+Image Renderer::frame_among(const Volume&, const Field&, const TransferFunction&, const Camera&, ImageSize,
+                            const OpaqueDepth&, RenderReport*) const {
+  throw UnsupportedError(
+      "opaque geometry (a depth buffer) is drawn among by setting 'method' exact and the cell "
+      "projection methods with setting 'backend' software and no anti-aliasing, not by " +
+      name());
 }
 
 void render_progressive(const Volume& volume, const Field& field, const TransferFunction& tf,

@@ -14,6 +14,7 @@
 #include "render/volume.hpp"
 #include "view/camera.hpp"
 #include "view/image.hpp"
+#include "view/opaque_depth.hpp"
 
 namespace cellproj {
 
@@ -35,6 +36,12 @@ class Renderer {
   // One frame of `field` (Volume::check'ed). Threads: those of the calling task arena.
   Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                ImageSize size, RenderReport* report = nullptr, const Progress& progress = {}) const;
+  // The same among opaque geometry (a render window's depth buffer, view/opaque_depth.hpp): each
+  // pixel's ray integrated only up to `opaque`'s surface. Cell projection's software back end and
+  // the exact renderer draw it; the others throw UnsupportedError, as does a depth of another size
+  // than the image (InputError).
+  Image render(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+               ImageSize size, const OpaqueDepth& opaque, RenderReport* report = nullptr) const;
   // Bytes a frame needs at most (images, per-point and per-tetrahedron arrays, buffers): generous.
   virtual std::uint64_t estimate_bytes(const VolumeSize& volume, ImageSize size) const = 0;
 
@@ -42,6 +49,11 @@ class Renderer {
   // The frame itself; render() checks what every renderer owes (a finite image, CELLPROJ_DCHECK).
   virtual Image frame(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
                       ImageSize size, RenderReport* report, const Progress& progress) const = 0;
+
+ protected:
+  // The frame among opaque geometry (checked); UnsupportedError unless the renderer draws it.
+  virtual Image frame_among(const Volume& volume, const Field& field, const TransferFunction& tf, const Camera& camera,
+                            ImageSize size, const OpaqueDepth& opaque, RenderReport* report) const;
 };
 
 // The most worker threads a front end may ask for, and the count `asked` gives (0: all cores);
