@@ -3,7 +3,10 @@
 # present it only asks dpkg (well under a second). apt-get as root, sudo otherwise.
 #   scripts/setup.sh          what the build and tests need
 #   scripts/setup.sh --fuzz   and clang's libFuzzer, for bench/fuzz.sh
-#   scripts/setup.sh --bench  and Xvfb and matplotlib, for VTK's mappers in bench/run and bench/vtk_1m.sh
+#   scripts/setup.sh --bench  and matplotlib, for bench/run's plots
+# Xvfb runs the VTK mapper's and the ParaView plugin's tests in a real window. ParaView's Python
+# (python3-paraview) conflicts with python3-vtk9, which libvtk9-dev needs: the plugin's test
+# unpacks it into the build tree instead (tests/paraview/run.sh).
 set -euo pipefail
 packages=(
   build-essential cmake pkg-config python3 clang-format
@@ -11,9 +14,10 @@ packages=(
   libosmesa6-dev libfreetype-dev fonts-dejavu-core libcli11-dev nlohmann-json3-dev libgtest-dev libgmock-dev libbenchmark-dev
   pybind11-dev python3-pybind11 python3-numpy python3-pytest python3-meshio python3-vtk9 python3-pip python3-setuptools python3-wheel
   libavcodec-dev libavformat-dev libavfilter-dev libswscale-dev ffmpeg libopenexr-dev
+  libglew-dev xvfb xauth paraview paraview-dev
 )
 [ "${1:-}" = "--fuzz" ] && packages+=(clang libclang-rt-dev)
-[ "${1:-}" = "--bench" ] && packages+=(xvfb xauth python3-matplotlib)
+[ "${1:-}" = "--bench" ] && packages+=(python3-matplotlib)
 missing=()
 for p in "${packages[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
