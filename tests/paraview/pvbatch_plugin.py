@@ -1,6 +1,8 @@
 """pvbatch script: ParaView 5.11 loads the cellproj plugin, shows a mesh with 'cellproj Volume' and
 saves a screenshot; it must be the CLI's picture of the same scene (tests/paraview/run.sh).
-usage: pvbatch pvbatch_plugin.py PLUGIN SCENE.json CELLPROJ_EXE OUT_DIR
+usage: pvbatch pvbatch_plugin.py PLUGIN SCENE.json CELLPROJ_EXE OUT_DIR [SIZE]
+It also saves ParaView's own projected tetrahedra ("Volume", "Projected tetra") of the scene as
+OUT_DIR/paraview_projected_tetra.png, for docs/vtk.md's pictures.
 The transfer function is given to ParaView in RGB with the scene's control points and its
 opacity function with o = kappa u per unit distance u, and the view has no colour palette
 background, orientation axes or anti-aliasing: ParaView then adds only its 8-bit window.
@@ -18,7 +20,7 @@ from paraview.vtk.util.numpy_support import vtk_to_numpy
 from vtkmodules.vtkIOImage import vtkPNGReader
 
 plugin, scene_path, exe, out = sys.argv[1:5]
-SIZE = 200
+SIZE = int(sys.argv[5]) if len(sys.argv) > 5 else 200
 LoadPlugin(plugin, ns=globals())
 paraview.simple._DisableFirstRenderCameraReset()  # the scene's camera, not one framing the data
 with open(scene_path) as f:
@@ -71,4 +73,9 @@ for mode in ("cellproj exact", "cellproj fast"):
           (mode, rmse, method, float(np.abs(got - want).max())))
     assert got.max() > 0.2, "an empty picture"
     assert rmse <= 2e-3, rmse
+display.SetRepresentationType("Volume")
+display.SelectMapper = "Projected tetra"
+Render(view)
+SaveScreenshot(os.path.join(out, "paraview_projected_tetra.png"), view, ImageResolution=[SIZE, SIZE],
+               TransparentBackground=0)
 print("plugin test passed")
