@@ -57,6 +57,20 @@ def volume_property(tf):
     return p
 
 
+_WINDOW = []
+
+
+def shared_window():
+    """One offscreen window for every test: a window per test (an X window and a GL context each)
+    made VTK's window creation abort under Xvfb after a dozen."""
+    if not _WINDOW:
+        w = vtk.vtkRenderWindow()
+        w.SetOffScreenRendering(1)
+        w.SetMultiSamples(0)
+        _WINDOW.append(w)
+    return _WINDOW[0]
+
+
 class Window:
     """A window with the scene's camera and a black background, the mapper's volume in it."""
 
@@ -67,11 +81,7 @@ class Window:
         self.renderer = vtk.vtkRenderer()
         self.renderer.SetBackground(0, 0, 0)
         self.renderer.AddVolume(self.volume)
-        self.window = vtk.vtkRenderWindow()
-        self.window.SetOffScreenRendering(1)
-        self.window.SetMultiSamples(0)
-        self.window.AddRenderer(self.renderer)
-        self.window.SetSize(size, size)
+        self.window, self.size = shared_window(), size
         cam, c = s["camera"], self.renderer.GetActiveCamera()
         c.SetPosition(*cam["eye"])
         c.SetFocalPoint(*cam["target"])
@@ -83,15 +93,21 @@ class Window:
             c.SetParallelScale(cam["height"] / 2)
 
     def __del__(self):
-        # Each window holds an X window and a GL context until finalized: many at once made VTK's
-        # window creation abort under Xvfb.
-        self.window.Finalize()
+        if self.window.HasRenderer(self.renderer):
+            self.window.RemoveRenderer(self.renderer)
 
     def add(self, prop):
         self.renderer.AddActor(prop)
 
     def picture(self):
         """The window's RGB after a render, float, row 0 at the top."""
+        renderers = self.window.GetRenderers()
+        for r in [renderers.GetItemAsObject(k) for k in range(renderers.GetNumberOfItems())]:
+            if r is not self.renderer:
+                self.window.RemoveRenderer(r)
+        if not self.window.HasRenderer(self.renderer):
+            self.window.AddRenderer(self.renderer)
+        self.window.SetSize(self.size, self.size)
         self.renderer.ResetCameraClippingRange()
         self.window.Render()
         grab = vtk.vtkWindowToImageFilter()
@@ -299,3 +315,16 @@ def test_use_cellproj_swaps_the_mapper_of_a_volume_keeping_its_input_and_scalars
     m = use_cellproj(w.volume, method="pt-breakpoints", threads=1)
     assert w.volume.GetMapper() is m and m.GetArrayName() == s["field"] and m.GetNumberOfThreads() == 1
     assert rmse(w.picture(), cli(s)) <= RMSE_8BIT
+
+
+def test_a_method_that_cannot_cut_at_opaque_geometry_says_how_to_draw_over_it():
+    s = scene("post_tets")
+    m = mapper_of(s, "slicing")
+    w = Window(s, m)
+    sphere = vtk.vtkSphereSource()
+    sphere.SetCenter(2.0, 0.0, 0.5)
+    w.add(flat(sphere, (1, 1, 0)))
+    w.picture()
+    assert "IntermixOpaqueGeometryOff" in m.GetLastError(), m.GetLastError()
+    m.IntermixOpaqueGeometryOff()
+    assert w.picture().max() > 0.2 and m.GetLastError() == ""

@@ -119,6 +119,7 @@ void vtkCellprojVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol) {
   Internals& in = *this->Internal;
   const auto start = std::chrono::steady_clock::now();
   in.error.clear();
+  bool among = false;  // drawn among opaque geometry
   try {
     if (vtkAlgorithm* producer = this->GetInputAlgorithm()) {
       producer->Update();
@@ -150,7 +151,6 @@ void vtkCellprojVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol) {
 
     // The opaque geometry drawn before the volume, when there is any.
     cellproj::OpaqueDepth depth;
-    bool among = false;
     if (this->IntermixOpaqueGeometry && ren->GetNumberOfPropsRendered() > 0) {
       in.zbuffer.resize(static_cast<std::size_t>(width) * height);
       ren->GetRenderWindow()->GetZbufferData(origin[0], origin[1], origin[0] + width - 1, origin[1] + height - 1,
@@ -180,6 +180,8 @@ void vtkCellprojVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol) {
     in.display.Draw(ren, in.pixels.data(), width, height);
   } catch (const cellproj::Error& e) {
     in.error = e.what();
+    if (among && dynamic_cast<const cellproj::UnsupportedError*>(&e))
+      in.error += " (IntermixOpaqueGeometryOff() draws the volume over the opaque geometry instead)";
     vtkErrorMacro(<< "cellproj: " << in.error);
   }
   in.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
