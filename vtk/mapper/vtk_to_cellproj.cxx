@@ -11,6 +11,8 @@
 #include "vtkMatrix4x4.h"
 #include "vtkPiecewiseFunction.h"
 #include "vtkPoints.h"
+#include "vtkTypeInt32Array.h"
+#include "vtkTypeInt64Array.h"
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
@@ -24,12 +26,13 @@
 namespace cellproj::vtk {
 namespace {
 
-// The value of column `c` of every row of `a`, widened to int64.
+// A cell array's ids (32- or 64-bit storage) as int64.
 std::vector<std::int64_t> ids_of(vtkDataArray* a) {
-  std::vector<std::int64_t> out(static_cast<std::size_t>(a->GetNumberOfTuples()));
-  for (vtkIdType k = 0; k < a->GetNumberOfTuples(); ++k) {
-    out[static_cast<std::size_t>(k)] = static_cast<std::int64_t>(a->GetComponent(k, 0));
-  }
+  const auto n = static_cast<std::size_t>(a->GetNumberOfTuples());
+  if (auto* ids = vtkTypeInt64Array::FastDownCast(a)) return {ids->GetPointer(0), ids->GetPointer(0) + n};
+  if (auto* ids = vtkTypeInt32Array::FastDownCast(a)) return {ids->GetPointer(0), ids->GetPointer(0) + n};
+  std::vector<std::int64_t> out(n);
+  for (std::size_t k = 0; k < n; ++k) out[k] = static_cast<std::int64_t>(a->GetComponent(static_cast<vtkIdType>(k), 0));
   return out;
 }
 
