@@ -328,3 +328,43 @@ def test_a_method_that_cannot_cut_at_opaque_geometry_says_how_to_draw_over_it():
     assert "IntermixOpaqueGeometryOff" in m.GetLastError(), m.GetLastError()
     m.IntermixOpaqueGeometryOff()
     assert w.picture().max() > 0.2 and m.GetLastError() == ""
+
+
+def test_two_dependent_components_are_coloured_by_the_first_and_opaque_by_the_second_as_the_cli():
+    # VTK's rule for two components with IndependentComponents off (ParaView's separate opacity
+    # array): colour from the first, opacity from the second; the CLI's --field A --opacity-field B.
+    s = scene("post_tets")
+    grid = read(s["mesh"]).GetOutput()
+    p = vtk_to_numpy(grid.GetPointData().GetArray("Pressure")).astype(np.float64)
+    z = vtk_to_numpy(grid.GetPoints().GetData())[:, 2].astype(np.float64)
+    for name, values in (("A", p), ("B", z)):
+        a = numpy_to_vtk(values, deep=1)
+        a.SetName(name)
+        grid.GetPointData().AddArray(a)
+    both = numpy_to_vtk(np.stack([p, z], axis=1), deep=1)
+    both.SetName("AB")
+    grid.GetPointData().AddArray(both)
+    with tempfile.TemporaryDirectory() as d:
+        mesh = os.path.join(d, "two.vtu")
+        w = vtk.vtkXMLUnstructuredGridWriter()
+        w.SetFileName(mesh)
+        w.SetInputData(grid)
+        w.Write()
+        two = dict(s, mesh=mesh, field="A", path=os.path.join(d, "two.json"))
+        two["transfer_function"] = {"color": s["transfer_function"]["color"],
+                                    "extinction": [[float(z.min()), 0.2], [float(z.max()), 3.0]]}
+        with open(two["path"], "w") as f:
+            json.dump({k: v for k, v in two.items() if k != "path"}, f)
+        m = vtkCellprojVolumeMapper()
+        m.SetInputData(grid)
+        m.SetScalarModeToUsePointFieldData()
+        m.SelectScalarArray("AB")
+        win = Window(two, m)
+        win.volume.GetProperty().IndependentComponentsOff()
+        got = win.picture()
+        assert m.GetLastError() == "", m.GetLastError()
+        want = cli(two, "--opacity-field", "B")
+        assert rmse(got, want) <= RMSE_8BIT
+        assert rmse(got, cli(two)) > 5 * RMSE_8BIT  # not the picture of A alone
+        m.SetMethod("pt-linear")  # a Gouraud method cannot: said, nothing drawn
+        assert win.picture().max() == 0.0 and "opacity" in m.GetLastError()

@@ -20,6 +20,7 @@
 #include "vtkUnsignedCharArray.h"
 #include "vtkUnstructuredGrid.h"
 #include "vtkVolume.h"
+#include "vtkVolumeProperty.h"
 
 #include "base/error.hpp"
 #include "render/renderer.hpp"
@@ -37,7 +38,7 @@ struct vtkCellprojVolumeMapper::Internals {
   bool apart = false;  // cells on their own points (cell scalars)
   std::unique_ptr<cellproj::Mesh> mesh;
   std::unique_ptr<cellproj::Volume> volume;
-  std::vector<double> scalars;
+  std::vector<double> scalars, opacity;  // the field drawn, and the extinction's when it has its own
 
   std::map<std::string, std::string> settings;  // SetRenderSetting's, by name
   std::string renderer_key;
@@ -136,9 +137,18 @@ void vtkCellprojVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol) {
                                  (this->ArrayName ? std::string(" (array '") + this->ArrayName + "')" : std::string()));
     }
     const cellproj::Volume& volume = in.volume_of(grid, cell_flag == 1);
-    in.scalars = cellproj::vtk::scalars_of(*in.mesh, array, cell_flag == 1, this->VectorComponent);
-    const cellproj::Field field{in.scalars.data(), in.mesh->n_points(),
-                                array->GetName() ? array->GetName() : "scalars"};
+    const std::string name = array->GetName() ? array->GetName() : "scalars";
+    cellproj::Field field{nullptr, in.mesh->n_points(), name};
+    // Two dependent components (IndependentComponents off; ParaView's separate opacity array): the
+    // first coloured by the colour function, the second opaque by the opacity function (VTK's rule).
+    if (array->GetNumberOfComponents() == 2 && !vol->GetProperty()->GetIndependentComponents()) {
+      in.scalars = cellproj::vtk::scalars_of(*in.mesh, array, cell_flag == 1, 0);
+      in.opacity = cellproj::vtk::scalars_of(*in.mesh, array, cell_flag == 1, 1);
+      field.opacity = in.opacity.data(), field.opacity_name = name + " (its second component)";
+    } else {
+      in.scalars = cellproj::vtk::scalars_of(*in.mesh, array, cell_flag == 1, this->VectorComponent);
+    }
+    field.values = in.scalars.data();
     const cellproj::TransferFunction tf = cellproj::vtk::transfer_function_of(vol->GetProperty());
     const int* size = ren->GetSize();
     const int* origin = ren->GetOrigin();
