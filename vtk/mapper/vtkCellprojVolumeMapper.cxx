@@ -46,7 +46,6 @@ struct vtkCellprojVolumeMapper::Internals {
 
   cellproj::vtk::WindowImage display;
   std::vector<float> zbuffer;
-  std::vector<unsigned short> pixels;
   double seconds = 0.0;
   std::string error;
 
@@ -176,18 +175,7 @@ void vtkCellprojVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol) {
                    : renderer.render(volume, field, tf, camera, {width, height});
     });
 
-    // Premultiplied RGBA in 16 bits, rows from the bottom, blended over the window.
-    in.pixels.resize(4 * static_cast<std::size_t>(width) * height);
-    for (int j = 0; j < height; ++j) {
-      for (int i = 0; i < width; ++i) {
-        const float* p = image.pixel(i, height - 1 - j);
-        unsigned short* q = &in.pixels[4 * (static_cast<std::size_t>(j) * width + i)];
-        for (int c = 0; c < 4; ++c) {
-          q[c] = static_cast<unsigned short>(std::lround(std::min(std::max(p[c], 0.0f), 1.0f) * 65535.0f));
-        }
-      }
-    }
-    in.display.Draw(ren, in.pixels.data(), width, height);
+    in.display.Draw(ren, image);
   } catch (const cellproj::Error& e) {
     in.error = e.what();
     if (among && dynamic_cast<const cellproj::UnsupportedError*>(&e))

@@ -1,5 +1,8 @@
 #include "window_image.h"
 
+#include <algorithm>
+#include <cmath>
+
 #include "vtkOpenGLQuadHelper.h"
 #include "vtkOpenGLRenderUtilities.h"
 #include "vtkOpenGLRenderWindow.h"
@@ -14,15 +17,22 @@ namespace cellproj::vtk {
 WindowImage::WindowImage() = default;
 WindowImage::~WindowImage() = default;
 
-void WindowImage::Draw(vtkRenderer* ren, const unsigned short* rgba, int width, int height) {
+void WindowImage::Draw(vtkRenderer* ren, const cellproj::Image& image) {
   auto* window = vtkOpenGLRenderWindow::SafeDownCast(ren->GetRenderWindow());
-  if (!window) {
-    return;
-  }
+  if (!window) return;
+  const int width = image.width, height = image.height;
+  this->Pixels.resize(4 * static_cast<std::size_t>(width) * height);
+  for (int j = 0; j < height; ++j)
+    for (int i = 0; i < width; ++i) {
+      const float* p = image.pixel(i, height - 1 - j);
+      unsigned short* q = &this->Pixels[4 * (static_cast<std::size_t>(j) * width + i)];
+      for (int c = 0; c < 4; ++c)
+        q[c] = static_cast<unsigned short>(std::lround(std::clamp(p[c], 0.0f, 1.0f) * 65535.0f));
+    }
   this->Texture->SetContext(window);
   this->Texture->SetMinificationFilter(vtkTextureObject::Nearest);
   this->Texture->SetMagnificationFilter(vtkTextureObject::Nearest);
-  this->Texture->Create2DFromRaw(width, height, 4, VTK_UNSIGNED_SHORT, const_cast<unsigned short*>(rgba));
+  this->Texture->Create2DFromRaw(width, height, 4, VTK_UNSIGNED_SHORT, this->Pixels.data());
   if (!this->Quad) {
     std::string fs = vtkOpenGLRenderUtilities::GetFullScreenQuadFragmentShaderTemplate();
     vtkShaderProgram::Substitute(fs, "//VTK::FSQ::Decl", "uniform sampler2D source;");

@@ -6,7 +6,9 @@
 #define window_image_h
 
 #include <memory>
+#include <vector>
 
+#include "view/image.hpp"
 #include "vtkNew.h"
 #include "vtkTextureObject.h"
 
@@ -20,13 +22,14 @@ class WindowImage {
  public:
   WindowImage();
   ~WindowImage();
-  // rgba: width x height pixels of 4 premultiplied 16-bit values, rows from the bottom.
-  void Draw(vtkRenderer* ren, const unsigned short* rgba, int width, int height);
+  // The picture (premultiplied float RGBA, row 0 at the top) as the viewport's pixels.
+  void Draw(vtkRenderer* ren, const cellproj::Image& image);
   void ReleaseGraphicsResources(vtkWindow* window);
 
  private:
   vtkNew<vtkTextureObject> Texture;
   std::unique_ptr<vtkOpenGLQuadHelper> Quad;
+  std::vector<unsigned short> Pixels;  // the picture in 16 bits, rows from the bottom (OpenGL's)
 };
 
 }  // namespace cellproj::vtk
