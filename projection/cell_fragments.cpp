@@ -261,32 +261,6 @@ void CellFragments::prefetch_points(const std::int64_t* ids, int n) const {
   }
 }
 
-template <class Emit>
-void CellFragments::ray_cast(const Tet& tet, RowRange rows, Emit& emit, ProjectionCounters& counters) const {
-  glm::dvec3 p[4];
-  double s[4];
-  for (int k = 0; k < 4; ++k) p[k] = points_(tet[k]), s[k] = screen_.v[static_cast<std::size_t>(tet[k])].s;
-  // The linear field s(x) = s0 + g . (x - p0): g from the three edges out of p0.
-  const double det = edges_triple_product(p);
-  if (!(std::abs(det) > 0.0)) return;  // zero volume: nothing to see
-  const glm::dvec3 g = linear_gradient(p, s, det);
-  const TetClip clip(p);
-  const PixelBox box = cast_box(tet.data(), 4, rows);
-  const int i0 = box.i0, i1 = box.i1, j0 = box.j0, j1 = box.j1;
-  std::int64_t emitted = 0;
-  for (int j = j0; j <= j1; ++j)
-    for (int i = i0; i <= i1; ++i) {
-      const Ray r = rays_.ray(i + 0.5, j + 0.5);  // from the eye, or from its plane (recentred)
-      const glm::dvec3 &eye = r.origin, &d = r.dir;
-      double t0, t1;
-      if (!clip.clip(r, t0, t1)) continue;
-      const double sf = s[0] + glm::dot(g, eye + t0 * d - p[0]), sb = s[0] + glm::dot(g, eye + t1 * d - p[0]);
-      const SegmentLight light = integrate_segment_closed_form(tf_, t1 - t0, sf, sb);
-      emitted += emit(i, j, light.rgb, light.opacity());
-    }
-  counters.fragments += emitted;
-}
-
 PixelBox CellFragments::cast_box(const std::int64_t* ids, int n, RowRange rows) const {
   PixelBox box;
   box.i0 = 0, box.i1 = rays_.width() - 1, box.j0 = 0, box.j1 = rays_.height() - 1;
@@ -308,7 +282,6 @@ PixelBox CellFragments::cast_box(const std::int64_t* ids, int n, RowRange rows) 
 template <class Emit>
 void CellFragments::ray_cast_cell(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
                                   ProjectionCounters& counters) const {
-  ++(type == CellType::Tetra ? counters.tets : counters.polyhedra);
   // Each tetrahedron's planes, and both fields as s(x) = s0 + g . (x - p0).
   struct Part {
     TetClip clip;
@@ -334,7 +307,6 @@ void CellFragments::ray_cast_cell(const std::int64_t* ids, CellType type, RowRan
   std::int64_t emitted = 0;
   for (int j = box.j0; j <= box.j1; ++j)
     for (int i = box.i0; i <= box.i1; ++i) {
-      if (emit.hidden(i, j)) continue;  // an opaque pixel, front to back: nothing to add
       const Ray r = rays_.ray(i + 0.5, j + 0.5);
       struct Hit {
         double t0, t1;
@@ -345,8 +317,8 @@ void CellFragments::ray_cast_cell(const std::int64_t* ids, CellType type, RowRan
       for (int k = 0; k < parts; ++k)
         if (double t0, t1; part[k].clip.clip(r, t0, t1) && t0 < t_max)
           hit[hits++] = {t0, std::min(t1, t_max), &part[k]};
-      if (hits == 0) continue;
-      for (int k = 1; k < hits; ++k)  // front to back (insertion: at most kMaxTetsPerCell)
+      if (hits == 0 || emit.hidden(i, j)) continue;  // (hidden: an opaque pixel, front to back)
+      for (int k = 1; k < hits; ++k)                 // front to back (insertion: at most kMaxTetsPerCell)
         for (int m = k; m > 0 && hit[m].t0 < hit[m - 1].t0; --m) std::swap(hit[m], hit[m - 1]);
       SegmentLight acc;
       for (int k = 0; k < hits && acc.depth < kOpaqueDepth; ++k) {
@@ -553,15 +525,20 @@ void CellFragments::project_with(const std::int64_t* ids, CellType type, RowRang
                                  ProjectionCounters& counters) const {
   if (limit_) switch (depth_side(ids, type, rows)) {
       case DepthSide::behind: ++counters.depth_hidden_cells; return;
-      case DepthSide::cut: ++counters.depth_cut_cells; return ray_cast_cell(ids, type, rows, emit, counters);
+      case DepthSide::cut:
+        ++counters.depth_cut_cells, ++(type == CellType::Tetra ? counters.tets : counters.polyhedra);
+        return ray_cast_cell(ids, type, rows, emit, counters);
       case DepthSide::in_front: break;
     }
-  if (color_) return ray_cast_cell(ids, type, rows, emit, counters);
+  if (color_) {
+    ++(type == CellType::Tetra ? counters.tets : counters.polyhedra);
+    return ray_cast_cell(ids, type, rows, emit, counters);
+  }
   if (type != CellType::Tetra && by_layers(ids, type)) return project_layers(ids, type, rows, emit, p, counters);
   const bool tet = type == CellType::Tetra;
   const Seen seen = tet ? tet_triangles({ids[0], ids[1], ids[2], ids[3]}, p, counters, false)
                         : cell_triangles(ids, type, p, counters, false);
-  if (seen == Seen::behind_eye && tet) ray_cast({ids[0], ids[1], ids[2], ids[3]}, rows, emit, counters);
+  if (seen == Seen::behind_eye && tet) ray_cast_cell(ids, type, rows, emit, counters);  // (counted by classify)
   if (seen != Seen::projected) return;
   counters.breakpoint_cells += holds_breakpoint(tf_, p.smin, p.smax);
   if (tet) {  // small ones as one fan, the others triangle by triangle

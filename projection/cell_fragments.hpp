@@ -145,14 +145,11 @@ class CellFragments {
   // projected area.
   enum class Seen { projected, behind_eye, empty };
   Seen classify(const Tet& tet, ScreenVertex v[4], ProjectedTet& pt, ProjectionCounters& counters) const;
-  // A cell reaching behind the eye: every pixel's ray from the eye clipped against its four face
-  // planes, the segment integrated exactly (pt-breakpoints' integral, whatever the method).
-  template <class Emit>
-  void ray_cast(const Tet& tet, RowRange rows, Emit& emit, ProjectionCounters& counters) const;
-  // A cell coloured by color_ (pt-analytic and pt-breakpoints), or cut by the opaque depth: every
-  // pixel's ray clipped against its canonical tetrahedra (the exact renderer's) and cut at the
-  // depth, the fields linear over each, the segments integrated in closed form front to back into
-  // one fragment.
+  // A cell ray cast instead of projected (not counted here): a tetrahedron reaching behind the eye
+  // (pt-breakpoints' integral whatever the method), a cell coloured by color_ (pt-analytic and
+  // pt-breakpoints), or one the opaque depth cuts. Every pixel's ray clipped against its canonical
+  // tetrahedra (the exact renderer's) and cut at the depth, the fields linear over each, the
+  // segments integrated in closed form front to back into one fragment.
   template <class Emit>
   void ray_cast_cell(const std::int64_t* ids, CellType type, RowRange rows, Emit& emit,
                      ProjectionCounters& counters) const;
