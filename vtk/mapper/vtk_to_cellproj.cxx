@@ -50,47 +50,43 @@ double value_of(vtkDataArray* array, vtkIdType tuple, int component) {
   return std::sqrt(sum);
 }
 
-bool rgb_linear(vtkColorTransferFunction* f) {
-  if (f->GetColorSpace() != VTK_CTF_RGB || f->GetScale() != VTK_CTF_LINEAR) {
-    return false;
-  }
-  for (int k = 0; k < f->GetSize(); ++k) {
+// The nodes of a colour function (x, r, g, b, midpoint, sharpness) or a piecewise one (x, y,
+// midpoint, sharpness), each handed to f(x, midpoint, sharpness); none for a null function.
+template <class F>
+void each_node(vtkColorTransferFunction* c, F&& f) {
+  for (int k = 0; c && k < c->GetSize(); ++k) {
     double node[6];
-    f->GetNodeValue(k, node);
-    if (node[4] != 0.5 || node[5] != 0.0) {
-      return false;
-    }
+    c->GetNodeValue(k, node);
+    f(node[0], node[4], node[5]);
   }
-  return true;
+}
+template <class F>
+void each_node(vtkPiecewiseFunction* p, F&& f) {
+  for (int k = 0; p && k < p->GetSize(); ++k) {
+    double node[4];
+    p->GetNodeValue(k, node);
+    f(node[0], node[2], node[3]);
+  }
 }
 
-bool linear(vtkPiecewiseFunction* f) {
-  for (int k = 0; k < f->GetSize(); ++k) {
-    double node[4];
-    f->GetNodeValue(k, node);
-    if (node[2] != 0.5 || node[3] != 0.0) {
-      return false;
-    }
-  }
-  return true;
+// Whether the function is linear between its nodes (midpoint 0.5, sharpness 0 at every one).
+template <class Function>
+bool linear(Function* f) {
+  bool linear = true;
+  each_node(f,
+            [&](double, double midpoint, double sharpness) { linear = linear && midpoint == 0.5 && sharpness == 0.0; });
+  return linear;
+}
+bool rgb_linear(vtkColorTransferFunction* f) {
+  return f->GetColorSpace() == VTK_CTF_RGB && f->GetScale() == VTK_CTF_LINEAR && linear(f);
 }
 
 // The scalars the functions change at, and with `sampled` 1024 more across their range.
 std::vector<double> control_scalars(vtkColorTransferFunction* color, vtkPiecewiseFunction* grey,
                                     vtkPiecewiseFunction* opacity, bool sampled) {
   std::vector<double> s;
-  for (int k = 0; color && k < color->GetSize(); ++k) {
-    double node[6];
-    color->GetNodeValue(k, node);
-    s.push_back(node[0]);
-  }
-  for (vtkPiecewiseFunction* f : {grey, opacity}) {
-    for (int k = 0; f && k < f->GetSize(); ++k) {
-      double node[4];
-      f->GetNodeValue(k, node);
-      s.push_back(node[0]);
-    }
-  }
+  const auto at = [&](double x, double, double) { s.push_back(x); };
+  each_node(color, at), each_node(grey, at), each_node(opacity, at);
   std::sort(s.begin(), s.end());
   if (sampled && s.size() > 1 && s.back() > s.front()) {
     const double lo = s.front(), hi = s.back();
