@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <memory>
 #include <string>
@@ -38,7 +39,9 @@ struct vtkCellprojVolumeMapper::Internals {
   bool apart = false;  // cells on their own points (cell scalars)
   std::unique_ptr<cellproj::Mesh> mesh;
   std::unique_ptr<cellproj::Volume> volume;
+  int mesh_made = 0;                     // how many meshes volume_of made: the scalars are read again for a new one
   std::vector<double> scalars, opacity;  // the field drawn, and the extinction's when it has its own
+  std::string scalars_key;               // what they were read from (array, its MTime, the choice)
 
   std::map<std::string, std::string> settings;  // SetRenderSetting's, by name
   std::string renderer_key;
@@ -57,9 +60,29 @@ struct vtkCellprojVolumeMapper::Internals {
       volume.reset();
       mesh = std::make_unique<cellproj::Mesh>(cellproj::vtk::mesh_of(g, cell_scalars));
       volume = std::make_unique<cellproj::Volume>(mesh->view());
-      grid = g, geometry_time = t, apart = cell_scalars;
+      grid = g, geometry_time = t, apart = cell_scalars, ++mesh_made;
     }
     return *volume;
+  }
+
+  // The field of `array` over the mesh, read again only when the array, its values, the mesh or
+  // the choice changed. Two dependent components (IndependentComponents off; ParaView's separate
+  // opacity array): the first coloured by the colour function, the second opaque by the opacity
+  // function (VTK's rule).
+  cellproj::Field field_of(vtkDataArray* array, bool per_cell, bool two, int component) {
+    const std::string name = array->GetName() ? array->GetName() : "scalars";
+    const std::string key = std::to_string(reinterpret_cast<std::uintptr_t>(array)) + " " +
+                            std::to_string(array->GetMTime()) + " " + std::to_string(mesh_made) + " " +
+                            std::to_string(two) + " " + std::to_string(component);
+    if (key != scalars_key) {
+      scalars_key.clear();  // (a throw below leaves nothing cached)
+      scalars = cellproj::vtk::scalars_of(*mesh, array, per_cell, two ? 0 : component);
+      opacity = two ? cellproj::vtk::scalars_of(*mesh, array, per_cell, 1) : std::vector<double>();
+      scalars_key = key;
+    }
+    cellproj::Field field{scalars.data(), mesh->n_points(), name};
+    if (two) field.opacity = opacity.data(), field.opacity_name = name + " (its second component)";
+    return field;
   }
 
   // The renderer of the method and settings, made again when they changed.
@@ -136,18 +159,8 @@ void vtkCellprojVolumeMapper::Render(vtkRenderer* ren, vtkVolume* vol) {
                                  (this->ArrayName ? std::string(" (array '") + this->ArrayName + "')" : std::string()));
     }
     const cellproj::Volume& volume = in.volume_of(grid, cell_flag == 1);
-    const std::string name = array->GetName() ? array->GetName() : "scalars";
-    cellproj::Field field{nullptr, in.mesh->n_points(), name};
-    // Two dependent components (IndependentComponents off; ParaView's separate opacity array): the
-    // first coloured by the colour function, the second opaque by the opacity function (VTK's rule).
-    if (array->GetNumberOfComponents() == 2 && !vol->GetProperty()->GetIndependentComponents()) {
-      in.scalars = cellproj::vtk::scalars_of(*in.mesh, array, cell_flag == 1, 0);
-      in.opacity = cellproj::vtk::scalars_of(*in.mesh, array, cell_flag == 1, 1);
-      field.opacity = in.opacity.data(), field.opacity_name = name + " (its second component)";
-    } else {
-      in.scalars = cellproj::vtk::scalars_of(*in.mesh, array, cell_flag == 1, this->VectorComponent);
-    }
-    field.values = in.scalars.data();
+    const bool two = array->GetNumberOfComponents() == 2 && !vol->GetProperty()->GetIndependentComponents();
+    const cellproj::Field field = in.field_of(array, cell_flag == 1, two, this->VectorComponent);
     const cellproj::TransferFunction tf = cellproj::vtk::transfer_function_of(vol->GetProperty());
     const int* size = ren->GetSize();
     const int* origin = ren->GetOrigin();
