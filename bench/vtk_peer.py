@@ -31,6 +31,51 @@ import vtk
 from vtk.util.numpy_support import vtk_to_numpy
 
 
+def volume_property(tf):
+    """A scene's transfer function as VTK's: the same colour points, extinction kappa as opacity
+    kappa u per unit distance u = 1 / max(kappa) (the module docstring's mapping)."""
+    kmax = max(k for _, k in tf["extinction"])
+    unit = 1.0 / kmax if kmax > 0 else 1.0
+    opacity = vtk.vtkPiecewiseFunction()
+    for s, k in tf["extinction"]:
+        opacity.AddPoint(s, k * unit)
+    color = vtk.vtkColorTransferFunction()
+    for s, r, g, b in tf["color"]:
+        color.AddRGBPoint(s, r, g, b)
+    prop = vtk.vtkVolumeProperty()
+    prop.SetColor(color)
+    prop.SetScalarOpacity(opacity)
+    prop.SetScalarOpacityUnitDistance(unit)
+    prop.ShadeOff()
+    prop.SetInterpolationTypeToLinear()
+    return prop
+
+
+def scene_camera(camera, cam):
+    """Sets the vtkCamera `camera` to a scene's camera (docs/scene.md's defaults)."""
+    camera.SetPosition(*cam["eye"])
+    camera.SetFocalPoint(*cam.get("target", [0, 0, 0]))
+    camera.SetViewUp(*cam.get("up", [0, 1, 0]))
+    if cam.get("projection", "orthographic") == "perspective":
+        camera.ParallelProjectionOff()
+        camera.SetViewAngle(cam.get("fov_y", 30.0))
+    else:
+        camera.ParallelProjectionOn()
+        camera.SetParallelScale(cam.get("height", 2.0) / 2)
+
+
+def window_rgb(win):
+    """The window's back buffer as float64 RGB in [0, 1], row 0 at the top."""
+    grab = vtk.vtkWindowToImageFilter()
+    grab.SetInput(win)
+    grab.SetInputBufferTypeToRGB()
+    grab.ReadFrontBufferOff()
+    grab.Update()
+    img = grab.GetOutput()
+    w, h, _ = img.GetDimensions()
+    return vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, 3)[::-1].astype(np.float64) / 255
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("scene")
@@ -56,22 +101,7 @@ def main():
         source = vtk.vtkDataSetTriangleFilter()
         source.SetInputConnection(reader.GetOutputPort())
 
-    tf = scene["transfer_function"]
-    kappa = [(p[0], p[1]) for p in tf["extinction"]]
-    kmax = max(k for _, k in kappa)
-    unit = 1.0 / kmax if kmax > 0 else 1.0
-    opacity = vtk.vtkPiecewiseFunction()
-    for s, k in kappa:
-        opacity.AddPoint(s, k * unit)
-    color = vtk.vtkColorTransferFunction()
-    for s, r, g, b in tf["color"]:
-        color.AddRGBPoint(s, r, g, b)
-    prop = vtk.vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(unit)
-    prop.ShadeOff()
-    prop.SetInterpolationTypeToLinear()
+    prop = volume_property(scene["transfer_function"])
 
     mapper = {"pt": vtk.vtkProjectedTetrahedraMapper, "raycast": vtk.vtkUnstructuredGridVolumeRayCastMapper,
               "zsweep": vtk.vtkUnstructuredGridVolumeZSweepMapper}[a.mapper]()
@@ -88,16 +118,8 @@ def main():
     win.AddRenderer(ren)
     win.SetSize(a.size, a.size)
 
-    cam = scene["camera"]
+    scene_camera(ren.GetActiveCamera(), scene["camera"])
     c = ren.GetActiveCamera()
-    c.SetPosition(*cam["eye"])
-    c.SetFocalPoint(*cam.get("target", [0, 0, 0]))
-    c.SetViewUp(*cam.get("up", [0, 1, 0]))
-    if cam.get("projection", "orthographic") == "perspective":
-        c.SetViewAngle(cam.get("fov_y", 30.0))
-    else:
-        c.ParallelProjectionOn()
-        c.SetParallelScale(cam.get("height", 2.0) / 2)
     ren.ResetCameraClippingRange()
 
     times = []
@@ -109,14 +131,7 @@ def main():
         win.Render()
         times.append(time.perf_counter() - t)
         if f == 0:
-            grab = vtk.vtkWindowToImageFilter()
-            grab.SetInput(win)
-            grab.SetInputBufferTypeToRGB()
-            grab.ReadFrontBufferOff()
-            grab.Update()
-            img = grab.GetOutput()
-            w, h, _ = img.GetDimensions()
-            rgb = vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, 3)[::-1].astype(np.float32) / 255
+            rgb = window_rgb(win).astype(np.float32)
             np.save(a.out + ".npy", rgb)
     later = times[1:] or times
     print(json.dumps({"mapper": mapper.GetClassName(), "cells": grid.GetNumberOfCells(),

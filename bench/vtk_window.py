@@ -17,24 +17,13 @@ import time
 import vtk
 
 from cellproj.vtk import vtkCellprojVolumeMapper
+from vtk_peer import scene_camera, volume_property  # (bench/: the scene as VTK objects)
 
 
 def window_frames(scene, mapper, size, frames):
-    tf = scene["transfer_function"]
-    unit = 1.0 / max(k for _, k in tf["extinction"])
-    opacity = vtk.vtkPiecewiseFunction()
-    for s, k in tf["extinction"]:
-        opacity.AddPoint(s, k * unit)
-    color = vtk.vtkColorTransferFunction()
-    for s, r, g, b in tf["color"]:
-        color.AddRGBPoint(s, r, g, b)
-    prop = vtk.vtkVolumeProperty()
-    prop.SetColor(color)
-    prop.SetScalarOpacity(opacity)
-    prop.SetScalarOpacityUnitDistance(unit)
     volume = vtk.vtkVolume()
     volume.SetMapper(mapper)
-    volume.SetProperty(prop)
+    volume.SetProperty(volume_property(scene["transfer_function"]))
     ren = vtk.vtkRenderer()
     ren.AddVolume(volume)
     win = vtk.vtkRenderWindow()
@@ -42,11 +31,8 @@ def window_frames(scene, mapper, size, frames):
     win.SetMultiSamples(0)
     win.AddRenderer(ren)
     win.SetSize(size, size)
-    cam, c = scene["camera"], ren.GetActiveCamera()
-    c.SetPosition(*cam["eye"])
-    c.SetFocalPoint(*cam["target"])
-    c.SetViewUp(*cam["up"])
-    c.SetViewAngle(cam["fov_y"])
+    c = ren.GetActiveCamera()
+    scene_camera(c, scene["camera"])
     times = []
     for f in range(frames):
         if f:

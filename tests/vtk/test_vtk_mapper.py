@@ -7,6 +7,7 @@ Run by ctest's vtk_mapper (tests/vtk/run.sh); needs ../shared/data (skipped with
 import json
 import os
 import subprocess
+import sys
 import tempfile
 
 import numpy as np
@@ -17,6 +18,9 @@ from vtk.util.numpy_support import numpy_to_vtk, vtk_to_numpy
 from cellproj.vtk import use_cellproj, vtkCellprojVolumeMapper
 
 SOURCE = os.environ.get("CELLPROJ_SOURCE_DIR", os.path.join(os.path.dirname(__file__), "..", ".."))
+sys.path.insert(0, os.path.join(SOURCE, "bench"))
+from vtk_peer import scene_camera, volume_property, window_rgb  # noqa: E402  (a scene as VTK objects)
+
 EXE = os.environ.get("CELLPROJ_EXE", "cellproj")
 SCENES = os.path.join(SOURCE, "bench", "scenes")
 SIZE = 200
@@ -39,22 +43,6 @@ def read(mesh):
     r.SetFileName(mesh)
     r.Update()
     return r
-
-
-def volume_property(tf):
-    """The scene's transfer function as VTK's: extinction k as opacity k u per unit distance u."""
-    unit = 1.0 / max(k for _, k in tf["extinction"])
-    opacity = vtk.vtkPiecewiseFunction()
-    for s, k in tf["extinction"]:
-        opacity.AddPoint(s, k * unit)
-    color = vtk.vtkColorTransferFunction()
-    for s, r, g, b in tf["color"]:
-        color.AddRGBPoint(s, r, g, b)
-    p = vtk.vtkVolumeProperty()
-    p.SetColor(color)
-    p.SetScalarOpacity(opacity)
-    p.SetScalarOpacityUnitDistance(unit)
-    return p
 
 
 _WINDOW = []
@@ -82,15 +70,7 @@ class Window:
         self.renderer.SetBackground(0, 0, 0)
         self.renderer.AddVolume(self.volume)
         self.window, self.size = shared_window(), size
-        cam, c = s["camera"], self.renderer.GetActiveCamera()
-        c.SetPosition(*cam["eye"])
-        c.SetFocalPoint(*cam["target"])
-        c.SetViewUp(*cam["up"])
-        if cam.get("projection") == "perspective":
-            c.SetViewAngle(cam["fov_y"])
-        else:
-            c.ParallelProjectionOn()
-            c.SetParallelScale(cam["height"] / 2)
+        scene_camera(self.renderer.GetActiveCamera(), s["camera"])
 
     def __del__(self):
         if self.window.HasRenderer(self.renderer):
@@ -110,14 +90,7 @@ class Window:
         self.window.SetSize(self.size, self.size)
         self.renderer.ResetCameraClippingRange()
         self.window.Render()
-        grab = vtk.vtkWindowToImageFilter()
-        grab.SetInput(self.window)
-        grab.SetInputBufferTypeToRGB()
-        grab.ReadFrontBufferOff()
-        grab.Update()
-        img = grab.GetOutput()
-        w, h, _ = img.GetDimensions()
-        return vtk_to_numpy(img.GetPointData().GetScalars()).reshape(h, w, 3)[::-1].astype(np.float64) / 255
+        return window_rgb(self.window)
 
 
 def cli(s, *options, size=SIZE):
@@ -129,8 +102,13 @@ def cli(s, *options, size=SIZE):
         return np.load(out)[..., :3].astype(np.float64)
 
 
-def rmse(a, b):
-    return float(np.sqrt(((a - b) ** 2).mean()))
+def rmse(a, b, what=None):
+    """Root-mean-square difference; printed when `what` names it (docs/vtk.md quotes them:
+    `pytest -s tests/vtk` under Xvfb shows them)."""
+    e = float(np.sqrt(((a - b) ** 2).mean()))
+    if what:
+        print("%s: RMSE %.1e" % (what, e))
+    return e
 
 
 def mapper_of(s, method="pt-breakpoints", cells=False):
@@ -154,14 +132,14 @@ def test_the_window_shows_the_clis_picture(name, method):
     got = Window(s, m).picture()
     assert m.GetLastError() == ""
     want = cli(s, "--method", method)
-    assert rmse(got, want) <= RMSE_8BIT
+    assert rmse(got, want, "%s %s, window against the CLI" % (name, method)) <= RMSE_8BIT
     assert got.max() > 0.2  # a picture, not an empty window
 
 
 def test_cell_scalars_are_drawn_constant_over_each_cell_as_the_cli_does():
     s = scene("angular_sector")  # "CellId": cell data
     got = Window(s, mapper_of(s, cells=True)).picture()
-    assert rmse(got, cli(s)) <= RMSE_8BIT
+    assert rmse(got, cli(s), "angular_sector cell data, window against the CLI") <= RMSE_8BIT
 
 
 def flat(source, rgb):
@@ -198,7 +176,7 @@ def test_an_opaque_plane_hides_the_volume_behind_it_as_the_clis_clipping_plane()
     got = w.picture()
     clip = ",".join("%.17g" % v for v in (*target, *forward))
     want = cli(s, "--clip", clip)
-    assert rmse(got, want) <= RMSE_8BIT
+    assert rmse(got, want, "post_tets, opaque plane against the CLI's --clip") <= RMSE_8BIT
     assert rmse(got, cli(s)) > 10 * RMSE_8BIT  # the plane did cut
 
 
@@ -364,7 +342,7 @@ def test_two_dependent_components_are_coloured_by_the_first_and_opaque_by_the_se
         got = win.picture()
         assert m.GetLastError() == "", m.GetLastError()
         want = cli(two, "--opacity-field", "B")
-        assert rmse(got, want) <= RMSE_8BIT
+        assert rmse(got, want, "two dependent components against the CLI's --opacity-field") <= RMSE_8BIT
         assert rmse(got, cli(two)) > 5 * RMSE_8BIT  # not the picture of A alone
         m.SetMethod("pt-linear")  # a Gouraud method cannot: said, nothing drawn
         assert win.picture().max() == 0.0 and "opacity" in m.GetLastError()
